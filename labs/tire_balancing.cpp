@@ -1,0 +1,85 @@
+// tire_balancing: sections 2.2 and 2.3 of the chapter.
+// A wheel (a uniform disk of mass m and radius a) sits on an axle tilted by
+// theta from its symmetry axis. Spinning, its L is not along the axle, so L
+// sweeps a cone and the bearings must supply a torque. Two masses m0 at
+// (-b, a) and (b, -a) swing a principal axis onto the axle and balance it.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "common/lab.h"
+#include "rigid/balancing.h"
+#include "rigid/units.h"
+#include "tire_figures.h"
+
+using rigid::Vec3;
+using rigid::lab::Lab;
+using rigid::lab::textbook_if;
+
+int main(int argc, char** argv) {
+  Lab lab("tire_balancing", "dynamic balancing of a wheel on a crooked axle (sections 2.2-2.3)");
+  rigid::CrookedWheel wheel;
+  double tilt_deg = 1.0;
+  // 90 rad/s is a wheel of 0.31 m rolling radius at about 100 km/h.
+  double omega = 90.0;
+  lab.option("--mass", wheel.mass, "kg", "mass m of the disk");
+  lab.option("--radius", wheel.radius, "m", "radius a of the disk");
+  lab.option("--offset", wheel.offset, "m", "distance b of each balancing mass from the disk");
+  lab.option_deg("--tilt-deg", tilt_deg, 0.0, 45.0, "angle theta between axle and symmetry axis");
+  lab.option("--omega", omega, "rad/s", "spin of the wheel about its axle");
+  lab.enable_csv();
+
+  return lab.run(argc, argv, [&](Lab& lab) {
+    wheel.tilt = rigid::deg_to_rad(tilt_deg);
+    const bool book = wheel.mass == 10.0 && wheel.radius == 0.18 && wheel.offset == 0.05 &&
+                      tilt_deg == 1.0;
+
+    lab.section("2.2 before balancing: L is off the axle");
+    const Vec3 axle = rigid::axle_direction(wheel);
+    const Vec3 L0 = rigid::angular_momentum_at(wheel, 0.0, omega, 0.0);
+    lab.result("angle_L_axle_deg", "angle between L and the axle",
+               rigid::rad_to_deg(rigid::angle_between(L0, axle)), "deg");
+    lab.result("torque_unbalanced_nm", "bearing torque |omega x I omega|",
+               rigid::bearing_torque(wheel, 0.0, omega).norm(), "N m");
+
+    lab.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
+    double m0 = 0.0;
+    try {
+      m0 = rigid::balance_mass_exact(wheel);
+    } catch (const std::invalid_argument& e) {
+      throw rigid::lab::UsageError("--tilt-deg", std::string(e.what()) + " with this --offset");
+    }
+    const double m0_small = rigid::balance_mass_small_angle(wheel);
+    lab.result("balance_mass_kg", "m0, exact from tan 2 theta (eq. 60)", m0, "kg",
+               textbook_if(book, "0.076 (76 g)"));
+    lab.result("balance_mass_small_angle_kg", "m0, small angle theta = 8 b m0 / (a m) (eq. 61)",
+               m0_small, "kg", textbook_if(book, "0.076 (76 g)"));
+    lab.result("residual_tilt_exact_deg", "principal axis to axle, exact m0",
+               rigid::rad_to_deg(rigid::principal_axis_misalignment(wheel, m0)), "deg");
+    lab.result("residual_tilt_small_angle_deg", "principal axis to axle, small-angle m0",
+               rigid::rad_to_deg(rigid::principal_axis_misalignment(wheel, m0_small)), "deg");
+    lab.result("torque_balanced_nm", "bearing torque after balancing",
+               rigid::bearing_torque(wheel, m0, omega).norm(), "N m");
+    if (book) {
+      lab.note(fmt::format(
+          "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "
+          "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = 10 kg, a = 18 cm, b = 5 cm, "
+          "theta = 1 deg",
+          1e3 * m0_small, 1e3 * m0));
+    }
+
+    // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.
+    rigid::lab::Series turn{{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"}, {}};
+    const int samples = 361;
+    const double period = 2.0 * rigid::kPi / omega;
+    for (int k = 0; k < samples; ++k) {
+      const double t = period * k / (samples - 1);
+      const Vec3 L = rigid::angular_momentum_at(wheel, 0.0, omega, t);
+      const Vec3 N = omega * axle.cross(L);  // dL/dt for L turning with the wheel
+      turn.rows.push_back({t, L(0), L(1), L(2), N(0), N(1), N(2)});
+    }
+    lab.series(std::move(turn));
+
+    lab.figures([&](Lab& lab) { rigid::lab::draw_tire_figures(lab, wheel, m0, omega); });
+  });
+}

@@ -1,0 +1,28 @@
+# Shared set-up for the two README commands (sourced, not run): install what is
+# missing from Debian 12's packages, then configure and build the release preset.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+RIGID_PACKAGES=(
+  build-essential cmake pkg-config
+  libeigen3-dev libboost-dev libcli11-dev nlohmann-json3-dev libfmt-dev catch2
+  libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libpng-dev libfreetype-dev fonts-dejavu-core
+  libgsl-dev python3-scipy python3-matplotlib python3-mpmath
+)
+
+missing=()
+for package in "${RIGID_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "rigidlab: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+fi
+
+cmake --preset release >/dev/null
+cmake --build --preset release -j "$(nproc)"

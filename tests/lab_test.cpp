@@ -1,0 +1,129 @@
+// The lab contract (design.md): JSON keys, the textbook defaults, and exit
+// status 2 with one line naming the option for every kind of bad input.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "lab_common.h"
+
+using rigid::test::run_lab;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+// Half a unit in the last place the text prints.
+bool prints_as(double value, double printed, int decimals) {
+  return std::abs(value - printed) <= 0.5 * std::pow(10.0, -decimals) + 1e-12;
+}
+}  // namespace
+
+TEST_CASE("lamina_tensor: defaults reproduce sections 1-2.4") {
+  const auto run = run_lab("lamina_tensor", "--json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  CHECK(j["lab"] == "lamina_tensor");
+  for (const char* key : {"mass", "a", "b", "origin", "axis", "omega"}) CHECK(j["inputs"].contains(key));
+  const auto& r = j["results"];
+  for (const char* key : {"inertia_tensor", "scalar_moment", "angular_momentum", "angle_L_omega_deg",
+                          "kinetic_energy", "principal_moments", "principal_axes",
+                          "fixed_axis_torque"}) {
+    CHECK(r.contains(key));
+  }
+  CHECK(prints_as(r["scalar_moment"], 0.493, 3));
+  CHECK(prints_as(r["angle_L_omega_deg"], 51.0, 0));
+  CHECK(prints_as(r["principal_moments"][0], 0.126, 3));
+  CHECK(prints_as(r["principal_moments"][1], 1.540, 3));
+  CHECK(prints_as(r["principal_moments"][2], 1.667, 3));
+  CHECK_THAT(double(r["principal_angle_deg"]), WithinAbs(-22.5, 1e-9));
+  CHECK_THAT(double(r["principal_angle_other_deg"]), WithinAbs(67.5, 1e-9));
+  CHECK(j["figures"].empty());
+}
+
+TEST_CASE("lamina_tensor: --axis 1,0,0 needs the section 3.1 torque 0.500 ma^2 omega^2") {
+  const auto run = run_lab("lamina_tensor", "--axis 1,0,0 --json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& N = j["results"]["fixed_axis_torque"];
+  CHECK_THAT(double(N[0]), WithinAbs(0.0, 1e-14));
+  CHECK_THAT(double(N[1]), WithinAbs(0.0, 1e-14));
+  CHECK(prints_as(std::abs(double(N[2])), 0.500, 3));
+}
+
+TEST_CASE("lamina_tensor: the human table shows the textbook column and errata") {
+  const auto run = run_lab("lamina_tensor", "");
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("textbook") != std::string::npos);
+  CHECK(run.out.find("0.493 ma^2") != std::string::npos);
+  CHECK(run.out.find("errata") != std::string::npos);
+  CHECK(run_lab("lamina_tensor", "--help").status == 0);
+}
+
+TEST_CASE("tire_balancing: defaults give both balancing masses") {
+  const auto run = run_lab("tire_balancing", "--json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  REQUIRE(r.contains("balance_mass_kg"));
+  REQUIRE(r.contains("balance_mass_small_angle_kg"));
+  // Small angle: theta a m / (8 b) for the text's inputs, computed here independently.
+  const double theta = 1.0 * 3.14159265358979323846 / 180.0;
+  CHECK_THAT(double(r["balance_mass_small_angle_kg"]), WithinAbs(theta * 0.18 * 10 / 0.4, 1e-15));
+  CHECK(double(r["balance_mass_kg"]) > double(r["balance_mass_small_angle_kg"]));
+  CHECK(double(r["residual_tilt_exact_deg"]) < 1e-10);
+  CHECK(double(r["torque_balanced_nm"]) < 1e-9 * double(r["torque_unbalanced_nm"]));
+}
+
+TEST_CASE("tire_balancing: --csv writes one turn of L and the torque") {
+  const std::string path = "/tmp/rigid_tire_test.csv";
+  std::remove(path.c_str());
+  REQUIRE(run_lab("tire_balancing", "--quiet --csv " + path).status == 0);
+  std::ifstream csv(path);
+  std::string header;
+  std::getline(csv, header);
+  CHECK(header == "t_s,Lx,Ly,Lz,Nx,Ny,Nz");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  CHECK(rows == 361);
+  std::remove(path.c_str());
+}
+
+TEST_CASE("labs: bad input exits 2 with one line naming the option") {
+  struct Case {
+    const char* lab;
+    const char* args;
+    const char* option;
+  };
+  const Case cases[] = {
+      {"lamina_tensor", "--mass -1", "--mass"},
+      {"lamina_tensor", "--mass 0", "--mass"},
+      {"lamina_tensor", "--mass nan", "--mass"},
+      {"lamina_tensor", "--mass inf", "--mass"},
+      {"lamina_tensor", "--mass abc", "--mass"},
+      {"lamina_tensor", "--a 0", "--a"},
+      {"lamina_tensor", "--b -2", "--b"},
+      {"lamina_tensor", "--axis 0,0,0", "--axis"},
+      {"lamina_tensor", "--axis 1,2", "--axis"},
+      {"lamina_tensor", "--axis 1,x,2", "--axis"},
+      {"lamina_tensor", "--origin middle", "--origin"},
+      {"lamina_tensor", "--omega nan", "--omega"},
+      {"lamina_tensor", "--bogus", "--bogus"},
+      {"lamina_tensor", "--figure-size 10x10", "--figure-size"},
+      {"lamina_tensor", "--figure-size big", "--figure-size"},
+      {"lamina_tensor", "--figures /proc/rigidlab-cannot", "--figures"},
+      {"tire_balancing", "--mass -10", "--mass"},
+      {"tire_balancing", "--radius 0", "--radius"},
+      {"tire_balancing", "--offset nan", "--offset"},
+      {"tire_balancing", "--offset inf", "--offset"},
+      {"tire_balancing", "--tilt-deg 0", "--tilt-deg"},
+      {"tire_balancing", "--tilt-deg 45", "--tilt-deg"},
+      {"tire_balancing", "--tilt-deg -3", "--tilt-deg"},
+      {"tire_balancing", "--tilt-deg 40 --offset 0.001", "--tilt-deg"},
+      {"tire_balancing", "--csv /proc/nope/x.csv", "--csv"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.lab << " " << c.args);
+    const auto run = run_lab(c.lab, c.args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(std::string(c.lab) + ": error: " + c.option, 0) == 0);
+    CHECK(run.out.empty());
+  }
+}
