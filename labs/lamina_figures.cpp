@@ -1,11 +1,107 @@
 #include "lamina_figures.h"
 
-#include <stdexcept>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "rigid/render/plot2d.h"
+#include "rigid/render/scene3d.h"
+#include "rigid/units.h"
 
 namespace rigid::lab {
+namespace render = rigid::render;
+namespace {
 
-void draw_lamina_figures(Lab&, const LaminaInputs&, const Mat3&, const PrincipalAxes&) {
-  throw std::runtime_error("this build has no renderer yet");
+std::string title_of(const Lab& lab, const LaminaInputs& in) {
+  return lab.figure_title(fmt::format("m = {:g} kg, a = {:g} m, b = {:g} m, origin at the {}",
+                                      in.mass, in.a, in.b, in.origin));
+}
+
+// The lamina with its rotation axis, omega, L and the principal axes.
+void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const PrincipalAxes& principal) {
+  const Vec3 n = in.axis.normalized();
+  const Vec3 L_dir = (I * n).normalized();
+  const double size = std::max(in.a, in.b);
+  const Vec3 centre = in.origin == "corner" ? Vec3(in.a / 2, in.b / 2, 0) : Vec3::Zero();
+
+  render::Scene3D scene;
+  scene.title = title_of(lab, in) + fmt::format(", angle(L, \\omega) = {:.1f}\\deg",
+                                           rad_to_deg(angle_between(I * n, n)));
+  scene.camera.eye = centre + size * Vec3(1.2, -2.2, 2.6);
+  scene.camera.target = centre + Vec3(0, 0, 0.1 * size);
+  scene.camera.fov_y_deg = 38;
+
+  scene.add_box(centre, Vec3(in.a / 2, in.b / 2, 0.01 * size), Mat3::Identity(),
+                {render::kSkyBlue, 0.55f}, "lamina");
+  // The fixed rotation axis runs through the origin both ways.
+  scene.add_cylinder(-0.4 * size * n, 1.15 * size * n, 0.006 * size, {render::kGray},
+                     "rotation axis n");
+  const double arrow = 0.9 * size;
+  scene.add_arrow(Vec3::Zero(), arrow * n, 0.018 * size, {render::kBlue}, "\\omega");
+  scene.add_arrow(Vec3::Zero(), arrow * L_dir, 0.018 * size, {render::kVermillion},
+                  "L = I\\omega (direction)");
+  scene.add_label(arrow * 1.08 * n, "\\omega", render::kBlue);
+  scene.add_label(arrow * 1.08 * L_dir, "L", render::kVermillion);
+  // Principal axes through the origin, both directions, labelled by moment.
+  const render::Color axis_colors[3] = {render::kBluishGreen, render::kOrange,
+                                        render::kReddishPurple};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 e = principal.axes.row(i).transpose();
+    const double reach = (i == 2 ? 0.6 : 0.75) * size;
+    scene.add_cylinder(-reach * e, reach * e, 0.009 * size, {axis_colors[i]},
+                       fmt::format("principal axis {}: I_{} = {:.4g} kg m^2", i + 1, i + 1,
+                                   principal.moments(i)));
+    scene.add_label(reach * 1.1 * e, std::to_string(i + 1), axis_colors[i]);
+  }
+  scene.add_axes(Vec3::Zero(), Mat3::Identity(), 0.35 * size, {"x", "y", "z"});
+  scene.save(lab.figure_path("scene"), lab.figure_width(), lab.figure_height());
+}
+
+// The moment n.I.n about an in-plane axis at angle alpha from x: the principal
+// axes are its extremes (section 2.3).
+void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
+  std::vector<double> alpha_deg, moment;
+  for (int k = 0; k <= 360; ++k) {
+    const double alpha = deg_to_rad(-90.0 + 0.5 * k);
+    alpha_deg.push_back(rad_to_deg(alpha));
+    moment.push_back(moment_about_axis(I, Vec3(std::cos(alpha), std::sin(alpha), 0)));
+  }
+  render::Plot2D plot;
+  plot.title = title_of(lab, in) + ": moment about an axis in the x-y plane";
+  render::Panel& panel = plot.panel();
+  panel.x = {"axis angle \\alpha from x (\\deg)", render::Scale::kLinear, -90, 90};
+  const double top = *std::max_element(moment.begin(), moment.end());
+  panel.legend = render::LegendPlace::kBottomLeft;
+  panel.y = {"moment n\u00b7I\u00b7n (kg m^2)", render::Scale::kLinear, 0.0, 1.15 * top};
+  panel.add_line(alpha_deg, moment, "I(\\alpha) = n\u00b7I\u00b7n").color = render::kBlue;
+
+  const InPlaneAxes axes = in_plane_principal_axes(I);
+  for (const auto& [theta, value] : {std::pair{axes.theta, axes.moment},
+                                     std::pair{axes.theta_other, axes.moment_other}}) {
+    double deg = rad_to_deg(theta);
+    if (deg > 90) deg -= 180;
+    panel.add_ref_line(deg, true, fmt::format("principal axis {:.1f}\\deg", deg));
+    panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
+  }
+  const Vec3 n = in.axis.normalized();
+  if (std::abs(n.z()) < 1e-12) {
+    double deg = rad_to_deg(std::atan2(n.y(), n.x()));
+    if (deg > 90) deg -= 180;
+    if (deg < -90) deg += 180;
+    panel.add_points({deg}, {moment_about_axis(I, n)}, "chosen axis n", render::Marker::kCircle)
+        .color = render::kVermillion;
+  }
+  plot.save(lab.figure_path("moment"), lab.figure_width(), lab.figure_height());
+}
+
+}  // namespace
+
+void draw_lamina_figures(Lab& lab, const LaminaInputs& in, const Mat3& I,
+                         const PrincipalAxes& principal) {
+  draw_scene(lab, in, I, principal);
+  draw_moment_curve(lab, in, I);
 }
 
 }  // namespace rigid::lab

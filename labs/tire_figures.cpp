@@ -1,11 +1,109 @@
 #include "tire_figures.h"
 
-#include <stdexcept>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "rigid/render/plot2d.h"
+#include "rigid/render/scene3d.h"
+#include "rigid/units.h"
 
 namespace rigid::lab {
+namespace render = rigid::render;
+namespace {
 
-void draw_tire_figures(Lab&, const CrookedWheel&, double, double) {
-  throw std::runtime_error("this build has no renderer yet");
+std::string title_of(const Lab& lab, const CrookedWheel& wheel) {
+  return lab.figure_title(fmt::format("m = {:g} kg, a = {:g} m, b = {:g} m, \\theta = {:g}\\deg",
+                                      wheel.mass, wheel.radius, wheel.offset,
+                                      rad_to_deg(wheel.tilt)));
+}
+
+// The wheel, its crooked axle, the balancing masses and the cone L sweeps
+// before balancing. Angles of a degree would be invisible, so the scene
+// magnifies every angle about the symmetry axis by the same factor and says so.
+void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
+  const double a = wheel.radius, b = wheel.offset;
+  const double magnify = std::max(1.0, deg_to_rad(12.0) / wheel.tilt);
+  const auto shown = [&](const Vec3& v) -> Vec3 {
+    // Magnify the angle of v from the x axis (within the plane of v and x).
+    const double angle = std::atan2(std::hypot(v.y(), v.z()), v.x());
+    const Vec3 side = Vec3(0, v.y(), v.z()).normalized();
+    return v.norm() * (std::cos(magnify * angle) * Vec3::UnitX() + std::sin(magnify * angle) * side);
+  };
+  const Vec3 axle = shown(axle_direction(wheel));
+  const Vec3 L0 = angular_momentum_at(wheel, 0.0, omega, 0.0);
+  const double cone_angle = magnify * angle_between(L0, axle_direction(wheel));
+
+  render::Scene3D scene;
+  scene.title = title_of(lab, wheel) + (magnify > 1 ? fmt::format(" (angles drawn \\times{:.0f})",
+                                                             magnify)
+                                               : std::string());
+  scene.camera.eye = Vec3(1.1, -3.4, 1.9) * a * 1.6;
+  scene.camera.target = Vec3(0.05 * a, 0, 0);
+  scene.camera.fov_y_deg = 34;
+
+  scene.add_cylinder(Vec3(-0.012 * a, 0, 0), Vec3(0.012 * a, 0, 0), a, {render::kLightGray, 0.6f},
+                     "disk (symmetry axis x)");
+  scene.add_cylinder(-1.9 * a * axle, 1.9 * a * axle, 0.035 * a, {render::kGray}, "crooked axle");
+  const double r0 = 0.07 * a * std::cbrt(std::max(m0, 1e-6) / (0.01 * wheel.mass));
+  scene.add_sphere(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {render::kVermillion},
+                   fmt::format("balancing masses m_0 = {:.1f} g", 1e3 * m0));
+  scene.add_sphere(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {render::kVermillion});
+  // The cone swept by L about the axle when unbalanced, with L at t = 0.
+  const double length = 1.6 * a;
+  scene.add_cone(Vec3::Zero(), length * std::cos(cone_angle) * axle,
+                 length * std::sin(cone_angle), {render::kSkyBlue, 0.35f},
+                 "cone swept by L (unbalanced)");
+  const Vec3 L_shown = shown(L0).normalized();
+  scene.add_arrow(Vec3::Zero(), length * L_shown, 0.03 * a, {render::kBlue}, "L before balancing");
+  scene.add_arrow(Vec3::Zero(), length * 1.12 * axle, 0.03 * a, {render::kBluishGreen},
+                  "\\omega along the axle");
+  render::Label3D L_label{length * 1.05 * L_shown, "L", render::kBlue};
+  L_label.offset_y = 36;
+  scene.add_label(L_label);
+  render::Label3D omega_label{length * 1.15 * axle, "\\omega", render::kBluishGreen};
+  omega_label.offset_y = -36;
+  scene.add_label(omega_label);
+  scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"});
+  scene.save(lab.figure_path("scene"), lab.figure_width(), lab.figure_height());
+}
+
+// The balancing mass against the tilt: exact (eq. 60) against small-angle (eq. 61).
+void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
+  std::vector<double> tilt_deg, exact_g, small_g;
+  const double top = std::min(44.0, std::max(5.0, 4.0 * rad_to_deg(wheel.tilt)));
+  CrookedWheel w = wheel;
+  for (int k = 1; k <= 200; ++k) {
+    w.tilt = deg_to_rad(top * k / 200.0);
+    try {
+      exact_g.push_back(1e3 * balance_mass_exact(w));
+    } catch (const std::invalid_argument&) {
+      break;  // no mass reaches steeper tilts
+    }
+    tilt_deg.push_back(rad_to_deg(w.tilt));
+    small_g.push_back(1e3 * balance_mass_small_angle(w));
+  }
+  render::Plot2D plot;
+  plot.title = title_of(lab, wheel) + ": balancing mass against axle tilt";
+  render::Panel& panel = plot.panel();
+  panel.x = {"axle tilt \\theta (\\deg)", render::Scale::kLinear, 0, top};
+  panel.y = {"balancing mass m_0 (g)", render::Scale::kLinear, 0};
+  panel.add_line(tilt_deg, exact_g, "exact, tan 2\\theta (eq. 60)").color = render::kBlue;
+  auto& small = panel.add_line(tilt_deg, small_g, "small angle, \\theta \\approx 8bm_0/(am) (eq. 61)");
+  small.color = render::kOrange;
+  small.dash = render::Dash::kDashed;
+  panel.add_points({rad_to_deg(wheel.tilt)}, {1e3 * m0}, fmt::format("this wheel: {:.1f} g", 1e3 * m0))
+      .color = render::kBlue;
+  plot.save(lab.figure_path("mass"), lab.figure_width(), lab.figure_height());
+}
+
+}  // namespace
+
+void draw_tire_figures(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
+  draw_scene(lab, wheel, m0, omega);
+  draw_mass_curve(lab, wheel, m0);
 }
 
 }  // namespace rigid::lab

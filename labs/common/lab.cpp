@@ -271,6 +271,12 @@ std::string Lab::figure_path(const std::string& what) {
   return (fs::path(figures_dir_) / file).string();
 }
 
+std::string Lab::figure_title(const std::string& detail) const {
+  std::string escaped;
+  for (char c : name_) escaped += c == '_' ? std::string("\\_") : std::string(1, c);
+  return escaped + ": " + detail;
+}
+
 void Lab::figures(const std::function<void(Lab&)>& draw) {
   if (!figures_requested()) return;
   try {

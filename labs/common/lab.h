@@ -91,6 +91,8 @@ class Lab {
   int figure_width() const { return figure_width_; }
   int figure_height() const { return figure_height_; }
   const std::string& name() const { return name_; }
+  /// A figure title "<lab>: <detail>" in the renderer's markup (the lab's name escaped).
+  std::string figure_title(const std::string& detail) const;
 
  private:
   struct Row {

@@ -1,0 +1,48 @@
+// Poinsot's construction for a torque-free body (sections 4 and 4.1): in body
+// axes omega lies on the energy ellipsoid sum I_i w_i^2 = 2T (eq. 81, semi-axes
+// sqrt(2T/I_i), ratios 1/sqrt(I_i), eq. 82) and on the momentum ellipsoid
+// sum I_i^2 w_i^2 = L^2 (eq. 79, semi-axes L/I_i, ratios 1/I_i, eq. 80); their
+// intersection is the polhode. Moments may come in any order.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "rigid/free_body.h"
+
+namespace rigid {
+
+/// Semi-axes of the two ellipsoids through omega_body, rad/s.
+struct PoinsotEllipsoids {
+  Eigen::Vector3d energy_semi_axes;    ///< sqrt(2T / I_i)
+  Eigen::Vector3d momentum_semi_axes;  ///< |L| / I_i
+};
+
+/// The energy and momentum ellipsoids on which omega_body moves.
+PoinsotEllipsoids poinsot_ellipsoids(const PrincipalMoments& I, const Eigen::Vector3d& omega_body);
+
+/// Axis ratios 1/I_i of the momentum ellipsoid for moments given in any units (eq. 80).
+Eigen::Vector3d momentum_ellipsoid_ratios(const Eigen::Vector3d& moments);
+/// Axis ratios 1/sqrt(I_i) of the energy ellipsoid (eq. 82).
+Eigen::Vector3d energy_ellipsoid_ratios(const Eigen::Vector3d& moments);
+/// The momentum ratios scaled so that both ellipsoids touch on axis j (0, 1 or 2),
+/// as for a spin about that axis (section 4.1).
+Eigen::Vector3d momentum_ratios_touching(const Eigen::Vector3d& moments, int j);
+
+/// The polhode through omega0_body: one period of omega_body(t) from the exact
+/// solution, `samples` points; on the separatrix, the separatrix ellipses.
+std::vector<Eigen::Vector3d> polhode(const PrincipalMoments& I, const Eigen::Vector3d& omega0_body,
+                                     int samples);
+
+/// omega_body on the energy ellipsoid of energy T with |L|^2 = L2, chosen where
+/// the intermediate component is zero; L2 must lie in [2 T I_min, 2 T I_max].
+Eigen::Vector3d omega_on_energy_ellipsoid(const PrincipalMoments& I, double T, double L2);
+
+/// The two separatrix ellipses on the energy ellipsoid of energy T (through the
+/// intermediate axis, L^2 = 2 T I_mid), each `samples` points; empty if two
+/// moments are equal.
+std::vector<std::vector<Eigen::Vector3d>> separatrices(const PrincipalMoments& I, double T,
+                                                       int samples);
+
+}  // namespace rigid

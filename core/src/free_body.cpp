@@ -1,0 +1,56 @@
+#include "rigid/free_body.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace rigid {
+
+void validate(const PrincipalMoments& I, MomentsRule rule) {
+  const double m[3] = {I.I1, I.I2, I.I3};
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(m[i]) || !(m[i] > 0.0)) {
+      std::ostringstream os;
+      os << "principal moment I" << (i + 1) << " must be positive and finite, got " << m[i];
+      throw std::invalid_argument(os.str());
+    }
+  }
+  if (rule == MomentsRule::kPositiveOnly) return;
+  // A few ulps of slack: a lamina's I3 = I1 + I2 may round either way.
+  constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const int lo = std::min(i, j), hi = std::max(i, j);
+    if (m[lo] + m[hi] < m[k] * (1.0 - kSlack)) {
+      std::ostringstream os;
+      os.precision(17);
+      os << "principal moments must satisfy the triangle inequality I" << (lo + 1) << " + I"
+         << (hi + 1) << " >= I" << (k + 1) << ", got " << m[lo] << " + " << m[hi] << " < " << m[k];
+      throw std::invalid_argument(os.str());
+    }
+  }
+}
+
+FreeBodyState make_state(const Eigen::Vector3d& omega_body, const Eigen::Quaterniond& q) {
+  return {omega_body.x(), omega_body.y(), omega_body.z(), q.w(), q.x(), q.y(), q.z()};
+}
+
+Eigen::Vector3d L_body(const PrincipalMoments& I, const Eigen::Vector3d& omega_body) {
+  return {I.I1 * omega_body.x(), I.I2 * omega_body.y(), I.I3 * omega_body.z()};
+}
+
+Eigen::Vector3d L_space(const PrincipalMoments& I, const FreeBodyState& x) {
+  return attitude(x).normalized() * L_body(I, omega_body(x));
+}
+
+double kinetic_energy(const PrincipalMoments& I, const Eigen::Vector3d& w) {
+  return 0.5 * (I.I1 * w.x() * w.x() + I.I2 * w.y() * w.y() + I.I3 * w.z() * w.z());
+}
+
+double angular_momentum_magnitude(const PrincipalMoments& I, const Eigen::Vector3d& w) {
+  return L_body(I, w).norm();
+}
+
+}  // namespace rigid

@@ -1,0 +1,72 @@
+#include "rigid/rotation.h"
+
+#include <cmath>
+#include <limits>
+
+namespace rigid {
+
+namespace {
+constexpr double kPi = 3.141592653589793238462643383279502884;
+
+// Wraps an angle into (-pi, pi].
+double wrap_pi(double a) {
+  a = std::remainder(a, 2.0 * kPi);
+  return a <= -kPi ? a + 2.0 * kPi : a;
+}
+}  // namespace
+
+EulerAngles euler_zxz(const Eigen::Quaterniond& q) {
+  // q = Rz(phi) Rx(theta) Rz(psi) has, with half angles,
+  //   w = cos(theta/2) cos((phi+psi)/2),  z = cos(theta/2) sin((phi+psi)/2),
+  //   x = sin(theta/2) cos((phi-psi)/2),  y = sin(theta/2) sin((phi-psi)/2),
+  // so theta comes from atan2 (accurate near 0 and pi, unlike acos of eq. 122's lambda_33).
+  const double c = std::hypot(q.w(), q.z());
+  const double s = std::hypot(q.x(), q.y());
+  EulerAngles e;
+  e.theta = 2.0 * std::atan2(s, c);
+  // Within roundoff of theta = 0 or pi one of phi +- psi is noise: report it as psi = 0.
+  constexpr double kTiny = 4.0 * std::numeric_limits<double>::epsilon();
+  if (s <= kTiny * c) {  // theta = 0: only phi + psi is defined
+    e.phi = wrap_pi(2.0 * std::atan2(q.z(), q.w()));
+    e.psi = 0.0;
+  } else if (c <= kTiny * s) {  // theta = pi: only phi - psi is defined
+    e.phi = wrap_pi(2.0 * std::atan2(q.y(), q.x()));
+    e.psi = 0.0;
+  } else {
+    const double sum = 2.0 * std::atan2(q.z(), q.w());
+    const double diff = 2.0 * std::atan2(q.y(), q.x());
+    e.phi = wrap_pi(0.5 * (sum + diff));
+    e.psi = wrap_pi(0.5 * (sum - diff));
+  }
+  return e;
+}
+
+Eigen::Quaterniond quaternion_from_euler_zxz(const EulerAngles& e) {
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ(), x = Eigen::Vector3d::UnitX();
+  return axis_angle(z, e.phi) * axis_angle(x, e.theta) * axis_angle(z, e.psi);
+}
+
+Eigen::Matrix3d space_to_body_matrix(const EulerAngles& e) {
+  const double cf = std::cos(e.phi), sf = std::sin(e.phi);
+  const double ct = std::cos(e.theta), st = std::sin(e.theta);
+  const double cp = std::cos(e.psi), sp = std::sin(e.psi);
+  Eigen::Matrix3d lambda;                                             // eq. 122
+  lambda << cf * cp - sf * ct * sp, sf * cp + cf * ct * sp, st * sp,  //
+      -cf * sp - sf * ct * cp, -sf * sp + cf * ct * cp, st * cp,      //
+      sf * st, -cf * st, ct;
+  return lambda;
+}
+
+Eigen::Quaterniond axis_angle(const Eigen::Vector3d& axis, double angle) {
+  const double h = 0.5 * angle;
+  const double s = std::sin(h);
+  return Eigen::Quaterniond(std::cos(h), s * axis.x(), s * axis.y(), s * axis.z());
+}
+
+double attitude_distance(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+  // angle of a^-1 b from its quaternion, sign-blind; atan2 keeps small angles accurate
+  const Eigen::Quaterniond d = a.normalized().conjugate() * b.normalized();
+  return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
+}
+
+}  // namespace rigid

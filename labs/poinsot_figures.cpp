@@ -1,0 +1,174 @@
+#include "poinsot_figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "rigid/poinsot.h"
+#include "rigid/render/plot2d.h"
+#include "rigid/render/scene3d.h"
+
+namespace rigid::lab {
+namespace render = rigid::render;
+using Eigen::Vector3d;
+namespace {
+
+std::string title_of(const Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0) {
+  const auto& I = motion.moments();
+  return lab.figure_title(
+      fmt::format("I = ({:.4g}, {:.4g}, {:.4g}) kg m^2, \\omega_0 = ({:g}, {:g}, {:g}) rad/s", I.I1,
+                  I.I2, I.I3, omega0(0), omega0(1), omega0(2)));
+}
+
+// A camera that looks at the ellipsoids from between the axes.
+void frame_camera(render::Scene3D& scene, double size) {
+  scene.camera.eye = size * Vector3d(3.2, 2.3, 2.0);
+  scene.camera.target = Vector3d(0, 0, 0.2 * size);
+  scene.camera.fov_y_deg = 27;
+}
+
+// The energy and momentum ellipsoids and the polhode where they meet (section 4).
+void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
+                     const std::vector<Vector3d>& polhode) {
+  const PoinsotEllipsoids e = poinsot_ellipsoids(motion.moments(), omega0);
+  const double size = std::max(e.energy_semi_axes.maxCoeff(), e.momentum_semi_axes.maxCoeff());
+  render::Scene3D scene;
+  scene.title = title_of(lab, motion, omega0) + ": energy and momentum ellipsoids";
+  frame_camera(scene, size);
+  scene.add_ellipsoid(Vector3d::Zero(), e.energy_semi_axes, Eigen::Matrix3d::Identity(),
+                      {render::kSkyBlue, 0.45f}, "energy ellipsoid \\Sigma I_i\\omega_i^2 = 2T");
+  scene.add_ellipsoid(Vector3d::Zero(), e.momentum_semi_axes, Eigen::Matrix3d::Identity(),
+                      {render::kOrange, 0.35f}, "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
+  scene.add_tube(polhode, 0.012 * size, {render::kVermillion}, "polhode");
+  scene.add_sphere(omega0, 0.03 * size, {render::kBlack}, "\\omega_0");
+  scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
+                 {"\\omega_1", "\\omega_2", "\\omega_3"});
+  scene.save(lab.figure_path("ellipsoids"), lab.figure_width(), lab.figure_height());
+}
+
+// Polhodes on one energy ellipsoid, about the largest and the smallest axis,
+// split by the separatrix through the intermediate axis (section 4.1).
+void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
+                         const std::vector<Vector3d>& polhode) {
+  const PrincipalMoments& I = motion.moments();
+  const double T = motion.energy();
+  const Vector3d moments = I.vector();
+  const double I_min = moments.minCoeff(), I_max = moments.maxCoeff();
+  const Vector3d semi = (2.0 * T * moments.cwiseInverse()).cwiseSqrt();
+  const double size = semi.maxCoeff();
+  render::Scene3D scene;
+  scene.title = title_of(lab, motion, omega0) + ": polhodes on the energy ellipsoid";
+  frame_camera(scene, size);
+  scene.add_ellipsoid(Vector3d::Zero(), semi, Eigen::Matrix3d::Identity(),
+                      {render::kLightGray, 1.0f, 0.15f}, "energy ellipsoid");
+  // Slightly outside the surface so the curves are not buried in it.
+  const auto lift = [](std::vector<Vector3d> curve) {
+    for (auto& p : curve) p *= 1.004;
+    return curve;
+  };
+  const double I_mid = moments.sum() - I_min - I_max;
+  const int family = 7;
+  for (int k = 1; k <= family; ++k) {
+    for (const bool about_largest : {true, false}) {
+      // L^2 evenly between 2T I_mid and the end of each family.
+      const double end = about_largest ? I_max : I_min;
+      const double L2 = 2.0 * T * (I_mid + (end - I_mid) * k / (family + 1.0));
+      const Vector3d w = omega_on_energy_ellipsoid(I, T, L2);
+      for (const double sign : {1.0, -1.0}) {
+        scene.add_tube(lift(rigid::polhode(I, sign * w, 240)), 0.006 * size,
+                       {about_largest ? render::kBlue : render::kBluishGreen},
+                       k == 1 && sign > 0 ? (about_largest ? "polhodes about the largest axis"
+                                                           : "polhodes about the smallest axis")
+                                          : "");
+      }
+    }
+  }
+  bool first = true;
+  for (const auto& curve : separatrices(I, T, 400)) {
+    scene.add_tube(lift(curve), 0.009 * size, {render::kVermillion}, first ? "separatrix" : "");
+    first = false;
+  }
+  scene.add_tube(lift(polhode), 0.011 * size, {render::kBlack}, "this body's polhode");
+  scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.3 * size,
+                 {"\\omega_1", "\\omega_2", "\\omega_3"});
+  scene.save(lab.figure_path("polhodes"), lab.figure_width(), lab.figure_height());
+}
+
+// omega_1, omega_2, omega_3 against t and the phase plot of section 5.1.
+void draw_omega(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
+                const std::vector<FreeBodySample>& samples) {
+  std::vector<double> t, w[3];
+  for (const auto& s : samples) {
+    t.push_back(s.t);
+    for (int i = 0; i < 3; ++i) w[i].push_back(s.omega_body(i));
+  }
+  render::Plot2D plot(1, 2);
+  plot.title = title_of(lab, motion, omega0);
+  render::Panel& left = plot.panel(0, 0);
+  left.title = "angular velocity in body axes";
+  left.x.label = "t (s)";
+  left.y.label = "\\omega_i (rad/s)";
+  for (int i = 0; i < 3; ++i) {
+    left.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = render::palette_color(i);
+  }
+  render::Panel& right = plot.panel(0, 1);
+  right.title = "phase plot";
+  right.x.label = "\\omega_1 (rad/s)";
+  right.y.label = "\\omega_j (rad/s)";
+  right.add_line(w[0], w[1], "\\omega_2 against \\omega_1").color = render::palette_color(1);
+  right.add_line(w[0], w[2], "\\omega_3 against \\omega_1").color = render::palette_color(2);
+  right.add_points({omega0(0), omega0(0)}, {omega0(1), omega0(2)}, "t = 0").color = render::kBlack;
+  right.equal_aspect = true;
+  plot.save(lab.figure_path("omega"), lab.figure_width(), lab.figure_height());
+}
+
+// Each integrator's error against the exact solution, and its energy error.
+void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
+                      const std::vector<MethodTrace>& traces) {
+  render::Plot2D plot(1, 2);
+  plot.title = title_of(lab, motion, omega0) + ": integrators against the exact solution";
+  render::Panel& error = plot.panel(0, 0);
+  error.title = "error in \\omega";
+  error.x.label = "t (s)";
+  error.y = {"|\\omega - \\omega_{exact}| / |\\omega_0|", render::Scale::kLog10};
+  render::Panel& energy = plot.panel(0, 1);
+  energy.title = "energy error";
+  energy.x.label = "t (s)";
+  energy.y = {"|T - T_0| / T_0", render::Scale::kLog10};
+  // Zero errors have no logarithm: show them at a floor below double roundoff.
+  const auto floored = [](std::vector<double> v) {
+    for (double& x : v) x = std::max(x, 1e-17);
+    return v;
+  };
+  render::Dash dashes[] = {render::Dash::kSolid, render::Dash::kDashed, render::Dash::kSolid,
+                           render::Dash::kDashDot, render::Dash::kSolid, render::Dash::kDotted};
+  for (std::size_t k = 0; k < traces.size(); ++k) {
+    const auto& trace = traces[k];
+    const std::vector<double> t(trace.t.begin() + 1, trace.t.end());
+    const std::vector<double> we(trace.omega_error.begin() + 1, trace.omega_error.end());
+    const std::vector<double> ee(trace.energy_error.begin() + 1, trace.energy_error.end());
+    const std::string name = std::string(method_name(trace.method)) + ", " + trace.setting;
+    auto& a = error.add_line(t, floored(we), name);
+    auto& b = energy.add_line(t, floored(ee), name);
+    a.color = b.color = render::palette_color(k);
+    a.dash = b.dash = dashes[k % 6];
+  }
+  error.legend = render::LegendPlace::kBottomRight;
+  energy.legend = render::LegendPlace::kNone;
+  plot.save(lab.figure_path("integrators"), lab.figure_width(), lab.figure_height());
+}
+
+}  // namespace
+
+void draw_poinsot_figures(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
+                          const std::vector<FreeBodySample>& samples,
+                          const std::vector<MethodTrace>& traces) {
+  const std::vector<Vector3d> curve = rigid::polhode(motion.moments(), omega0, 400);
+  draw_ellipsoids(lab, motion, omega0, curve);
+  draw_polhode_family(lab, motion, omega0, curve);
+  draw_omega(lab, motion, omega0, samples);
+  draw_integrators(lab, motion, omega0, traces);
+}
+
+}  // namespace rigid::lab

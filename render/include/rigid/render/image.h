@@ -1,0 +1,37 @@
+// An 8-bit RGB image in memory, rows top to bottom, as every figure is
+// returned before it is written to PNG.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace rigid::render {
+
+/// Pixels of a rendered figure: width*height RGB triplets, first row at the top.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;
+
+  /// Pointer to the three channels of pixel (x, y), y counted from the top.
+  std::uint8_t* at(int x, int y) { return &rgb[3 * (static_cast<std::size_t>(y) * width + x)]; }
+  /// Read-only access to pixel (x, y), y counted from the top.
+  const std::uint8_t* at(int x, int y) const {
+    return &rgb[3 * (static_cast<std::size_t>(y) * width + x)];
+  }
+};
+
+/// Statistics of comparing two images of the same size channel by channel.
+struct ImageDiff {
+  long differing_pixels = 0;  ///< pixels with some channel differing by more than the threshold
+  double differing_fraction = 0;
+  int max_channel_diff = 0;
+};
+
+/// Compares a and b; throws std::invalid_argument if their sizes differ.
+ImageDiff compare_images(const Image& a, const Image& b, int threshold = 16);
+
+/// An image that shows where a and b differ (grey copy of a, differences in red).
+Image difference_image(const Image& a, const Image& b, int threshold = 16);
+
+}  // namespace rigid::render

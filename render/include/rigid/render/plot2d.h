@@ -1,0 +1,142 @@
+// 2D plots from data: a figure of one or more panels (a rows × cols grid),
+// each with linear or log10 axes, nice ticks, axis labels with units, line
+// series, markers, reference lines, shaded bands, annotations and a legend.
+// The plot knows only numbers and strings (text.h markup for labels); a lab
+// hands it series computed elsewhere. Rendering draws antialiased thick lines
+// (triangle strips, 4× MSAA) with no depth buffer and no lighting.
+//
+// Sizes (line widths, marker and font sizes) are given in pixels at the
+// reference 1600×1200 figure and scale with the image, so a figure looks the
+// same from 800×600 to 1600×1200; lines never get thinner than 2 px.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "rigid/render/image.h"
+#include "rigid/render/palette.h"
+
+namespace rigid::render {
+
+/// How an axis maps data to the page.
+enum class Scale { kLinear, kLog10 };
+/// Dash pattern of a line.
+enum class Dash { kSolid, kDashed, kDotted, kDashDot };
+/// Symbol drawn at each data point.
+enum class Marker { kNone, kCircle, kSquare, kTriangle };
+/// Where a legend box goes; kAuto picks the corner covering the least data.
+enum class LegendPlace { kAuto, kTopRight, kTopLeft, kBottomRight, kBottomLeft, kNone };
+
+/// One axis of a panel; min/max left NaN are taken from the data.
+struct Axis {
+  std::string label;  ///< with its unit, e.g. "\\omega_1 (rad/s)"
+  Scale scale = Scale::kLinear;
+  double min = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
+  bool grid = true;  ///< light grid lines at the major ticks
+};
+
+/// A curve y(x) drawn as a line and/or markers.
+struct Series {
+  std::vector<double> x, y;
+  std::string label;  ///< legend entry; empty for none
+  Color color = kAutoColor;
+  double width = 3.5;  ///< line width in reference pixels; 0 draws markers only
+  Dash dash = Dash::kSolid;
+  Marker marker = Marker::kNone;
+  double marker_size = 11;  ///< marker diameter in reference pixels
+};
+
+/// The region between two curves y_lo(x) and y_hi(x), filled translucent.
+struct Band {
+  std::vector<double> x, y_lo, y_hi;
+  std::string label;
+  Color color = kAutoColor;
+  float opacity = 0.22f;
+};
+
+/// A shaded interval across the whole panel: lo <= y <= hi (or lo <= x <= hi if vertical).
+struct Span {
+  double lo = 0, hi = 0;
+  bool vertical = false;
+  std::string label;
+  Color color = kGray;
+  float opacity = 0.15f;
+};
+
+/// A horizontal (y = value) or vertical (x = value) reference line across the panel.
+struct RefLine {
+  double value = 0;
+  bool vertical = false;
+  std::string label;  ///< drawn at the line's end inside the panel, not in the legend
+  Color color = kGray;
+  double width = 2.5;
+  Dash dash = Dash::kDashed;
+};
+
+/// Text at a data point, offset in reference pixels, optionally with an arrow to the point.
+struct Annotation {
+  double x = 0, y = 0;
+  std::string text;
+  double offset_x = 40, offset_y = -40;  ///< text position relative to the point (y down)
+  bool arrow = true;
+  Color color = kTextColor;
+};
+
+/// One panel of a figure: axes and everything drawn in them.
+struct Panel {
+  std::string title;
+  Axis x, y;
+  std::vector<Series> series;
+  std::vector<Band> bands;
+  std::vector<Span> spans;
+  std::vector<RefLine> ref_lines;
+  std::vector<Annotation> annotations;
+  LegendPlace legend = LegendPlace::kAuto;
+  bool equal_aspect = false;  ///< one data unit is as long on x as on y (phase portraits)
+
+  /// Adds a line series and returns it for further settings.
+  Series& add_line(std::vector<double> x, std::vector<double> y, std::string label = {});
+  /// Adds a markers-only series and returns it.
+  Series& add_points(std::vector<double> x, std::vector<double> y, std::string label = {},
+                     Marker marker = Marker::kCircle);
+  /// Adds a band between y_lo(x) and y_hi(x) and returns it.
+  Band& add_band(std::vector<double> x, std::vector<double> y_lo, std::vector<double> y_hi,
+                 std::string label = {});
+  /// Adds a shaded interval lo..hi of y (or of x if vertical) and returns it.
+  Span& add_span(double lo, double hi, bool vertical = false, std::string label = {});
+  /// Adds the line y = value (or x = value if vertical) and returns it.
+  RefLine& add_ref_line(double value, bool vertical = false, std::string label = {});
+  /// Adds text at data point (x, y) and returns it.
+  Annotation& annotate(double x, double y, std::string text);
+};
+
+/// A figure: a title over a rows × cols grid of panels.
+class Plot2D {
+ public:
+  /// A figure with rows × cols empty panels.
+  explicit Plot2D(int rows = 1, int cols = 1);
+
+  /// Panel at (row, col), counted from the top left.
+  Panel& panel(int row = 0, int col = 0);
+  /// Read-only panel at (row, col).
+  const Panel& panel(int row = 0, int col = 0) const;
+
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+
+  /// Figure title over all panels (text.h markup); empty for none.
+  std::string title;
+
+  /// Draws the figure into an image of width × height pixels (makes the GL context on first use).
+  Image render(int width = 1600, int height = 1200) const;
+  /// Renders and writes a PNG atomically (see png.h).
+  void save(const std::string& path, int width = 1600, int height = 1200) const;
+
+ private:
+  int rows_, cols_;
+  std::vector<Panel> panels_;
+};
+
+}  // namespace rigid::render

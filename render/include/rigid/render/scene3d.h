@@ -1,0 +1,138 @@
+// 3D scenes: shapes, tubes, arrows, an axis triad and labels, seen through a
+// look-at camera and lit softly by a key and a fill light (Lambert diffuse,
+// mild Blinn-Phong highlight, hemispheric ambient). Translucent surfaces are
+// drawn after opaque ones, back faces of all before front faces, each pass
+// sorted far to near, which is exact for nested convex shapes such as an
+// energy ellipsoid inside a momentum ellipsoid. The scene knows only
+// geometry: a lab converts its physics into points, directions and sizes.
+// Coordinates are right-handed; the default camera looks at the origin with
+// +z up. Rendering uses a depth buffer and 4× MSAA.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "rigid/render/image.h"
+#include "rigid/render/mesh.h"
+#include "rigid/render/palette.h"
+#include "rigid/render/text.h"
+
+namespace rigid::render {
+
+/// A look-at camera; orthographic when asked, else perspective with a vertical field of view.
+struct Camera {
+  Eigen::Vector3d eye{4.0, 3.0, 2.5};
+  Eigen::Vector3d target{0.0, 0.0, 0.0};
+  Eigen::Vector3d up{0.0, 0.0, 1.0};
+  double fov_y_deg = 30.0;    ///< perspective only
+  bool orthographic = false;
+  double ortho_height = 0.0;  ///< world height seen; 0 matches the perspective view at the target
+  /// Move the eye along its line of sight (or set the orthographic height) so the whole scene
+  /// fits the image with a margin; eye - target then gives only the viewing direction.
+  bool fit = true;
+};
+
+/// Surface appearance; opacity < 1 makes the surface translucent.
+struct Material {
+  Color color = kAutoColor;
+  float opacity = 1.0f;
+  float specular = 0.25f;   ///< strength of the Blinn-Phong highlight
+  float shininess = 48.0f;  ///< Blinn-Phong exponent
+};
+
+/// Text anchored at a 3D point, offset on screen by reference pixels (y down).
+struct Label3D {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  std::string text;
+  Color color = kTextColor;
+  double size = 34;  ///< font size in reference pixels (1600×1200)
+  HAlign halign = HAlign::kCenter;
+  VAlign valign = VAlign::kCenter;
+  double offset_x = 0, offset_y = 0;
+};
+
+/// A scene of shapes, lines and labels rendered to an image.
+class Scene3D {
+ public:
+  Camera camera;
+  std::string title;           ///< drawn at the top (text.h markup)
+  bool show_legend = true;     ///< a legend of labelled objects in the top-right corner
+
+  /// Sphere of a radius about a centre.
+  void add_sphere(const Eigen::Vector3d& center, double radius, Material m = {}, std::string label = {});
+  /// Ellipsoid with semi-axes a (columns of rotation give their directions).
+  void add_ellipsoid(const Eigen::Vector3d& center, const Eigen::Vector3d& semi_axes,
+                     const Eigen::Matrix3d& rotation, Material m = {}, std::string label = {});
+  /// Solid cone from a base circle (centre, radius) to an apex.
+  void add_cone(const Eigen::Vector3d& apex, const Eigen::Vector3d& base_center, double radius,
+                Material m = {}, std::string label = {});
+  /// Capped cylinder of a radius from p0 to p1.
+  void add_cylinder(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, double radius,
+                    Material m = {}, std::string label = {});
+  /// Arrow from `from` to `to`: a shaft of the given radius and a cone head (2.5× radius, ≤ 35% of length).
+  void add_arrow(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double radius,
+                 Material m = {}, std::string label = {});
+  /// Box with half-extents along the columns of rotation.
+  void add_box(const Eigen::Vector3d& center, const Eigen::Vector3d& half_extents,
+               const Eigen::Matrix3d& rotation, Material m = {}, std::string label = {});
+  /// Flat disk of a radius facing along normal.
+  void add_disk(const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double radius,
+                Material m = {}, std::string label = {});
+  /// Torus about the axis normal with major and minor (tube) radii.
+  void add_torus(const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double major_radius,
+                 double minor_radius, Material m = {}, std::string label = {});
+  /// Square plane of half-size facing along normal.
+  void add_plane(const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double half_size,
+                 Material m = {}, std::string label = {});
+  /// Tube of a radius along a polyline (e.g. a polhode on an ellipsoid).
+  void add_tube(std::vector<Eigen::Vector3d> path, double radius, Material m = {}, std::string label = {});
+  /// Arbitrary mesh placed by a transform.
+  void add_mesh(Mesh mesh, const Eigen::Affine3d& transform, Material m = {}, std::string label = {});
+  /// Thick screen-space polyline (width in reference pixels) that is hidden by nearer surfaces.
+  void add_polyline(std::vector<Eigen::Vector3d> points, Color color, double width = 3.5,
+                    std::string label = {});
+  /// Axis triad at origin along the columns of rotation, arrows of a length, tips labelled (e.g. "1","2","3").
+  void add_axes(const Eigen::Vector3d& origin, const Eigen::Matrix3d& rotation, double length,
+                const std::array<std::string, 3>& labels = {"x", "y", "z"}, double radius = 0);
+  /// Text anchored at a 3D point.
+  void add_label(Label3D label);
+  /// Convenience: text at a point, centred.
+  void add_label(const Eigen::Vector3d& position, std::string text, Color color = kTextColor);
+
+  /// Draws the scene at width × height pixels (makes the GL context on first use).
+  Image render(int width = 1600, int height = 1200) const;
+  /// Renders and writes a PNG atomically (see png.h).
+  void save(const std::string& path, int width = 1600, int height = 1200) const;
+
+  /// What the scene holds; public so the renderer (and tests) can read it.
+  enum class Shape { kSphere, kCone, kCylinder, kDisk, kBox, kTorus, kPlane, kTube, kCustom };
+  struct Object {
+    Shape shape = Shape::kSphere;
+    Eigen::Affine3d transform = Eigen::Affine3d::Identity();
+    Material material;
+    std::string label;
+    double torus_minor = 0.25;  ///< minor/major radius ratio for kTorus
+    Mesh mesh;                  ///< kCustom only
+    std::vector<Eigen::Vector3d> path;  ///< kTube only (world coordinates)
+    double tube_radius = 0;             ///< kTube only
+  };
+  struct Polyline {
+    std::vector<Eigen::Vector3d> points;
+    Color color;
+    double width;
+    std::string label;
+  };
+  const std::vector<Object>& objects() const { return objects_; }
+
+ private:
+  Material resolve(Material m);
+  std::vector<Object> objects_;
+  std::vector<Polyline> polylines_;
+  std::vector<Label3D> labels_;
+  std::size_t auto_colors_ = 0;
+};
+
+}  // namespace rigid::render

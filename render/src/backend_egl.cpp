@@ -1,0 +1,79 @@
+// Internal: the EGL backend on EGL_MESA_platform_surfaceless: no window, no
+// display server, no pbuffer; the context is made current with no surface.
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <cstring>
+
+#include "backends.h"
+
+namespace rigid::render::detail {
+
+namespace {
+
+GlProc egl_proc(const char* name) { return reinterpret_cast<GlProc>(eglGetProcAddress(name)); }
+
+bool has_extension(const char* list, const char* name) {
+  if (list == nullptr) return false;
+  const std::size_t n = std::strlen(name);
+  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
+    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+  return false;
+}
+
+}  // namespace
+
+GlProcLoader make_egl_context(std::string& error) {
+  const char* client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!has_extension(client_ext, "EGL_MESA_platform_surfaceless")) {
+    error = "EGL_MESA_platform_surfaceless is not supported";
+    return nullptr;
+  }
+  auto get_platform_display =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (get_platform_display == nullptr) {
+    error = "eglGetPlatformDisplayEXT is missing";
+    return nullptr;
+  }
+  EGLDisplay dpy = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLint major = 0, minor = 0;
+  if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &major, &minor)) {
+    error = "eglInitialize failed on the surfaceless platform";
+    return nullptr;
+  }
+  if (!eglBindAPI(EGL_OPENGL_API)) {
+    error = "eglBindAPI(EGL_OPENGL_API) failed";
+    return nullptr;
+  }
+  // Any config that renders desktop GL; no surface type is needed.
+  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0,
+                                   EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint count = 0;
+  if (!eglChooseConfig(dpy, config_attribs, &config, 1, &count) || count < 1) config = nullptr;
+  if (config == nullptr &&
+      !has_extension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) {
+    error = "no EGL config renders OpenGL";
+    return nullptr;
+  }
+  const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                    3,
+                                    EGL_CONTEXT_MINOR_VERSION,
+                                    3,
+                                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                    EGL_NONE};
+  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, context_attribs);
+  if (ctx == EGL_NO_CONTEXT) {
+    error = "eglCreateContext failed for a GL 3.3 core profile";
+    return nullptr;
+  }
+  if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
+    eglDestroyContext(dpy, ctx);
+    error = "eglMakeCurrent without a surface failed";
+    return nullptr;
+  }
+  return &egl_proc;
+}
+
+}  // namespace rigid::render::detail

@@ -1,0 +1,17 @@
+// Internal: the two ways to get a GL context. Each returns the backend's
+// GetProcAddress once its context is current, or nullptr with `error` set.
+#pragma once
+
+#include <string>
+
+namespace rigid::render::detail {
+
+using GlProc = void (*)();
+using GlProcLoader = GlProc (*)(const char*);
+
+/// Makes an OSMesa GL 3.3+ core context current (tiny dummy buffer; drawing goes to FBOs).
+GlProcLoader make_osmesa_context(std::string& error);
+/// Makes an EGL surfaceless GL 3.3+ core context current (no surface at all).
+GlProcLoader make_egl_context(std::string& error);
+
+}  // namespace rigid::render::detail

@@ -1,0 +1,652 @@
+// 3D scenes: object placement, tessellation by on-screen size, shading,
+// translucency order, and the text overlay.
+#include "rigid/render/scene3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+#include "gl.h"
+#include "painter.h"
+#include "rigid/render/png.h"
+#include "target.h"
+
+namespace rigid::render {
+
+using Eigen::Affine3d;
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A rotation whose z column is the unit vector d.
+Matrix3d frame_z(const Vector3d& d) {
+  const Vector3d z = d.normalized();
+  const Vector3d x = z.unitOrthogonal();
+  Matrix3d r;
+  r.col(0) = x;
+  r.col(1) = z.cross(x);
+  r.col(2) = z;
+  return r;
+}
+
+Affine3d place(const Vector3d& t, const Matrix3d& r, const Vector3d& scale) {
+  Affine3d a = Affine3d::Identity();
+  a.linear() = r * scale.asDiagonal();
+  a.translation() = t;
+  return a;
+}
+
+void check_finite(const Vector3d& v, const char* what) {
+  if (!v.allFinite()) throw std::invalid_argument(std::string("Scene3D: ") + what + " is not finite");
+}
+
+// ---- GPU side --------------------------------------------------------------
+
+const char* kMeshVertex = R"(#version 330 core
+in vec3 a_pos;
+in vec3 a_normal;
+uniform mat4 u_mvp;
+uniform mat4 u_mv;
+uniform mat3 u_nmat;
+out vec3 v_n;
+out vec3 v_p;
+void main() {
+  gl_Position = u_mvp * vec4(a_pos, 1.0);
+  v_p = (u_mv * vec4(a_pos, 1.0)).xyz;
+  v_n = u_nmat * a_normal;
+}
+)";
+
+// Soft shading in view space: hemispheric ambient (sky above, ground below),
+// Lambert from a key light (upper left, in front) and a weaker fill (right),
+// and a mild Blinn-Phong highlight from the key. Back faces are lit as their
+// own side so open surfaces and the insides of translucent shells look right.
+const char* kMeshFragment = R"(#version 330 core
+in vec3 v_n;
+in vec3 v_p;
+uniform vec4 u_color;
+uniform float u_spec;
+uniform float u_shininess;
+uniform int u_ortho;
+out vec4 frag;
+void main() {
+  vec3 n = normalize(v_n);
+  if (!gl_FrontFacing) n = -n;
+  vec3 v = u_ortho == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-v_p);
+  const vec3 key = normalize(vec3(-0.45, 0.65, 0.62));
+  const vec3 fill = normalize(vec3(0.75, -0.15, 0.45));
+  float hemi = 0.5 + 0.5 * n.y;
+  float ambient = mix(0.30, 0.46, hemi);
+  float diffuse = 0.55 * max(dot(n, key), 0.0) + 0.20 * max(dot(n, fill), 0.0);
+  float spec = u_spec * pow(max(dot(n, normalize(key + v)), 0.0), u_shininess);
+  vec3 c = u_color.rgb * (ambient + diffuse) + vec3(spec);
+  frag = vec4(min(c, vec3(1.0)), u_color.a);
+}
+)";
+
+struct GpuMesh {
+  GLuint vao = 0, vbo = 0, ibo = 0;
+  GLsizei count = 0;
+};
+
+GpuMesh upload(const Mesh& m) {
+  GpuMesh g;
+  std::vector<float> data;
+  data.reserve(m.positions.size() * 6);
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    data.insert(data.end(), {m.positions[i].x(), m.positions[i].y(), m.positions[i].z()});
+    data.insert(data.end(), {m.normals[i].x(), m.normals[i].y(), m.normals[i].z()});
+  }
+  auto& gl = detail::gl;
+  gl.GenVertexArrays(1, &g.vao);
+  gl.BindVertexArray(g.vao);
+  gl.GenBuffers(1, &g.vbo);
+  gl.BindBuffer(GL_ARRAY_BUFFER, g.vbo);
+  gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+                GL_STATIC_DRAW);
+  gl.GenBuffers(1, &g.ibo);
+  gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo);
+  gl.BufferData(GL_ELEMENT_ARRAY_BUFFER,
+                static_cast<GLsizeiptr>(m.indices.size() * sizeof(std::uint32_t)), m.indices.data(),
+                GL_STATIC_DRAW);
+  gl.EnableVertexAttribArray(0);
+  gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+  gl.EnableVertexAttribArray(1);
+  gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                         reinterpret_cast<const void*>(3 * sizeof(float)));
+  gl.BindVertexArray(0);
+  g.count = static_cast<GLsizei>(m.indices.size());
+  return g;
+}
+
+void release(GpuMesh& g) {
+  auto& gl = detail::gl;
+  GLuint bufs[] = {g.vbo, g.ibo};
+  gl.DeleteBuffers(2, bufs);
+  gl.DeleteVertexArrays(1, &g.vao);
+  g = GpuMesh{};
+}
+
+struct MeshProgram {
+  GLuint program = 0;
+  GLint mvp = -1, mv = -1, nmat = -1, color = -1, spec = -1, shininess = -1, ortho = -1;
+};
+
+MeshProgram& mesh_program() {
+  static MeshProgram* p = [] {
+    auto* m = new MeshProgram;
+    const char* attrs[] = {"a_pos", "a_normal"};
+    m->program = detail::build_program(kMeshVertex, kMeshFragment, attrs, 2);
+    auto& gl = detail::gl;
+    m->mvp = gl.GetUniformLocation(m->program, "u_mvp");
+    m->mv = gl.GetUniformLocation(m->program, "u_mv");
+    m->nmat = gl.GetUniformLocation(m->program, "u_nmat");
+    m->color = gl.GetUniformLocation(m->program, "u_color");
+    m->spec = gl.GetUniformLocation(m->program, "u_spec");
+    m->shininess = gl.GetUniformLocation(m->program, "u_shininess");
+    m->ortho = gl.GetUniformLocation(m->program, "u_ortho");
+    return m;
+  }();
+  return *p;
+}
+
+// Unit meshes, made once per process per (shape, segments, torus ratio).
+const GpuMesh& unit_mesh(Scene3D::Shape shape, int segments, double torus_minor) {
+  using Key = std::tuple<int, int, int>;
+  static std::map<Key, GpuMesh> cache;
+  const int ratio = shape == Scene3D::Shape::kTorus ? static_cast<int>(std::lround(torus_minor * 1000)) : 0;
+  const Key key{static_cast<int>(shape), segments, ratio};
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  Mesh m;
+  switch (shape) {
+    case Scene3D::Shape::kSphere: m = make_sphere(segments); break;
+    case Scene3D::Shape::kCone: m = make_cone(segments); break;
+    case Scene3D::Shape::kCylinder: m = make_cylinder(segments); break;
+    case Scene3D::Shape::kDisk: m = make_disk(segments); break;
+    case Scene3D::Shape::kBox: m = make_box(); break;
+    case Scene3D::Shape::kTorus:
+      m = make_torus(ratio / 1000.0, segments, std::max(8, static_cast<int>(segments * ratio / 1000.0) + 8));
+      break;
+    case Scene3D::Shape::kPlane: m = make_plane(); break;
+    case Scene3D::Shape::kTube:
+    case Scene3D::Shape::kCustom: break;
+  }
+  return cache.emplace(key, upload(m)).first->second;
+}
+
+// View and projection for a camera at an aspect ratio, with depth range fitted to the scene.
+struct View {
+  Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
+  Eigen::Matrix4d proj = Eigen::Matrix4d::Identity();
+  double focal_px = 1;  // pixels per unit length at unit depth (perspective) or per unit (ortho)
+  bool ortho = false;
+  int width = 1, height = 1;
+
+  // Screen position in logical pixels (y down) and NDC depth; w <= 0 means behind the camera.
+  Eigen::Vector4d project(const Vector3d& p) const {
+    const Eigen::Vector4d c = proj * view * p.homogeneous();
+    if (c.w() <= 1e-12) return {0, 0, 0, -1};
+    const Eigen::Vector3d n = c.head<3>() / c.w();
+    return {(n.x() + 1) * 0.5 * width, (1 - n.y()) * 0.5 * height, n.z(), 1};
+  }
+  double depth(const Vector3d& p) const { return -(view * p.homogeneous()).z(); }
+  // Pixels covered by a length r at point p.
+  double pixels(double r, const Vector3d& p) const {
+    return ortho ? r * focal_px : r * focal_px / std::max(1e-6, depth(p));
+  }
+};
+
+View make_view(const Camera& cam, int width, int height, const Vector3d& center, double radius) {
+  View v;
+  v.width = width;
+  v.height = height;
+  v.ortho = cam.orthographic;
+  const Vector3d f = (cam.target - cam.eye).normalized();
+  Vector3d up = cam.up;
+  if (std::abs(f.dot(up.normalized())) > 0.999) up = f.unitOrthogonal();
+  const Vector3d s = f.cross(up).normalized();
+  const Vector3d u = s.cross(f);
+  v.view.block<1, 3>(0, 0) = s.transpose();
+  v.view.block<1, 3>(1, 0) = u.transpose();
+  v.view.block<1, 3>(2, 0) = -f.transpose();
+  v.view(0, 3) = -s.dot(cam.eye);
+  v.view(1, 3) = -u.dot(cam.eye);
+  v.view(2, 3) = f.dot(cam.eye);
+  // Depth range around the scene's bounding sphere.
+  const double dist = (center - cam.eye).dot(f);
+  double zfar = std::max(dist + 1.05 * radius, 1e-3);
+  double znear = std::max(dist - 1.05 * radius, zfar * 1e-4);
+  const double aspect = double(width) / height;
+  const double tan_half = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0);
+  v.proj.setZero();
+  if (cam.orthographic) {
+    const double h = cam.ortho_height > 0 ? cam.ortho_height : 2 * (cam.target - cam.eye).norm() * tan_half;
+    znear = dist - 1.05 * radius;
+    v.proj(0, 0) = 2 / (h * aspect);
+    v.proj(1, 1) = 2 / h;
+    v.proj(2, 2) = -2 / (zfar - znear);
+    v.proj(2, 3) = -(zfar + znear) / (zfar - znear);
+    v.proj(3, 3) = 1;
+    v.focal_px = height / h;
+  } else {
+    v.proj(0, 0) = 1 / (tan_half * aspect);
+    v.proj(1, 1) = 1 / tan_half;
+    v.proj(2, 2) = -(zfar + znear) / (zfar - znear);
+    v.proj(2, 3) = -2 * zfar * znear / (zfar - znear);
+    v.proj(3, 2) = -1;
+    v.focal_px = 0.5 * height / tan_half;
+  }
+  return v;
+}
+
+// Bounding sphere of an object in world space (centre, radius).
+std::pair<Vector3d, double> bounds(const Scene3D::Object& o) {
+  using S = Scene3D::Shape;
+  const Matrix3d l = o.transform.linear();
+  const double sx = l.col(0).norm(), sy = l.col(1).norm(), sz = l.col(2).norm();
+  const Vector3d t = o.transform.translation();
+  switch (o.shape) {
+    case S::kSphere: return {t, std::max({sx, sy, sz})};
+    case S::kBox: return {t, std::sqrt(sx * sx + sy * sy + sz * sz)};
+    case S::kCone:
+    case S::kCylinder: {
+      const Vector3d c = t + 0.5 * l.col(2);
+      return {c, std::hypot(std::max(sx, sy), 0.5 * sz)};
+    }
+    case S::kDisk:
+    case S::kPlane: return {t, std::max(sx, sy) * (o.shape == S::kPlane ? std::sqrt(2.0) : 1.0)};
+    case S::kTorus: return {t, std::max(sx, sy) * (1 + o.torus_minor)};
+    case S::kTube:
+    case S::kCustom: {
+      Eigen::AlignedBox3d box;
+      if (o.shape == S::kTube)
+        for (const Vector3d& p : o.path) box.extend(p);
+      else
+        for (const auto& p : o.mesh.positions) box.extend(o.transform * p.cast<double>());
+      if (box.isEmpty()) return {t, 0};
+      return {box.center(), 0.5 * box.diagonal().norm() + o.tube_radius};
+    }
+  }
+  return {t, 1};
+}
+
+// The camera moved along its line of sight so every bounding sphere fits in
+// the central `margin` fraction of the image (top trimmed by `top_fraction` for the title).
+Camera fitted(Camera cam, const std::vector<std::pair<Vector3d, double>>& spheres, double aspect,
+              double top_fraction) {
+  if (!cam.fit || spheres.empty()) return cam;
+  Vector3d f = cam.target - cam.eye;
+  if (!(f.norm() > 0)) return cam;
+  f.normalize();
+  Vector3d up = cam.up;
+  if (std::abs(f.dot(up.normalized())) > 0.999) up = f.unitOrthogonal();
+  const Vector3d s = f.cross(up).normalized(), u = s.cross(f);
+  const double margin = 0.90;
+  const double tan_y = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0) * margin;
+  const double tan_x = tan_y * aspect;
+  // The title takes the top of the image: shift the usable window down.
+  const double top = tan_y * (1 - 2 * top_fraction), bottom = -tan_y;
+  double d = 0, ortho_half = 0;
+  for (const auto& [c, r] : spheres) {
+    const Vector3d q = c - cam.target;
+    const double x = q.dot(s), y = q.dot(u), z = q.dot(f);
+    if (cam.orthographic) {
+      ortho_half = std::max({ortho_half, (std::abs(x) + r) / (aspect * margin), (std::abs(y) + r) / margin});
+      continue;
+    }
+    // Need |x| + r sec <= tan (d + z), likewise for y about the shifted centre.
+    d = std::max(d, (std::abs(x) + r * std::sqrt(1 + tan_x * tan_x)) / tan_x - z);
+    const double ty_hi = top, ty_lo = bottom;
+    d = std::max(d, (y + r * std::sqrt(1 + ty_hi * ty_hi)) / ty_hi - z);
+    d = std::max(d, (-y + r * std::sqrt(1 + ty_lo * ty_lo)) / -ty_lo - z);
+  }
+  if (cam.orthographic) {
+    cam.ortho_height = 2 * ortho_half / (1 - top_fraction);
+  } else if (d > 0) {
+    cam.eye = cam.target - d * f;
+  }
+  return cam;
+}
+
+}  // namespace
+
+// ---- Scene building -----------------------------------------------------------
+
+namespace {
+
+Scene3D::Object make_object(Scene3D::Shape shape, const Affine3d& transform, const Material& m,
+                            std::string label) {
+  Scene3D::Object o;
+  o.shape = shape;
+  o.transform = transform;
+  o.material = m;
+  o.label = std::move(label);
+  return o;
+}
+
+}  // namespace
+
+Material Scene3D::resolve(Material m) {
+  if (m.color.a < 0) m.color = palette_color(auto_colors_++);
+  m.opacity = std::clamp(m.opacity, 0.0f, 1.0f);
+  return m;
+}
+
+void Scene3D::add_sphere(const Vector3d& center, double radius, Material m, std::string label) {
+  add_ellipsoid(center, Vector3d::Constant(radius), Matrix3d::Identity(), m, std::move(label));
+}
+
+void Scene3D::add_ellipsoid(const Vector3d& center, const Vector3d& semi_axes, const Matrix3d& rotation,
+                            Material m, std::string label) {
+  check_finite(center, "ellipsoid centre");
+  if (!(semi_axes.minCoeff() > 0)) throw std::invalid_argument("Scene3D: ellipsoid semi-axes must be > 0");
+  objects_.push_back(make_object(Shape::kSphere, place(center, rotation, semi_axes), resolve(m), std::move(label)));
+}
+
+void Scene3D::add_cone(const Vector3d& apex, const Vector3d& base_center, double radius, Material m,
+                       std::string label) {
+  const Vector3d axis = apex - base_center;
+  if (!(axis.norm() > 0) || !(radius > 0)) throw std::invalid_argument("Scene3D: cone needs height and radius > 0");
+  objects_.push_back(make_object(Shape::kCone, place(base_center, frame_z(axis), {radius, radius, axis.norm()}),
+                      resolve(m), std::move(label)));
+}
+
+void Scene3D::add_cylinder(const Vector3d& p0, const Vector3d& p1, double radius, Material m,
+                           std::string label) {
+  const Vector3d axis = p1 - p0;
+  if (!(axis.norm() > 0) || !(radius > 0))
+    throw std::invalid_argument("Scene3D: cylinder needs length and radius > 0");
+  objects_.push_back(make_object(Shape::kCylinder, place(p0, frame_z(axis), {radius, radius, axis.norm()}),
+                      resolve(m), std::move(label)));
+}
+
+void Scene3D::add_arrow(const Vector3d& from, const Vector3d& to, double radius, Material m,
+                        std::string label) {
+  const Vector3d d = to - from;
+  const double len = d.norm();
+  if (!(len > 0) || !(radius > 0)) throw std::invalid_argument("Scene3D: arrow needs length and radius > 0");
+  m = resolve(m);
+  const double head = std::min(0.35 * len, 7.0 * radius);
+  const double head_r = std::min(2.6 * radius, 0.5 * head);
+  const Vector3d base = to - d / len * head;
+  add_cylinder(from, base, radius, m, std::move(label));
+  add_cone(to, base, std::max(head_r, radius * 1.5), m);
+}
+
+void Scene3D::add_box(const Vector3d& center, const Vector3d& half_extents, const Matrix3d& rotation,
+                      Material m, std::string label) {
+  if (!(half_extents.minCoeff() > 0)) throw std::invalid_argument("Scene3D: box half-extents must be > 0");
+  objects_.push_back(make_object(Shape::kBox, place(center, rotation, half_extents), resolve(m), std::move(label)));
+}
+
+void Scene3D::add_disk(const Vector3d& center, const Vector3d& normal, double radius, Material m,
+                       std::string label) {
+  if (!(normal.norm() > 0) || !(radius > 0)) throw std::invalid_argument("Scene3D: disk needs normal and radius > 0");
+  objects_.push_back(make_object(Shape::kDisk, place(center, frame_z(normal), {radius, radius, radius}), resolve(m),
+                      std::move(label)));
+}
+
+void Scene3D::add_torus(const Vector3d& center, const Vector3d& normal, double major_radius,
+                        double minor_radius, Material m, std::string label) {
+  if (!(normal.norm() > 0) || !(major_radius > 0) || !(minor_radius > 0) || minor_radius >= major_radius)
+    throw std::invalid_argument("Scene3D: torus needs 0 < minor radius < major radius");
+  Object o = make_object(Shape::kTorus, place(center, frame_z(normal), Vector3d::Constant(major_radius)), resolve(m),
+           std::move(label));
+  o.torus_minor = minor_radius / major_radius;
+  objects_.push_back(std::move(o));
+}
+
+void Scene3D::add_plane(const Vector3d& center, const Vector3d& normal, double half_size, Material m,
+                        std::string label) {
+  if (!(normal.norm() > 0) || !(half_size > 0)) throw std::invalid_argument("Scene3D: plane needs normal and size > 0");
+  objects_.push_back(make_object(Shape::kPlane, place(center, frame_z(normal), Vector3d::Constant(half_size)),
+                      resolve(m), std::move(label)));
+}
+
+void Scene3D::add_tube(std::vector<Vector3d> path, double radius, Material m, std::string label) {
+  if (!(radius > 0)) throw std::invalid_argument("Scene3D: tube radius must be > 0");
+  Object o = make_object(Shape::kTube, Affine3d::Identity(), resolve(m), std::move(label));
+  o.path = std::move(path);
+  o.tube_radius = radius;
+  objects_.push_back(std::move(o));
+}
+
+void Scene3D::add_mesh(Mesh mesh, const Affine3d& transform, Material m, std::string label) {
+  Object o = make_object(Shape::kCustom, transform, resolve(m), std::move(label));
+  o.mesh = std::move(mesh);
+  objects_.push_back(std::move(o));
+}
+
+void Scene3D::add_polyline(std::vector<Vector3d> points, Color color, double width, std::string label) {
+  if (color.a < 0) color = palette_color(auto_colors_++);
+  polylines_.push_back({std::move(points), color, width, std::move(label)});
+}
+
+void Scene3D::add_axes(const Vector3d& origin, const Matrix3d& rotation, double length,
+                       const std::array<std::string, 3>& labels, double radius) {
+  if (!(length > 0)) throw std::invalid_argument("Scene3D: axis length must be > 0");
+  const double r = radius > 0 ? radius : 0.012 * length;
+  Material m;
+  m.color = rgb8(80, 80, 80);
+  m.specular = 0.15f;
+  for (int k = 0; k < 3; ++k) {
+    const Vector3d d = rotation.col(k).normalized();
+    add_arrow(origin, origin + length * d, r, m);
+    Label3D l;
+    l.position = origin + (length + 6 * r) * d;
+    l.text = labels[k];
+    l.size = 38;
+    labels_.push_back(l);
+  }
+}
+
+void Scene3D::add_label(Label3D label) { labels_.push_back(std::move(label)); }
+
+void Scene3D::add_label(const Vector3d& position, std::string text, Color color) {
+  Label3D l;
+  l.position = position;
+  l.text = std::move(text);
+  l.color = color;
+  labels_.push_back(std::move(l));
+}
+
+void Scene3D::save(const std::string& path, int width, int height) const {
+  write_png(render(width, height), path);
+}
+
+// ---- Rendering -------------------------------------------------------------------
+
+Image Scene3D::render(int width, int height) const {
+  detail::Target& tgt = detail::target();
+  tgt.begin(width, height, true, kWhite);
+  auto& gl = detail::gl;
+
+  // Scene bounds fix the depth range.
+  Eigen::AlignedBox3d box;
+  for (const Object& o : objects_) {
+    const auto [c, r] = bounds(o);
+    box.extend(c - Vector3d::Constant(r));
+    box.extend(c + Vector3d::Constant(r));
+  }
+  for (const Polyline& pl : polylines_)
+    for (const Vector3d& p : pl.points) box.extend(p);
+  for (const Label3D& l : labels_) box.extend(l.position);
+  if (box.isEmpty()) box.extend(camera.target);
+  std::vector<std::pair<Vector3d, double>> spheres;
+  for (const Object& o : objects_) spheres.push_back(bounds(o));
+  for (const Polyline& pl : polylines_)
+    for (const Vector3d& q : pl.points) spheres.emplace_back(q, 0.0);
+  // Labels need room for their text: about 4% of the scene's size.
+  for (const Label3D& l : labels_) spheres.emplace_back(l.position, 0.04 * box.diagonal().norm());
+  const double title_fraction = title.empty() ? 0.0 : 0.07;
+  const Camera cam = fitted(camera, spheres, double(width) / height, title_fraction);
+  const View view = make_view(cam, width, height, box.center(), 0.5 * box.diagonal().norm() + 1e-9);
+  const double geo = std::min(width / 1600.0, height / 1200.0);  // reference-pixel scale
+  const double font = std::pow(geo, 0.7);
+
+  MeshProgram& prog = mesh_program();
+  gl.UseProgram(prog.program);
+  gl.Uniform1i(prog.ortho, view.ortho ? 1 : 0);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
+
+  // Tubes and custom meshes are uploaded for this render only.
+  std::vector<GpuMesh> temporary;
+  auto draw = [&](const Object& o) {
+    const Affine3d& t = o.transform;
+    const auto [c, r] = bounds(o);
+    const GpuMesh* g = nullptr;
+    if (o.shape == Shape::kTube || o.shape == Shape::kCustom) {
+      if (o.shape == Shape::kTube)
+        temporary.push_back(upload(make_tube(o.path, o.tube_radius,
+                                             std::min(48, segments_for_radius(view.pixels(o.tube_radius, c))))));
+      else
+        temporary.push_back(upload(o.mesh));
+      g = &temporary.back();
+    } else {
+      // Segments from the on-screen radius of the object's round cross-section.
+      const Matrix3d l = t.linear();
+      const double round_r = o.shape == Shape::kSphere ? std::max({l.col(0).norm(), l.col(1).norm(), l.col(2).norm()})
+                                                       : std::max(l.col(0).norm(), l.col(1).norm());
+      g = &unit_mesh(o.shape, segments_for_radius(view.pixels(round_r, c)), o.torus_minor);
+    }
+    const Eigen::Matrix4d mv = view.view * t.matrix();
+    const Eigen::Matrix4f mvp = (view.proj * mv).cast<float>();
+    const Eigen::Matrix4f mvf = mv.cast<float>();
+    const Eigen::Matrix3f nmat = mv.block<3, 3>(0, 0).inverse().transpose().cast<float>();
+    gl.UniformMatrix4fv(prog.mvp, 1, GL_FALSE, mvp.data());
+    gl.UniformMatrix4fv(prog.mv, 1, GL_FALSE, mvf.data());
+    gl.UniformMatrix3fv(prog.nmat, 1, GL_FALSE, nmat.data());
+    const Material& m = o.material;
+    gl.Uniform4f(prog.color, m.color.r, m.color.g, m.color.b, m.opacity);
+    gl.Uniform1f(prog.spec, m.specular);
+    gl.Uniform1f(prog.shininess, m.shininess);
+    gl.BindVertexArray(g->vao);
+    gl.DrawElements(GL_TRIANGLES, g->count, GL_UNSIGNED_INT, nullptr);
+  };
+
+  // 1. Opaque surfaces, depth written.
+  gl.Disable(GL_BLEND);
+  gl.Disable(GL_CULL_FACE);
+  gl.DepthMask(GL_TRUE);
+  std::vector<const Object*> translucent;
+  for (const Object& o : objects_) {
+    if (o.material.opacity < 1.0f) translucent.push_back(&o);
+    else draw(o);
+  }
+
+  // 2. Screen-space polylines, hidden by nearer opaque surfaces (nudged forward to avoid z-fighting).
+  detail::Painter& p = detail::painter();
+  p.begin(width, height);
+  p.depth_test(true);
+  for (const Polyline& pl : polylines_) {
+    std::vector<detail::P3> pts;
+    auto emit = [&] {
+      if (pts.size() >= 2) p.polyline(pts, std::max(2.0, pl.width * geo), pl.color);
+      pts.clear();
+    };
+    for (const Vector3d& q : pl.points) {
+      const Eigen::Vector4d s = view.project(q);
+      if (s.w() < 0) {
+        emit();
+        continue;
+      }
+      pts.push_back({s.x(), s.y(), s.z() - 2e-4});
+    }
+    emit();
+  }
+  p.flush();
+
+  // 3. Translucent surfaces without depth writes: all back faces far to near,
+  //    then all front faces far to near. For nested convex shells this gives
+  //    outer-back, inner-back, inner-front, outer-front: the exact order.
+  gl.UseProgram(prog.program);
+  gl.Enable(GL_BLEND);
+  gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  gl.DepthMask(GL_FALSE);
+  gl.Enable(GL_CULL_FACE);
+  auto is_open = [](const Object* o) { return o->shape == Shape::kDisk || o->shape == Shape::kPlane; };
+  auto far_key = [&](const Object* o) { const auto [c, r] = bounds(*o); return view.depth(c) + r; };
+  auto near_key = [&](const Object* o) { const auto [c, r] = bounds(*o); return view.depth(c) - r; };
+  std::vector<const Object*> order = translucent;
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return far_key(a) > far_key(b); });
+  gl.CullFace(GL_FRONT);
+  for (const Object* o : order)
+    if (!is_open(o)) draw(*o);
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return near_key(a) > near_key(b); });
+  for (const Object* o : order) {
+    // Open surfaces have no back to draw first: both sides go in this pass.
+    if (is_open(o)) gl.Disable(GL_CULL_FACE);
+    else gl.CullFace(GL_BACK);
+    draw(*o);
+    gl.Enable(GL_CULL_FACE);
+  }
+  gl.Disable(GL_CULL_FACE);
+  gl.DepthMask(GL_TRUE);
+  gl.Disable(GL_DEPTH_TEST);
+  gl.BindVertexArray(0);
+  for (GpuMesh& g : temporary) release(g);
+
+  // 4. Text overlay: labels at projected points, title, legend.
+  p.begin(width, height);
+  for (const Label3D& l : labels_) {
+    const Eigen::Vector4d s = view.project(l.position);
+    if (s.w() < 0) continue;
+    p.text(l.text, s.x() + l.offset_x * geo, s.y() + l.offset_y * geo, l.size * font, l.color, l.halign,
+           l.valign);
+  }
+  const double pad = 16 * font;
+  if (!title.empty()) {
+    double size = 40 * font;
+    const double w = measure_text(title, size).width;
+    if (w > width - 2 * pad) size *= (width - 2 * pad) / w;
+    p.text(title, 0.5 * width, pad, size, kTextColor, HAlign::kCenter, VAlign::kTop);
+  }
+  struct Entry {
+    std::string label;
+    Color color;
+    bool line;
+  };
+  std::vector<Entry> entries;
+  for (const Object& o : objects_)
+    if (!o.label.empty()) {
+      // Translucent swatches show the colour as it looks over white.
+      const float a = o.material.opacity;
+      const Color c = o.material.color;
+      entries.push_back({o.label, {c.r * a + (1 - a), c.g * a + (1 - a), c.b * a + (1 - a), 1}, false});
+    }
+  for (const Polyline& pl : polylines_)
+    if (!pl.label.empty()) entries.push_back({pl.label, pl.color, true});
+  if (show_legend && !entries.empty()) {
+    const double size = 28 * font, sw = 40 * font;
+    double tw = 0, rh = 0;
+    for (const Entry& e : entries) {
+      const TextExtent m = measure_text(e.label, size);
+      tw = std::max(tw, m.width);
+      rh = std::max(rh, m.height());
+    }
+    rh += 0.4 * pad;
+    const double top = title.empty() ? pad : pad + measure_text(title, 40 * font).height() + pad;
+    const double x1 = width - pad, x0 = x1 - (pad + sw + 0.6 * pad + tw + pad);
+    const double y0 = top, y1 = y0 + 2 * 0.8 * pad + rh * entries.size();
+    p.rect(x0, y0, x1, y1, kWhite.with_alpha(0.88f));
+    p.rect_outline(x0, y0, x1, y1, std::max(1.0, 1.2 * geo), rgb8(190, 190, 190));
+    double y = y0 + 0.8 * pad + 0.5 * rh;
+    for (const Entry& e : entries) {
+      if (e.line) p.polyline({{x0 + pad, y, 0}, {x0 + pad + sw, y, 0}}, std::max(2.0, 4 * geo), e.color);
+      else p.rect(x0 + pad, y - 0.3 * rh, x0 + pad + sw, y + 0.3 * rh, e.color);
+      p.text(e.label, x0 + pad + sw + 0.6 * pad, y, size, kTextColor, HAlign::kLeft, VAlign::kCenter);
+      y += rh;
+    }
+  }
+  p.flush();
+  return tgt.finish();
+}
+
+}  // namespace rigid::render

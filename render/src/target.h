@@ -1,0 +1,32 @@
+// Internal: the framebuffer a figure is drawn into. With MSAA it is a
+// multisampled FBO resolved by glBlitFramebuffer; without, a 2×-size FBO
+// filtered down (supersampling). Reused between figures of the same size.
+#pragma once
+
+#include "gl.h"
+#include "rigid/render/image.h"
+#include "rigid/render/palette.h"
+
+namespace rigid::render::detail {
+
+class Target {
+ public:
+  /// Makes the context if needed, binds a width × height drawing buffer (with depth if asked) and clears it.
+  void begin(int width, int height, bool depth, Color clear);
+  /// Resolves the samples and reads the image back (rows top to bottom).
+  Image finish();
+  /// Physical pixels per logical pixel (2 with supersampling, else 1).
+  int scale() const { return scale_; }
+
+ private:
+  void release();
+  int width_ = 0, height_ = 0, scale_ = 1, samples_ = 0;
+  bool depth_ = false;
+  GLuint draw_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0;
+  GLuint resolve_fbo_ = 0, resolve_rb_ = 0;
+};
+
+/// The process's drawing target (valid after context()).
+Target& target();
+
+}  // namespace rigid::render::detail

@@ -1,0 +1,48 @@
+// Catch2 runner for render_test. Run as `render_test --render-child FILE` it
+// instead draws the reference plot to FILE and exits: the GL context is one
+// per process, so tests that need another backend or thread count use a child.
+#define CATCH_CONFIG_RUNNER
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <stdexcept>
+
+#include "render_fixtures.h"
+#include "rigid/render/context.h"
+#include "rigid/render/png.h"
+
+namespace rigid::render::test {
+
+std::string self_path() {
+  char buf[4096];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) throw std::runtime_error("cannot find /proc/self/exe");
+  buf[n] = '\0';
+  return buf;
+}
+
+Image render_in_child(const std::string& env, const std::string& png_path) {
+  const std::string cmd = env + " '" + self_path() + "' --render-child '" + png_path + "'";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) throw std::runtime_error("child failed (" + std::to_string(rc) + "): " + cmd);
+  return read_png(png_path);
+}
+
+}  // namespace rigid::render::test
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::strcmp(argv[1], "--render-child") == 0) {
+    try {
+      rigid::render::test::reference_plot().save(argv[2], 800, 600);
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "render child: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  return Catch::Session().run(argc, argv);
+}
