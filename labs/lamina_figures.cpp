@@ -56,7 +56,9 @@ void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const Principal
     scene.add_label(reach * 1.1 * e, std::to_string(i + 1), axis_colors[i]);
   }
   scene.add_axes(Vec3::Zero(), Mat3::Identity(), 0.35 * size, {"x", "y", "z"});
-  scene.save(lab.figure_path("scene"), lab.figure_width(), lab.figure_height());
+  lab.figure("scene", [&](const std::string& path) {
+    scene.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 // The moment n.I.n about an in-plane axis at angle alpha from x: the principal
@@ -93,7 +95,9 @@ void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
     panel.add_points({deg}, {moment_about_axis(I, n)}, "chosen axis n", render::Marker::kCircle)
         .color = render::kVermillion;
   }
-  plot.save(lab.figure_path("moment"), lab.figure_width(), lab.figure_height());
+  lab.figure("moment", [&](const std::string& path) {
+    plot.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 }  // namespace

@@ -44,7 +44,9 @@ void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omeg
   scene.add_sphere(omega0, 0.03 * size, {render::kBlack}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
-  scene.save(lab.figure_path("ellipsoids"), lab.figure_width(), lab.figure_height());
+  lab.figure("ellipsoids", [&](const std::string& path) {
+    scene.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 // Polhodes on one energy ellipsoid, about the largest and the smallest axis,
@@ -92,7 +94,9 @@ void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& 
   scene.add_tube(lift(polhode), 0.011 * size, {render::kBlack}, "this body's polhode");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.3 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
-  scene.save(lab.figure_path("polhodes"), lab.figure_width(), lab.figure_height());
+  lab.figure("polhodes", [&](const std::string& path) {
+    scene.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 // omega_1, omega_2, omega_3 against t and the phase plot of section 5.1.
@@ -120,7 +124,9 @@ void draw_omega(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
   right.add_line(w[0], w[2], "\\omega_3 against \\omega_1").color = render::palette_color(2);
   right.add_points({omega0(0), omega0(0)}, {omega0(1), omega0(2)}, "t = 0").color = render::kBlack;
   right.equal_aspect = true;
-  plot.save(lab.figure_path("omega"), lab.figure_width(), lab.figure_height());
+  lab.figure("omega", [&](const std::string& path) {
+    plot.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 // Each integrator's error against the exact solution, and its energy error.
@@ -156,7 +162,9 @@ void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& ome
   }
   error.legend = render::LegendPlace::kBottomRight;
   energy.legend = render::LegendPlace::kNone;
-  plot.save(lab.figure_path("integrators"), lab.figure_width(), lab.figure_height());
+  lab.figure("integrators", [&](const std::string& path) {
+    plot.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 }  // namespace

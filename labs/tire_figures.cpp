@@ -67,7 +67,9 @@ void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
   omega_label.offset_y = -36;
   scene.add_label(omega_label);
   scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"});
-  scene.save(lab.figure_path("scene"), lab.figure_width(), lab.figure_height());
+  lab.figure("scene", [&](const std::string& path) {
+    scene.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 // The balancing mass against the tilt: exact (eq. 60) against small-angle (eq. 61).
@@ -96,7 +98,9 @@ void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
   small.dash = render::Dash::kDashed;
   panel.add_points({rad_to_deg(wheel.tilt)}, {1e3 * m0}, fmt::format("this wheel: {:.1f} g", 1e3 * m0))
       .color = render::kBlue;
-  plot.save(lab.figure_path("mass"), lab.figure_width(), lab.figure_height());
+  lab.figure("mass", [&](const std::string& path) {
+    plot.save(path, lab.figure_width(), lab.figure_height());
+  });
 }
 
 }  // namespace

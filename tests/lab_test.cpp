@@ -127,3 +127,82 @@ TEST_CASE("labs: bad input exits 2 with one line naming the option") {
     CHECK(run.out.empty());
   }
 }
+
+TEST_CASE("poinsot: defaults reproduce the text's ellipsoid of section 5.1") {
+  const auto run = run_lab("poinsot", "--json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  for (const char* key : {"principal_moments", "omega_end", "energy", "angular_momentum_magnitude",
+                          "polhode_period_s", "method", "energy_drift_rel", "momentum_drift_rel"}) {
+    CHECK(r.contains(key));
+  }
+  const double pi = 3.14159265358979323846;
+  CHECK_THAT(double(r["principal_moments"][0]), WithinAbs(pi, 1e-14));
+  CHECK_THAT(double(r["principal_moments"][1]), WithinAbs(2 * pi, 1e-14));
+  CHECK(prints_as(r["principal_moments"][2], 8.168, 3));
+  CHECK(r["method"] == "exact");
+  // The closed form keeps T and |L| to roundoff: a few ulps per sample.
+  CHECK(double(r["energy_drift_rel"]) < 1e-14);
+  CHECK(double(r["momentum_drift_rel"]) < 1e-14);
+  // Section 4.1 ratios for I = 5 : 4 : 3.
+  CHECK(prints_as(r["ratios_momentum"][0], 0.20, 2));
+  CHECK(prints_as(r["ratios_momentum"][2], 0.33, 2));
+  CHECK(prints_as(r["ratios_energy"][1], 0.50, 2));
+  CHECK(prints_as(r["ratios_energy"][2], 0.58, 2));
+}
+
+TEST_CASE("poinsot: every method agrees with the exact solution within its tolerance") {
+  // Default run: three polhode periods T; fixed steps h = T/2000; tolerance 1e-10.
+  struct Case {
+    const char* method;
+    double bound;
+  };
+  // A p-th order method's global error over n periods with step h is about
+  // n (2 pi h/T)^p; a factor 10 covers the error constant. Adaptive methods
+  // control the local error per step to the tolerance; over a few hundred steps
+  // their global error stays within 100 times it.
+  const double h = 2 * 3.14159265358979323846 / 2000;
+  const Case cases[] = {{"splitting", 10 * 3 * h * h},  {"splitting4", 10 * 3 * std::pow(h, 4)},
+                        {"rk4", 10 * 3 * std::pow(h, 4)}, {"dopri5", 100 * 1e-10},
+                        {"rkf78", 100 * 1e-10},          {"bulirsch-stoer", 100 * 1e-10}};
+  for (const auto& c : cases) {
+    INFO(c.method);
+    const auto run = run_lab("poinsot", std::string("--json --method ") + c.method);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    CHECK(double(j["results"]["max_error_vs_exact"]) < c.bound);
+  }
+}
+
+TEST_CASE("poinsot: --csv writes t, omega, the quaternion, energy and |L|") {
+  const std::string path = "/tmp/rigid_poinsot_test.csv";
+  std::remove(path.c_str());
+  REQUIRE(run_lab("poinsot", "--quiet --method splitting --csv " + path).status == 0);
+  std::ifstream csv(path);
+  std::string header;
+  std::getline(csv, header);
+  CHECK(header == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,energy_J,L_kg_m2_s");
+  std::remove(path.c_str());
+}
+
+TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--inertia 1,1,3", "--inertia"},           {"--inertia -1,1,1", "--inertia"},
+      {"--inertia 1,2", "--inertia"},             {"--inertia 0,1,1", "--inertia"},
+      {"--ellipsoid 0,1,1", "--ellipsoid"},       {"--mass -1", "--mass"},
+      {"--omega nan,1,1", "--omega"},             {"--omega 0,0,0", "--omega"},
+      {"--t-end -1", "--t-end"},                  {"--method euler", "--method"},
+      {"--tolerance 0", "--tolerance"},           {"--tolerance 1", "--tolerance"},
+      {"--step -1", "--step"},                    {"--inertia 1,2,2 --ellipsoid 1,2,3", "--inertia"},
+      {"--method rk4 --step 1e-9 --t-end 100", "--step"},
+  };
+  for (const auto& [args, option] : cases) {
+    INFO(args);
+    const auto run = run_lab("poinsot", args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(std::string("poinsot: error: ") + option, 0) == 0);
+    CHECK(run.out.empty());
+  }
+}

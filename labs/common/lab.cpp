@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -107,6 +108,7 @@ Lab::Lab(std::string name, std::string title)
     : name_(std::move(name)), title_(std::move(title)), app_(title_, name_) {
   app_.add_flag("--json", json_, "print one JSON object on stdout instead of the table");
   app_.add_flag("--quiet", quiet_, "print no table (files are still written)");
+  app_.add_flag("--timing", timing_, "with --json: the wall time of each figure, for bench/");
   app_.add_option("--figures", figures_dir_, "write this lab's PNG figures into DIR")
       ->type_name("DIR");
   app_.add_option("--figure-size", figure_size_, "figure size in pixels")
@@ -265,10 +267,14 @@ void Lab::result_text(const std::string& key, const std::string& label,
 
 void Lab::note(const std::string& text) { notes_.push_back(text); }
 
-std::string Lab::figure_path(const std::string& what) {
+void Lab::figure(const std::string& what,
+                 const std::function<void(const std::string& path)>& save) {
   const std::string file = name_ + "_" + what + ".png";
+  const auto start = std::chrono::steady_clock::now();
+  save((fs::path(figures_dir_) / file).string());
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   figures_.push_back(file);
-  return (fs::path(figures_dir_) / file).string();
+  figure_seconds_[file] = elapsed.count();
 }
 
 std::string Lab::figure_title(const std::string& detail) const {
@@ -388,6 +394,7 @@ void Lab::emit_json() const {
   out["inputs"] = inputs_;
   out["results"] = results_;
   out["figures"] = figures_;
+  if (timing_) out["timing"] = {{"figure_seconds", figure_seconds_}};
   out["textbook"] = textbook_;
   out["notes"] = notes_;
   std::cout << out.dump(2) << "\n";

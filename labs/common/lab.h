@@ -80,10 +80,11 @@ class Lab {
 
   /// The time series written by --csv (if the user asked for it).
   void series(Series s) { series_ = std::move(s); }
-  /// True if --figures DIR was given; then `figure_path` names each PNG.
+  /// True if --figures DIR was given; then `figure` writes each PNG.
   bool figures_requested() const { return !figures_dir_.empty(); }
-  /// Full path for figure `<lab>_<what>.png`, recorded for the JSON "figures" list.
-  std::string figure_path(const std::string& what);
+  /// Writes figure `<lab>_<what>.png`: `save` gets the full path; the figure is
+  /// listed in the JSON "figures" and, with --timing, its wall time in "timing".
+  void figure(const std::string& what, const std::function<void(const std::string& path)>& save);
   /// Runs `draw` if --figures was given; a failure there (no GL context, say) is
   /// reported on stderr and sets exit status 1, but the numeric results still print.
   void figures(const std::function<void(Lab&)>& draw);
@@ -116,7 +117,8 @@ class Lab {
   std::vector<std::string> figures_;
   Series series_;
   bool json_ = false, quiet_ = false, csv_enabled_ = false;
-  bool figures_failed_ = false;
+  bool figures_failed_ = false, timing_ = false;
+  Json figure_seconds_ = Json::object();
   std::string csv_path_, figures_dir_, figure_size_ = "1600x1200";
   int figure_width_ = 1600, figure_height_ = 1200;
 };
