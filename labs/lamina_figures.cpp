@@ -4,13 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
+#if RIGID_HAVE_RENDER
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 #include "rigid/units.h"
 
+#endif
+
 namespace rigid::lab {
+#if RIGID_HAVE_RENDER
 namespace render = rigid::render;
 namespace {
 
@@ -28,7 +33,7 @@ void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const Principal
 
   render::Scene3D scene;
   scene.title = title_of(lab, in) + fmt::format(", angle(L, \\omega) = {:.1f}\\deg",
-                                           rad_to_deg(angle_between(I * n, n)));
+                                                rad_to_deg(angle_between(I * n, n)));
   scene.camera.eye = centre + size * Vec3(1.2, -2.2, 2.6);
   scene.camera.target = centre + Vec3(0, 0, 0.1 * size);
   scene.camera.fov_y_deg = 38;
@@ -50,9 +55,9 @@ void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const Principal
   for (int i = 0; i < 3; ++i) {
     const Vec3 e = principal.axes.row(i).transpose();
     const double reach = (i == 2 ? 0.6 : 0.75) * size;
-    scene.add_cylinder(-reach * e, reach * e, 0.009 * size, {axis_colors[i]},
-                       fmt::format("principal axis {}: I_{} = {:.4g} kg m^2", i + 1, i + 1,
-                                   principal.moments(i)));
+    scene.add_cylinder(
+        -reach * e, reach * e, 0.009 * size, {axis_colors[i]},
+        fmt::format("principal axis {}: I_{} = {:.4g} kg m^2", i + 1, i + 1, principal.moments(i)));
     scene.add_label(reach * 1.1 * e, std::to_string(i + 1), axis_colors[i]);
   }
   scene.add_axes(Vec3::Zero(), Mat3::Identity(), 0.35 * size, {"x", "y", "z"});
@@ -80,8 +85,8 @@ void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
   panel.add_line(alpha_deg, moment, "I(\\alpha) = n\u00b7I\u00b7n").color = render::kBlue;
 
   const InPlaneAxes axes = in_plane_principal_axes(I);
-  for (const auto& [theta, value] : {std::pair{axes.theta, axes.moment},
-                                     std::pair{axes.theta_other, axes.moment_other}}) {
+  for (const auto& [theta, value] :
+       {std::pair{axes.theta, axes.moment}, std::pair{axes.theta_other, axes.moment_other}}) {
     double deg = rad_to_deg(theta);
     if (deg > 90) deg -= 180;
     panel.add_ref_line(deg, true, fmt::format("principal axis {:.1f}\\deg", deg));
@@ -102,10 +107,17 @@ void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
 
 }  // namespace
 
-void draw_lamina_figures(Lab& lab, const LaminaInputs& in, const Mat3& I,
-                         const PrincipalAxes& principal) {
+#endif
+
+void draw_lamina_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const LaminaInputs& in,
+                         [[maybe_unused]] const Mat3& I,
+                         [[maybe_unused]] const PrincipalAxes& principal) {
+#if RIGID_HAVE_RENDER
   draw_scene(lab, in, I, principal);
   draw_moment_curve(lab, in, I);
+#else
+  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
+#endif
 }
 
 }  // namespace rigid::lab

@@ -43,9 +43,8 @@ int main(int argc, char** argv) {
     const rigid::Mat3 I = rigid::lamina_tensor({in.mass, a, in.b, in.origin == "corner"});
     lab.result("inertia_tensor", "inertia tensor I", I, "kg m^2",
                textbook_if(book, "(4/3, -1/2, 0; -1/2, 1/3, 0; 0, 0, 5/3) ma^2"));
-    lab.result("scalar_moment", "moment about n, n.I.n (eq. 21)",
-               rigid::moment_about_axis(I, n), "kg m^2",
-               textbook_if(book_axis, coef(0.493, "ma^2")));
+    lab.result("scalar_moment", "moment about n, n.I.n (eq. 21)", rigid::moment_about_axis(I, n),
+               "kg m^2", textbook_if(book_axis, coef(0.493, "ma^2")));
 
     lab.section("1.1 angular momentum (eq. 28)");
     const Vec3 L = rigid::angular_momentum(I, omega);
@@ -70,7 +69,8 @@ int main(int argc, char** argv) {
     lab.section("2.1 symmetric bodies about their centre of mass, built from primitives");
     const rigid::Body paddle = rigid::model_paddle(m, a);
     lab.result("paddle_principal_moments", "model paddle I1, I2, I3 (eqs. 41-43)",
-               Vec3(paddle.I_com.diagonal()), "kg m^2", textbook_if(true, "(1/8, 31/24, 17/12) ma^2"));
+               Vec3(paddle.I_com.diagonal()), "kg m^2",
+               textbook_if(true, "(1/8, 31/24, 17/12) ma^2"));
     lab.result("block_principal_moments", "block a x b x c (eq. 40)",
                Vec3(rigid::solid_box(m, a, in.b, in.c).I_com.diagonal()), "kg m^2",
                textbook_if(true, "m/12 (b^2+c^2, a^2+c^2, a^2+b^2)"));
@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
     lab.section("2.3 principal axes in the x-y plane from tan 2 theta (eqs. 53-56)");
     const rigid::InPlaneAxes plane = rigid::in_plane_principal_axes(I);
     lab.result("two_theta_deg", "2 theta, tan 2 theta = 2 Ixy / (Ixx - Iyy)",
-               rigid::rad_to_deg(plane.two_theta), "deg", textbook_if(book, "-45 (tan 2 theta = -1)"));
+               rigid::rad_to_deg(plane.two_theta), "deg",
+               textbook_if(book, "-45 (tan 2 theta = -1)"));
     lab.result("principal_angle_deg", "axis angle from x", rigid::rad_to_deg(plane.theta), "deg",
                textbook_if(book, "-22.5"));
     lab.result("principal_angle_moment", "  moment about that axis (eq. 50)", plane.moment,

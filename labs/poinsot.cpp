@@ -4,6 +4,8 @@
 // x^2/9 + y^2/4 + z^2 = 1 (I = pi, 2 pi, 8.168) started at omega = (1, 1, 1),
 // omega(t) follows in closed form from Jacobi's elliptic functions; every
 // integrator is measured against it.
+#include "rigid/poinsot.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include "common/lab.h"
 #include "poinsot_figures.h"
 #include "rigid/inertia.h"
-#include "rigid/poinsot.h"
 #include "rigid/units.h"
 
 using Eigen::Vector3d;
@@ -32,15 +33,17 @@ double time_scale(const rigid::FreeBodyExact& motion, const Vector3d& omega0) {
 
 // Integrates with `method` and measures it against the exact motion at every sample.
 rigid::lab::MethodTrace measure(const rigid::PrincipalMoments& I, const rigid::FreeBodyExact& exact,
-                                const std::vector<double>& times,
-                                rigid::IntegrateOptions options, rigid::IntegrationResult* out) {
+                                const std::vector<double>& times, rigid::IntegrateOptions options,
+                                rigid::IntegrationResult* out) {
   const rigid::FreeBodyState x0 = exact.state(times.front());
   rigid::IntegrationResult run = rigid::integrate_free_body(I, x0, times, options);
   rigid::lab::MethodTrace trace{options.method,
                                 rigid::is_adaptive(options.method)
                                     ? fmt::format("tol {:g}", options.rel_tol)
                                     : fmt::format("h = {:.3g} s", options.step),
-                                {}, {}, {}};
+                                {},
+                                {},
+                                {}};
   const double scale = exact.omega_body(0.0).norm();
   for (const auto& s : run.samples) {
     trace.t.push_back(s.t);
@@ -59,7 +62,8 @@ int main(int argc, char** argv) {
   Vector3d inertia(1, 1, 1), ellipsoid(3, 2, 1), omega0(1, 1, 1);
   double mass = rigid::kPi, t_end = 0.0, tolerance = 1e-10, step = 0.0;
   std::string method = "exact";
-  lab.option_vec3("--inertia", inertia, "kg m^2", "principal moments I1,I2,I3 (instead of --ellipsoid)",
+  lab.option_vec3("--inertia", inertia, "kg m^2",
+                  "principal moments I1,I2,I3 (instead of --ellipsoid)",
                   rigid::lab::Accept::Positive);
   lab.option_vec3("--ellipsoid", ellipsoid, "m", "semi-axes A,B,C of a uniform solid ellipsoid",
                   rigid::lab::Accept::Positive);
@@ -68,9 +72,10 @@ int main(int argc, char** argv) {
                   rigid::lab::Accept::Finite, true);
   lab.option("--t-end", t_end, "s", "end time; 0 picks three polhode periods",
              rigid::lab::Accept::NonNegative);
-  lab.option_choice("--method", method,
-                    {"exact", "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"},
-                    "how omega(t) is computed");
+  lab.option_choice(
+      "--method", method,
+      {"exact", "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"},
+      "how omega(t) is computed");
   lab.option("--tolerance", tolerance, "", "relative and absolute tolerance of adaptive methods");
   lab.option("--step", step, "s", "step of fixed-step methods; 0 picks period/2000",
              rigid::lab::Accept::NonNegative);
@@ -78,13 +83,16 @@ int main(int argc, char** argv) {
 
   return lab.run(argc, argv, [&](Lab& lab) {
     if (lab.given("--inertia") && (lab.given("--ellipsoid") || lab.given("--mass"))) {
-      throw UsageError("--inertia", "give the moments or an ellipsoid (--ellipsoid, --mass), not both");
+      throw UsageError("--inertia",
+                       "give the moments or an ellipsoid (--ellipsoid, --mass), not both");
     }
     if (!(tolerance < 1.0)) throw UsageError("--tolerance", "must lie in (0, 1)");
     const bool book = !lab.given("--inertia") && !lab.given("--ellipsoid") && !lab.given("--mass");
-    const Vector3d moments = lab.given("--inertia")
-        ? inertia
-        : Vector3d(rigid::solid_ellipsoid(mass, ellipsoid(0), ellipsoid(1), ellipsoid(2)).I_com.diagonal());
+    const Vector3d moments =
+        lab.given("--inertia")
+            ? inertia
+            : Vector3d(rigid::solid_ellipsoid(mass, ellipsoid(0), ellipsoid(1), ellipsoid(2))
+                           .I_com.diagonal());
     const rigid::PrincipalMoments I{moments(0), moments(1), moments(2)};
     try {
       rigid::validate(I);
@@ -136,11 +144,12 @@ int main(int argc, char** argv) {
     // Drift over the run, relative to the initial value (roundoff for "exact").
     double energy_drift = 0.0, momentum_drift = 0.0;
     for (const auto& s : samples) {
-      energy_drift = std::max(energy_drift,
-                              std::abs(rigid::kinetic_energy(I, s.omega_body) / exact.energy() - 1));
-      momentum_drift = std::max(
-          momentum_drift, std::abs(rigid::angular_momentum_magnitude(I, s.omega_body) /
-                                       exact.angular_momentum_magnitude() - 1));
+      energy_drift = std::max(
+          energy_drift, std::abs(rigid::kinetic_energy(I, s.omega_body) / exact.energy() - 1));
+      momentum_drift =
+          std::max(momentum_drift, std::abs(rigid::angular_momentum_magnitude(I, s.omega_body) /
+                                                exact.angular_momentum_magnitude() -
+                                            1));
     }
     lab.result("energy_drift_rel", "max |T - T0| / T0", energy_drift, "");
     lab.result("momentum_drift_rel", "max ||L| - |L0|| / |L0|", momentum_drift, "");
@@ -155,15 +164,20 @@ int main(int argc, char** argv) {
     lab.section("4.1 the text's example I1 : I2 : I3 = 5 : 4 : 3");
     const Vector3d ratios(5, 4, 3);
     lab.result("ratios_momentum", "momentum ellipsoid 1/I_i (eq. 80)",
-               rigid::momentum_ellipsoid_ratios(ratios), "", textbook_if(true, "(0.20 : 0.25 : 0.33)"));
+               rigid::momentum_ellipsoid_ratios(ratios), "",
+               textbook_if(true, "(0.20 : 0.25 : 0.33)"));
     lab.result("ratios_energy", "energy ellipsoid 1/sqrt(I_i) (eq. 82)",
-               rigid::energy_ellipsoid_ratios(ratios), "", textbook_if(true, "(0.44 : 0.50 : 0.58)"));
+               rigid::energy_ellipsoid_ratios(ratios), "",
+               textbook_if(true, "(0.44 : 0.50 : 0.58)"));
     lab.result("ratios_touching_axis1", "momentum, touching on axis 1",
-               rigid::momentum_ratios_touching(ratios, 0), "", textbook_if(true, "(0.44 : 0.55 : 0.73)"));
+               rigid::momentum_ratios_touching(ratios, 0), "",
+               textbook_if(true, "(0.44 : 0.55 : 0.73)"));
     lab.result("ratios_touching_axis2", "momentum, touching on axis 2",
-               rigid::momentum_ratios_touching(ratios, 1), "", textbook_if(true, "(0.40 : 0.50 : 0.66)"));
+               rigid::momentum_ratios_touching(ratios, 1), "",
+               textbook_if(true, "(0.40 : 0.50 : 0.66)"));
     lab.result("ratios_touching_axis3", "momentum, touching on axis 3",
-               rigid::momentum_ratios_touching(ratios, 2), "", textbook_if(true, "(0.35 : 0.43 : 0.58)"));
+               rigid::momentum_ratios_touching(ratios, 2), "",
+               textbook_if(true, "(0.35 : 0.43 : 0.58)"));
     const Vector3d touch1 = rigid::momentum_ratios_touching(ratios, 0);
     const Vector3d touch2 = rigid::momentum_ratios_touching(ratios, 1);
     lab.note(fmt::format(
@@ -172,8 +186,8 @@ int main(int argc, char** argv) {
         "text prints (0.44 : 0.55 : 0.73) and (0.40 : 0.50 : 0.66)",
         touch1(0), touch1(1), touch1(2), touch2(0), touch2(1), touch2(2)));
 
-    rigid::lab::Series series{{"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
-                               "energy_J", "L_kg_m2_s"}, {}};
+    rigid::lab::Series series{
+        {"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz", "energy_J", "L_kg_m2_s"}, {}};
     for (const auto& s : samples) {
       const auto& q = s.attitude;
       series.rows.push_back({s.t, s.omega_body(0), s.omega_body(1), s.omega_body(2), q.w(), q.x(),

@@ -4,14 +4,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "rigid/poinsot.h"
+#if RIGID_HAVE_RENDER
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 
+#endif
+
 namespace rigid::lab {
-namespace render = rigid::render;
 using Eigen::Vector3d;
+#if RIGID_HAVE_RENDER
+namespace render = rigid::render;
 namespace {
 
 std::string title_of(const Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0) {
@@ -39,7 +44,8 @@ void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omeg
   scene.add_ellipsoid(Vector3d::Zero(), e.energy_semi_axes, Eigen::Matrix3d::Identity(),
                       {render::kSkyBlue, 0.45f}, "energy ellipsoid \\Sigma I_i\\omega_i^2 = 2T");
   scene.add_ellipsoid(Vector3d::Zero(), e.momentum_semi_axes, Eigen::Matrix3d::Identity(),
-                      {render::kOrange, 0.35f}, "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
+                      {render::kOrange, 0.35f},
+                      "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
   scene.add_tube(polhode, 0.012 * size, {render::kVermillion}, "polhode");
   scene.add_sphere(omega0, 0.03 * size, {render::kBlack}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
@@ -147,8 +153,8 @@ void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& ome
     for (double& x : v) x = std::max(x, 1e-17);
     return v;
   };
-  render::Dash dashes[] = {render::Dash::kSolid, render::Dash::kDashed, render::Dash::kSolid,
-                           render::Dash::kDashDot, render::Dash::kSolid, render::Dash::kDotted};
+  render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed, render::Dash::kSolid,
+                           render::Dash::kDashDot, render::Dash::kSolid,  render::Dash::kDotted};
   for (std::size_t k = 0; k < traces.size(); ++k) {
     const auto& trace = traces[k];
     const std::vector<double> t(trace.t.begin() + 1, trace.t.end());
@@ -169,14 +175,21 @@ void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& ome
 
 }  // namespace
 
-void draw_poinsot_figures(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                          const std::vector<FreeBodySample>& samples,
-                          const std::vector<MethodTrace>& traces) {
+#endif
+
+void draw_poinsot_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const FreeBodyExact& motion,
+                          [[maybe_unused]] const Vector3d& omega0,
+                          [[maybe_unused]] const std::vector<FreeBodySample>& samples,
+                          [[maybe_unused]] const std::vector<MethodTrace>& traces) {
+#if RIGID_HAVE_RENDER
   const std::vector<Vector3d> curve = rigid::polhode(motion.moments(), omega0, 400);
   draw_ellipsoids(lab, motion, omega0, curve);
   draw_polhode_family(lab, motion, omega0, curve);
   draw_omega(lab, motion, omega0, samples);
   draw_integrators(lab, motion, omega0, traces);
+#else
+  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
+#endif
 }
 
 }  // namespace rigid::lab

@@ -31,8 +31,8 @@ int main(int argc, char** argv) {
 
   return lab.run(argc, argv, [&](Lab& lab) {
     wheel.tilt = rigid::deg_to_rad(tilt_deg);
-    const bool book = wheel.mass == 10.0 && wheel.radius == 0.18 && wheel.offset == 0.05 &&
-                      tilt_deg == 1.0;
+    const bool book =
+        wheel.mass == 10.0 && wheel.radius == 0.18 && wheel.offset == 0.05 && tilt_deg == 1.0;
 
     lab.section("2.2 before balancing: L is off the axle");
     const Vec3 axle = rigid::axle_direction(wheel);

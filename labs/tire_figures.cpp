@@ -4,13 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
+#if RIGID_HAVE_RENDER
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 #include "rigid/units.h"
 
+#endif
+
 namespace rigid::lab {
+#if RIGID_HAVE_RENDER
 namespace render = rigid::render;
 namespace {
 
@@ -30,16 +35,17 @@ void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
     // Magnify the angle of v from the x axis (within the plane of v and x).
     const double angle = std::atan2(std::hypot(v.y(), v.z()), v.x());
     const Vec3 side = Vec3(0, v.y(), v.z()).normalized();
-    return v.norm() * (std::cos(magnify * angle) * Vec3::UnitX() + std::sin(magnify * angle) * side);
+    return v.norm() *
+           (std::cos(magnify * angle) * Vec3::UnitX() + std::sin(magnify * angle) * side);
   };
   const Vec3 axle = shown(axle_direction(wheel));
   const Vec3 L0 = angular_momentum_at(wheel, 0.0, omega, 0.0);
   const double cone_angle = magnify * angle_between(L0, axle_direction(wheel));
 
   render::Scene3D scene;
-  scene.title = title_of(lab, wheel) + (magnify > 1 ? fmt::format(" (angles drawn \\times{:.0f})",
-                                                             magnify)
-                                               : std::string());
+  scene.title =
+      title_of(lab, wheel) +
+      (magnify > 1 ? fmt::format(" (angles drawn \\times{:.0f})", magnify) : std::string());
   scene.camera.eye = Vec3(1.1, -3.4, 1.9) * a * 1.6;
   scene.camera.target = Vec3(0.05 * a, 0, 0);
   scene.camera.fov_y_deg = 34;
@@ -53,9 +59,8 @@ void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
   scene.add_sphere(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {render::kVermillion});
   // The cone swept by L about the axle when unbalanced, with L at t = 0.
   const double length = 1.6 * a;
-  scene.add_cone(Vec3::Zero(), length * std::cos(cone_angle) * axle,
-                 length * std::sin(cone_angle), {render::kSkyBlue, 0.35f},
-                 "cone swept by L (unbalanced)");
+  scene.add_cone(Vec3::Zero(), length * std::cos(cone_angle) * axle, length * std::sin(cone_angle),
+                 {render::kSkyBlue, 0.35f}, "cone swept by L (unbalanced)");
   const Vec3 L_shown = shown(L0).normalized();
   scene.add_arrow(Vec3::Zero(), length * L_shown, 0.03 * a, {render::kBlue}, "L before balancing");
   scene.add_arrow(Vec3::Zero(), length * 1.12 * axle, 0.03 * a, {render::kBluishGreen},
@@ -93,10 +98,13 @@ void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
   panel.x = {"axle tilt \\theta (\\deg)", render::Scale::kLinear, 0, top};
   panel.y = {"balancing mass m_0 (g)", render::Scale::kLinear, 0};
   panel.add_line(tilt_deg, exact_g, "exact, tan 2\\theta (eq. 60)").color = render::kBlue;
-  auto& small = panel.add_line(tilt_deg, small_g, "small angle, \\theta \\approx 8bm_0/(am) (eq. 61)");
+  auto& small =
+      panel.add_line(tilt_deg, small_g, "small angle, \\theta \\approx 8bm_0/(am) (eq. 61)");
   small.color = render::kOrange;
   small.dash = render::Dash::kDashed;
-  panel.add_points({rad_to_deg(wheel.tilt)}, {1e3 * m0}, fmt::format("this wheel: {:.1f} g", 1e3 * m0))
+  panel
+      .add_points({rad_to_deg(wheel.tilt)}, {1e3 * m0},
+                  fmt::format("this wheel: {:.1f} g", 1e3 * m0))
       .color = render::kBlue;
   lab.figure("mass", [&](const std::string& path) {
     plot.save(path, lab.figure_width(), lab.figure_height());
@@ -105,9 +113,16 @@ void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
 
 }  // namespace
 
-void draw_tire_figures(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
+#endif
+
+void draw_tire_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const CrookedWheel& wheel,
+                       [[maybe_unused]] double m0, [[maybe_unused]] double omega) {
+#if RIGID_HAVE_RENDER
   draw_scene(lab, wheel, m0, omega);
   draw_mass_curve(lab, wheel, m0);
+#else
+  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
+#endif
 }
 
 }  // namespace rigid::lab

@@ -101,8 +101,8 @@ Body model_paddle(double m, double a) {
 
 Mat3 lamina_tensor(const Lamina& lamina) {
   const Body body = rectangular_lamina(lamina.mass, lamina.a, lamina.b);
-  const Vec3 centre = lamina.corner_origin ? Vec3(lamina.a / 2.0, lamina.b / 2.0, 0.0)
-                                           : Vec3::Zero();
+  const Vec3 centre =
+      lamina.corner_origin ? Vec3(lamina.a / 2.0, lamina.b / 2.0, 0.0) : Vec3::Zero();
   return inertia_about(shifted(body, centre), Vec3::Zero());
 }
 
@@ -142,9 +142,13 @@ double moment_about_axis(const Mat3& I, const Vec3& n) {
   return unit.dot(I * unit);
 }
 
-Vec3 angular_momentum(const Mat3& I, const Vec3& omega) { return I * omega; }
+Vec3 angular_momentum(const Mat3& I, const Vec3& omega) {
+  return I * omega;
+}
 
-double kinetic_energy(const Mat3& I, const Vec3& omega) { return 0.5 * omega.dot(I * omega); }
+double kinetic_energy(const Mat3& I, const Vec3& omega) {
+  return 0.5 * omega.dot(I * omega);
+}
 
 double angle_between(const Vec3& a, const Vec3& b) {
   // atan2(|a x b|, a . b) keeps full precision at small and near-straight angles.
@@ -190,7 +194,9 @@ InPlaneAxes in_plane_principal_axes(const Mat3& I) {
   return axes;
 }
 
-Vec3 fixed_axis_torque(const Mat3& I, const Vec3& omega) { return omega.cross(I * omega); }
+Vec3 fixed_axis_torque(const Mat3& I, const Vec3& omega) {
+  return omega.cross(I * omega);
+}
 
 void validate_inertia_tensor(const Mat3& I) {
   if (!I.allFinite()) throw std::invalid_argument("inertia tensor must be finite");

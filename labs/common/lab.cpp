@@ -71,7 +71,9 @@ std::string vec3_rule(const std::string& text, Accept accept) {
 }
 
 // Adding +0.0 prints a negative zero as 0.
-std::string format_number(double value) { return fmt::format("{:.6g}", value + 0.0); }
+std::string format_number(double value) {
+  return fmt::format("{:.6g}", value + 0.0);
+}
 
 std::string format_vec3(const Eigen::Vector3d& v) {
   return fmt::format("({:.5g}, {:.5g}, {:.5g})", v(0) + 0.0, v(1) + 0.0, v(2) + 0.0);
@@ -120,10 +122,9 @@ Lab::Lab(std::string name, std::string title)
             const auto w = parts.size() == 2 ? parse_number(parts[0]) : std::nullopt;
             const auto h = parts.size() == 2 ? parse_number(parts[1]) : std::nullopt;
             // The figure style is laid out for 800x600 and up; 8192 bounds memory.
-            if (!w || !h || *w != std::floor(*w) || *h != std::floor(*h) || *w < 800 ||
-                *h < 600 || *w > 8192 || *h > 8192) {
-              return "must be WxH with 800 <= W <= 8192 and 600 <= H <= 8192 (got '" + text +
-                     "')";
+            if (!w || !h || *w != std::floor(*w) || *h != std::floor(*h) || *w < 800 || *h < 600 ||
+                *w > 8192 || *h > 8192) {
+              return "must be WxH with 800 <= W <= 8192 and 600 <= H <= 8192 (got '" + text + "')";
             }
             figure_width_ = static_cast<int>(*w);
             figure_height_ = static_cast<int>(*h);
@@ -137,8 +138,8 @@ void Lab::option(const std::string& flag, double& value, const std::string& unit
   app_.add_option(flag, value, help + (unit.empty() ? "" : " [" + unit + "]"))
       ->type_name(unit.empty() ? "NUMBER" : unit)
       ->capture_default_str()
-      ->check(CLI::Validator([accept](std::string& text) { return number_rule(text, accept); },
-                             ""));
+      ->check(
+          CLI::Validator([accept](std::string& text) { return number_rule(text, accept); }, ""));
   const std::string key = key_of(flag);
   record_inputs_.push_back([this, key, &value] { inputs_[key] = value; });
 }
@@ -163,8 +164,8 @@ void Lab::option_deg(const std::string& flag, double& degrees, double lo, double
 
 void Lab::option_vec3(const std::string& flag, Eigen::Vector3d& value, const std::string& unit,
                       const std::string& help, Accept accept, bool nonzero) {
-  std::string& text = option_strings().emplace_back(
-      fmt::format("{},{},{}", value(0), value(1), value(2)));
+  std::string& text =
+      option_strings().emplace_back(fmt::format("{},{},{}", value(0), value(1), value(2)));
   app_.add_option(flag, text, help + (unit.empty() ? "" : " [" + unit + "]"))
       ->type_name("X,Y,Z")
       ->capture_default_str()
@@ -185,8 +186,9 @@ void Lab::option_vec3(const std::string& flag, Eigen::Vector3d& value, const std
     const auto parts = split(text, ',');
     for (int i = 0; i < 3; ++i) value(i) = *parse_number(parts[static_cast<size_t>(i)]);
   });
-  record_inputs_.push_back(
-      [this, key, &value] { inputs_[key] = Json::array({value(0), value(1), value(2)}); });
+  record_inputs_.push_back([this, key, &value] {
+    inputs_[key] = Json::array({value(0), value(1), value(2)});
+  });
 }
 
 void Lab::option_choice(const std::string& flag, std::string& value,
@@ -212,7 +214,9 @@ void Lab::option_text(const std::string& flag, std::string& value, const std::st
   app_.add_option(flag, value, help);
 }
 
-bool Lab::given(const std::string& flag) const { return app_.count(flag) > 0; }
+bool Lab::given(const std::string& flag) const {
+  return app_.count(flag) > 0;
+}
 
 void Lab::enable_csv() {
   csv_enabled_ = true;
@@ -220,7 +224,9 @@ void Lab::enable_csv() {
       ->type_name("FILE");
 }
 
-void Lab::section(const std::string& heading) { rows_.push_back({heading, "", "", "", true}); }
+void Lab::section(const std::string& heading) {
+  rows_.push_back({heading, "", "", "", true});
+}
 
 void Lab::result(const std::string& key, const std::string& label, double value,
                  const std::string& unit, std::optional<std::string> textbook) {
@@ -229,8 +235,7 @@ void Lab::result(const std::string& key, const std::string& label, double value,
   }
   results_[key] = value;
   if (textbook) textbook_[key] = *textbook;
-  rows_.push_back({label, format_number(value), unit,
-                   textbook.value_or(std::string())});
+  rows_.push_back({label, format_number(value), unit, textbook.value_or(std::string())});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
@@ -240,8 +245,7 @@ void Lab::result(const std::string& key, const std::string& label, const Eigen::
   }
   results_[key] = Json::array({value(0), value(1), value(2)});
   if (textbook) textbook_[key] = *textbook;
-  rows_.push_back({label, format_vec3(value), unit,
-                   textbook.value_or(std::string())});
+  rows_.push_back({label, format_vec3(value), unit, textbook.value_or(std::string())});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
@@ -254,18 +258,19 @@ void Lab::result(const std::string& key, const std::string& label, const Eigen::
   results_[key] = rows;
   if (textbook) textbook_[key] = *textbook;
   for (int i = 0; i < 3; ++i) {
-    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()),
-                     i == 0 ? unit : "", i == 0 ? textbook.value_or("") : ""});
+    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()), i == 0 ? unit : "",
+                     i == 0 ? textbook.value_or("") : ""});
   }
 }
 
-void Lab::result_text(const std::string& key, const std::string& label,
-                      const std::string& value) {
+void Lab::result_text(const std::string& key, const std::string& label, const std::string& value) {
   results_[key] = value;
   rows_.push_back({label, value, "", ""});
 }
 
-void Lab::note(const std::string& text) { notes_.push_back(text); }
+void Lab::note(const std::string& text) {
+  notes_.push_back(text);
+}
 
 void Lab::figure(const std::string& what,
                  const std::function<void(const std::string& path)>& save) {

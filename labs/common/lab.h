@@ -46,8 +46,7 @@ class Lab {
                   const std::string& help);
   /// Three comma-separated finite numbers, e.g. --axis 0.8,0.6,0.
   void option_vec3(const std::string& flag, Eigen::Vector3d& value, const std::string& unit,
-                   const std::string& help, Accept accept = Accept::Finite,
-                   bool nonzero = false);
+                   const std::string& help, Accept accept = Accept::Finite, bool nonzero = false);
   /// One word out of `choices`.
   void option_choice(const std::string& flag, std::string& value,
                      const std::vector<std::string>& choices, const std::string& help);

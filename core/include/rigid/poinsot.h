@@ -5,9 +5,8 @@
 // intersection is the polhode. Moments may come in any order.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Dense>
+#include <vector>
 
 #include "rigid/free_body.h"
 

@@ -7,8 +7,12 @@ namespace rigid {
 inline constexpr double kPi = 3.14159265358979323846;
 
 /// Degrees from radians.
-constexpr double rad_to_deg(double rad) { return rad * (180.0 / kPi); }
+constexpr double rad_to_deg(double rad) {
+  return rad * (180.0 / kPi);
+}
 /// Radians from degrees.
-constexpr double deg_to_rad(double deg) { return deg * (kPi / 180.0); }
+constexpr double deg_to_rad(double deg) {
+  return deg * (kPi / 180.0);
+}
 
 }  // namespace rigid

@@ -1,0 +1,218 @@
+// The exact torque-free motion (free_body_exact.h) against an mpmath reference
+// computed offline (make_reference.py: 30-digit Taylor integration of the ODE
+// from the same double inputs), and its limits.
+#include "rigid/free_body_exact.h"
+
+#include <algorithm>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "rigid/rotation.h"
+
+using namespace rigid;
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kPi = 3.141592653589793;
+
+struct RefPoint {
+  double t;
+  double y[7];  // omega_body, then q (w, x, y, z)
+};
+struct RefCase {
+  const char* name;
+  double I[3];
+  double w0[3];
+  double q0[4];
+  std::vector<RefPoint> points;
+};
+const std::vector<RefCase>& reference_cases() {
+  static const std::vector<RefCase> cases = {
+#include "reference_free_body.inc"
+  };
+  return cases;
+}
+
+struct JacobiRef {
+  double u, kp2, sn, cn, dn;
+};
+const JacobiRef kJacobiRef[] = {
+#include "reference_jacobi.inc"
+};
+
+Eigen::Quaterniond quat(const double* q) {
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+}
+
+}  // namespace
+
+TEST_CASE("exact free body: matches the 30-digit reference on every regime") {
+  for (const RefCase& c : reference_cases()) {
+    const PrincipalMoments I{c.I[0], c.I[1], c.I[2]};
+    const Eigen::Vector3d w0(c.w0[0], c.w0[1], c.w0[2]);
+    const FreeBodyExact exact(I, w0, quat(c.q0));
+    // Error budget. Rounding the data (L = I w, the amplitudes, k'^2) perturbs the
+    // motion by a few eps, and the phase u = lambda t + u0 carries eps |u|; near the
+    // separatrix a perturbation delta of k'^2 shifts the period by ~delta / k'^2
+    // (K ~ ln(4/k')), the problem's own conditioning, so the bound scales with
+    // 1 / k'^2 there. Measured: at most 3.9 eps (1 + |w| t) times that conditioning
+    // factor; 64 eps leaves room for other compilers' libm.
+    const double kp2 = exact.complementary_parameter();
+    const double conditioning =
+        exact.regime() == FreeMotionRegime::kSeparatrix ? 1.0 : 1.0 / std::min(1.0, 10.0 * kp2);
+    const double w_scale = w0.norm();
+    for (const RefPoint& p : c.points) {
+      const Eigen::Vector3d w_ref(p.y[0], p.y[1], p.y[2]);
+      const FreeBodyState x = exact.state(p.t);
+      const double rate_t = 1.0 + w_scale * p.t;  // radians turned: eps |u| growth
+      const double err_w = (omega_body(x) - w_ref).norm() / w_scale;
+      const double err_q = attitude_distance(attitude(x), quat(p.y + 3));
+      INFO(c.name << " t = " << p.t << " regime " << static_cast<int>(exact.regime())
+                  << " k'^2 = " << kp2 << ": |dw|/|w| = " << err_w << ", attitude " << err_q);
+      CHECK(err_w <= 64 * kEps * rate_t * conditioning);
+      CHECK(err_q <= 64 * kEps * rate_t * conditioning);
+      // omega_body alone agrees with state()
+      CHECK((exact.omega_body(p.t) - omega_body(x)).norm() == 0.0);
+    }
+  }
+}
+
+TEST_CASE("exact free body: regimes chosen from the data") {
+  const PrincipalMoments ellipsoid{kPi, 2 * kPi, 13 * kPi / 5};
+  CHECK(FreeBodyExact(ellipsoid, {1, 1, 1}).regime() == FreeMotionRegime::kPolhodeAboutLargest);
+  CHECK(FreeBodyExact({1, 2, 3}, {1, 0.1, 0.05}).regime() ==
+        FreeMotionRegime::kPolhodeAboutSmallest);
+  // I = (3, 3.75, 5) has equal alphas, so L1 = L3 lies exactly on the separatrix
+  CHECK(FreeBodyExact({3, 3.75, 5}, {5, 1, 3}).regime() == FreeMotionRegime::kSeparatrix);
+  CHECK(FreeBodyExact({3, 3.75, 5}, {5, 1, 3}).period() == std::numeric_limits<double>::infinity());
+  CHECK(FreeBodyExact({2, 2, 2}, {1, 2, 3}).regime() == FreeMotionRegime::kSteady);
+  CHECK(FreeBodyExact({1, 2, 3}, {0, 4, 0}).regime() == FreeMotionRegime::kSteady);
+  CHECK(FreeBodyExact({1, 1, 2}, {1, 1, 0}).regime() == FreeMotionRegime::kSteady);
+}
+
+TEST_CASE("exact free body: omega repeats after the polhode period") {
+  for (const Eigen::Vector3d& w0 :
+       {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(2, 0.3, -0.2), Eigen::Vector3d(-0.1, 0.2, 1.5)}) {
+    const FreeBodyExact exact({kPi, 2 * kPi, 13 * kPi / 5}, w0);
+    const double T = exact.period();
+    for (double t : {0.0, 0.37, 2.9}) {
+      CHECK((exact.omega_body(t + T) - exact.omega_body(t)).norm() < 1e-13 * w0.norm());
+      // half a period flips the two components off the polhode's axis
+      CHECK((exact.omega_body(t + T / 2) - exact.omega_body(t)).norm() > 1e-3 * w0.norm());
+    }
+  }
+  // the text's ellipsoid from omega0 = (1, 1, 1): T = 10.2972 s
+  CHECK_THAT(FreeBodyExact({kPi, 2 * kPi, 13 * kPi / 5}, {1, 1, 1}).period(),
+             Catch::WithinAbs(10.2972, 1e-4));
+}
+
+TEST_CASE("exact free body: symmetric body follows eqs. 109-115") {
+  // I1 = I2 = I: w1 = w0 cos(Omega t + a), w2 = w0 sin(Omega t + a), Omega = w3 (Is - I) / I
+  for (const double Is : {0.5, 2.0}) {  // prolate and oblate
+    const double Iq = 1.0, w3 = 1.7, a = 0.4, wp = 0.6;
+    const FreeBodyExact exact({Iq, Iq, Is}, {wp * std::cos(a), wp * std::sin(a), w3});
+    const double Omega = w3 * (Is - Iq) / Iq;
+    CHECK(exact.modulus() == 0.0);
+    CHECK_THAT(exact.period(), Catch::WithinRel(2 * kPi / std::abs(Omega), 1e-14));
+    for (double t : {0.5, 3.0, 17.0}) {
+      const Eigen::Vector3d w = exact.omega_body(t);
+      CHECK(std::abs(w.x() - wp * std::cos(Omega * t + a)) < 1e-14 * (1 + t));
+      CHECK(std::abs(w.y() - wp * std::sin(Omega * t + a)) < 1e-14 * (1 + t));
+      CHECK(std::abs(w.z() - w3) < 1e-15);
+      // L stays fixed in space
+      const Eigen::Vector3d Ls = exact.attitude(t) * L_body({Iq, Iq, Is}, w);
+      CHECK((Ls - exact.L_space()).norm() < 1e-14 * (1 + t) * exact.angular_momentum_magnitude());
+    }
+  }
+}
+
+TEST_CASE("exact free body: steady rotations turn at constant omega") {
+  const Eigen::Quaterniond q0 = axis_angle(Eigen::Vector3d(0, 0, 1), 0.3);
+  for (const auto& [I, w] : {std::pair<PrincipalMoments, Eigen::Vector3d>{{2, 2, 2}, {1, -2, 0.5}},
+                             {{1, 2, 3}, {0, 0.7, 0}},
+                             {{1, 2, 3}, {0, 0, 0}}}) {
+    const FreeBodyExact exact(I, w, q0);
+    CHECK(exact.regime() == FreeMotionRegime::kSteady);
+    const double t = 2.5;
+    CHECK(exact.omega_body(t) == w);
+    const Eigen::Quaterniond expected =
+        w.norm() > 0 ? q0 * axis_angle(w.normalized(), w.norm() * t) : q0;
+    CHECK(attitude_distance(exact.attitude(t), expected) < 1e-15);
+  }
+}
+
+TEST_CASE("exact free body: L_space is constant along the exact attitude") {
+  const PrincipalMoments I{kPi, 2 * kPi, 13 * kPi / 5};
+  const FreeBodyExact exact(I, {1, 1, 1}, axis_angle(Eigen::Vector3d(1, 0, 0), 0.2));
+  for (double t = 0; t < 50; t += 1.7) {
+    const FreeBodyState x = exact.state(t);
+    CHECK((L_space(I, x) - exact.L_space()).norm() <
+          2e-14 * (1 + t) * exact.angular_momentum_magnitude());
+    CHECK(std::abs(attitude(x).norm() - 1.0) < 4 * kEps);
+  }
+}
+
+TEST_CASE("exact free body: sn, cn, dn to a few ulps, also for k' -> 0") {
+  for (const JacobiRef& r : kJacobiRef) {
+    double sn, cn, dn;
+    jacobi_sn_cn_dn(r.u, r.kp2, sn, cn, dn);
+    INFO("u = " << r.u << ", k'^2 = " << r.kp2);
+    // the argument u carries half an ulp itself: allow eps (1 + |u|) absolute, the
+    // derivatives of sn, cn, dn being at most 1
+    const double tol = 8 * kEps * (1 + std::abs(r.u));
+    CHECK(std::abs(sn - r.sn) <= tol);
+    CHECK(std::abs(cn - r.cn) <= tol);
+    CHECK(std::abs(dn - r.dn) <= tol);
+    // dn >= k' > 0 is kept to relative accuracy, since d ln(dn)/du = -k^2 sn cn / dn is
+    // at most 1 in size: near k = 1, where dn ~ k' is tiny, this is what k'^2 input buys
+    CHECK(std::abs(dn - r.dn) <= tol * r.dn);
+  }
+  // and agrees with Boost.Math (which takes k) where k is not close to 1
+  using namespace boost::math::policies;
+  using NoPromote = policy<promote_double<false>>;
+  for (double kp2 : {0.9, 0.5, 0.1, 1e-2}) {
+    const double k = std::sqrt(1 - kp2);
+    for (double u : {-3.0, -0.4, 0.1, 0.9, 2.2, 5.0}) {
+      double sn, cn, dn, bcn, bdn;
+      jacobi_sn_cn_dn(u, kp2, sn, cn, dn);
+      const double bsn = boost::math::jacobi_elliptic(k, u, &bcn, &bdn, NoPromote());
+      // k = sqrt(1 - kp2) rounds by an ulp, which moves Boost's values by ~eps |u|
+      const double tol = 8 * kEps * (1 + std::abs(u));
+      CHECK(std::abs(sn - bsn) <= tol);
+      CHECK(std::abs(cn - bcn) <= tol);
+      CHECK(std::abs(dn - bdn) <= tol);
+    }
+  }
+  double sn, cn, dn;
+  CHECK_THROWS_AS(jacobi_sn_cn_dn(1.0, -0.1, sn, cn, dn), std::invalid_argument);
+  CHECK_THROWS_AS(jacobi_sn_cn_dn(1.0, 1.5, sn, cn, dn), std::invalid_argument);
+}
+
+TEST_CASE("exact free body: invalid input throws") {
+  CHECK_THROWS_AS(FreeBodyExact({1, 2, 4}, {1, 1, 1}), std::invalid_argument);
+  CHECK_NOTHROW(FreeBodyExact({2, 1, 2.0 / 3}, {1, 1, 1}, Eigen::Quaterniond::Identity(),
+                              MomentsRule::kPositiveOnly));
+  CHECK_THROWS_AS(FreeBodyExact({1, 2, 3}, {1, NAN, 1}), std::invalid_argument);
+  CHECK_THROWS_AS(FreeBodyExact({1, 2, 3}, {1, 1, 1}, Eigen::Quaterniond(0, 0, 0, 0)),
+                  std::invalid_argument);
+}
+
+TEST_CASE("exact free body: separatrix started next to the saddle stays finite and exact") {
+  // L1 = L3 exactly (equal alphas for I = (3, 3.75, 5)) but tiny: sn u0 rounds to 1, so
+  // u0 must come from sinh u0 = sn0 / cn0, not atanh(sn0)
+  const double e = std::ldexp(1.0, -30);
+  const Eigen::Vector3d w0(5 * e, 1, 3 * e);
+  const FreeBodyExact exact({3, 3.75, 5}, w0);
+  REQUIRE(exact.regime() == FreeMotionRegime::kSeparatrix);
+  for (double t : {0.0, 10.0, 40.0}) {
+    const FreeBodyState x = exact.state(t);
+    for (double v : x) CHECK(std::isfinite(v));
+    // omega1 and omega3 decay as sech(lambda t + u0) while omega2 tends to 1
+    CHECK(std::abs(x[1] - 1.0) < 1e-15);
+  }
+  CHECK(exact.omega_body(40.0).x() < exact.omega_body(0.0).x() * 1e-3);
+}
