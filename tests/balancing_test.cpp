@@ -1,9 +1,10 @@
 // Tire balancing (sections 2.2-2.3): the balancing mass brings a principal axis
 // onto the axle, and then the bearings carry no torque.
+#include "rigid/balancing.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "rigid/balancing.h"
 #include "rigid/units.h"
 
 using namespace rigid;
@@ -65,8 +66,8 @@ TEST_CASE("balancing: the bearings carry torque only when unbalanced") {
   const CrookedWheel wheel = text_wheel();
   const double omega = 90.0, m = wheel.mass, a = wheel.radius;
   // Unbalanced disk: |N| = omega^2 (Ixx - Iyy) sin theta cos theta with Ixx - Iyy = m a^2/4.
-  const double expected = omega * omega * m * a * a / 4.0 * std::sin(wheel.tilt) *
-                          std::cos(wheel.tilt);
+  const double expected =
+      omega * omega * m * a * a / 4.0 * std::sin(wheel.tilt) * std::cos(wheel.tilt);
   CHECK_THAT(bearing_torque(wheel, 0.0, omega).norm(), WithinRel(expected, 1e-13));
   // Balanced: roundoff of omega^2 |I| only.
   CHECK(bearing_torque(wheel, balance_mass_exact(wheel), omega).norm() < 1e-13 * expected * 100);

@@ -49,6 +49,12 @@ void check_lab_figures(const std::string& lab) {
 }
 }  // namespace
 
-TEST_CASE("figures: lamina_tensor matches its goldens") { check_lab_figures("lamina_tensor"); }
-TEST_CASE("figures: tire_balancing matches its goldens") { check_lab_figures("tire_balancing"); }
-TEST_CASE("figures: poinsot matches its goldens") { check_lab_figures("poinsot"); }
+TEST_CASE("figures: lamina_tensor matches its goldens") {
+  check_lab_figures("lamina_tensor");
+}
+TEST_CASE("figures: tire_balancing matches its goldens") {
+  check_lab_figures("tire_balancing");
+}
+TEST_CASE("figures: poinsot matches its goldens") {
+  check_lab_figures("poinsot");
+}

@@ -1,9 +1,10 @@
 // Inertia core: every worked number of sections 1-3.1 and the theorems behind them.
+#include "rigid/inertia.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "rigid/inertia.h"
 #include "rigid/units.h"
 
 using namespace rigid;
@@ -171,9 +172,9 @@ TEST_CASE("inertia: every primitive satisfies the triangle inequality") {
   std::uniform_real_distribution<double> size(0.01, 10.0);
   for (int k = 0; k < 200; ++k) {
     const double m = size(rng), a = size(rng), b = size(rng), c = size(rng);
-    for (const Body& body : {thin_rod(m, a), thin_ring(m, a), thin_disk(m, a),
-                             rectangular_lamina(m, a, b), solid_box(m, a, b, c),
-                             solid_ellipsoid(m, a, b, c), solid_sphere(m, a)}) {
+    for (const Body& body :
+         {thin_rod(m, a), thin_ring(m, a), thin_disk(m, a), rectangular_lamina(m, a, b),
+          solid_box(m, a, b, c), solid_ellipsoid(m, a, b, c), solid_sphere(m, a)}) {
       // A rod's tensor is singular about its centre, so test it off-centre.
       const Mat3 I = inertia_about(body, Vec3(0.3 * a, 0.2 * a, 0.1 * a));
       CHECK_NOTHROW(validate_inertia_tensor(I));

@@ -18,9 +18,7 @@ struct Run {
   std::string out, err;
   nlohmann::json json() const { return nlohmann::json::parse(out); }
   // Bad input prints exactly one line on stderr.
-  bool one_error_line() const {
-    return !err.empty() && err.find('\n') == err.size() - 1;
-  }
+  bool one_error_line() const { return !err.empty() && err.find('\n') == err.size() - 1; }
 };
 
 inline Run run_lab(const std::string& lab, const std::string& args) {
@@ -33,7 +31,8 @@ inline Run run_lab(const std::string& lab, const std::string& args) {
   if (!pipe) return run;
   std::array<char, 4096> buffer{};
   size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    run.out.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream err(err_file);

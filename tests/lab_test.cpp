@@ -5,8 +5,8 @@
 
 #include "lab_common.h"
 
-using rigid::test::run_lab;
 using Catch::Matchers::WithinAbs;
+using rigid::test::run_lab;
 
 namespace {
 // Half a unit in the last place the text prints.
@@ -20,11 +20,12 @@ TEST_CASE("lamina_tensor: defaults reproduce sections 1-2.4") {
   REQUIRE(run.status == 0);
   const auto j = run.json();
   CHECK(j["lab"] == "lamina_tensor");
-  for (const char* key : {"mass", "a", "b", "origin", "axis", "omega"}) CHECK(j["inputs"].contains(key));
+  for (const char* key : {"mass", "a", "b", "origin", "axis", "omega"})
+    CHECK(j["inputs"].contains(key));
   const auto& r = j["results"];
-  for (const char* key : {"inertia_tensor", "scalar_moment", "angular_momentum", "angle_L_omega_deg",
-                          "kinetic_energy", "principal_moments", "principal_axes",
-                          "fixed_axis_torque"}) {
+  for (const char* key :
+       {"inertia_tensor", "scalar_moment", "angular_momentum", "angle_L_omega_deg",
+        "kinetic_energy", "principal_moments", "principal_axes", "fixed_axis_torque"}) {
     CHECK(r.contains(key));
   }
   CHECK(prints_as(r["scalar_moment"], 0.493, 3));
@@ -163,9 +164,9 @@ TEST_CASE("poinsot: every method agrees with the exact solution within its toler
   // control the local error per step to the tolerance; over a few hundred steps
   // their global error stays within 100 times it.
   const double h = 2 * 3.14159265358979323846 / 2000;
-  const Case cases[] = {{"splitting", 10 * 3 * h * h},  {"splitting4", 10 * 3 * std::pow(h, 4)},
+  const Case cases[] = {{"splitting", 10 * 3 * h * h},    {"splitting4", 10 * 3 * std::pow(h, 4)},
                         {"rk4", 10 * 3 * std::pow(h, 4)}, {"dopri5", 100 * 1e-10},
-                        {"rkf78", 100 * 1e-10},          {"bulirsch-stoer", 100 * 1e-10}};
+                        {"rkf78", 100 * 1e-10},           {"bulirsch-stoer", 100 * 1e-10}};
   for (const auto& c : cases) {
     INFO(c.method);
     const auto run = run_lab("poinsot", std::string("--json --method ") + c.method);
@@ -188,13 +189,20 @@ TEST_CASE("poinsot: --csv writes t, omega, the quaternion, energy and |L|") {
 
 TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
   const std::pair<const char*, const char*> cases[] = {
-      {"--inertia 1,1,3", "--inertia"},           {"--inertia -1,1,1", "--inertia"},
-      {"--inertia 1,2", "--inertia"},             {"--inertia 0,1,1", "--inertia"},
-      {"--ellipsoid 0,1,1", "--ellipsoid"},       {"--mass -1", "--mass"},
-      {"--omega nan,1,1", "--omega"},             {"--omega 0,0,0", "--omega"},
-      {"--t-end -1", "--t-end"},                  {"--method euler", "--method"},
-      {"--tolerance 0", "--tolerance"},           {"--tolerance 1", "--tolerance"},
-      {"--step -1", "--step"},                    {"--inertia 1,2,2 --ellipsoid 1,2,3", "--inertia"},
+      {"--inertia 1,1,3", "--inertia"},
+      {"--inertia -1,1,1", "--inertia"},
+      {"--inertia 1,2", "--inertia"},
+      {"--inertia 0,1,1", "--inertia"},
+      {"--ellipsoid 0,1,1", "--ellipsoid"},
+      {"--mass -1", "--mass"},
+      {"--omega nan,1,1", "--omega"},
+      {"--omega 0,0,0", "--omega"},
+      {"--t-end -1", "--t-end"},
+      {"--method euler", "--method"},
+      {"--tolerance 0", "--tolerance"},
+      {"--tolerance 1", "--tolerance"},
+      {"--step -1", "--step"},
+      {"--inertia 1,2,2 --ellipsoid 1,2,3", "--inertia"},
       {"--method rk4 --step 1e-9 --t-end 100", "--step"},
   };
   for (const auto& [args, option] : cases) {
