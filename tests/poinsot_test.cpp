@@ -1,0 +1,85 @@
+// Poinsot's construction (sections 4, 4.1): omega lies on both ellipsoids, the
+// polhode is their intersection, the separatrix passes the intermediate axis.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "rigid/free_body.h"
+#include "rigid/poinsot.h"
+
+using namespace rigid;
+using Eigen::Vector3d;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+// Sum (w_i / a_i)^2: 1 on the ellipsoid of semi-axes a.
+double on_ellipsoid(const Vector3d& w, const Vector3d& a) { return w.cwiseQuotient(a).squaredNorm(); }
+
+// Energy and |L| are sums of three O(1) products: a few ulps, times the
+// exact solution's own error along one period (the free-body tests bound it by 64 eps).
+constexpr double kOnSurface = 1e-13;
+
+const PrincipalMoments kEllipsoid{3.14159265358979323846, 2 * 3.14159265358979323846,
+                                  13 * 3.14159265358979323846 / 5};
+}  // namespace
+
+TEST_CASE("poinsot: omega0 lies on the energy and the momentum ellipsoid") {
+  for (const Vector3d& w : {Vector3d(1, 1, 1), Vector3d(0.1, -2, 0.3), Vector3d(3, 0, 0.01)}) {
+    const PoinsotEllipsoids e = poinsot_ellipsoids(kEllipsoid, w);
+    CHECK_THAT(on_ellipsoid(w, e.energy_semi_axes), WithinAbs(1.0, 1e-15));
+    CHECK_THAT(on_ellipsoid(w, e.momentum_semi_axes), WithinAbs(1.0, 1e-15));
+  }
+}
+
+TEST_CASE("poinsot: the polhode is the intersection of the two ellipsoids") {
+  for (const Vector3d& w0 : {Vector3d(1, 1, 1), Vector3d(1, 0.2, 0.1), Vector3d(0.05, 0.3, 1)}) {
+    const PoinsotEllipsoids e = poinsot_ellipsoids(kEllipsoid, w0);
+    const auto curve = polhode(kEllipsoid, w0, 200);
+    REQUIRE(curve.size() == 200);
+    for (const Vector3d& w : curve) {
+      CHECK_THAT(on_ellipsoid(w, e.energy_semi_axes), WithinAbs(1.0, kOnSurface));
+      CHECK_THAT(on_ellipsoid(w, e.momentum_semi_axes), WithinAbs(1.0, kOnSurface));
+    }
+    // One full period: the curve closes.
+    CHECK((curve.front() - curve.back()).norm() < 1e-12);
+  }
+}
+
+TEST_CASE("poinsot: points of given energy and momentum, and the separatrix") {
+  const double T = 2.5;
+  const Vector3d I = kEllipsoid.vector();
+  for (double f : {0.05, 0.4, 0.6, 0.95}) {
+    const double L2 = 2 * T * (I.minCoeff() + f * (I.maxCoeff() - I.minCoeff()));
+    const Vector3d w = omega_on_energy_ellipsoid(kEllipsoid, T, L2);
+    CHECK_THAT(kinetic_energy(kEllipsoid, w), WithinAbs(T, 1e-14));
+    CHECK_THAT(std::pow(angular_momentum_magnitude(kEllipsoid, w), 2), WithinAbs(L2, 1e-13));
+  }
+  const auto curves = separatrices(kEllipsoid, T, 101);
+  REQUIRE(curves.size() == 2);
+  for (const auto& curve : curves) {
+    for (const Vector3d& w : curve) {
+      CHECK_THAT(kinetic_energy(kEllipsoid, w), WithinAbs(T, 1e-14));
+      // On the separatrix L^2 = 2 T I_mid (I_mid = I2 here).
+      CHECK_THAT(std::pow(angular_momentum_magnitude(kEllipsoid, w), 2),
+                 WithinAbs(2 * T * kEllipsoid.I2, 1e-13));
+    }
+  }
+  // A symmetric body has no separatrix curve.
+  CHECK(separatrices({1, 1, 2}, T, 10).empty());
+}
+
+TEST_CASE("poinsot: section 4.1 axis ratios for I1 : I2 : I3 = 5 : 4 : 3") {
+  const Vector3d I(5, 4, 3);
+  const Vector3d m = momentum_ellipsoid_ratios(I), e = energy_ellipsoid_ratios(I);
+  // Printed to two decimals: (0.20 : 0.25 : 0.33) and (0.44 : 0.50 : 0.58).
+  CHECK_THAT(m(0), WithinAbs(0.20, 0.005));
+  CHECK_THAT(m(1), WithinAbs(0.25, 0.005));
+  CHECK_THAT(m(2), WithinAbs(0.33, 0.005));
+  CHECK_THAT(e(1), WithinAbs(0.50, 0.005));
+  CHECK_THAT(e(2), WithinAbs(0.58, 0.005));
+  // Errata: 1/sqrt(5) = 0.447 rounds to 0.45; the text truncates it to 0.44.
+  CHECK(std::floor(e(0) * 100) / 100 == 0.44);
+  // Both ellipsoids touch on the chosen axis.
+  for (int j = 0; j < 3; ++j) CHECK_THAT(momentum_ratios_touching(I, j)(j), WithinAbs(e(j), 1e-15));
+  CHECK_THAT(momentum_ratios_touching(I, 2)(0), WithinAbs(0.35, 0.005));
+  CHECK_THAT(momentum_ratios_touching(I, 2)(1), WithinAbs(0.43, 0.005));
+}
