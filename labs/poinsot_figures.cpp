@@ -143,11 +143,12 @@ void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& ome
   render::Panel& error = plot.panel(0, 0);
   error.title = "error in \\omega";
   error.x.label = "t (s)";
-  error.y = {"|\\omega - \\omega_{exact}| / |\\omega_0|", render::Scale::kLog10};
+  // Room above the curves for the legend: up to 10^3.
+  error.y = {"|\\omega - \\omega_{exact}| / |\\omega_0|", render::Scale::kLog10, 1e-17, 1e3};
   render::Panel& energy = plot.panel(0, 1);
   energy.title = "energy error";
   energy.x.label = "t (s)";
-  energy.y = {"|T - T_0| / T_0", render::Scale::kLog10};
+  energy.y = {"|T - T_0| / T_0", render::Scale::kLog10, 1e-17, 1e3};
   // Zero errors have no logarithm: show them at a floor below double roundoff.
   const auto floored = [](std::vector<double> v) {
     for (double& x : v) x = std::max(x, 1e-17);
@@ -166,7 +167,7 @@ void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& ome
     a.color = b.color = render::palette_color(k);
     a.dash = b.dash = dashes[k % 6];
   }
-  error.legend = render::LegendPlace::kBottomRight;
+  error.legend = render::LegendPlace::kTopRight;
   energy.legend = render::LegendPlace::kNone;
   lab.figure("integrators", [&](const std::string& path) {
     plot.save(path, lab.figure_width(), lab.figure_height());
