@@ -228,38 +228,34 @@ void Lab::section(const std::string& heading) {
   rows_.push_back({heading, "", "", "", true});
 }
 
+void Lab::store(const std::string& key, Json value, bool finite,
+                const std::optional<std::string>& textbook) {
+  // A NaN or an overflow must never reach the output: JSON would print null.
+  if (!finite) throw std::domain_error("result '" + key + "' is not finite for these inputs");
+  results_[key] = std::move(value);
+  if (textbook) textbook_[key] = *textbook;
+}
+
 void Lab::result(const std::string& key, const std::string& label, double value,
                  const std::string& unit, std::optional<std::string> textbook) {
-  if (!std::isfinite(value)) {
-    throw std::domain_error("result '" + key + "' is not finite for these inputs");
-  }
-  results_[key] = value;
-  if (textbook) textbook_[key] = *textbook;
+  store(key, value, std::isfinite(value), textbook);
   rows_.push_back({label, format_number(value), unit, textbook.value_or(std::string())});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
                  const std::string& unit, std::optional<std::string> textbook) {
-  if (!value.allFinite()) {
-    throw std::domain_error("result '" + key + "' is not finite for these inputs");
-  }
-  results_[key] = Json::array({value(0), value(1), value(2)});
-  if (textbook) textbook_[key] = *textbook;
+  store(key, Json::array({value(0), value(1), value(2)}), value.allFinite(), textbook);
   rows_.push_back({label, format_vec3(value), unit, textbook.value_or(std::string())});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
                  const std::string& unit, std::optional<std::string> textbook) {
-  if (!value.allFinite()) {
-    throw std::domain_error("result '" + key + "' is not finite for these inputs");
-  }
   Json rows = Json::array();
   for (int i = 0; i < 3; ++i) rows.push_back(Json::array({value(i, 0), value(i, 1), value(i, 2)}));
-  results_[key] = rows;
-  if (textbook) textbook_[key] = *textbook;
+  store(key, rows, value.allFinite(), textbook);
   for (int i = 0; i < 3; ++i) {
-    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()), i == 0 ? unit : "",
-                     i == 0 ? textbook.value_or("") : ""});
+    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()),
+                     i == 0 ? unit : "", i == 0 ? textbook.value_or("") : ""});
   }
 }
 

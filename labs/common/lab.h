@@ -99,7 +99,8 @@ class Lab {
     std::string label, value, unit, textbook;
     bool heading = false;
   };
-  void validate_outputs();
+  void store(const std::string& key, Json value, bool finite,
+             const std::optional<std::string>& textbook);
   void emit_table() const;
   void emit_json() const;
   void write_csv() const;

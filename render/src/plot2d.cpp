@@ -11,6 +11,7 @@
 #include "rigid/render/text.h"
 #include "rigid/render/ticks.h"
 #include "target.h"
+#include "prof.h"
 
 namespace rigid::render {
 
@@ -91,7 +92,10 @@ const Panel& Plot2D::panel(int row, int col) const {
 }
 
 void Plot2D::save(const std::string& path, int width, int height) const {
-  write_png(render(width, height), path);
+  detail::prof("plot start", false);
+  auto im = render(width, height);
+  write_png(im, path);
+  detail::prof("png", false);
 }
 
 // ---- Rendering -------------------------------------------------------------
@@ -629,8 +633,10 @@ Image Plot2D::render(int width, int height) const {
   detail::Target& tgt = detail::target();
   // No depth buffer for 2D.
   tgt.begin(width, height, false, kWhite);
+  detail::prof("begin+clear");
   detail::Painter& p = detail::painter();
   p.begin(width, height);
+  detail::prof("painter res");
   const Style st(width, height);
   double top = 0;
   if (!title.empty()) {
@@ -645,8 +651,12 @@ Image Plot2D::render(int width, int height) const {
       const Box cell{c * cw, top + r * ch, (c + 1) * cw, top + (r + 1) * ch};
       PanelRenderer(panel(r, c), st, p).draw(cell);
     }
+  detail::prof("build verts", false);
   p.flush();
-  return tgt.finish();
+  detail::prof("flush");
+  auto im = tgt.finish();
+  detail::prof("resolve+read");
+  return im;
 }
 
 }  // namespace rigid::render

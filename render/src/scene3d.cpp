@@ -12,6 +12,7 @@
 #include "painter.h"
 #include "rigid/render/png.h"
 #include "target.h"
+#include "prof.h"
 
 namespace rigid::render {
 
@@ -457,14 +458,18 @@ void Scene3D::add_label(const Vector3d& position, std::string text, Color color)
 }
 
 void Scene3D::save(const std::string& path, int width, int height) const {
-  write_png(render(width, height), path);
+  auto im = render(width, height);
+  write_png(im, path);
+  detail::prof("png", false);
 }
 
 // ---- Rendering -------------------------------------------------------------------
 
 Image Scene3D::render(int width, int height) const {
+  detail::prof("scene start", false);
   detail::Target& tgt = detail::target();
   tgt.begin(width, height, true, kWhite);
+  detail::prof("begin+clear");
   auto& gl = detail::gl;
 
   // Scene bounds fix the depth range.
@@ -491,6 +496,7 @@ Image Scene3D::render(int width, int height) const {
   const double font = std::pow(geo, 0.7);
 
   MeshProgram& prog = mesh_program();
+  detail::prof("program");
   gl.UseProgram(prog.program);
   gl.Uniform1i(prog.ortho, view.ortho ? 1 : 0);
   gl.Enable(GL_DEPTH_TEST);
@@ -541,6 +547,7 @@ Image Scene3D::render(int width, int height) const {
     else draw(o);
   }
 
+  detail::prof("opaque");
   // 2. Screen-space polylines, hidden by nearer opaque surfaces (nudged forward to avoid z-fighting).
   detail::Painter& p = detail::painter();
   p.begin(width, height);
@@ -562,6 +569,7 @@ Image Scene3D::render(int width, int height) const {
     emit();
   }
   p.flush();
+  detail::prof("polylines");
 
   // 3. Translucent surfaces without depth writes: all back faces far to near,
   //    then all front faces far to near. For nested convex shells this gives
@@ -593,6 +601,7 @@ Image Scene3D::render(int width, int height) const {
   gl.BindVertexArray(0);
   for (GpuMesh& g : temporary) release(g);
 
+  detail::prof("translucent");
   // 4. Text overlay: labels at projected points, title, legend.
   p.begin(width, height);
   for (const Label3D& l : labels_) {
@@ -646,7 +655,10 @@ Image Scene3D::render(int width, int height) const {
     }
   }
   p.flush();
-  return tgt.finish();
+  detail::prof("text");
+  auto im = tgt.finish();
+  detail::prof("resolve+read");
+  return im;
 }
 
 }  // namespace rigid::render
