@@ -49,10 +49,11 @@ struct Settings {
 };
 
 // One rigidlab run through the core's integrate API: the state at t_end.
-RunResult rigidlab_run(const Problem& p, rigid::Method m, double param) {
+RunResult rigidlab_run(const Problem& p, rigid::Method m, double param, bool project = false) {
   rigid::IntegrateOptions o;
   o.method = m;
   o.moments_rule = kRule;
+  o.project_invariants = project;
   if (rigid::is_adaptive(m)) {
     o.abs_tol = o.rel_tol = param;
   } else {
@@ -78,6 +79,12 @@ std::vector<Solver> solvers() {
     s.push_back({"rigidlab:" + std::string(rigid::method_name(m)), false, rigid::is_adaptive(m),
                  rigid::fixed_step_order(m),
                  [m](const Problem& p, double param) { return rigidlab_run(p, m, param); }});
+  }
+  // The same methods with omega projected back onto T and |L| after each step.
+  for (rigid::Method m : {rigid::Method::kRk4, rigid::Method::kRkf78}) {
+    s.push_back({"rigidlab:" + std::string(rigid::method_name(m)) + "+proj", false,
+                 rigid::is_adaptive(m), rigid::fixed_step_order(m),
+                 [m](const Problem& p, double param) { return rigidlab_run(p, m, param, true); }});
   }
   s.push_back({"odeint:dopri5", true, true, 0, bench::odeint_vector_dopri5});
   s.push_back({"odeint:rkf78", true, true, 0, bench::odeint_vector_rkf78});

@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
   Vector3d inertia(1, 1, 1), ellipsoid(3, 2, 1), omega0(1, 1, 1);
   double mass = rigid::kPi, t_end = 0.0, tolerance = 1e-10, step = 0.0;
   std::string method = "exact";
+  bool project = false;
   lab.option_vec3("--inertia", inertia, "kg m^2",
                   "principal moments I1,I2,I3 (instead of --ellipsoid)",
                   rigid::lab::Accept::Positive);
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
   lab.option("--tolerance", tolerance, "", "relative and absolute tolerance of adaptive methods");
   lab.option("--step", step, "s", "step of fixed-step methods; 0 picks period/2000",
              rigid::lab::Accept::NonNegative);
+  lab.flag("--project", project, "rk4, rkf78: project omega back onto T and |L| after each step");
   lab.enable_csv();
 
   return lab.run(argc, argv, [&](Lab& lab) {
@@ -129,6 +131,11 @@ int main(int argc, char** argv) {
       for (double t : times) samples.push_back({t, exact.omega_body(t), exact.attitude(t)});
     } else {
       options.method = rigid::method_from_name(method);
+      options.project_invariants = project;
+      if (project && options.method != rigid::Method::kRk4 &&
+          options.method != rigid::Method::kRkf78) {
+        throw UsageError("--project", "works with --method rk4 or rkf78 only");
+      }
       rigid::IntegrationResult run;
       try {
         const auto trace = measure(I, exact, times, options, &run);

@@ -204,6 +204,7 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
       {"--step -1", "--step"},
       {"--inertia 1,2,2 --ellipsoid 1,2,3", "--inertia"},
       {"--method rk4 --step 1e-9 --t-end 100", "--step"},
+      {"--method dopri5 --project", "--project"},
   };
   for (const auto& [args, option] : cases) {
     INFO(args);

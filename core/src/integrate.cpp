@@ -64,6 +64,44 @@ class Recorder {
   double T0_ = 0.0, L0_ = 0.0;
 };
 
+// Projection of omega onto the manifold {2T(omega) = 2T0, |L(omega)|^2 = L0^2}
+// (Hairer, Lubich & Wanner, Geometric Numerical Integration, IV.4): one
+// Gauss-Newton step omega -= J^T (J J^T)^-1 g with g the two constraint
+// residuals and J their gradients; g is of the size of the local error, so one
+// step leaves a residual of its square. Where the two gradients are parallel
+// (omega on a principal axis) only the energy is restored.
+class InvariantProjection {
+ public:
+  InvariantProjection(const PrincipalMoments& I, const FreeBodyState& x0)
+      : I_(I.vector()), I2_(I_.cwiseProduct(I_)) {
+    const Eigen::Vector3d w = omega_body(x0);
+    two_T0_ = w.dot(I_.cwiseProduct(w));
+    L0_sq_ = w.dot(I2_.cwiseProduct(w));
+  }
+  void operator()(FreeBodyState& x) const {
+    const Eigen::Vector3d w = omega_body(x);
+    const Eigen::Vector3d a = 2.0 * I_.cwiseProduct(w), b = 2.0 * I2_.cwiseProduct(w);
+    const double g1 = w.dot(I_.cwiseProduct(w)) - two_T0_, g2 = w.dot(I2_.cwiseProduct(w)) - L0_sq_;
+    const double aa = a.dot(a), ab = a.dot(b), bb = b.dot(b);
+    const double det = aa * bb - ab * ab;
+    Eigen::Vector3d dw;
+    if (det > 1e-10 * aa * bb) {
+      dw = a * ((bb * g1 - ab * g2) / det) + b * ((aa * g2 - ab * g1) / det);
+    } else if (aa > 0.0) {
+      dw = a * (g1 / aa);
+    } else {
+      return;
+    }
+    x[0] -= dw.x();
+    x[1] -= dw.y();
+    x[2] -= dw.z();
+  }
+
+ private:
+  Eigen::Vector3d I_, I2_;
+  double two_T0_ = 0.0, L0_sq_ = 0.0;
+};
+
 // A first trial step for the adaptive methods: a fraction of a radian of rotation.
 double initial_step(const FreeBodyState& x0, double tol, int order) {
   const double w = std::max(omega_body(x0).norm(), 1e-300);
@@ -99,10 +137,10 @@ void run_fixed(const std::vector<double>& times, double h, Method m, std::size_t
 }
 
 // Error-controlled stepping that lands on each sample time (for steppers without dense output).
-template <class Stepper, class System>
+template <class Stepper, class System, class Project>
 void run_controlled(Stepper& stepper, System& rhs, FreeBodyState x,
                     const std::vector<double>& times, double dt0, Method m, std::size_t max_steps,
-                    IntegrationResult& out, Recorder& rec) {
+                    IntegrationResult& out, Recorder& rec, Project&& project) {
   double t = times.front();
   double dt_free = dt0;
   for (double ts : times) {
@@ -113,6 +151,7 @@ void run_controlled(Stepper& stepper, System& rhs, FreeBodyState x,
       const ode::controlled_step_result r = stepper.try_step(rhs, x, t, dt);
       if (r == ode::success) {
         ++out.steps;
+        project(x);
         if (clamped) {
           t = ts;  // land exactly; the free step was not tried, keep it
         } else {
@@ -233,6 +272,14 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
   out.method = o.method;
   Recorder rec(I, x0, out, times.size());
   const EulerRhs rhs{I};
+  if (o.project_invariants && o.method != Method::kRk4 && o.method != Method::kRkf78) {
+    throw std::invalid_argument(std::string(method_name(o.method)) +
+                                " cannot project onto the invariants: only rk4 and rkf78 can");
+  }
+  const InvariantProjection projection(I, x0);
+  const auto project = [&](FreeBodyState& x) {
+    if (o.project_invariants) projection(x);
+  };
 
   switch (o.method) {
     case Method::kSplitting:
@@ -265,6 +312,7 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
           times, o.step, o.method, o.max_steps, out,
           [&](double h) {
             stepper.do_step(rhs, x, t, h);
+            project(x);
             t += h;
           },
           [&](double ts) { rec(ts, x); });
@@ -281,7 +329,7 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
       auto stepper =
           ode::make_controlled(o.abs_tol, o.rel_tol, ode::runge_kutta_fehlberg78<FreeBodyState>());
       run_controlled(stepper, rhs, x0, times, initial_step(x0, std::max(o.abs_tol, o.rel_tol), 8),
-                     o.method, o.max_steps, out, rec);
+                     o.method, o.max_steps, out, rec, project);
       break;
     }
     case Method::kBulirschStoer: {

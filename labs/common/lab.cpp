@@ -210,8 +210,10 @@ void Lab::option_choice(const std::string& flag, std::string& value,
   record_inputs_.push_back([this, key, &value] { inputs_[key] = value; });
 }
 
-void Lab::option_text(const std::string& flag, std::string& value, const std::string& help) {
-  app_.add_option(flag, value, help);
+void Lab::flag(const std::string& flag, bool& value, const std::string& help) {
+  app_.add_flag(flag, value, help);
+  const std::string key = key_of(flag);
+  record_inputs_.push_back([this, key, &value] { inputs_[key] = value; });
 }
 
 bool Lab::given(const std::string& flag) const {

@@ -50,8 +50,8 @@ class Lab {
   /// One word out of `choices`.
   void option_choice(const std::string& flag, std::string& value,
                      const std::vector<std::string>& choices, const std::string& help);
-  /// An optional flag that takes a value; `given(flag)` tells whether it was used.
-  void option_text(const std::string& flag, std::string& value, const std::string& help);
+  /// A switch with no value, e.g. --project.
+  void flag(const std::string& flag, bool& value, const std::string& help);
   /// True if the user gave this option on the command line.
   bool given(const std::string& flag) const;
   /// Offer --csv FILE for this lab's time series.

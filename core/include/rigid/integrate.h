@@ -50,6 +50,10 @@ struct IntegrateOptions {
   double step = 1e-2;      ///< fixed-step methods: the step, s
   std::size_t max_steps = 50'000'000;  ///< a run needing more steps throws instead of hanging
   MomentsRule moments_rule = MomentsRule::kPhysical;
+  /// rk4 and rkf78 only: after every step, pull omega back onto the energy and
+  /// |L| of the start (the standard projection, Hairer, Lubich & Wanner IV.4),
+  /// so both invariants hold to roundoff; other methods throw if asked.
+  bool project_invariants = false;
 };
 
 /// One output sample.
