@@ -31,30 +31,6 @@ double time_scale(const rigid::FreeBodyExact& motion, const Vector3d& omega0) {
   return std::isfinite(motion.period()) ? motion.period() : 2.0 * rigid::kPi / omega0.norm();
 }
 
-// Integrates with `method` and measures it against the exact motion at every sample.
-rigid::lab::MethodTrace measure(const rigid::PrincipalMoments& I, const rigid::FreeBodyExact& exact,
-                                const std::vector<double>& times, rigid::IntegrateOptions options,
-                                rigid::IntegrationResult* out) {
-  const rigid::FreeBodyState x0 = exact.state(times.front());
-  rigid::IntegrationResult run = rigid::integrate_free_body(I, x0, times, options);
-  rigid::lab::MethodTrace trace{options.method,
-                                rigid::is_adaptive(options.method)
-                                    ? fmt::format("tol {:g}", options.rel_tol)
-                                    : fmt::format("h = {:.3g} s", options.step),
-                                {},
-                                {},
-                                {}};
-  const double scale = exact.omega_body(0.0).norm();
-  for (const auto& s : run.samples) {
-    trace.t.push_back(s.t);
-    trace.omega_error.push_back((s.omega_body - exact.omega_body(s.t)).norm() / scale);
-    trace.energy_error.push_back(
-        std::abs(rigid::kinetic_energy(I, s.omega_body) / exact.energy() - 1.0));
-  }
-  if (out) *out = std::move(run);
-  return trace;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -124,42 +100,31 @@ int main(int argc, char** argv) {
     options.abs_tol = options.rel_tol = tolerance;
     options.step = step > 0 ? step : scale / 2000.0;
     options.max_steps = kMaxSteps;
-    std::vector<rigid::FreeBodySample> samples;
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));
     lab.result_text("method", "method", method);
+    rigid::IntegrationResult run;
     if (method == "exact") {
-      for (double t : times) samples.push_back({t, exact.omega_body(t), exact.attitude(t)});
+      run = rigid::sample_exact(exact, times);
     } else {
       options.method = rigid::method_from_name(method);
       options.project_invariants = project;
-      if (project && options.method != rigid::Method::kRk4 &&
-          options.method != rigid::Method::kRkf78) {
+      if (project && !rigid::can_project(options.method)) {
         throw UsageError("--project", "works with --method rk4 or rkf78 only");
       }
-      rigid::IntegrationResult run;
       try {
-        const auto trace = measure(I, exact, times, options, &run);
-        lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
-                   *std::max_element(trace.omega_error.begin(), trace.omega_error.end()), "");
+        run = rigid::integrate_free_body(I, exact.state(0.0), times, options);
       } catch (const std::exception& e) {
         throw UsageError(rigid::is_adaptive(options.method) ? "--tolerance" : "--step", e.what());
       }
-      samples = std::move(run.samples);
+      const std::vector<double> errors = rigid::omega_errors(run, exact);
+      lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
+                 *std::max_element(errors.begin(), errors.end()), "");
       lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
     }
-    lab.result("omega_end", "omega at t_end", samples.back().omega_body, "rad/s");
-    // Drift over the run, relative to the initial value (roundoff for "exact").
-    double energy_drift = 0.0, momentum_drift = 0.0;
-    for (const auto& s : samples) {
-      energy_drift = std::max(
-          energy_drift, std::abs(rigid::kinetic_energy(I, s.omega_body) / exact.energy() - 1));
-      momentum_drift =
-          std::max(momentum_drift, std::abs(rigid::angular_momentum_magnitude(I, s.omega_body) /
-                                                exact.angular_momentum_magnitude() -
-                                            1));
-    }
-    lab.result("energy_drift_rel", "max |T - T0| / T0", energy_drift, "");
-    lab.result("momentum_drift_rel", "max ||L| - |L0|| / |L0|", momentum_drift, "");
+    lab.result("omega_end", "omega at t_end", run.samples.back().omega_body, "rad/s");
+    // Drift over the run, relative to the start (roundoff for "exact").
+    lab.result("energy_drift_rel", "max |T - T0| / T0", run.energy_drift_rel, "");
+    lab.result("momentum_drift_rel", "max ||L| - |L0|| / |L0|", run.momentum_drift_rel, "");
 
     lab.section("4 Poinsot's ellipsoids through omega0 (eqs. 79-82)");
     const rigid::PoinsotEllipsoids ellipsoids = rigid::poinsot_ellipsoids(I, omega0);
@@ -195,7 +160,7 @@ int main(int argc, char** argv) {
 
     rigid::lab::Series series{
         {"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz", "energy_J", "L_kg_m2_s"}, {}};
-    for (const auto& s : samples) {
+    for (const auto& s : run.samples) {
       const auto& q = s.attitude;
       series.rows.push_back({s.t, s.omega_body(0), s.omega_body(1), s.omega_body(2), q.w(), q.x(),
                              q.y(), q.z(), rigid::kinetic_energy(I, s.omega_body),
@@ -204,14 +169,7 @@ int main(int argc, char** argv) {
     lab.series(std::move(series));
 
     lab.figures([&](Lab& lab) {
-      // Every integrator at its default setting, measured against the exact motion.
-      std::vector<rigid::lab::MethodTrace> traces;
-      for (rigid::Method m : rigid::kAllMethods) {
-        rigid::IntegrateOptions each = options;
-        each.method = m;
-        traces.push_back(measure(I, exact, times, each, nullptr));
-      }
-      rigid::lab::draw_poinsot_figures(lab, exact, omega0, samples, traces);
+      rigid::lab::draw_poinsot_figures(lab, exact, omega0, run.samples, times, options);
     });
   });
 }

@@ -135,9 +135,10 @@ void draw_omega(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
   });
 }
 
-// Each integrator's error against the exact solution, and its energy error.
+// Each integrator's error against the exact solution, and its energy error,
+// every method at the lab's tolerance or step.
 void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                      const std::vector<MethodTrace>& traces) {
+                      const std::vector<double>& times, const IntegrateOptions& options) {
   render::Plot2D plot(1, 2);
   plot.title = title_of(lab, motion, omega0) + ": integrators against the exact solution";
   render::Panel& error = plot.panel(0, 0);
@@ -156,14 +157,21 @@ void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& ome
   };
   render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed, render::Dash::kSolid,
                            render::Dash::kDashDot, render::Dash::kSolid,  render::Dash::kDotted};
-  for (std::size_t k = 0; k < traces.size(); ++k) {
-    const auto& trace = traces[k];
-    const std::vector<double> t(trace.t.begin() + 1, trace.t.end());
-    const std::vector<double> we(trace.omega_error.begin() + 1, trace.omega_error.end());
-    const std::vector<double> ee(trace.energy_error.begin() + 1, trace.energy_error.end());
-    const std::string name = std::string(method_name(trace.method)) + ", " + trace.setting;
-    auto& a = error.add_line(t, floored(we), name);
-    auto& b = energy.add_line(t, floored(ee), name);
+  // The first sample (t = 0) has no error to show on a log axis.
+  const std::vector<double> t(times.begin() + 1, times.end());
+  for (std::size_t k = 0; k < kAllMethods.size(); ++k) {
+    IntegrateOptions each = options;
+    each.method = kAllMethods[k];
+    each.project_invariants = false;
+    const IntegrationResult run =
+        integrate_free_body(motion.moments(), motion.state(times.front()), times, each);
+    const std::vector<double> we = omega_errors(run, motion), ee = energy_errors(run, motion);
+    const std::string name =
+        std::string(method_name(each.method)) + ", " +
+        (is_adaptive(each.method) ? fmt::format("tol {:g}", each.rel_tol)
+                                  : fmt::format("h = {:.3g} s", each.step));
+    auto& a = error.add_line(t, floored({we.begin() + 1, we.end()}), name);
+    auto& b = energy.add_line(t, floored({ee.begin() + 1, ee.end()}), name);
     a.color = b.color = render::palette_color(k);
     a.dash = b.dash = dashes[k % 6];
   }
@@ -181,13 +189,14 @@ void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& ome
 void draw_poinsot_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const FreeBodyExact& motion,
                           [[maybe_unused]] const Vector3d& omega0,
                           [[maybe_unused]] const std::vector<FreeBodySample>& samples,
-                          [[maybe_unused]] const std::vector<MethodTrace>& traces) {
+                          [[maybe_unused]] const std::vector<double>& times,
+                          [[maybe_unused]] const IntegrateOptions& options) {
 #if RIGID_HAVE_RENDER
   const std::vector<Vector3d> curve = rigid::polhode(motion.moments(), omega0, 400);
   draw_ellipsoids(lab, motion, omega0, curve);
   draw_polhode_family(lab, motion, omega0, curve);
   draw_omega(lab, motion, omega0, samples);
-  draw_integrators(lab, motion, omega0, traces);
+  draw_integrators(lab, motion, omega0, times, options);
 #else
   throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
 #endif

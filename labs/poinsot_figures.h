@@ -3,7 +3,6 @@
 // plot, and each integrator's error against the exact solution.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "common/lab.h"
@@ -12,16 +11,10 @@
 
 namespace rigid::lab {
 
-/// One integrator's run, measured against the exact solution at its samples.
-struct MethodTrace {
-  Method method;
-  std::string setting;  ///< "tol 1e-10" or "h = 0.005 s", for the legend
-  std::vector<double> t, omega_error, energy_error;
-};
-
-/// Writes poinsot_<what>.png figures into the lab's figure directory.
+/// Writes poinsot_<what>.png figures into the lab's figure directory; the
+/// integrator figure runs every method with `options` at `times`.
 void draw_poinsot_figures(Lab& lab, const FreeBodyExact& motion, const Eigen::Vector3d& omega0,
                           const std::vector<FreeBodySample>& samples,
-                          const std::vector<MethodTrace>& traces);
+                          const std::vector<double>& times, const IntegrateOptions& options);
 
 }  // namespace rigid::lab

@@ -242,6 +242,8 @@ bool is_adaptive(Method m) {
   return m == Method::kDopri5 || m == Method::kRkf78 || m == Method::kBulirschStoer;
 }
 
+bool can_project(Method m) { return m == Method::kRk4 || m == Method::kRkf78; }
+
 int fixed_step_order(Method m) {
   switch (m) {
     case Method::kSplitting:
@@ -272,7 +274,7 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
   out.method = o.method;
   Recorder rec(I, x0, out, times.size());
   const EulerRhs rhs{I};
-  if (o.project_invariants && o.method != Method::kRk4 && o.method != Method::kRkf78) {
+  if (o.project_invariants && !can_project(o.method)) {
     throw std::invalid_argument(std::string(method_name(o.method)) +
                                 " cannot project onto the invariants: only rk4 and rkf78 can");
   }
@@ -340,6 +342,33 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
     }
   }
   return out;
+}
+
+IntegrationResult sample_exact(const FreeBodyExact& exact, const std::vector<double>& times) {
+  IntegrationResult out;
+  if (times.empty()) return out;
+  Recorder rec(exact.moments(), exact.state(times.front()), out, times.size());
+  for (double t : times) rec(t, exact.state(t));
+  return out;
+}
+
+std::vector<double> omega_errors(const IntegrationResult& run, const FreeBodyExact& exact) {
+  const double scale = exact.omega_body(0.0).norm();
+  std::vector<double> errors;
+  errors.reserve(run.samples.size());
+  for (const FreeBodySample& s : run.samples) {
+    errors.push_back((s.omega_body - exact.omega_body(s.t)).norm() / scale);
+  }
+  return errors;
+}
+
+std::vector<double> energy_errors(const IntegrationResult& run, const FreeBodyExact& exact) {
+  std::vector<double> errors;
+  errors.reserve(run.samples.size());
+  for (const FreeBodySample& s : run.samples) {
+    errors.push_back(std::abs(kinetic_energy(exact.moments(), s.omega_body) / exact.energy() - 1.0));
+  }
+  return errors;
 }
 
 }  // namespace rigid

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "rigid/free_body.h"
+#include "rigid/free_body_exact.h"
 
 namespace rigid {
 
@@ -39,6 +40,8 @@ Method method_from_name(std::string_view name);
 /// True for the error-controlled methods (dopri5, rkf78, bulirsch-stoer), which take
 /// tolerances; the others take a fixed step.
 bool is_adaptive(Method m);
+/// True for the methods that can project onto the invariants (rk4, rkf78).
+bool can_project(Method m);
 /// The order of accuracy of a fixed-step method (2, 4, 4); 0 for the adaptive ones.
 int fixed_step_order(Method m);
 
@@ -85,5 +88,15 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
 
 /// n equally spaced times from t0 to t1 inclusive (n >= 2), or {t0} for n = 1.
 std::vector<double> uniform_times(double t0, double t1, std::size_t n);
+
+/// The exact motion sampled at `times` as a run of its own (no steps), with the
+/// same drift measures as an integrator's run: roundoff only.
+IntegrationResult sample_exact(const FreeBodyExact& exact, const std::vector<double>& times);
+
+/// |omega - omega_exact(t)| / |omega_exact(0)| at each sample of a run.
+std::vector<double> omega_errors(const IntegrationResult& run, const FreeBodyExact& exact);
+
+/// |T - T_exact| / T_exact at each sample of a run (eq. 81).
+std::vector<double> energy_errors(const IntegrationResult& run, const FreeBodyExact& exact);
 
 }  // namespace rigid
