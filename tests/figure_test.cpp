@@ -58,3 +58,18 @@ TEST_CASE("figures: tire_balancing matches its goldens") {
 TEST_CASE("figures: poinsot matches its goldens") {
   check_lab_figures("poinsot");
 }
+
+TEST_CASE("figures: without a GL context the numbers still print, with one error line") {
+  const fs::path dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / "no-context";
+  fs::remove_all(dir);
+  const auto run = run_lab("tire_balancing", "--json --figures " + dir.string(),
+                           "RIGID_GL_BACKEND=none");
+  CHECK(run.status == 1);
+  CHECK(run.one_error_line());
+  CHECK(run.err.rfind("tire_balancing: error: --figures:", 0) == 0);
+  const auto j = run.json();
+  CHECK(j["results"].contains("balance_mass_kg"));
+  CHECK(j["figures"].empty());
+  // No figure, and no partial file, is left behind.
+  CHECK(fs::is_empty(dir));
+}

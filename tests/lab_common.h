@@ -21,11 +21,11 @@ struct Run {
   bool one_error_line() const { return !err.empty() && err.find('\n') == err.size() - 1; }
 };
 
-inline Run run_lab(const std::string& lab, const std::string& args) {
+inline Run run_lab(const std::string& lab, const std::string& args, const std::string& env = "") {
   const std::string err_file =
       "/tmp/rigid_lab_test_" + std::to_string(::getpid()) + "_" + lab + ".err";
   const std::string command =
-      std::string(RIGID_LAB_DIR) + "/" + lab + " " + args + " 2>" + err_file;
+      env + " " + std::string(RIGID_LAB_DIR) + "/" + lab + " " + args + " 2>" + err_file;
   Run run;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return run;
