@@ -200,6 +200,35 @@ void work_precision_section(std::ostream& md, const std::string& problem, const 
 #ifdef RIGID_BENCH_HAVE_RENDER
 namespace rr = rigid::render;
 
+
+// One look per solver: the same algorithm has the same colour whoever wrote it
+// (rigidlab solid with circles, peers dashed with squares or triangles), so a
+// method and its peer sit side by side; the Okabe-Ito palette has only eight.
+struct SolverStyle {
+  rr::Color color = rr::kGray;
+  rr::Dash dash = rr::Dash::kSolid;
+  rr::Marker marker = rr::Marker::kCircle;
+};
+
+SolverStyle solver_style(const std::string& solver, bool peer) {
+  static const std::map<std::string, rr::Color> colors = {
+      {"rigidlab:rkf78", rr::kBlue},          {"odeint:rkf78", rr::kBlue},
+      {"rigidlab:rkf78+proj", rr::kSkyBlue},  {"rigidlab:dopri5", rr::kOrange},
+      {"odeint:dopri5", rr::kOrange},         {"rigidlab:bulirsch-stoer", rr::kReddishPurple},
+      {"rigidlab:rk4", rr::kVermillion},      {"rigidlab:rk4+proj", rr::kBluishGreen},
+      {"rigidlab:splitting", rr::kGray},      {"rigidlab:splitting4", rr::kBlack},
+      {"gsl:rk8pd", rr::kBlack},              {"gsl:rkf45", rr::kGray},
+      {"scipy:DOP853", rr::kReddishPurple},   {"scipy:RK45", rr::kVermillion}};
+  SolverStyle style;
+  if (const auto it = colors.find(solver); it != colors.end()) style.color = it->second;
+  if (peer) {
+    const bool scipy = solver.rfind("scipy:", 0) == 0, gsl = solver.rfind("gsl:", 0) == 0;
+    style.dash = scipy ? rr::Dash::kDashDot : rr::Dash::kDashed;
+    style.marker = gsl || scipy ? rr::Marker::kTriangle : rr::Marker::kSquare;
+  }
+  return style;
+}
+
 void draw_work_precision(const std::string& title, const std::vector<SolverCurve>& curves,
                          const std::string& path) {
   rr::Plot2D plot;
@@ -220,8 +249,6 @@ void draw_work_precision(const std::string& title, const std::vector<SolverCurve
   }
   p.x.max = 1.0;
   p.legend = rr::LegendPlace::kAuto;
-  const rr::Marker markers[] = {rr::Marker::kCircle, rr::Marker::kSquare, rr::Marker::kTriangle};
-  std::size_t ours = 0, peers = 0;
   for (const SolverCurve& c : curves) {
     std::vector<double> x, y;
     for (const Point& pt : c.points) {
@@ -230,11 +257,10 @@ void draw_work_precision(const std::string& title, const std::vector<SolverCurve
       y.push_back(pt.seconds);
     }
     rr::Series& s = p.add_line(x, y, c.solver);
-    const std::size_t i = c.peer ? peers++ : ours++;
-    // rigidlab: solid lines with circles; peers: dashed with squares/triangles
-    s.color = rr::palette_color(c.peer ? i + 2 : i);
-    s.marker = c.peer ? markers[1 + i % 2] : rr::Marker::kCircle;
-    s.dash = c.peer ? rr::Dash::kDashed : rr::Dash::kSolid;
+    const SolverStyle style = solver_style(c.solver, c.peer);
+    s.color = style.color;
+    s.marker = style.marker;
+    s.dash = style.dash;
     s.width = 3.0;
   }
   for (double level : kLevels) {
