@@ -240,20 +240,24 @@ void Lab::store(const std::string& key, Json value, bool finite,
 
 void Lab::result(const std::string& key, const std::string& label, double value,
                  const std::string& unit, std::optional<std::string> textbook) {
-  store(key, value, std::isfinite(value), textbook);
+  store(key, value + 0.0, std::isfinite(value), textbook);
   rows_.push_back({label, format_number(value), unit, textbook.value_or(std::string())});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
                  const std::string& unit, std::optional<std::string> textbook) {
-  store(key, Json::array({value(0), value(1), value(2)}), value.allFinite(), textbook);
+  // Adding +0.0 turns a negative zero into 0 in the JSON too.
+  store(key, Json::array({value(0) + 0.0, value(1) + 0.0, value(2) + 0.0}), value.allFinite(),
+        textbook);
   rows_.push_back({label, format_vec3(value), unit, textbook.value_or(std::string())});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
                  const std::string& unit, std::optional<std::string> textbook) {
   Json rows = Json::array();
-  for (int i = 0; i < 3; ++i) rows.push_back(Json::array({value(i, 0), value(i, 1), value(i, 2)}));
+  for (int i = 0; i < 3; ++i) {
+    rows.push_back(Json::array({value(i, 0) + 0.0, value(i, 1) + 0.0, value(i, 2) + 0.0}));
+  }
   store(key, rows, value.allFinite(), textbook);
   for (int i = 0; i < 3; ++i) {
     rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()),
