@@ -97,10 +97,12 @@ int main(int argc, char** argv) {
     lab.result("body_diagonal_deg", "body diagonal, for contrast",
                rigid::rad_to_deg(std::atan2(in.b, a)), "deg", textbook_if(book, "63.4"));
     if (book) {
-      lab.note(
-          "errata: the text calls the axis at -22.5 deg 'the 1-axis', but its moment is "
-          "1.540 ma^2 (I2 when moments ascend, as in its section 2.4); the axis at 67.5 deg "
-          "carries I1 = 0.126 ma^2");
+      lab.note(fmt::format(
+          "errata: the text calls the axis at {:.1f} deg 'the 1-axis', but its moment is "
+          "{:.3f} ma^2 (I2 when moments ascend, as in its section 2.4); the axis at {:.1f} deg "
+          "carries I1 = {:.3f} ma^2",
+          rigid::rad_to_deg(plane.theta), plane.moment / ma2, rigid::rad_to_deg(plane.theta_other),
+          plane.moment_other / ma2));
     }
 
     lab.section("2.4 principal moments and axes by diagonalisation (eqs. 62-69)");
