@@ -63,9 +63,9 @@ int main(int argc, char** argv) {
     if (book) {
       lab.note(fmt::format(
           "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "
-          "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = 10 kg, a = 18 cm, b = 5 cm, "
-          "theta = 1 deg",
-          1e3 * m0_small, 1e3 * m0));
+          "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
+          "b = {:g} cm, theta = {:g} deg",
+          1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset, tilt_deg));
     }
 
     // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.
