@@ -18,8 +18,9 @@ traces) is regenerated in numpy with the same number of curves and points,
 since what is measured is drawing, not physics.
 
 Writes a JSON array of entries
-  {"group": "figures", "case": "<lab>_<what>.png", "tool": "matplotlib", "seconds": s}
-plus {"case": "import", ...} for the import time.
+  {"group": "figures", "case": "<lab>_<what>.png", "tool": "matplotlib", "seconds": s,
+   "kind": "figure"}
+plus {"case": "import", ..., "kind": "import"} for the import time.
 
 Usage: figures_matplotlib.py --labs DIR --out figures_matplotlib.json [--repeats N] [--keep DIR]
 """
@@ -377,7 +378,7 @@ def main():
         ("poinsot_integrators.png", lambda p: poinsot_integrators(poinsot, series, p)),
     ]
     entries = [{"group": "figures", "case": "import", "tool": "matplotlib",
-                "seconds": IMPORT_SECONDS}]
+                "seconds": IMPORT_SECONDS, "kind": "import"}]
     best = {name: math.inf for name, _ in figures}
     # rounds over the whole set, so a burst of load on the machine hits one round, not one figure
     for _ in range(args.repeats):
@@ -387,7 +388,7 @@ def main():
             best[name] = min(best[name], time.perf_counter() - t0)
     for name, _ in figures:
         entries.append({"group": "figures", "case": name, "tool": "matplotlib",
-                        "seconds": best[name]})
+                        "seconds": best[name], "kind": "figure"})
         print(f"figures_matplotlib: {name}: {best[name] * 1e3:.1f} ms", file=sys.stderr)
     print(f"figures_matplotlib: import {IMPORT_SECONDS * 1e3:.1f} ms", file=sys.stderr)
     with open(args.out + ".tmp", "w") as f:

@@ -1,9 +1,10 @@
 // bench_report: merges the parts every benchmark wrote, DIR/<name>.json (each a
 // JSON array of entries), into DIR/results.json, and turns that into
 // DIR/results.md (work-precision tables at fixed error levels, the
-// elliptic-function and invariants tables, the issue-4 targets met or not, and
-// a generic table for any other group, e.g. "figures"), drawing one
-// work-precision diagram per problem with rigid::render when it is built.
+// elliptic-function and invariants tables, the figure-speed tables, the issue-3
+// and issue-4 targets met or not, and a generic table for any other group),
+// drawing one work-precision diagram per problem with rigid::render when it is
+// built.
 //
 // Usage: bench_report DIR
 //
@@ -367,10 +368,10 @@ void reference_section(std::ostream& md, const Json& all) {
   }
 }
 
-// Groups this report does not know (e.g. "figures"): one generic table each.
+// Groups this report does not know: one generic table each.
 void other_groups(std::ostream& md, const Json& all) {
   const std::set<std::string> known = {"work_precision", "elliptic", "invariants", "reference",
-                                       "problem"};
+                                       "problem", "figures"};
   std::map<std::string, std::vector<const Json*>> groups;
   for (const Json& e : all)
     if (!known.count(text(e, "group"))) groups[text(e, "group", "(no group)")].push_back(&e);
@@ -402,6 +403,136 @@ void other_groups(std::ostream& md, const Json& all) {
       }
       md << "\n";
     }
+  }
+}
+
+// Figure speed (issue 3): rigidlab against matplotlib per figure, the context,
+// the import, each lab's whole figure set, and a run without figures against
+// a build without the renderer; the issue's three targets.
+constexpr double kFigureSpeedup = 4.0;   // matplotlib / rigidlab, per figure
+constexpr double kSetBudget = 0.5;       // s, lamina_tensor + tire_balancing figure sets
+constexpr double kNoFigureSlack = 1.05;  // renderer linked / not, --json run (timer noise)
+
+void figures_section(std::ostream& md, const Json& all, Targets& targets) {
+  struct Figure {
+    double ours = NAN, peer = NAN;
+    bool first = false;
+    std::string lab;
+  };
+  std::vector<std::string> order;
+  std::map<std::string, Figure> figures;
+  std::map<std::string, double> set_wall, json_render, json_norender;
+  std::vector<std::string> labs;
+  double context = NAN, import = NAN;
+  std::string renderer;
+  for (const Json& e : all) {
+    if (text(e, "group") != "figures") continue;
+    const std::string kind = text(e, "kind"), name = text(e, "case"), tool = text(e, "tool");
+    const double s = number(e, "seconds");
+    if (kind == "figure") {
+      if (!figures.count(name)) order.push_back(name);
+      Figure& f = figures[name];
+      (tool == "matplotlib" ? f.peer : f.ours) = s;
+      if (tool == "rigidlab") f.first = e.value("first", false), f.lab = text(e, "lab");
+    } else if (kind == "context") {
+      context = s;
+      renderer = text(e, "backend") + ", " + text(e, "renderer");
+    } else if (kind == "import") {
+      import = s;
+    } else if (kind == "set") {
+      set_wall[name] = s;
+      labs.push_back(name);
+    } else if (kind == "json_run") {
+      const std::string lab = name.substr(0, name.find(' '));
+      (text(e, "build") == "norender" ? json_norender : json_render)[lab] = s;
+    }
+  }
+  if (figures.empty()) return;
+  const auto ms = [](double s) {
+    return std::isfinite(s) ? fmt::format("{:.1f} ms", s * 1e3) : "—";
+  };
+
+  md << "\n## Figures: rigidlab against matplotlib\n\n"
+        "Each figure at 1600×1200, drawn and written as PNG. rigidlab: the lab's own timing "
+        "(`--figures DIR --json --timing`: wall time of rendering, MSAA resolve, read-back and "
+        "PNG encoding of that figure), best of several runs of the lab; the first figure of a "
+        "process (marked ¹) also pays for loading the GL library and making the context. "
+        "matplotlib (Agg, `/usr/bin/python3`): the same plot from figure creation to the PNG "
+        "on disk, after import, best of several; 3D scenes with mplot3d.\n\n"
+        "| figure | rigidlab | matplotlib | matplotlib / rigidlab |\n|---|---|---|---|\n";
+  std::vector<std::string> misses;
+  double worst = INFINITY, sum_ours = 0, sum_peer = 0;
+  std::map<std::string, double> lab_ours, lab_peer;
+  for (const std::string& name : order) {
+    const Figure& f = figures[name];
+    const double ratio = f.peer / f.ours;
+    md << fmt::format("| {}{} | {} | {} | {} |\n", name, f.first ? " ¹" : "", ms(f.ours),
+                      ms(f.peer), std::isfinite(ratio) ? fmt::format("{:.2f}×", ratio) : "—");
+    if (std::isfinite(f.ours)) lab_ours[f.lab] += f.ours;
+    if (std::isfinite(f.peer)) lab_peer[f.lab] += f.peer;
+    if (!std::isfinite(ratio)) continue;
+    worst = std::min(worst, ratio);
+    sum_ours += f.ours;  // both sums over the figures both tools drew
+    sum_peer += f.peer;
+    if (ratio < kFigureSpeedup) misses.push_back(fmt::format("{} {:.2f}×", name, ratio));
+  }
+  md << fmt::format("| **all figures** | {} | {} | {} |\n", ms(sum_ours), ms(sum_peer),
+                    sum_ours > 0 ? fmt::format("{:.2f}×", sum_peer / sum_ours) : "—");
+  md << "\n";
+  if (std::isfinite(context))
+    md << "- context creation (rigidlab, " << renderer << "): " << ms(context)
+       << " (bench_figure_context, best of fresh processes)\n";
+  if (std::isfinite(import))
+    md << "- matplotlib import (matplotlib, pyplot, mplot3d, numpy; once per process, not in "
+          "the figure times): "
+       << ms(import) << "\n";
+
+  if (!labs.empty()) {
+    md << "\n**Whole figure set per lab.** rigidlab: wall time of the process "
+          "`LAB --quiet --figures DIR`, start to exit (best of runs); matplotlib: its figures "
+          "plus its import, as one fresh process would pay.\n\n"
+          "| lab | rigidlab process | rigidlab figures | matplotlib figures + import |\n"
+          "|---|---|---|---|\n";
+    for (const std::string& lab : labs)
+      md << fmt::format("| {} | {} | {} | {} |\n", lab, ms(set_wall[lab]), ms(lab_ours[lab]),
+                        lab_peer.count(lab) ? ms(lab_peer[lab] + import) : "—");
+  }
+  if (!json_render.empty()) {
+    md << "\n**A run without figures** (`LAB --json`, process wall time, best of many, the two "
+          "builds alternating): this build against one configured with "
+          "`-DRIGID_BUILD_RENDER=OFF`.\n\n"
+          "| lab | renderer linked | no renderer | ratio |\n|---|---|---|---|\n";
+    for (const auto& [lab, s] : json_render) {
+      const double other = json_norender.count(lab) ? json_norender[lab] : NAN;
+      md << fmt::format("| {} | {} | {} | {} |\n", lab, ms(s), ms(other),
+                        std::isfinite(other) ? fmt::format("{:.2f}", s / other) : "—");
+    }
+  }
+
+  // the targets
+  if (std::isfinite(worst))
+    targets.add(misses.empty(),
+                fmt::format("figures (issue 3): every figure at least {:.0f}× faster than "
+                            "matplotlib, PNG encoding included (worst {:.2f}×{}{})",
+                            kFigureSpeedup, worst, misses.empty() ? "" : "; below: ",
+                            fmt::format("{}", fmt::join(misses, ", "))));
+  if (set_wall.count("lamina_tensor") && set_wall.count("tire_balancing")) {
+    const double both = set_wall["lamina_tensor"] + set_wall["tire_balancing"];
+    targets.add(both < kSetBudget,
+                fmt::format("figures (issue 3): whole figure set of lamina_tensor + "
+                            "tire_balancing under {:.1f} s: {:.3f} s (process wall time, "
+                            "{:.3f} s + {:.3f} s; figures alone {:.3f} s)",
+                            kSetBudget, both, set_wall["lamina_tensor"], set_wall["tire_balancing"],
+                            lab_ours["lamina_tensor"] + lab_ours["tire_balancing"]));
+  }
+  for (const auto& [lab, s] : json_render) {
+    if (!json_norender.count(lab)) continue;
+    const double r = s / json_norender[lab];
+    targets.add(r <= kNoFigureSlack,
+                fmt::format("figures (issue 3): {} --json with the renderer linked no slower "
+                            "than without ({} against {}, ratio {:.2f}; ≤ {:.2f} allowed for "
+                            "timer noise)",
+                            lab, ms(s), ms(json_norender[lab]), r, kNoFigureSlack));
   }
 }
 
@@ -484,9 +615,10 @@ int main(int argc, char** argv) {
   reference_section(md, all);
   elliptic_section(md, all, targets);
   invariants_section(md, all, targets);
+  figures_section(md, all, targets);
   other_groups(md, all);
 
-  md << "\n## Issue 4 targets\n\n";
+  md << "\n## Targets (issue 4: work-precision; issue 3: figures)\n\n";
   for (const auto& line : targets.lines) md << line << "\n";
 
   const std::string path = out_dir + "/results.md";

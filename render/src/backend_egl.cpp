@@ -1,7 +1,10 @@
 // Internal: the EGL backend on EGL_MESA_platform_surfaceless: no window, no
 // display server, no pbuffer; the context is made current with no surface.
+// libEGL is opened with dlopen on first use, like libOSMesa, so that linking
+// the renderer costs a run without figures nothing.
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <dlfcn.h>
 
 #include <cstring>
 
@@ -11,7 +14,54 @@ namespace rigid::render::detail {
 
 namespace {
 
-GlProc egl_proc(const char* name) { return reinterpret_cast<GlProc>(eglGetProcAddress(name)); }
+// The EGL entry points used here, looked up in the dlopen'ed libEGL.
+struct EglApi {
+  PFNEGLGETPROCADDRESSPROC eglGetProcAddress = nullptr;
+  PFNEGLQUERYSTRINGPROC eglQueryString = nullptr;
+  PFNEGLINITIALIZEPROC eglInitialize = nullptr;
+  PFNEGLBINDAPIPROC eglBindAPI = nullptr;
+  PFNEGLCHOOSECONFIGPROC eglChooseConfig = nullptr;
+  PFNEGLCREATECONTEXTPROC eglCreateContext = nullptr;
+  PFNEGLMAKECURRENTPROC eglMakeCurrent = nullptr;
+  PFNEGLDESTROYCONTEXTPROC eglDestroyContext = nullptr;
+};
+
+EglApi api;
+
+bool load(std::string& error) {
+  if (api.eglGetProcAddress != nullptr) return true;
+  void* lib = nullptr;
+  for (const char* name : {"libEGL.so.1", "libEGL.so"})
+    if ((lib = dlopen(name, RTLD_NOW | RTLD_LOCAL)) != nullptr) break;
+  if (lib == nullptr) {
+    const char* why = dlerror();
+    error = std::string("cannot load libEGL (") + (why ? why : "not found") + ")";
+    return false;
+  }
+  EglApi a;
+  bool ok = true;
+#define RIGID_EGL_LOAD(name) \
+  ok = ok && (a.name = reinterpret_cast<decltype(a.name)>(dlsym(lib, #name))) != nullptr;
+  RIGID_EGL_LOAD(eglGetProcAddress)
+  RIGID_EGL_LOAD(eglQueryString)
+  RIGID_EGL_LOAD(eglInitialize)
+  RIGID_EGL_LOAD(eglBindAPI)
+  RIGID_EGL_LOAD(eglChooseConfig)
+  RIGID_EGL_LOAD(eglCreateContext)
+  RIGID_EGL_LOAD(eglMakeCurrent)
+  RIGID_EGL_LOAD(eglDestroyContext)
+#undef RIGID_EGL_LOAD
+  if (!ok) {
+    error = "libEGL lacks an EGL 1.4 entry point";
+    return false;
+  }
+  api = a;
+  return true;
+}
+
+GlProc egl_proc(const char* name) {
+  return reinterpret_cast<GlProc>(api.eglGetProcAddress(name));
+}
 
 bool has_extension(const char* list, const char* name) {
   if (list == nullptr) return false;
@@ -24,24 +74,26 @@ bool has_extension(const char* list, const char* name) {
 }  // namespace
 
 GlProcLoader make_egl_context(std::string& error) {
-  const char* client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!load(error)) return nullptr;
+  const char* client_ext = api.eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (!has_extension(client_ext, "EGL_MESA_platform_surfaceless")) {
     error = "EGL_MESA_platform_surfaceless is not supported";
     return nullptr;
   }
-  auto get_platform_display =
-      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      api.eglGetProcAddress("eglGetPlatformDisplayEXT"));
   if (get_platform_display == nullptr) {
     error = "eglGetPlatformDisplayEXT is missing";
     return nullptr;
   }
-  EGLDisplay dpy = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLDisplay dpy =
+      get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   EGLint major = 0, minor = 0;
-  if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &major, &minor)) {
+  if (dpy == EGL_NO_DISPLAY || !api.eglInitialize(dpy, &major, &minor)) {
     error = "eglInitialize failed on the surfaceless platform";
     return nullptr;
   }
-  if (!eglBindAPI(EGL_OPENGL_API)) {
+  if (!api.eglBindAPI(EGL_OPENGL_API)) {
     error = "eglBindAPI(EGL_OPENGL_API) failed";
     return nullptr;
   }
@@ -50,9 +102,9 @@ GlProcLoader make_egl_context(std::string& error) {
                                    EGL_NONE};
   EGLConfig config = nullptr;
   EGLint count = 0;
-  if (!eglChooseConfig(dpy, config_attribs, &config, 1, &count) || count < 1) config = nullptr;
+  if (!api.eglChooseConfig(dpy, config_attribs, &config, 1, &count) || count < 1) config = nullptr;
   if (config == nullptr &&
-      !has_extension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) {
+      !has_extension(api.eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) {
     error = "no EGL config renders OpenGL";
     return nullptr;
   }
@@ -63,13 +115,13 @@ GlProcLoader make_egl_context(std::string& error) {
                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                     EGL_NONE};
-  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, context_attribs);
+  EGLContext ctx = api.eglCreateContext(dpy, config, EGL_NO_CONTEXT, context_attribs);
   if (ctx == EGL_NO_CONTEXT) {
     error = "eglCreateContext failed for a GL 3.3 core profile";
     return nullptr;
   }
-  if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
-    eglDestroyContext(dpy, ctx);
+  if (!api.eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
+    api.eglDestroyContext(dpy, ctx);
     error = "eglMakeCurrent without a surface failed";
     return nullptr;
   }

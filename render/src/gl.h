@@ -24,6 +24,7 @@ namespace rigid::render::detail {
   X(void, DepthMask, (GLboolean))                                                    \
   X(void, DepthFunc, (GLenum))                                                       \
   X(void, CullFace, (GLenum))                                                        \
+  X(void, FrontFace, (GLenum))                                                       \
   X(void, PixelStorei, (GLenum, GLint))                                              \
   X(void, ReadPixels, (GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, void*))       \
   X(void, Finish, (void))                                                            \

@@ -43,10 +43,12 @@ void main() {
 }
 )";
 
-// Glyph atlas: one R8 texture, shelf-packed, kept for the process.
+// Glyph atlas: one R8 texture, shelf-packed, kept for the process. 1024² holds
+// several hundred glyphs, more than a figure's text at a few sizes; when it is
+// full it starts afresh (see text()).
 class Atlas {
  public:
-  static constexpr int kSize = 2048;
+  static constexpr int kSize = 1024;
   struct Entry {
     int x = 0, y = 0, w = 0, h = 0, left = 0, top = 0;
   };

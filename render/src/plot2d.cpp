@@ -11,7 +11,6 @@
 #include "rigid/render/text.h"
 #include "rigid/render/ticks.h"
 #include "target.h"
-#include "prof.h"
 
 namespace rigid::render {
 
@@ -92,10 +91,7 @@ const Panel& Plot2D::panel(int row, int col) const {
 }
 
 void Plot2D::save(const std::string& path, int width, int height) const {
-  detail::prof("plot start", false);
-  auto im = render(width, height);
-  write_png(im, path);
-  detail::prof("png", false);
+  write_png(render(width, height), path);
 }
 
 // ---- Rendering -------------------------------------------------------------
@@ -633,10 +629,8 @@ Image Plot2D::render(int width, int height) const {
   detail::Target& tgt = detail::target();
   // No depth buffer for 2D.
   tgt.begin(width, height, false, kWhite);
-  detail::prof("begin+clear");
   detail::Painter& p = detail::painter();
   p.begin(width, height);
-  detail::prof("painter res");
   const Style st(width, height);
   double top = 0;
   if (!title.empty()) {
@@ -651,12 +645,8 @@ Image Plot2D::render(int width, int height) const {
       const Box cell{c * cw, top + r * ch, (c + 1) * cw, top + (r + 1) * ch};
       PanelRenderer(panel(r, c), st, p).draw(cell);
     }
-  detail::prof("build verts", false);
   p.flush();
-  detail::prof("flush");
-  auto im = tgt.finish();
-  detail::prof("resolve+read");
-  return im;
+  return tgt.finish();
 }
 
 }  // namespace rigid::render

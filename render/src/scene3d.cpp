@@ -12,7 +12,6 @@
 #include "painter.h"
 #include "rigid/render/png.h"
 #include "target.h"
-#include "prof.h"
 
 namespace rigid::render {
 
@@ -246,6 +245,41 @@ View make_view(const Camera& cam, int width, int height, const Vector3d& center,
   return v;
 }
 
+// The path of a tube thinned to what the screen shows: a point is dropped while
+// every point between its neighbours kept stays within kTubePathError pixels of
+// the straight segment that replaces them (measured in 3D, in pixels at the
+// point's depth, so a chord cannot sink into a surface the tube lies on even
+// where the path turns towards the camera), and no segment grows past
+// kTubeSegmentMax pixels (so shading along the tube stays smooth). Each dropped
+// point saves a ring of triangles, which llvmpipe sets up and rasterises one
+// by one; a polhode of 240 samples keeps about a third of them.
+std::vector<Vector3d> thin_path(const std::vector<Vector3d>& path, const View& view) {
+  constexpr double kTubePathError = 0.2, kTubeSegmentMax = 40.0;
+  if (path.size() < 3) return path;
+  for (const Vector3d& p : path)
+    if (view.project(p).w() < 0) return path;  // behind the camera: keep every point
+  auto off_chord = [&](const Vector3d& a, const Vector3d& b, const Vector3d& q) {
+    const Vector3d d = b - a;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((q - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return view.pixels((a + t * d - q).norm(), q);
+  };
+  std::vector<Vector3d> out{path.front()};
+  std::size_t anchor = 0;
+  for (std::size_t j = 2; j < path.size(); ++j) {
+    const Vector3d& a = path[anchor];
+    bool ok = view.pixels((path[j] - a).norm(), a) <= kTubeSegmentMax;
+    for (std::size_t k = anchor + 1; ok && k < j; ++k)
+      ok = off_chord(a, path[j], path[k]) <= kTubePathError;
+    if (!ok) {
+      anchor = j - 1;
+      out.push_back(path[anchor]);
+    }
+  }
+  out.push_back(path.back());
+  return out;
+}
+
 // Bounding sphere of an object in world space (centre, radius).
 std::pair<Vector3d, double> bounds(const Scene3D::Object& o) {
   using S = Scene3D::Shape;
@@ -458,18 +492,14 @@ void Scene3D::add_label(const Vector3d& position, std::string text, Color color)
 }
 
 void Scene3D::save(const std::string& path, int width, int height) const {
-  auto im = render(width, height);
-  write_png(im, path);
-  detail::prof("png", false);
+  write_png(render(width, height), path);
 }
 
 // ---- Rendering -------------------------------------------------------------------
 
 Image Scene3D::render(int width, int height) const {
-  detail::prof("scene start", false);
   detail::Target& tgt = detail::target();
   tgt.begin(width, height, true, kWhite);
-  detail::prof("begin+clear");
   auto& gl = detail::gl;
 
   // Scene bounds fix the depth range.
@@ -496,7 +526,6 @@ Image Scene3D::render(int width, int height) const {
   const double font = std::pow(geo, 0.7);
 
   MeshProgram& prog = mesh_program();
-  detail::prof("program");
   gl.UseProgram(prog.program);
   gl.Uniform1i(prog.ortho, view.ortho ? 1 : 0);
   gl.Enable(GL_DEPTH_TEST);
@@ -510,7 +539,7 @@ Image Scene3D::render(int width, int height) const {
     const GpuMesh* g = nullptr;
     if (o.shape == Shape::kTube || o.shape == Shape::kCustom) {
       if (o.shape == Shape::kTube)
-        temporary.push_back(upload(make_tube(o.path, o.tube_radius,
+        temporary.push_back(upload(make_tube(thin_path(o.path, view), o.tube_radius,
                                              std::min(48, segments_for_radius(view.pixels(o.tube_radius, c))))));
       else
         temporary.push_back(upload(o.mesh));
@@ -523,6 +552,8 @@ Image Scene3D::render(int width, int height) const {
       g = &unit_mesh(o.shape, segments_for_radius(view.pixels(round_r, c)), o.torus_minor);
     }
     const Eigen::Matrix4d mv = view.view * t.matrix();
+    // A mirroring transform turns counter-clockwise (outward) faces clockwise.
+    gl.FrontFace(t.linear().determinant() < 0 ? GL_CW : GL_CCW);
     const Eigen::Matrix4f mvp = (view.proj * mv).cast<float>();
     const Eigen::Matrix4f mvf = mv.cast<float>();
     const Eigen::Matrix3f nmat = mv.block<3, 3>(0, 0).inverse().transpose().cast<float>();
@@ -537,17 +568,27 @@ Image Scene3D::render(int width, int height) const {
     gl.DrawElements(GL_TRIANGLES, g->count, GL_UNSIGNED_INT, nullptr);
   };
 
-  // 1. Opaque surfaces, depth written.
+  // 1. Opaque surfaces, depth written. The back faces of a closed surface are
+  //    always hidden behind its front faces, so they are culled: half the
+  //    triangles never reach the rasteriser. Open ones (disk, plane) and
+  //    custom meshes show both sides.
+  auto is_open = [](const Object* o) { return o->shape == Shape::kDisk || o->shape == Shape::kPlane; };
   gl.Disable(GL_BLEND);
-  gl.Disable(GL_CULL_FACE);
+  gl.CullFace(GL_BACK);
   gl.DepthMask(GL_TRUE);
   std::vector<const Object*> translucent;
   for (const Object& o : objects_) {
-    if (o.material.opacity < 1.0f) translucent.push_back(&o);
-    else draw(o);
+    if (o.material.opacity < 1.0f) {
+      translucent.push_back(&o);
+      continue;
+    }
+    if (is_open(&o) || o.shape == Shape::kCustom) gl.Disable(GL_CULL_FACE);
+    else gl.Enable(GL_CULL_FACE);
+    draw(o);
   }
+  gl.Disable(GL_CULL_FACE);
+  gl.FrontFace(GL_CCW);
 
-  detail::prof("opaque");
   // 2. Screen-space polylines, hidden by nearer opaque surfaces (nudged forward to avoid z-fighting).
   detail::Painter& p = detail::painter();
   p.begin(width, height);
@@ -569,7 +610,6 @@ Image Scene3D::render(int width, int height) const {
     emit();
   }
   p.flush();
-  detail::prof("polylines");
 
   // 3. Translucent surfaces without depth writes: all back faces far to near,
   //    then all front faces far to near. For nested convex shells this gives
@@ -579,7 +619,6 @@ Image Scene3D::render(int width, int height) const {
   gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl.DepthMask(GL_FALSE);
   gl.Enable(GL_CULL_FACE);
-  auto is_open = [](const Object* o) { return o->shape == Shape::kDisk || o->shape == Shape::kPlane; };
   auto far_key = [&](const Object* o) { const auto [c, r] = bounds(*o); return view.depth(c) + r; };
   auto near_key = [&](const Object* o) { const auto [c, r] = bounds(*o); return view.depth(c) - r; };
   std::vector<const Object*> order = translucent;
@@ -596,12 +635,12 @@ Image Scene3D::render(int width, int height) const {
     gl.Enable(GL_CULL_FACE);
   }
   gl.Disable(GL_CULL_FACE);
+  gl.FrontFace(GL_CCW);
   gl.DepthMask(GL_TRUE);
   gl.Disable(GL_DEPTH_TEST);
   gl.BindVertexArray(0);
   for (GpuMesh& g : temporary) release(g);
 
-  detail::prof("translucent");
   // 4. Text overlay: labels at projected points, title, legend.
   p.begin(width, height);
   for (const Label3D& l : labels_) {
@@ -655,10 +694,7 @@ Image Scene3D::render(int width, int height) const {
     }
   }
   p.flush();
-  detail::prof("text");
-  auto im = tgt.finish();
-  detail::prof("resolve+read");
-  return im;
+  return tgt.finish();
 }
 
 }  // namespace rigid::render

@@ -1,6 +1,11 @@
 // Internal: the framebuffer a figure is drawn into. With MSAA it is a
 // multisampled FBO resolved by glBlitFramebuffer; without, a 2×-size FBO
-// filtered down (supersampling). Reused between figures of the same size.
+// filtered down (supersampling). Reused between figures of the same size: the
+// colour buffer is shared by a colour-only FBO (2D plots) and a colour+depth
+// FBO (3D scenes) whose depth buffer is made only when a scene first needs it,
+// so a plot after a scene reallocates nothing and a 2D-only process never
+// allocates a depth buffer. (Fresh buffers are costly on llvmpipe: every page
+// of a 30 MB multisampled buffer is faulted in on first touch.)
 #pragma once
 
 #include "gl.h"
@@ -20,9 +25,10 @@ class Target {
 
  private:
   void release();
+  void add_depth();
   int width_ = 0, height_ = 0, scale_ = 1, samples_ = 0;
   bool depth_ = false;
-  GLuint draw_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0;
+  GLuint color_fbo_ = 0, depth_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0;
   GLuint resolve_fbo_ = 0, resolve_rb_ = 0;
 };
 

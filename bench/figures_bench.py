@@ -1,0 +1,122 @@
+#!/usr/bin/python3
+"""rigidlab's side of the figure-speed benchmark (issue 3, "Speed").
+
+Runs the labs as a user does and times them from outside and inside:
+
+- each figure: every lab runs with `--figures DIR --json --timing`, whose JSON
+  holds the wall time of drawing and writing each PNG; the best of --repeats
+  runs per figure (the first figure of a process includes making the context);
+- the whole figure set of a lab: the wall time of the process
+  `LAB --quiet --figures DIR`, from start to exit, best of --repeats;
+- the context: bench_figure_context makes one and reports
+  ContextInfo::creation_seconds (loading the backend library, the context,
+  the GL entry points), best of --repeats fresh processes;
+- a run without figures: `LAB --json`, process wall time, in this build
+  (renderer linked) and in a build configured with RIGID_BUILD_RENDER=OFF
+  (--norender DIR), alternating the two, best of --json-repeats each.
+
+Rounds go over every lab in turn, so a burst of load on the shared machine
+spoils one round, not one lab. Writes a JSON array of entries
+  {"group": "figures", "case": ..., "tool": "rigidlab", "seconds": s, "kind": ...}
+with kind "figure" (case = the PNG's name, "lab" = its lab, "first" = true for
+the first figure of its process), "context", "set" (case = the lab) and
+"json_run" ("build": "render" or "norender").
+
+Usage: figures_bench.py --labs DIR --context EXE --out FILE [--norender DIR]
+                        [--repeats N] [--json-repeats N]
+"""
+
+import argparse
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+LABS = ["lamina_tensor", "tire_balancing", "poinsot"]
+
+
+def wall(cmd):
+    """Seconds from spawning cmd to its exit (stdout discarded); raises if it fails."""
+    t0 = time.perf_counter()
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    return time.perf_counter() - t0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--labs", required=True, help="directory with the lab executables")
+    ap.add_argument("--context", required=True, help="the bench_figure_context executable")
+    ap.add_argument("--norender", help="labs directory of a build without the renderer")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--repeats", type=int, default=5)
+    ap.add_argument("--json-repeats", type=int, default=30)
+    args = ap.parse_args()
+
+    entries = []
+    work = tempfile.mkdtemp(prefix="rigid_figbench_")
+    try:
+        # the context, in fresh processes
+        best = math.inf
+        info = {}
+        for _ in range(args.repeats):
+            out = subprocess.run([args.context], check=True, capture_output=True, text=True)
+            info = json.loads(out.stdout)
+            best = min(best, info["creation_seconds"])
+        entries.append({"group": "figures", "case": "context creation", "tool": "rigidlab",
+                        "seconds": best, "kind": "context", "backend": info.get("backend", ""),
+                        "renderer": info.get("gl_renderer", "")})
+
+        # per figure (inside the process) and the whole set (the process)
+        figure_best, figure_lab, first = {}, {}, {}
+        set_best = {lab: math.inf for lab in LABS}
+        for _ in range(args.repeats):
+            for lab in LABS:
+                exe = os.path.join(args.labs, lab)
+                d = os.path.join(work, lab)
+                os.makedirs(d, exist_ok=True)
+                out = subprocess.run([exe, "--figures", d, "--json", "--timing"], check=True,
+                                     capture_output=True, text=True)
+                timing = json.loads(out.stdout)["timing"]["figure_seconds"]
+                order = json.loads(out.stdout)["figures"]
+                for name, s in timing.items():
+                    figure_best[name] = min(figure_best.get(name, math.inf), s)
+                    figure_lab[name] = lab
+                    first[name] = bool(order) and name == order[0]
+                set_best[lab] = min(set_best[lab], wall([exe, "--quiet", "--figures", d]))
+        for name, s in figure_best.items():
+            entries.append({"group": "figures", "case": name, "tool": "rigidlab", "seconds": s,
+                            "kind": "figure", "lab": figure_lab[name], "first": first[name]})
+        for lab in LABS:
+            entries.append({"group": "figures", "case": lab, "tool": "rigidlab",
+                            "seconds": set_best[lab], "kind": "set"})
+
+        # --json without figures: renderer linked against not built
+        builds = [("render", args.labs)]
+        if args.norender:
+            builds.append(("norender", args.norender))
+        json_best = {(b, lab): math.inf for b, _ in builds for lab in LABS}
+        for _ in range(args.json_repeats):
+            for lab in LABS:
+                for b, d in builds:
+                    json_best[(b, lab)] = min(json_best[(b, lab)],
+                                              wall([os.path.join(d, lab), "--json"]))
+        for (b, lab), s in json_best.items():
+            entries.append({"group": "figures", "case": f"{lab} --json", "tool": "rigidlab",
+                            "seconds": s, "kind": "json_run", "build": b})
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+    for e in entries:
+        print(f"figures_bench: {e['case']} ({e['kind']}{', ' + e['build'] if 'build' in e else ''})"
+              f": {e['seconds'] * 1e3:.2f} ms", file=sys.stderr)
+    with open(args.out + ".tmp", "w") as f:
+        json.dump(entries, f, indent=1)
+    os.replace(args.out + ".tmp", args.out)
+
+
+if __name__ == "__main__":
+    main()
