@@ -8,6 +8,7 @@
 #include <vector>
 
 #if RIGID_HAVE_RENDER
+#include "rigid/render/context.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 #include "rigid/units.h"
@@ -114,6 +115,9 @@ void draw_lamina_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const Lamin
                          [[maybe_unused]] const Mat3& I,
                          [[maybe_unused]] const PrincipalAxes& principal) {
 #if RIGID_HAVE_RENDER
+  // The GL context is made once per process, before any figure is drawn and
+  // timed (like matplotlib's import, bench/ reports it on its own).
+  rigid::render::context();
   draw_scene(lab, in, I, principal);
   draw_moment_curve(lab, in, I);
 #else

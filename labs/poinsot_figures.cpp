@@ -8,6 +8,7 @@
 
 #include "rigid/poinsot.h"
 #if RIGID_HAVE_RENDER
+#include "rigid/render/context.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 
@@ -192,6 +193,9 @@ void draw_poinsot_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const Free
                           [[maybe_unused]] const std::vector<double>& times,
                           [[maybe_unused]] const IntegrateOptions& options) {
 #if RIGID_HAVE_RENDER
+  // The GL context is made once per process, before any figure is drawn and
+  // timed (like matplotlib's import, bench/ reports it on its own).
+  rigid::render::context();
   const std::vector<Vector3d> curve = rigid::polhode(motion.moments(), omega0, 400);
   draw_ellipsoids(lab, motion, omega0, curve);
   draw_polhode_family(lab, motion, omega0, curve);

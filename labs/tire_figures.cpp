@@ -8,6 +8,7 @@
 #include <vector>
 
 #if RIGID_HAVE_RENDER
+#include "rigid/render/context.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 #include "rigid/units.h"
@@ -118,6 +119,9 @@ void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
 void draw_tire_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const CrookedWheel& wheel,
                        [[maybe_unused]] double m0, [[maybe_unused]] double omega) {
 #if RIGID_HAVE_RENDER
+  // The GL context is made once per process, before any figure is drawn and
+  // timed (like matplotlib's import, bench/ reports it on its own).
+  rigid::render::context();
   draw_scene(lab, wheel, m0, omega);
   draw_mass_curve(lab, wheel, m0);
 #else
