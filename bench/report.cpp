@@ -455,8 +455,10 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
   md << "\n## Figures: rigidlab against matplotlib\n\n"
         "Each figure at 1600×1200, drawn and written as PNG. rigidlab: the lab's own timing "
         "(`--figures DIR --json --timing`: wall time of rendering, MSAA resolve, read-back and "
-        "PNG encoding of that figure), best of several runs of the lab; the first figure of a "
-        "process (marked ¹) also pays for loading the GL library and making the context. "
+        "PNG encoding of that figure), best of several runs of the lab. A lab loads the GL "
+        "library and makes the context before its first figure (reported below, as "
+        "matplotlib's import is); the first figure of a process (marked ¹) still pays the "
+        "first use of its shaders and of the 1600×1200 multisampled buffers. "
         "matplotlib (Agg, `/usr/bin/python3`): the same plot from figure creation to the PNG "
         "on disk, after import, best of several; 3D scenes with mplot3d.\n\n"
         "| figure | rigidlab | matplotlib | matplotlib / rigidlab |\n|---|---|---|---|\n";
