@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   bool project = false;
   lab.option_vec3("--inertia", inertia, "kg m^2",
                   "principal moments I1,I2,I3 (instead of --ellipsoid)",
-                  rigid::lab::Accept::Positive);
+                  rigid::lab::Accept::Positive, false, false);
   lab.option_vec3("--ellipsoid", ellipsoid, "m", "semi-axes A,B,C of a uniform solid ellipsoid",
                   rigid::lab::Accept::Positive);
   lab.option("--mass", mass, "kg", "mass of the solid ellipsoid");

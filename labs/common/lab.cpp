@@ -130,13 +130,13 @@ Lab::Lab(std::string name, std::string title)
             figure_height_ = static_cast<int>(*h);
             return "";
           },
-          "WxH"));
+          ""));
 }
 
 void Lab::option(const std::string& flag, double& value, const std::string& unit,
                  const std::string& help, Accept accept) {
   app_.add_option(flag, value, help + (unit.empty() ? "" : " [" + unit + "]"))
-      ->type_name(unit.empty() ? "NUMBER" : unit)
+      ->type_name("NUMBER")
       ->capture_default_str()
       ->check(
           CLI::Validator([accept](std::string& text) { return number_rule(text, accept); }, ""));
@@ -163,12 +163,13 @@ void Lab::option_deg(const std::string& flag, double& degrees, double lo, double
 }
 
 void Lab::option_vec3(const std::string& flag, Eigen::Vector3d& value, const std::string& unit,
-                      const std::string& help, Accept accept, bool nonzero) {
+                      const std::string& help, Accept accept, bool nonzero, bool show_default) {
   std::string& text =
       option_strings().emplace_back(fmt::format("{},{},{}", value(0), value(1), value(2)));
-  app_.add_option(flag, text, help + (unit.empty() ? "" : " [" + unit + "]"))
-      ->type_name("X,Y,Z")
-      ->capture_default_str()
+  CLI::Option* option = app_.add_option(flag, text, help + (unit.empty() ? "" : " [" + unit + "]"));
+  option->type_name("X,Y,Z");
+  if (show_default) option->capture_default_str();
+  option
       ->check(CLI::Validator(
           [accept, nonzero](std::string& s) -> std::string {
             std::string rule = vec3_rule(s, accept);

@@ -44,9 +44,11 @@ class Lab {
   /// An angle in degrees that must lie in the open interval (lo, hi).
   void option_deg(const std::string& flag, double& degrees, double lo, double hi,
                   const std::string& help);
-  /// Three comma-separated finite numbers, e.g. --axis 0.8,0.6,0.
+  /// Three comma-separated finite numbers, e.g. --axis 0.8,0.6,0; `show_default`
+  /// off for an option whose default is not used unless it is given.
   void option_vec3(const std::string& flag, Eigen::Vector3d& value, const std::string& unit,
-                   const std::string& help, Accept accept = Accept::Finite, bool nonzero = false);
+                   const std::string& help, Accept accept = Accept::Finite, bool nonzero = false,
+                   bool show_default = true);
   /// One word out of `choices`.
   void option_choice(const std::string& flag, std::string& value,
                      const std::vector<std::string>& choices, const std::string& help);
