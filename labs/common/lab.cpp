@@ -187,8 +187,9 @@ void Lab::option_vec3(const std::string& flag, Eigen::Vector3d& value, const std
     const auto parts = split(text, ',');
     for (int i = 0; i < 3; ++i) value(i) = *parse_number(parts[static_cast<size_t>(i)]);
   });
-  record_inputs_.push_back([this, key, &value] {
-    inputs_[key] = Json::array({value(0), value(1), value(2)});
+  // An option whose default is unused appears in the inputs only when given.
+  record_inputs_.push_back([this, key, flag, show_default, &value] {
+    if (show_default || given(flag)) inputs_[key] = Json::array({value(0), value(1), value(2)});
   });
 }
 
