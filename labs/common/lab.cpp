@@ -356,11 +356,16 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
 void Lab::emit_table() const {
   std::cout << name_ << " - " << title_ << "\n";
   std::string inputs;
+  const auto text_of = [](const Json& value) -> std::string {
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_number()) return format_number(value.get<double>());
+    if (value.is_array() && value.size() == 3) {
+      return format_vec3({value[0].get<double>(), value[1].get<double>(), value[2].get<double>()});
+    }
+    return value.dump();
+  };
   for (const auto& [key, value] : inputs_.items()) {
-    inputs += (inputs.empty() ? "" : ", ") + key + " = " +
-              (value.is_string()   ? value.get<std::string>()
-               : value.is_number() ? format_number(value.get<double>())
-                                   : value.dump());
+    inputs += (inputs.empty() ? "" : ", ") + key + " = " + text_of(value);
   }
   std::cout << "inputs: " << inputs << "\n";
   size_t label_width = 8, value_width = 5, unit_width = 4;
