@@ -125,6 +125,7 @@ int main(int argc, char** argv) {
     // Drift over the run, relative to the start (roundoff for "exact").
     lab.result("energy_drift_rel", "max |T - T0| / T0", run.energy_drift_rel, "");
     lab.result("momentum_drift_rel", "max ||L| - |L0|| / |L0|", run.momentum_drift_rel, "");
+    lab.result("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel, "");
 
     lab.section("4 Poinsot's ellipsoids through omega0 (eqs. 79-82)");
     const rigid::PoinsotEllipsoids ellipsoids = rigid::poinsot_ellipsoids(I, omega0);

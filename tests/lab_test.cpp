@@ -146,6 +146,7 @@ TEST_CASE("poinsot: defaults reproduce the text's ellipsoid of section 5.1") {
   // The closed form keeps T and |L| to roundoff: a few ulps per sample.
   CHECK(double(r["energy_drift_rel"]) < 1e-14);
   CHECK(double(r["momentum_drift_rel"]) < 1e-14);
+  CHECK(double(r["L_space_drift_rel"]) < 1e-14);
   // Section 4.1 ratios for I = 5 : 4 : 3.
   CHECK(prints_as(r["ratios_momentum"][0], 0.20, 2));
   CHECK(prints_as(r["ratios_momentum"][2], 0.33, 2));

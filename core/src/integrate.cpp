@@ -45,6 +45,7 @@ class Recorder {
     const Eigen::Vector3d w0 = omega_body(x0);
     T0_ = kinetic_energy(I, w0);
     L0_ = angular_momentum_magnitude(I, w0);
+    L_space0_ = attitude(x0).normalized() * L_body(I, w0);
     out_.samples.reserve(n);
   }
   void operator()(double t, const Eigen::Vector3d& w, const Eigen::Quaterniond& q) {
@@ -54,6 +55,11 @@ class Recorder {
     if (T0_ > 0.0) out_.energy_drift_rel = std::max(out_.energy_drift_rel, std::abs(T - T0_) / T0_);
     if (L0_ > 0.0)
       out_.momentum_drift_rel = std::max(out_.momentum_drift_rel, std::abs(L - L0_) / L0_);
+    if (L0_ > 0.0) {
+      // No torque: L is fixed in space, so this measures the attitude's error too.
+      const Eigen::Vector3d L_space = (q.normalized() * L_body(I_, w)) - L_space0_;
+      out_.L_space_drift_rel = std::max(out_.L_space_drift_rel, L_space.norm() / L0_);
+    }
     out_.samples.push_back({t, w, Eigen::Quaterniond(q.coeffs() / qn)});
   }
   void operator()(double t, const FreeBodyState& x) { (*this)(t, omega_body(x), attitude(x)); }
@@ -62,6 +68,7 @@ class Recorder {
   const PrincipalMoments& I_;
   IntegrationResult& out_;
   double T0_ = 0.0, L0_ = 0.0;
+  Eigen::Vector3d L_space0_ = Eigen::Vector3d::Zero();
 };
 
 // Projection of omega onto the manifold {2T(omega) = 2T0, |L(omega)|^2 = L0^2}
@@ -242,7 +249,9 @@ bool is_adaptive(Method m) {
   return m == Method::kDopri5 || m == Method::kRkf78 || m == Method::kBulirschStoer;
 }
 
-bool can_project(Method m) { return m == Method::kRk4 || m == Method::kRkf78; }
+bool can_project(Method m) {
+  return m == Method::kRk4 || m == Method::kRkf78;
+}
 
 int fixed_step_order(Method m) {
   switch (m) {
@@ -366,7 +375,8 @@ std::vector<double> energy_errors(const IntegrationResult& run, const FreeBodyEx
   std::vector<double> errors;
   errors.reserve(run.samples.size());
   for (const FreeBodySample& s : run.samples) {
-    errors.push_back(std::abs(kinetic_energy(exact.moments(), s.omega_body) / exact.energy() - 1.0));
+    errors.push_back(
+        std::abs(kinetic_energy(exact.moments(), s.omega_body) / exact.energy() - 1.0));
   }
   return errors;
 }

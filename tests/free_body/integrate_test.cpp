@@ -254,6 +254,8 @@ TEST_CASE("integrate: the exact motion sampled as a run has roundoff drift and n
   // T and |L| evaluated from the closed form: a few ulps per sample.
   CHECK(r.energy_drift_rel < 1e-14);
   CHECK(r.momentum_drift_rel < 1e-14);
+  // The exact attitude carries L_body to the same L_space at every t.
+  CHECK(r.L_space_drift_rel < 1e-14);
   for (double e : omega_errors(r, exact)) CHECK(e == 0.0);
   for (double e : energy_errors(r, exact)) CHECK(e < 1e-14);
 }

@@ -72,6 +72,7 @@ struct IntegrationResult {
   std::vector<FreeBodySample> samples;
   double energy_drift_rel = 0.0;       ///< max over samples of |T - T0| / T0
   double momentum_drift_rel = 0.0;     ///< max over samples of ||L| - |L0|| / |L0|
+  double L_space_drift_rel = 0.0;      ///< max over samples of |L_space - L_space0| / |L0|
   double quaternion_norm_drift = 0.0;  ///< max over samples of ||q| - 1| before normalising
   std::size_t steps = 0;               ///< accepted steps (shortened ones included)
   std::size_t rejected_steps = 0;      ///< steps rejected by the error control (where known)
