@@ -36,8 +36,7 @@ void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const Principal
   scene.title = title_of(lab, in) + fmt::format(", angle(L, \\omega) = {:.1f}\\deg",
                                                 rad_to_deg(angle_between(I * n, n)));
   scene.camera.eye = centre + size * Vec3(1.2, -2.2, 2.6);
-  // Aim above and beyond the lamina so it sits low and left, clear of the legend.
-  scene.camera.target = centre + size * Vec3(-0.1, -0.15, 0.3);
+  scene.camera.target = centre + Vec3(0, 0, 0.1 * size);
   scene.camera.fov_y_deg = 38;
 
   scene.add_box(centre, Vec3(in.a / 2, in.b / 2, 0.01 * size), Mat3::Identity(),

@@ -47,7 +47,7 @@ void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
   scene.title =
       title_of(lab, wheel) +
       (magnify > 1 ? fmt::format(" (angles drawn \\times{:.0f})", magnify) : std::string());
-  scene.camera.eye = Vec3(1.1, -3.4, 1.9) * a * 1.6;
+  scene.camera.eye = Vec3(1.9, -3.0, 1.5) * a * 1.6;
   scene.camera.target = Vec3(0.05 * a, 0, 0);
   scene.camera.fov_y_deg = 34;
 

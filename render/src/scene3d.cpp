@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <tuple>
@@ -202,7 +203,7 @@ struct View {
   }
 };
 
-View make_view(const Camera& cam, int width, int height, const Vector3d& center, double radius) {
+View make_view(const Camera& cam, int width, int height, double znear, double zfar) {
   View v;
   v.width = width;
   v.height = height;
@@ -218,16 +219,16 @@ View make_view(const Camera& cam, int width, int height, const Vector3d& center,
   v.view(0, 3) = -s.dot(cam.eye);
   v.view(1, 3) = -u.dot(cam.eye);
   v.view(2, 3) = f.dot(cam.eye);
-  // Depth range around the scene's bounding sphere.
-  const double dist = (center - cam.eye).dot(f);
-  double zfar = std::max(dist + 1.05 * radius, 1e-3);
-  double znear = std::max(dist - 1.05 * radius, zfar * 1e-4);
+  // Perspective depth must stay in front of the eye.
+  if (!cam.orthographic) {
+    zfar = std::max(zfar, 1e-3);
+    znear = std::max(znear, zfar * 1e-4);
+  }
   const double aspect = double(width) / height;
   const double tan_half = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0);
   v.proj.setZero();
   if (cam.orthographic) {
     const double h = cam.ortho_height > 0 ? cam.ortho_height : 2 * (cam.target - cam.eye).norm() * tan_half;
-    znear = dist - 1.05 * radius;
     v.proj(0, 0) = 2 / (h * aspect);
     v.proj(1, 1) = 2 / h;
     v.proj(2, 2) = -2 / (zfar - znear);
@@ -311,42 +312,301 @@ std::pair<Vector3d, double> bounds(const Scene3D::Object& o) {
   return {t, 1};
 }
 
-// The camera moved along its line of sight so every bounding sphere fits in
-// the central `margin` fraction of the image (top trimmed by `top_fraction` for the title).
-Camera fitted(Camera cam, const std::vector<std::pair<Vector3d, double>>& spheres, double aspect,
-              double top_fraction) {
-  if (!cam.fit || spheres.empty()) return cam;
+// ---- Overlay layout and camera fit ---------------------------------------------
+
+// Reference-pixel scales at an image size: geometry (line widths, offsets) and text.
+double geometry_scale(int width, int height) { return std::min(width / 1600.0, height / 1200.0); }
+double font_scale(int width, int height) { return std::pow(geometry_scale(width, height), 0.7); }
+
+struct LegendEntry {
+  std::string label;
+  Color color;
+  bool line;
+};
+
+// Title and legend laid out once, so that the fit reserves exactly the boxes that are drawn.
+struct Overlay {
+  Scene3D::Layout layout;
+  double pad = 0;
+  double title_size = 0;                        // after shrinking a long title to the width
+  double legend_size = 0, swatch = 0, row = 0;  // legend font size, swatch width, row height
+  double margin_x = 0, margin_y = 0;            // kept free on each side of the scene
+  std::vector<LegendEntry> entries;
+};
+
+Overlay overlay_layout(const std::string& title, bool show_legend, const std::vector<Scene3D::Object>& objects,
+                       const std::vector<Scene3D::Polyline>& polylines, int width, int height) {
+  constexpr double kMargin = 0.03;  // of the image's width and height, on each side of the scene
+  Overlay o;
+  const double font = font_scale(width, height);
+  o.pad = 16 * font;
+  o.margin_x = kMargin * width;
+  o.margin_y = kMargin * height;
+  double title_bottom = 0;
+  if (!title.empty()) {
+    o.title_size = 40 * font;
+    const double w = measure_text(title, o.title_size).width;
+    if (w > width - 2 * o.pad) o.title_size *= (width - 2 * o.pad) / w;
+    const TextExtent e = measure_text(title, o.title_size);
+    o.layout.title = {0.5 * (width - e.width), o.pad, 0.5 * (width + e.width), o.pad + e.height()};
+    title_bottom = o.layout.title.y1;
+  }
+  o.layout.region = {o.margin_x, title_bottom + o.margin_y, width - o.margin_x, height - o.margin_y};
+  for (const Scene3D::Object& obj : objects)
+    if (!obj.label.empty()) {
+      // Translucent swatches show the colour as it looks over white.
+      const float a = obj.material.opacity;
+      const Color c = obj.material.color;
+      o.entries.push_back({obj.label, {c.r * a + (1 - a), c.g * a + (1 - a), c.b * a + (1 - a), 1}, false});
+    }
+  for (const Scene3D::Polyline& pl : polylines)
+    if (!pl.label.empty()) o.entries.push_back({pl.label, pl.color, true});
+  if (!show_legend || o.entries.empty()) {
+    o.entries.clear();
+    return o;
+  }
+  o.legend_size = 28 * font;
+  o.swatch = 40 * font;
+  double tw = 0;
+  for (const LegendEntry& e : o.entries) {
+    const TextExtent m = measure_text(e.label, o.legend_size);
+    tw = std::max(tw, m.width);
+    o.row = std::max(o.row, m.height());
+  }
+  o.row += 0.4 * o.pad;
+  const double pad = o.pad;
+  const double x1 = width - pad, x0 = x1 - (pad + o.swatch + 0.6 * pad + tw + pad);
+  const double y0 = title.empty() ? pad : title_bottom + pad;
+  o.layout.legend = {x0, y0, x1, y0 + 2 * 0.8 * pad + o.row * o.entries.size()};
+  return o;
+}
+
+// What the fit keeps in view: a sphere of a world radius about p (0 for a point), and a
+// screen box reaching left, right, up and down that many pixels beyond its projection
+// (a label's text, half a line's width).
+struct FitPoint {
+  Vector3d p;
+  double radius = 0;
+  double left = 0, right = 0, up = 0, down = 0;
+};
+
+// Points on the surfaces of the unit shapes, finely spaced: the drawn meshes, inscribed in
+// the same surfaces with fewer segments, lie within them.
+const std::vector<Vector3d>& unit_outline(Scene3D::Shape shape, double torus_minor) {
+  constexpr int kSegments = 64;
+  using Key = std::pair<int, int>;
+  static std::map<Key, std::vector<Vector3d>> cache;
+  const int ratio = shape == Scene3D::Shape::kTorus ? static_cast<int>(std::lround(torus_minor * 1000)) : 0;
+  const Key key{static_cast<int>(shape), ratio};
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  Mesh m;
+  switch (shape) {
+    case Scene3D::Shape::kSphere: m = make_sphere(kSegments); break;
+    case Scene3D::Shape::kCone: m = make_cone(kSegments); break;
+    case Scene3D::Shape::kCylinder: m = make_cylinder(kSegments); break;
+    case Scene3D::Shape::kDisk: m = make_disk(kSegments); break;
+    case Scene3D::Shape::kBox: m = make_box(); break;
+    case Scene3D::Shape::kTorus: m = make_torus(ratio / 1000.0, kSegments, kSegments / 2); break;
+    case Scene3D::Shape::kPlane: m = make_plane(); break;
+    case Scene3D::Shape::kTube:
+    case Scene3D::Shape::kCustom: break;
+  }
+  std::vector<Vector3d> points;
+  points.reserve(m.positions.size());
+  for (const auto& p : m.positions) points.push_back(p.cast<double>());
+  return cache.emplace(key, std::move(points)).first->second;
+}
+
+// Everything the image must show: surfaces, thick lines, and labels with their text boxes.
+std::vector<FitPoint> fit_points(const std::vector<Scene3D::Object>& objects,
+                                 const std::vector<Scene3D::Polyline>& polylines,
+                                 const std::vector<Label3D>& labels, double geo, double font) {
+  using S = Scene3D::Shape;
+  std::vector<FitPoint> out;
+  for (const Scene3D::Object& o : objects) {
+    if (o.shape == S::kTube) {
+      for (const Vector3d& p : o.path) out.push_back({p, o.tube_radius});
+    } else if (o.shape == S::kCustom) {
+      for (const auto& p : o.mesh.positions) out.push_back({o.transform * p.cast<double>()});
+    } else {
+      for (const Vector3d& p : unit_outline(o.shape, o.torus_minor)) out.push_back({o.transform * p});
+    }
+  }
+  for (const Scene3D::Polyline& pl : polylines) {
+    const double hw = 0.5 * std::max(2.0, pl.width * geo);
+    for (const Vector3d& p : pl.points) out.push_back({p, 0, hw, hw, hw, hw});
+  }
+  // A label's box about its anchor, as Painter::text places it.
+  for (const Label3D& l : labels) {
+    if (l.text.empty()) continue;
+    const TextExtent e = measure_text(l.text, l.size * font);
+    const double ax = l.halign == HAlign::kLeft ? 0 : l.halign == HAlign::kCenter ? -0.5 * e.width : -e.width;
+    const double ay = l.valign == VAlign::kTop        ? e.ascent
+                      : l.valign == VAlign::kCenter   ? 0.5 * (e.ascent - e.descent)
+                      : l.valign == VAlign::kBaseline ? 0
+                                                      : -e.descent;
+    const double left = l.offset_x * geo + ax, baseline = l.offset_y * geo + ay;
+    out.push_back({l.position, 0, -left, left + e.width, e.ascent - baseline, baseline + e.descent});
+  }
+  return out;
+}
+
+// A bound on the eye's sideways shift, linear in its distance d from the target plane: c + m d.
+struct Bound {
+  double c = 0, m = 0;
+  double at(double d) const { return c + m * d; }
+};
+
+// The camera framed on the points: its viewing direction and up kept, the eye moved along
+// the line of sight to the nearest distance d, and sideways by (a, b) along the image's
+// right and up, at which every point with its sphere and screen box lies in the layout's
+// region, and left of or below the legend box (with the margin). The projection stays
+// centred on the line of sight, so the perspective is that of the field of view.
+//
+// In camera coordinates about the target (x right, y up, z forward), a point projects to
+// focal * (x - a) / (z + d) pixels right of the image centre. It stays left of an edge at
+// slope k = pixels / focal, its sphere of radius r included, iff
+//   x - a <= k (z + d) - r sqrt(1 + k^2),
+// a bound linear in a and d; likewise for the other edges and for y and b. So for each d
+// the shifts that fit form a window [a_lo, a_hi] × [b_lo, b_hi] (it grows with d), less
+// the corners a < alpha_i, b < beta_i in which point i would be under the legend; the
+// corner (a_hi, b_hi), the scene moved furthest left and down, is the last to clear it.
+// Bisection finds the least d that fits; orthographic views are the case z = 0, sec = 1,
+// of height 2 d tan(fov / 2).
+Camera fitted(Camera cam, std::vector<FitPoint> points, const Overlay& overlay, int width, int height) {
+  if (!cam.fit || points.empty()) return cam;
   Vector3d f = cam.target - cam.eye;
-  if (!(f.norm() > 0)) return cam;
+  const double eye_distance = f.norm();
+  if (!(eye_distance > 0)) return cam;
   f.normalize();
   Vector3d up = cam.up;
   if (std::abs(f.dot(up.normalized())) > 0.999) up = f.unitOrthogonal();
   const Vector3d s = f.cross(up).normalized(), u = s.cross(f);
-  const double margin = 0.90;
-  const double tan_y = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0) * margin;
-  const double tan_x = tan_y * aspect;
-  // The title takes the top of the image: shift the usable window down.
-  const double top = tan_y * (1 - 2 * top_fraction), bottom = -tan_y;
-  double d = 0, ortho_half = 0;
-  for (const auto& [c, r] : spheres) {
-    const Vector3d q = c - cam.target;
-    const double x = q.dot(s), y = q.dot(u), z = q.dot(f);
-    if (cam.orthographic) {
-      ortho_half = std::max({ortho_half, (std::abs(x) + r) / (aspect * margin), (std::abs(y) + r) / margin});
-      continue;
-    }
-    // Need |x| + r sec <= tan (d + z), likewise for y about the shifted centre.
-    d = std::max(d, (std::abs(x) + r * std::sqrt(1 + tan_x * tan_x)) / tan_x - z);
-    const double ty_hi = top, ty_lo = bottom;
-    d = std::max(d, (y + r * std::sqrt(1 + ty_hi * ty_hi)) / ty_hi - z);
-    d = std::max(d, (-y + r * std::sqrt(1 + ty_lo * ty_lo)) / -ty_lo - z);
+  const bool ortho = cam.orthographic;
+  const double tan_half = std::tan(0.5 * cam.fov_y_deg * kPi / 180.0);
+  const double focal = 0.5 * height / tan_half;
+  const double cx = 0.5 * width, cy = 0.5 * height;
+  const ScreenRect& region = overlay.layout.region;
+  const ScreenRect& legend = overlay.layout.legend;
+  const bool has_legend = !legend.empty();
+  if (region.empty()) return cam;
+
+  // Point left of (below) an edge at slope k: a >= ...; right of (above) it: a <= ... .
+  auto left_of = [&](double x, double z, double r, double k) {
+    return Bound{x + r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+  };
+  auto right_of = [&](double x, double z, double r, double k) {
+    return Bound{x - r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+  };
+  const std::size_t n = points.size();
+  std::vector<Bound> a_min(n), a_max(n), b_min(n), b_max(n), a_legend, b_legend;
+  if (has_legend) {
+    a_legend.resize(n);
+    b_legend.resize(n);
   }
-  if (cam.orthographic) {
-    cam.ortho_height = 2 * ortho_half / (1 - top_fraction);
-  } else if (d > 0) {
+  double d_min = 0, extent = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    FitPoint& p = points[i];
+    // A text box wider than the region cannot fit whole: fit what can be.
+    const double wx = p.left + p.right, wy = p.up + p.down;
+    const double max_w = 0.9 * (region.x1 - region.x0), max_h = 0.9 * (region.y1 - region.y0);
+    if (wx > max_w) p.left *= max_w / wx, p.right *= max_w / wx;
+    if (wy > max_h) p.up *= max_h / wy, p.down *= max_h / wy;
+    const Vector3d q = p.p - cam.target;
+    const double x = q.dot(s), y = q.dot(u), z = ortho ? 0.0 : q.dot(f), r = p.radius;
+    a_min[i] = left_of(x, z, r, (region.x1 - cx - p.right) / focal);
+    a_max[i] = right_of(x, z, r, (region.x0 - cx + p.left) / focal);
+    b_min[i] = left_of(y, z, r, (cy - region.y0 - p.up) / focal);
+    b_max[i] = right_of(y, z, r, (cy - region.y1 + p.down) / focal);
+    if (has_legend) {
+      a_legend[i] = left_of(x, z, r, (legend.x0 - overlay.margin_x - cx - p.right) / focal);
+      b_legend[i] = left_of(y, z, r, (cy - legend.y1 - overlay.margin_y - p.up) / focal);
+    }
+    if (!ortho) d_min = std::max(d_min, r - z);
+    extent = std::max(extent, q.norm() + r);
+  }
+  struct Window {
+    double a_lo, a_hi, b_lo, b_hi;
+  };
+  auto window = [&](double d) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    Window w{-kInf, kInf, -kInf, kInf};
+    for (std::size_t i = 0; i < n; ++i) {
+      w.a_lo = std::max(w.a_lo, a_min[i].at(d));
+      w.a_hi = std::min(w.a_hi, a_max[i].at(d));
+      w.b_lo = std::max(w.b_lo, b_min[i].at(d));
+      w.b_hi = std::min(w.b_hi, b_max[i].at(d));
+    }
+    return w;
+  };
+  auto clear_of_legend = [&](double d, double a, double b) {
+    for (std::size_t i = 0; i < a_legend.size(); ++i)
+      if (a < a_legend[i].at(d) && b < b_legend[i].at(d)) return false;
+    return true;
+  };
+  auto fits = [&](double d) {
+    const Window w = window(d);
+    return w.a_lo <= w.a_hi && w.b_lo <= w.b_hi && clear_of_legend(d, w.a_hi, w.b_hi);
+  };
+  // Bracket the least distance that fits, then bisect (fits(hi) holds throughout).
+  double lo = d_min, hi = d_min + std::max(extent, 1e-12);
+  for (int k = 0; k < 200 && !fits(hi); ++k) hi = lo + 2 * (hi - lo);
+  if (!fits(hi)) return cam;
+  for (int k = 0; k < 100 && hi - lo > 1e-12 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (fits(mid) ? hi : lo) = mid;
+  }
+  const double d = hi;
+
+  // The shift nearest the window's centre that clears the legend: the centre itself, or
+  // the centre moved right-of-legend only, below-legend only, or towards (a_hi, b_hi).
+  const Window w = window(d);
+  const double a_c = 0.5 * (w.a_lo + w.a_hi), b_c = 0.5 * (w.b_lo + w.b_hi);
+  double a = a_c, b = b_c;
+  if (!clear_of_legend(d, a_c, b_c)) {
+    double a_only = a_c, b_only = b_c, t = 0;
+    for (std::size_t i = 0; i < a_legend.size(); ++i) {
+      const double alpha = a_legend[i].at(d), beta = b_legend[i].at(d);
+      if (b_c < beta) a_only = std::max(a_only, alpha);
+      if (a_c < alpha) b_only = std::max(b_only, beta);
+      const double ta = w.a_hi > a_c ? (alpha - a_c) / (w.a_hi - a_c) : (alpha <= a_c ? 0.0 : 1.0);
+      const double tb = w.b_hi > b_c ? (beta - b_c) / (w.b_hi - b_c) : (beta <= b_c ? 0.0 : 1.0);
+      t = std::max(t, std::min(ta, tb));
+    }
+    t = std::min(t, 1.0);
+    a = a_c + t * (w.a_hi - a_c);
+    b = b_c + t * (w.b_hi - b_c);
+    double best = std::hypot(a - a_c, b - b_c);
+    if (a_only <= w.a_hi && a_only - a_c < best) a = a_only, b = b_c, best = a_only - a_c;
+    if (b_only <= w.b_hi && b_only - b_c < best) a = a_c, b = b_only;
+  }
+  cam.target += a * s + b * u;
+  if (ortho) {
+    cam.eye = cam.target - eye_distance * f;
+    cam.ortho_height = 2 * d * tan_half;
+  } else {
     cam.eye = cam.target - d * f;
   }
   return cam;
+}
+
+// Depth range of the points seen from a camera, padded a little.
+std::pair<double, double> depth_range(const Camera& cam, const std::vector<FitPoint>& points) {
+  const Vector3d f = (cam.target - cam.eye).normalized();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const FitPoint& p : points) {
+    const double z = (p.p - cam.eye).dot(f);
+    lo = std::min(lo, z - p.radius);
+    hi = std::max(hi, z + p.radius);
+  }
+  if (!(lo <= hi)) {
+    const double z = (cam.target - cam.eye).norm();
+    lo = 0.5 * z;
+    hi = 2 * z + 1e-3;
+  }
+  const double pad = 0.02 * (hi - lo) + 1e-9 * std::max({std::abs(lo), std::abs(hi), 1.0});
+  return {lo - pad, hi + pad};
 }
 
 }  // namespace
@@ -491,6 +751,10 @@ void Scene3D::add_label(const Vector3d& position, std::string text, Color color)
   labels_.push_back(std::move(l));
 }
 
+Scene3D::Layout Scene3D::layout(int width, int height) const {
+  return overlay_layout(title, show_legend, objects_, polylines_, width, height).layout;
+}
+
 void Scene3D::save(const std::string& path, int width, int height) const {
   write_png(render(width, height), path);
 }
@@ -502,28 +766,14 @@ Image Scene3D::render(int width, int height) const {
   tgt.begin(width, height, true, kWhite);
   auto& gl = detail::gl;
 
-  // Scene bounds fix the depth range.
-  Eigen::AlignedBox3d box;
-  for (const Object& o : objects_) {
-    const auto [c, r] = bounds(o);
-    box.extend(c - Vector3d::Constant(r));
-    box.extend(c + Vector3d::Constant(r));
-  }
-  for (const Polyline& pl : polylines_)
-    for (const Vector3d& p : pl.points) box.extend(p);
-  for (const Label3D& l : labels_) box.extend(l.position);
-  if (box.isEmpty()) box.extend(camera.target);
-  std::vector<std::pair<Vector3d, double>> spheres;
-  for (const Object& o : objects_) spheres.push_back(bounds(o));
-  for (const Polyline& pl : polylines_)
-    for (const Vector3d& q : pl.points) spheres.emplace_back(q, 0.0);
-  // Labels need room for their text: about 4% of the scene's size.
-  for (const Label3D& l : labels_) spheres.emplace_back(l.position, 0.04 * box.diagonal().norm());
-  const double title_fraction = title.empty() ? 0.0 : 0.07;
-  const Camera cam = fitted(camera, spheres, double(width) / height, title_fraction);
-  const View view = make_view(cam, width, height, box.center(), 0.5 * box.diagonal().norm() + 1e-9);
-  const double geo = std::min(width / 1600.0, height / 1200.0);  // reference-pixel scale
-  const double font = std::pow(geo, 0.7);
+  // Frame the scene in the space the title and legend leave, then fit the depth range to it.
+  const double geo = geometry_scale(width, height);
+  const double font = font_scale(width, height);
+  const Overlay overlay = overlay_layout(title, show_legend, objects_, polylines_, width, height);
+  const std::vector<FitPoint> points = fit_points(objects_, polylines_, labels_, geo, font);
+  const Camera cam = fitted(camera, points, overlay, width, height);
+  const auto [znear, zfar] = depth_range(cam, points);
+  const View view = make_view(cam, width, height, znear, zfar);
 
   MeshProgram& prog = mesh_program();
   gl.UseProgram(prog.program);
@@ -649,47 +899,19 @@ Image Scene3D::render(int width, int height) const {
     p.text(l.text, s.x() + l.offset_x * geo, s.y() + l.offset_y * geo, l.size * font, l.color, l.halign,
            l.valign);
   }
-  const double pad = 16 * font;
-  if (!title.empty()) {
-    double size = 40 * font;
-    const double w = measure_text(title, size).width;
-    if (w > width - 2 * pad) size *= (width - 2 * pad) / w;
-    p.text(title, 0.5 * width, pad, size, kTextColor, HAlign::kCenter, VAlign::kTop);
-  }
-  struct Entry {
-    std::string label;
-    Color color;
-    bool line;
-  };
-  std::vector<Entry> entries;
-  for (const Object& o : objects_)
-    if (!o.label.empty()) {
-      // Translucent swatches show the colour as it looks over white.
-      const float a = o.material.opacity;
-      const Color c = o.material.color;
-      entries.push_back({o.label, {c.r * a + (1 - a), c.g * a + (1 - a), c.b * a + (1 - a), 1}, false});
-    }
-  for (const Polyline& pl : polylines_)
-    if (!pl.label.empty()) entries.push_back({pl.label, pl.color, true});
-  if (show_legend && !entries.empty()) {
-    const double size = 28 * font, sw = 40 * font;
-    double tw = 0, rh = 0;
-    for (const Entry& e : entries) {
-      const TextExtent m = measure_text(e.label, size);
-      tw = std::max(tw, m.width);
-      rh = std::max(rh, m.height());
-    }
-    rh += 0.4 * pad;
-    const double top = title.empty() ? pad : pad + measure_text(title, 40 * font).height() + pad;
-    const double x1 = width - pad, x0 = x1 - (pad + sw + 0.6 * pad + tw + pad);
-    const double y0 = top, y1 = y0 + 2 * 0.8 * pad + rh * entries.size();
-    p.rect(x0, y0, x1, y1, kWhite.with_alpha(0.88f));
-    p.rect_outline(x0, y0, x1, y1, std::max(1.0, 1.2 * geo), rgb8(190, 190, 190));
-    double y = y0 + 0.8 * pad + 0.5 * rh;
-    for (const Entry& e : entries) {
-      if (e.line) p.polyline({{x0 + pad, y, 0}, {x0 + pad + sw, y, 0}}, std::max(2.0, 4 * geo), e.color);
-      else p.rect(x0 + pad, y - 0.3 * rh, x0 + pad + sw, y + 0.3 * rh, e.color);
-      p.text(e.label, x0 + pad + sw + 0.6 * pad, y, size, kTextColor, HAlign::kLeft, VAlign::kCenter);
+  if (!title.empty())
+    p.text(title, 0.5 * width, overlay.pad, overlay.title_size, kTextColor, HAlign::kCenter, VAlign::kTop);
+  if (!overlay.layout.legend.empty()) {
+    const ScreenRect& box = overlay.layout.legend;
+    const double pad = overlay.pad, sw = overlay.swatch, rh = overlay.row;
+    p.rect(box.x0, box.y0, box.x1, box.y1, kWhite.with_alpha(0.88f));
+    p.rect_outline(box.x0, box.y0, box.x1, box.y1, std::max(1.0, 1.2 * geo), rgb8(190, 190, 190));
+    double y = box.y0 + 0.8 * pad + 0.5 * rh;
+    for (const LegendEntry& e : overlay.entries) {
+      const double x = box.x0 + pad;
+      if (e.line) p.polyline({{x, y, 0}, {x + sw, y, 0}}, std::max(2.0, 4 * geo), e.color);
+      else p.rect(x, y - 0.3 * rh, x + sw, y + 0.3 * rh, e.color);
+      p.text(e.label, x + sw + 0.6 * pad, y, overlay.legend_size, kTextColor, HAlign::kLeft, VAlign::kCenter);
       y += rh;
     }
   }

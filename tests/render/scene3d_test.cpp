@@ -69,3 +69,121 @@ TEST_CASE("mesh: unit shapes are closed and sized by on-screen radius", "[render
   const Mesh t = make_tube({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, 0.1, 8);
   CHECK(!t.indices.empty());
 }
+
+namespace {
+
+// Where a fitted scene lands: the bounding box of its non-white pixels outside the title
+// band and the legend box, and how many pixels inside the legend box are tinted by the
+// vermillion geometry (the legend itself is drawn in neutral, blue and green only).
+struct Placement {
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+  long under_legend = 0;
+};
+
+Placement place_of(const Image& img, const Scene3D::Layout& layout) {
+  Placement p;
+  const ScreenRect& lg = layout.legend;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const std::uint8_t* c = img.at(x, y);
+      // The legend's outline is antialiased a pixel or two beyond its box.
+      if (x >= lg.x0 - 2 && x < lg.x1 + 2 && y >= lg.y0 - 2 && y < lg.y1 + 2) {
+        if (c[0] > c[2] + 12) ++p.under_legend;
+        continue;
+      }
+      if (y < layout.title.y1 + 2 || (c[0] == 255 && c[1] == 255 && c[2] == 255)) continue;
+      p.x0 = std::min(p.x0, x);
+      p.x1 = std::max(p.x1, x + 1);
+      p.y0 = std::min(p.y0, y);
+      p.y1 = std::max(p.y1, y + 1);
+    }
+  return p;
+}
+
+// A vermillion bar along `axis` seen obliquely, labelled at its ends, with a legend of a
+// blue marker and a green line; nothing vermillion is in the legend.
+Scene3D bar_scene(const Eigen::Vector3d& axis) {
+  Scene3D scene;
+  scene.title = "fit: a bar, its end labels, a legend";
+  scene.camera.eye = {3, -10, 2};
+  scene.camera.fov_y_deg = 30;
+  const Eigen::Vector3d half = 2.0 * axis + 0.25 * Eigen::Vector3d::Ones();
+  scene.add_box({0, 0, 0}, half, Eigen::Matrix3d::Identity(), {kVermillion});
+  scene.add_sphere(-1.5 * axis, 0.5, {kVermillion});
+  scene.add_sphere(0.3 * Eigen::Vector3d::UnitY(), 0.1, {kBlue}, "marker");
+  scene.add_polyline({{0, 0, 0}, {0, -0.3, 0}}, kBluishGreen, 3.5, "a line");
+  Label3D low{-2.3 * axis, "low end"};
+  low.halign = HAlign::kRight;
+  scene.add_label(low);
+  scene.add_label(2.3 * axis, "high end");
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("scene3d: the fit fills the free region to its edges and keeps clear of the legend",
+          "[render][scene3d]") {
+  for (const auto& [w, h] : {std::pair{1600, 1200}, std::pair{800, 600}}) {
+    CAPTURE(w, h);
+    const double tol_x = 0.02 * w, tol_y = 0.02 * h;
+    SECTION("a wide bar spans the region from left to right") {
+      const Scene3D scene = bar_scene(Eigen::Vector3d::UnitX());
+      const Scene3D::Layout layout = scene.layout(w, h);
+      REQUIRE(!layout.legend.empty());
+      const Placement p = place_of(scene.render(w, h), layout);
+      CHECK(p.under_legend == 0);
+      // Nothing clipped or outside the region (a pixel for antialiasing)...
+      CHECK(p.x0 >= layout.region.x0 - 1);
+      CHECK(p.x1 <= layout.region.x1 + 1);
+      CHECK(p.y0 >= layout.region.y0 - 1);
+      CHECK(p.y1 <= layout.region.y1 + 1);
+      // ...and the limiting direction touches both edges.
+      CHECK(p.x0 <= layout.region.x0 + tol_x);
+      CHECK(p.x1 >= layout.region.x1 - tol_x);
+    }
+    SECTION("a tall bar spans the region from top to bottom") {
+      const Scene3D scene = bar_scene(Eigen::Vector3d::UnitZ());
+      const Scene3D::Layout layout = scene.layout(w, h);
+      const Placement p = place_of(scene.render(w, h), layout);
+      CHECK(p.under_legend == 0);
+      CHECK(p.x0 >= layout.region.x0 - 1);
+      CHECK(p.x1 <= layout.region.x1 + 1);
+      CHECK(p.y0 >= layout.region.y0 - 1);
+      CHECK(p.y1 <= layout.region.y1 + 1);
+      CHECK(p.y0 <= layout.region.y0 + tol_y);
+      CHECK(p.y1 >= layout.region.y1 - tol_y);
+    }
+    SECTION("a round scene tucks under and beside the legend, touching it") {
+      Scene3D scene = bar_scene(Eigen::Vector3d::UnitX());
+      scene.add_sphere({0, 0, 0}, 2.2, {kVermillion});
+      const Scene3D::Layout layout = scene.layout(w, h);
+      const Placement p = place_of(scene.render(w, h), layout);
+      CHECK(p.under_legend == 0);
+      CHECK(p.x0 >= layout.region.x0 - 1);
+      CHECK(p.x1 <= layout.region.x1 + 1);
+      CHECK(p.y0 >= layout.region.y0 - 1);
+      CHECK(p.y1 <= layout.region.y1 + 1);
+      // Limited by the legend's corner: the bottom edge is reached.
+      CHECK(p.y1 >= layout.region.y1 - tol_y);
+      // Unfitted, the sphere fills the view and shows under the legend: the check can fail.
+      scene.camera.fit = false;
+      scene.camera.eye *= 0.35;
+      CHECK(place_of(scene.render(w, h), layout).under_legend > 1000);
+    }
+  }
+}
+
+TEST_CASE("scene3d: the fit keeps the viewing direction and up", "[render][scene3d]") {
+  // A sphere seen head-on stays round and centred across the free width: no shear or tilt.
+  Scene3D scene;
+  scene.camera.eye = {0, -10, 0};
+  SECTION("perspective") {}
+  SECTION("orthographic") { scene.camera.orthographic = true; }
+  scene.add_sphere({0, 0, 0}, 1.0, {kVermillion});
+  const Scene3D::Layout layout = scene.layout(800, 600);
+  const Placement p = place_of(scene.render(800, 600), layout);
+  CHECK(std::abs((p.x1 - p.x0) - (p.y1 - p.y0)) <= 2);
+  CHECK(std::abs(0.5 * (p.x0 + p.x1) - 400) <= 1.5);
+  CHECK(std::abs(0.5 * (p.y0 + p.y1) - 300) <= 1.5);
+  CHECK(p.y1 - p.y0 >= layout.region.y1 - layout.region.y0 - 0.02 * 600);
+}

@@ -30,9 +30,17 @@ struct Camera {
   double fov_y_deg = 30.0;    ///< perspective only
   bool orthographic = false;
   double ortho_height = 0.0;  ///< world height seen; 0 matches the perspective view at the target
-  /// Move the eye along its line of sight (or set the orthographic height) so the whole scene
-  /// fits the image with a margin; eye - target then gives only the viewing direction.
+  /// Frame the scene tightly: keeping the viewing direction (eye - target) and up, move the eye
+  /// along its line of sight and sideways in the image plane (or set the orthographic height)
+  /// so the projected geometry, its labels' text and its lines' widths fill the free region of
+  /// Scene3D::layout, clear of the title and legend, without distorting the perspective.
   bool fit = true;
+};
+
+/// A rectangle in pixels, y down; empty when x1 <= x0 or y1 <= y0.
+struct ScreenRect {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return !(x1 > x0 && y1 > y0); }
 };
 
 /// Surface appearance; opacity < 1 makes the surface translucent.
@@ -101,6 +109,14 @@ class Scene3D {
   void add_label(Label3D label);
   /// Convenience: text at a point, centred.
   void add_label(const Eigen::Vector3d& position, std::string text, Color color = kTextColor);
+
+  /// Where the overlay and the scene go at a size: the title band, the legend box (empty when
+  /// there is none) and the region the fitted scene fills, a few % inside the image's edges;
+  /// the scene also keeps that margin from the legend box.
+  struct Layout {
+    ScreenRect title, legend, region;
+  };
+  Layout layout(int width, int height) const;
 
   /// Draws the scene at width × height pixels (makes the GL context on first use).
   Image render(int width = 1600, int height = 1200) const;
