@@ -30,14 +30,8 @@ EglApi api;
 
 bool load(std::string& error) {
   if (api.eglGetProcAddress != nullptr) return true;
-  void* lib = nullptr;
-  for (const char* name : {"libEGL.so.1", "libEGL.so"})
-    if ((lib = dlopen(name, RTLD_NOW | RTLD_LOCAL)) != nullptr) break;
-  if (lib == nullptr) {
-    const char* why = dlerror();
-    error = std::string("cannot load libEGL (") + (why ? why : "not found") + ")";
-    return false;
-  }
+  void* lib = open_library({"libEGL.so.1", "libEGL.so"}, "libEGL", error);
+  if (lib == nullptr) return false;
   EglApi a;
   bool ok = true;
 #define RIGID_EGL_LOAD(name) \

@@ -29,14 +29,8 @@ GlProc osmesa_proc(const char* name) {
 // Opens libOSMesa and finds its entry points; false with `error` set if it cannot.
 bool load(std::string& error) {
   if (api.get_proc != nullptr) return true;
-  void* lib = nullptr;
-  for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
-    if ((lib = dlopen(name, RTLD_NOW | RTLD_LOCAL)) != nullptr) break;
-  if (lib == nullptr) {
-    const char* why = dlerror();
-    error = std::string("cannot load libOSMesa (") + (why ? why : "not found") + ")";
-    return false;
-  }
+  void* lib = open_library({"libOSMesa.so.8", "libOSMesa.so"}, "libOSMesa", error);
+  if (lib == nullptr) return false;
   OSMesaApi a;
   a.create = reinterpret_cast<decltype(a.create)>(dlsym(lib, "OSMesaCreateContextAttribs"));
   a.make_current = reinterpret_cast<decltype(a.make_current)>(dlsym(lib, "OSMesaMakeCurrent"));
@@ -79,6 +73,16 @@ GlProcLoader make_osmesa_context(std::string& error) {
     return nullptr;
   }
   return &osmesa_proc;
+}
+
+void* open_library(std::initializer_list<const char*> names, const char* what,
+                   std::string& error) {
+  for (const char* name : names) {
+    if (void* lib = dlopen(name, RTLD_NOW | RTLD_LOCAL)) return lib;
+  }
+  const char* why = dlerror();
+  error = std::string("cannot load ") + what + " (" + (why ? why : "not found") + ")";
+  return nullptr;
 }
 
 }  // namespace rigid::render::detail

@@ -2,12 +2,16 @@
 // GetProcAddress once its context is current, or nullptr with `error` set.
 #pragma once
 
+#include <initializer_list>
 #include <string>
 
 namespace rigid::render::detail {
 
 using GlProc = void (*)();
 using GlProcLoader = GlProc (*)(const char*);
+
+/// dlopen()s the first of `names` that loads; nullptr with `error` naming `what` if none does.
+void* open_library(std::initializer_list<const char*> names, const char* what, std::string& error);
 
 /// Makes an OSMesa GL 3.3+ core context current (tiny dummy buffer; drawing goes to FBOs).
 GlProcLoader make_osmesa_context(std::string& error);
