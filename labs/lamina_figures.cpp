@@ -27,7 +27,7 @@ std::string title_of(const Lab& lab, const LaminaInputs& in) {
 
 // The lamina with its rotation axis, omega, L and the principal axes.
 void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const PrincipalAxes& principal) {
-  const Vec3 n = in.axis.normalized();
+  const Vec3 n = in.axis.stableNormalized();
   const Vec3 L_dir = (I * n).normalized();
   const double size = std::max(in.a, in.b);
   const Vec3 centre = in.origin == "corner" ? Vec3(in.a / 2, in.b / 2, 0) : Vec3::Zero();
@@ -93,7 +93,7 @@ void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
     panel.add_ref_line(deg, true, fmt::format("principal axis {:.1f}\\deg", deg));
     panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
   }
-  const Vec3 n = in.axis.normalized();
+  const Vec3 n = in.axis.stableNormalized();
   if (std::abs(n.z()) < 1e-12) {
     double deg = rad_to_deg(std::atan2(n.y(), n.x()));
     if (deg > 90) deg -= 180;

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
 
   return lab.run(argc, argv, [&](Lab& lab) {
     const double m = in.mass, a = in.a, ma2 = m * a * a, w2 = in.omega * in.omega;
-    const Vec3 n = in.axis.normalized();
+    const Vec3 n = in.axis.stableNormalized();
     const Vec3 omega = in.omega * n;
     // The text's worked example: b = 2a, origin at the corner, axis at 37 degrees.
     const bool book = std::abs(in.b - 2 * a) < 1e-12 * a && in.origin == "corner";

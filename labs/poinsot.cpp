@@ -47,15 +47,15 @@ int main(int argc, char** argv) {
   lab.option("--mass", mass, "kg", "mass of the solid ellipsoid");
   lab.option_vec3("--omega", omega0, "rad/s", "initial angular velocity in body axes",
                   rigid::lab::Accept::Finite, true);
-  lab.option("--t-end", t_end, "s", "end time; 0 picks three polhode periods",
-             rigid::lab::Accept::NonNegative);
+  lab.option("--t-end", t_end, "s", "end time (default: three polhode periods)",
+             rigid::lab::Accept::Positive, false);
   lab.option_choice(
       "--method", method,
       {"exact", "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"},
       "how omega(t) is computed");
   lab.option("--tolerance", tolerance, "", "relative and absolute tolerance of adaptive methods");
-  lab.option("--step", step, "s", "step of fixed-step methods; 0 picks period/2000",
-             rigid::lab::Accept::NonNegative);
+  lab.option("--step", step, "s", "step of fixed-step methods (default: period / 2000)",
+             rigid::lab::Accept::Positive, false);
   lab.flag("--project", project, "rk4, rkf78: project omega back onto T and |L| after each step");
   lab.enable_csv();
 
@@ -66,6 +66,10 @@ int main(int argc, char** argv) {
     }
     if (!(tolerance < 1.0)) throw UsageError("--tolerance", "must lie in (0, 1)");
     const bool book = !lab.given("--inertia") && !lab.given("--ellipsoid") && !lab.given("--mass");
+    if (lab.given("--inertia")) {
+      lab.drop_input("ellipsoid");
+      lab.drop_input("mass");
+    }
     const Vector3d moments =
         lab.given("--inertia")
             ? inertia
@@ -85,28 +89,49 @@ int main(int argc, char** argv) {
     lab.result("energy", "kinetic energy T (eq. 81)", exact.energy(), "J");
     lab.result("angular_momentum_magnitude", "|L| (eq. 79)", exact.angular_momentum_magnitude(),
                "kg m^2/s");
-    lab.result("polhode_period_s", "polhode period", exact.period(), "s");
     const char* regimes[] = {"steady rotation", "polhode about the largest axis",
                              "polhode about the smallest axis", "separatrix"};
-    lab.result_text("regime", "motion", regimes[static_cast<int>(exact.regime())]);
+    const std::string regime = regimes[static_cast<int>(exact.regime())];
+    if (std::isfinite(exact.period())) {
+      lab.result("polhode_period_s", "polhode period", exact.period(), "s");
+    } else {
+      lab.result_none("polhode_period_s", "polhode period", "no polhode to go round: " + regime);
+    }
+    lab.result_text("regime", "motion", regime);
 
     const double scale = time_scale(exact, omega0);
-    if (t_end == 0.0) t_end = 3.0 * scale;
-    // Two hundred samples a period draw a smooth curve; at most 20001 in all.
-    const auto n = static_cast<std::size_t>(std::clamp(200.0 * t_end / scale, 2.0, 20001.0));
-    const std::vector<double> times = rigid::uniform_times(0.0, t_end, n);
-
+    if (!lab.given("--t-end")) t_end = 3.0 * scale;
+    // Past 1e9 periods the phase lambda t keeps fewer than 7 of its 16 digits.
+    if (t_end > 1e9 * scale) {
+      throw UsageError("--t-end", fmt::format("at most 1e9 periods ({:g} s) for these inputs: "
+                                              "beyond, the phase of the motion loses its digits",
+                                              1e9 * scale));
+    }
     rigid::IntegrateOptions options;
     options.abs_tol = options.rel_tol = tolerance;
-    options.step = step > 0 ? step : scale / 2000.0;
+    options.step = lab.given("--step") ? step : scale / 2000.0;
     options.max_steps = kMaxSteps;
+    options.method = method == "exact" ? rigid::Method::kDopri5 : rigid::method_from_name(method);
+    // Two hundred samples a period draw a smooth curve, at most 20001 in all. A
+    // fixed-step method is sampled on its own grid, every k-th step, so that no
+    // step is shortened to land on a sample; t_end then rounds up to a whole step.
+    double spacing = std::max(scale / 200.0, t_end / 20000.0);
+    const bool fixed = method != "exact" && !rigid::is_adaptive(options.method);
+    if (fixed) {
+      spacing = options.step * std::max(1.0, std::round(spacing / options.step));
+      t_end = spacing * std::ceil(t_end / spacing - 1e-9);
+    }
+    const auto intervals = static_cast<std::size_t>(std::max(1.0, std::round(t_end / spacing)));
+    const std::vector<double> times = rigid::uniform_times(0.0, t_end, intervals + 1);
+
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));
     lab.result_text("method", "method", method);
+    lab.result("t_end_s", "end time t_end", t_end, "s");
+    if (fixed) lab.result("step_s", "step h", options.step, "s");
     rigid::IntegrationResult run;
     if (method == "exact") {
       run = rigid::sample_exact(exact, times);
     } else {
-      options.method = rigid::method_from_name(method);
       options.project_invariants = project;
       if (project && !rigid::can_project(options.method)) {
         throw UsageError("--project", "works with --method rk4 or rkf78 only");
@@ -117,6 +142,11 @@ int main(int argc, char** argv) {
         throw UsageError(rigid::is_adaptive(options.method) ? "--tolerance" : "--step", e.what());
       }
       const std::vector<double> errors = rigid::omega_errors(run, exact);
+      // A step beyond the method's stability region blows omega up.
+      if (!std::all_of(errors.begin(), errors.end(), [](double e) { return std::isfinite(e); })) {
+        throw UsageError(rigid::is_adaptive(options.method) ? "--tolerance" : "--step",
+                         "the integration diverged (omega overflowed); shorten the step");
+      }
       lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
                  *std::max_element(errors.begin(), errors.end()), "");
       lab.result("steps", "steps taken", static_cast<double>(run.steps), "");

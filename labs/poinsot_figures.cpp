@@ -36,7 +36,7 @@ void frame_camera(render::Scene3D& scene, double size) {
 
 // The energy and momentum ellipsoids and the polhode where they meet (section 4).
 void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                     const std::vector<Vector3d>& polhode) {
+                     const std::vector<std::vector<Vector3d>>& polhode) {
   const PoinsotEllipsoids e = poinsot_ellipsoids(motion.moments(), omega0);
   const double size = std::max(e.energy_semi_axes.maxCoeff(), e.momentum_semi_axes.maxCoeff());
   render::Scene3D scene;
@@ -47,7 +47,10 @@ void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omeg
   scene.add_ellipsoid(Vector3d::Zero(), e.momentum_semi_axes, Eigen::Matrix3d::Identity(),
                       {render::kOrange, 0.35f},
                       "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
-  scene.add_tube(polhode, 0.012 * size, {render::kVermillion}, "polhode");
+  // A steady spin has no curve: its polhode is the point omega0 itself.
+  for (std::size_t k = 0; k < polhode.size(); ++k) {
+    scene.add_tube(polhode[k], 0.012 * size, {render::kVermillion}, k == 0 ? "polhode" : "");
+  }
   scene.add_sphere(omega0, 0.03 * size, {render::kBlack}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
@@ -59,7 +62,7 @@ void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omeg
 // Polhodes on one energy ellipsoid, about the largest and the smallest axis,
 // split by the separatrix through the intermediate axis (section 4.1).
 void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                         const std::vector<Vector3d>& polhode) {
+                         const std::vector<std::vector<Vector3d>>& polhode) {
   const PrincipalMoments& I = motion.moments();
   const double T = motion.energy();
   const Vector3d moments = I.vector();
@@ -85,11 +88,13 @@ void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& 
       const double L2 = 2.0 * T * (I_mid + (end - I_mid) * k / (family + 1.0));
       const Vector3d w = omega_on_energy_ellipsoid(I, T, L2);
       for (const double sign : {1.0, -1.0}) {
-        scene.add_tube(lift(rigid::polhode(I, sign * w, 240)), 0.006 * size,
-                       {about_largest ? render::kBlue : render::kBluishGreen},
-                       k == 1 && sign > 0 ? (about_largest ? "polhodes about the largest axis"
-                                                           : "polhodes about the smallest axis")
-                                          : "");
+        for (const auto& curve : rigid::polhode(I, sign * w, 240)) {
+          scene.add_tube(lift(curve), 0.006 * size,
+                         {about_largest ? render::kBlue : render::kBluishGreen},
+                         k == 1 && sign > 0 ? (about_largest ? "polhodes about the largest axis"
+                                                             : "polhodes about the smallest axis")
+                                            : "");
+        }
       }
     }
   }
@@ -98,7 +103,11 @@ void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& 
     scene.add_tube(lift(curve), 0.009 * size, {render::kVermillion}, first ? "separatrix" : "");
     first = false;
   }
-  scene.add_tube(lift(polhode), 0.011 * size, {render::kBlack}, "this body's polhode");
+  for (std::size_t k = 0; k < polhode.size(); ++k) {
+    scene.add_tube(lift(polhode[k]), 0.011 * size, {render::kBlack},
+                   k == 0 ? "this body's polhode" : "");
+  }
+  scene.add_sphere(omega0 * 1.004, 0.02 * size, {render::kBlack}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.3 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
   lab.figure("polhodes", [&](const std::string& path) {
@@ -196,7 +205,7 @@ void draw_poinsot_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const Free
   // The GL context is made once per process, before any figure is drawn and
   // timed (like matplotlib's import, bench/ reports it on its own).
   rigid::render::context();
-  const std::vector<Vector3d> curve = rigid::polhode(motion.moments(), omega0, 400);
+  const auto curve = rigid::polhode(motion.moments(), omega0, 400);
   draw_ellipsoids(lab, motion, omega0, curve);
   draw_polhode_family(lab, motion, omega0, curve);
   draw_omega(lab, motion, omega0, samples);

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "rigid/units.h"
 
@@ -75,6 +76,48 @@ TEST_CASE("balancing: the bearings carry torque only when unbalanced") {
   const Vec3 L0 = angular_momentum_at(wheel, 0.0, omega, 0.0);
   const Vec3 L1 = angular_momentum_at(wheel, 0.0, omega, 2 * kPi / omega);
   CHECK((L1 - L0).norm() < 1e-13 * L0.norm());
+  // Half a turn: the component along the axle is kept, the one across it reversed.
+  // The turn by pi is a rotation matrix with entries of a few ulps' error.
+  const Vec3 axle = axle_direction(wheel);
+  const Vec3 L_half = angular_momentum_at(wheel, 0.0, omega, kPi / omega);
+  const Vec3 along0 = L0.dot(axle) * axle, across0 = L0 - along0;
+  const Vec3 along_half = L_half.dot(axle) * axle, across_half = L_half - along_half;
+  const double ulps = 8 * 2.2e-16 * L0.norm();
+  CHECK(across0.norm() > 1e3 * ulps);  // a real mirror image, not a vanishing one
+  CHECK((along_half - along0).norm() < ulps);
+  CHECK((across_half + across0).norm() < ulps);  // measured 1.1 eps and 0.02 eps of |L|
+}
+
+TEST_CASE("balancing: the bearing torque turns with the wheel and is dL/dt") {
+  const CrookedWheel wheel = text_wheel();
+  const double omega = 90.0, T = 2 * kPi / omega;
+  const Vec3 axle = axle_direction(wheel);
+  const double N0 = bearing_torque(wheel, 0.0, omega).norm();
+  for (int i = 0; i <= 16; ++i) {
+    const double t = 0.37 * T * i;
+    const Vec3 N = bearing_torque_at(wheel, 0.0, omega, t);
+    const Vec3 L = angular_momentum_at(wheel, 0.0, omega, t);
+    INFO("t = " << t);
+    // the magnitude of the torque at t = 0 (eqs. 74-76) to a few ulps (measured 5 eps)
+    CHECK_THAT(N.norm(), WithinRel(N0, 1e-14));
+    // across the axle and across L (N = omega axle x L): a few ulps of |N| at most
+    const double eps = std::numeric_limits<double>::epsilon();
+    CHECK(std::abs(N.dot(axle)) < 4 * eps * N.norm());
+    CHECK(std::abs(N.dot(L)) < 4 * eps * N.norm() * L.norm());
+    // centred difference: (L(t+d) - L(t-d)) / 2d = dL/dt + d^2/6 L''', and
+    // |L'''| = omega^3 |L_across| = omega^2 |N|, so the relative error is (omega d)^2 / 6
+    // = 1.7e-7 for omega d = 1e-3, far above the roundoff eps |L| / (d |N|) ~ 1e-11
+    const double d = 1e-3 / omega;
+    const Vec3 dL = (angular_momentum_at(wheel, 0.0, omega, t + d) -
+                     angular_momentum_at(wheel, 0.0, omega, t - d)) /
+                    (2 * d);
+    INFO("difference error " << (dL - N).norm() / N0);
+    // (measured 1.667e-7: the truncation term itself)
+    CHECK((dL - N).norm() < 2 * (omega * d) * (omega * d) / 6 * N0);
+  }
+  // balanced: no torque at any time
+  const double m0 = balance_mass_exact(wheel);
+  CHECK(bearing_torque_at(wheel, m0, omega, 0.3 * T).norm() < 1e-11 * N0);
 }
 
 TEST_CASE("balancing: a tilt no mass can reach throws") {

@@ -191,6 +191,12 @@ TEST_CASE("inertia: invalid input throws with the rule") {
                     Catch::Contains("I1 + I2 >= I3"));
   CHECK_THROWS_WITH(validate_inertia_tensor(Vec3(1.0, -1.0, 1.0).asDiagonal()),
                     Catch::Contains("positive definite"));
+  // tiny and near-boundary values print as themselves, not as 0.000000 or rounded equal
+  CHECK_THROWS_WITH(thin_disk(-1e-320, 1.0), Catch::Contains("got -1e-320"));
+  CHECK_THROWS_WITH(validate_inertia_tensor(Vec3(1.0, 1.0, 2.0000001).asDiagonal()),
+                    Catch::Contains("(got 1 + 1 < 2.0000001)"));
+  CHECK_THROWS_WITH(validate_inertia_tensor(Vec3(1e-300, 1e-300, 3e-300).asDiagonal()),
+                    Catch::Contains("e-300 < 3e-300") && !Catch::Contains("0.000000"));
   Mat3 skew = Mat3::Identity();
   skew(0, 1) = 0.1;
   CHECK_THROWS_WITH(validate_inertia_tensor(skew), Catch::Contains("symmetric"));

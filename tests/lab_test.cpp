@@ -45,7 +45,8 @@ TEST_CASE("lamina_tensor: --axis 1,0,0 needs the section 3.1 torque 0.500 ma^2 o
   const auto& N = j["results"]["fixed_axis_torque"];
   CHECK_THAT(double(N[0]), WithinAbs(0.0, 1e-14));
   CHECK_THAT(double(N[1]), WithinAbs(0.0, 1e-14));
-  CHECK(prints_as(std::abs(double(N[2])), 0.500, 3));
+  // Errata: the size is the text's 0.500, the sign negative (eq. 76 with its axes).
+  CHECK(prints_as(double(N[2]), -0.500, 3));
 }
 
 TEST_CASE("lamina_tensor: the human table shows the textbook column and errata") {
@@ -73,7 +74,7 @@ TEST_CASE("tire_balancing: defaults give both balancing masses") {
 }
 
 TEST_CASE("tire_balancing: --csv writes one turn of L and the torque") {
-  const std::string path = "/tmp/rigid_tire_test.csv";
+  const std::string path = "/tmp/rigid_tire_test_" + std::to_string(::getpid()) + ".csv";
   std::remove(path.c_str());
   REQUIRE(run_lab("tire_balancing", "--quiet --csv " + path).status == 0);
   std::ifstream csv(path);
@@ -118,6 +119,14 @@ TEST_CASE("labs: bad input exits 2 with one line naming the option") {
       {"tire_balancing", "--tilt-deg -3", "--tilt-deg"},
       {"tire_balancing", "--tilt-deg 40 --offset 0.001", "--tilt-deg"},
       {"tire_balancing", "--csv /proc/nope/x.csv", "--csv"},
+      {"tire_balancing", "--csv /tmp", "--csv"},
+      {"tire_balancing", "--bogus 5", "--bogus"},
+      {"tire_balancing", "--mass 1e308", "--mass"},
+      {"tire_balancing", "--radius 1e-300", "--radius"},
+      {"tire_balancing", "--offset 1e300", "--offset"},
+      {"lamina_tensor", "--omega 1e200", "--omega"},
+      {"lamina_tensor", "--axis 1e-300,0,0", "--axis"},
+      {"lamina_tensor", "--mass 1 stray", "stray"},
   };
   for (const auto& c : cases) {
     INFO(c.lab << " " << c.args);
@@ -178,7 +187,7 @@ TEST_CASE("poinsot: every method agrees with the exact solution within its toler
 }
 
 TEST_CASE("poinsot: --csv writes t, omega, the quaternion, energy and |L|") {
-  const std::string path = "/tmp/rigid_poinsot_test.csv";
+  const std::string path = "/tmp/rigid_poinsot_test_" + std::to_string(::getpid()) + ".csv";
   std::remove(path.c_str());
   REQUIRE(run_lab("poinsot", "--quiet --method splitting --csv " + path).status == 0);
   std::ifstream csv(path);
@@ -206,6 +215,12 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
       {"--inertia 1,2,2 --ellipsoid 1,2,3", "--inertia"},
       {"--method rk4 --step 1e-9 --t-end 100", "--step"},
       {"--method dopri5 --project", "--project"},
+      {"--step 0", "--step"},
+      {"--t-end 0", "--t-end"},
+      {"--t-end 1e300", "--t-end"},
+      {"--t-end 1e59", "--t-end"},
+      {"--omega 1e200,1,1", "--omega"},
+      {"--method rk4 --step 10", "--step"},
   };
   for (const auto& [args, option] : cases) {
     INFO(args);
@@ -215,4 +230,38 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
     CHECK(run.err.rfind(std::string("poinsot: error: ") + option, 0) == 0);
     CHECK(run.out.empty());
   }
+}
+
+TEST_CASE("poinsot: steady rotation and the separatrix have no polhode period") {
+  struct Case {
+    const char* args;
+    const char* regime;
+  };
+  const Case cases[] = {{"--omega 0,1,0", "steady rotation"},
+                        {"--omega 1,0,0", "steady rotation"},
+                        {"--inertia 2,2,2 --omega 1,2,3", "steady rotation"},
+                        // L1 = L3 = 15: L^2 = 2 T I2 exactly
+                        {"--inertia 3,3.75,5 --omega 5,1,3", "separatrix"}};
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto run = run_lab("poinsot", std::string("--json ") + c.args);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    CHECK(j["results"]["polhode_period_s"].is_null());
+    CHECK(j["results"]["regime"] == c.regime);
+    CHECK(double(j["results"]["energy_drift_rel"]) < 1e-14);
+  }
+}
+
+TEST_CASE("poinsot: a fixed step is taken as given, never shortened to meet a sample") {
+  // h = 1 s on a 10.3 s polhode period: rk4's error is large, as it must be.
+  const auto run = run_lab("poinsot", "--json --method rk4 --step 1");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  CHECK(double(r["step_s"]) == 1.0);
+  // t_end rounds up to a whole number of steps, each taken once.
+  CHECK(double(r["steps"]) == double(r["t_end_s"]));
+  CHECK(double(r["max_error_vs_exact"]) > 1e-3);
+  CHECK(!j["inputs"].contains("inertia"));
 }

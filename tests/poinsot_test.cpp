@@ -33,7 +33,9 @@ TEST_CASE("poinsot: omega0 lies on the energy and the momentum ellipsoid") {
 TEST_CASE("poinsot: the polhode is the intersection of the two ellipsoids") {
   for (const Vector3d& w0 : {Vector3d(1, 1, 1), Vector3d(1, 0.2, 0.1), Vector3d(0.05, 0.3, 1)}) {
     const PoinsotEllipsoids e = poinsot_ellipsoids(kEllipsoid, w0);
-    const auto curve = polhode(kEllipsoid, w0, 200);
+    const auto curves = polhode(kEllipsoid, w0, 200);
+    REQUIRE(curves.size() == 1);
+    const auto& curve = curves.front();
     REQUIRE(curve.size() == 200);
     for (const Vector3d& w : curve) {
       CHECK_THAT(on_ellipsoid(w, e.energy_semi_axes), WithinAbs(1.0, kOnSurface));
@@ -63,8 +65,12 @@ TEST_CASE("poinsot: points of given energy and momentum, and the separatrix") {
                  WithinAbs(2 * T * kEllipsoid.I2, 1e-13));
     }
   }
-  // A symmetric body has no separatrix curve.
+  // A symmetric body has no separatrix curve; a steady spin has a point for polhode.
   CHECK(separatrices({1, 1, 2}, T, 10).empty());
+  CHECK(polhode(kEllipsoid, Vector3d(0, 1, 0), 10).empty());
+  // Exactly on the separatrix the polhode is its two ellipses.
+  const PrincipalMoments on_separatrix{3, 3.75, 5};  // L1 = L3: L^2 = 2 T I2 exactly
+  CHECK(polhode(on_separatrix, Vector3d(5, 1, 3), 50).size() == 2);
 }
 
 TEST_CASE("poinsot: section 4.1 axis ratios for I1 : I2 : I3 = 5 : 4 : 3") {

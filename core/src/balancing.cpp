@@ -53,6 +53,11 @@ Vec3 angular_momentum_at(const CrookedWheel& wheel, double m0, double omega, dou
   return Eigen::AngleAxisd(omega * t, axle) * L_body;
 }
 
+Vec3 bearing_torque_at(const CrookedWheel& wheel, double m0, double omega, double t) {
+  // L turns rigidly at omega about the fixed axle, so dL/dt = (omega axle) x L
+  return (omega * axle_direction(wheel)).cross(angular_momentum_at(wheel, m0, omega, t));
+}
+
 double principal_axis_misalignment(const CrookedWheel& wheel, double m0) {
   const PrincipalAxes principal = principal_axes(wheel_body(wheel, m0).I_com);
   const Vec3 axle = axle_direction(wheel);

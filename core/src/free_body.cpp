@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
+#include <string>
+
+#include "format_number.h"
 
 namespace rigid {
 
@@ -12,9 +14,8 @@ void validate(const PrincipalMoments& I, MomentsRule rule) {
   const double m[3] = {I.I1, I.I2, I.I3};
   for (int i = 0; i < 3; ++i) {
     if (!std::isfinite(m[i]) || !(m[i] > 0.0)) {
-      std::ostringstream os;
-      os << "principal moment I" << (i + 1) << " must be positive and finite, got " << m[i];
-      throw std::invalid_argument(os.str());
+      throw std::invalid_argument("principal moment I" + std::to_string(i + 1) +
+                                  " must be positive and finite, got " + format_number(m[i]));
     }
   }
   if (rule == MomentsRule::kPositiveOnly) return;
@@ -24,11 +25,10 @@ void validate(const PrincipalMoments& I, MomentsRule rule) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     const int lo = std::min(i, j), hi = std::max(i, j);
     if (m[lo] + m[hi] < m[k] * (1.0 - kSlack)) {
-      std::ostringstream os;
-      os.precision(17);
-      os << "principal moments must satisfy the triangle inequality I" << (lo + 1) << " + I"
-         << (hi + 1) << " >= I" << (k + 1) << ", got " << m[lo] << " + " << m[hi] << " < " << m[k];
-      throw std::invalid_argument(os.str());
+      throw std::invalid_argument(
+          "principal moments must satisfy the triangle inequality I" + std::to_string(lo + 1) +
+          " + I" + std::to_string(hi + 1) + " >= I" + std::to_string(k + 1) + ", got " +
+          format_number(m[lo]) + " + " + format_number(m[hi]) + " < " + format_number(m[k]));
     }
   }
 }

@@ -6,10 +6,10 @@
 #include <boost/math/special_functions/ellint_rj.hpp>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "format_number.h"
 #include "rigid/rotation.h"
 
 namespace rigid {
@@ -89,9 +89,8 @@ void separatrix_sn_cn_dn(double u, double& sn, double& cn, double& dn) {
 
 void jacobi_sn_cn_dn(double u, double kp2, double& sn, double& cn, double& dn) {
   if (!(kp2 >= 0.0 && kp2 <= 1.0)) {
-    std::ostringstream os;
-    os << "jacobi_sn_cn_dn: complementary parameter k'^2 must lie in [0, 1], got " << kp2;
-    bad_input(os.str());
+    bad_input("jacobi_sn_cn_dn: complementary parameter k'^2 must lie in [0, 1], got " +
+              format_number(kp2));
   }
   if (kp2 < std::numeric_limits<double>::min()) return separatrix_sn_cn_dn(u, sn, cn, dn);
   const GaussTable g = make_gauss_table(kp2);
@@ -103,9 +102,7 @@ FreeBodyExact::FreeBodyExact(const PrincipalMoments& I, const Eigen::Vector3d& o
     : I_(I) {
   validate(I, rule);
   if (!omega0_body.allFinite()) {
-    std::ostringstream os;
-    os << "omega_body must be finite, got (" << omega0_body.transpose() << ")";
-    bad_input(os.str());
+    bad_input("omega_body must be finite, got " + format_vector(omega0_body));
   }
   const double qn = q0.norm();
   if (!std::isfinite(qn) || !(qn > 0.0))
@@ -237,7 +234,7 @@ FreeBodyExact::FreeBodyExact(const PrincipalMoments& I, const Eigen::Vector3d& o
   H_u0_ = psi_periodic(sn, cn, dn);
 
   // Space side: q(0) = q_S * M(0) * q_W = q0.
-  Elliptic e0{sn, cn, dn, u0_, 0};
+  Elliptic e0{sn, cn, dn, u0_, 0.0, 1.0};
   q_S_ = Eigen::Quaterniond::Identity();
   const Eigen::Quaterniond body_part = attitude_from(0.0, e0);
   q_S_ = q0_ * body_part.conjugate();
@@ -245,6 +242,15 @@ FreeBodyExact::FreeBodyExact(const PrincipalMoments& I, const Eigen::Vector3d& o
 
 double FreeBodyExact::modulus() const {
   return std::sqrt(k2_);
+}
+
+double FreeBodyExact::phase_precision(double t) const {
+  if (regime_ == FreeMotionRegime::kSteady) return 0.0;
+  // u = lambda t + u0 carries an absolute error of about eps (|lambda t| + |u0|)
+  // (lambda's rounding scaled by t, then the reduction by 2K n); sn, cn, dn vary
+  // on the scale K, or on the scale 1 of tanh and sech on the separatrix.
+  const double scale = regime_ == FreeMotionRegime::kSeparatrix ? 1.0 : K_;
+  return std::numeric_limits<double>::epsilon() * (std::abs(lambda_ * t) + std::abs(u0_)) / scale;
 }
 
 void FreeBodyExact::sn_cn_dn_reduced(double u, double& sn, double& cn, double& dn) const {
@@ -273,31 +279,32 @@ FreeBodyExact::Elliptic FreeBodyExact::elliptic_at(double t) const {
   if (regime_ == FreeMotionRegime::kSeparatrix) {
     separatrix_sn_cn_dn(u, e.sn, e.cn, e.dn);
     e.u_reduced = u;
+    e.flip = 1.0;
     return e;
   }
-  // sn(u + 2K n) = (-1)^n sn u, cn likewise, dn unchanged
+  // sn(u + 2K n) = (-1)^n sn u, cn likewise, dn unchanged. n stays a double:
+  // no integer type holds it for every t, and beyond 2^53 every double is even.
   const double n = std::nearbyint(u * inv_two_K_);
   e.u_reduced = std::fma(-n, two_K_, u);
-  e.half_periods = static_cast<long long>(n);
+  e.half_periods = n;
+  e.flip = std::fmod(n, 2.0) != 0.0 ? -1.0 : 1.0;
   sn_cn_dn_reduced(e.u_reduced, e.sn, e.cn, e.dn);
   return e;
 }
 
 Eigen::Vector3d FreeBodyExact::omega_from(const Elliptic& e) const {
-  const double flip = (e.half_periods & 1) ? -1.0 : 1.0;
-  const double w_work[3] = {w_amp_[0] * e.cn * flip, w_amp_[1] * e.sn * flip, w_amp_[2] * e.dn};
+  const double w_work[3] = {w_amp_[0] * e.cn * e.flip, w_amp_[1] * e.sn * e.flip, w_amp_[2] * e.dn};
   Eigen::Vector3d w;
   for (int i = 0; i < 3; ++i) w[axis_[i]] = sign_[i] * w_work[i];
   return w;
 }
 
 Eigen::Quaterniond FreeBodyExact::attitude_from(double t, const Elliptic& e) const {
-  const double flip = (e.half_periods & 1) ? -1.0 : 1.0;
   // l = L_body / |L| in the working frame
-  const double lo = l_amp_[0] * e.cn * flip, lm = l_amp_[1] * e.sn * flip, lp = l_amp_[2] * e.dn;
+  const double lo = l_amp_[0] * e.cn * e.flip, lm = l_amp_[1] * e.sn * e.flip,
+               lp = l_amp_[2] * e.dn;
   // psi: secular part plus the periodic part, continued over half periods
-  const double H =
-      psi_periodic(e.sn, e.cn, e.dn) + static_cast<double>(e.half_periods) * H_half_period_;
+  const double H = psi_periodic(e.sn, e.cn, e.dn) + e.half_periods * H_half_period_;
   const double psi = psi_rate_ * t - psi_coef_ * (H - H_u0_);
   // M: minimal rotation taking l to e_p, quaternion (1 + l_p, l x e_p) normalised
   const double nm = 1.0 / std::sqrt(2.0 * (1.0 + lp));

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "format_number.h"
 #include "rigid/units.h"
 
 namespace rigid {
@@ -14,7 +15,7 @@ namespace {
 void require_positive(double value, const char* what) {
   if (!std::isfinite(value) || !(value > 0.0)) {
     throw std::invalid_argument(std::string(what) + " must be a finite positive number, got " +
-                                std::to_string(value));
+                                format_number(value));
   }
 }
 
@@ -209,14 +210,14 @@ void validate_inertia_tensor(const Mat3& I) {
   const Vec3 moments = solver.eigenvalues();
   if (!(moments(0) > 0.0)) {
     throw std::invalid_argument("inertia tensor must be positive definite (smallest moment " +
-                                std::to_string(moments(0)) + ")");
+                                format_number(moments(0)) + ")");
   }
   // A lamina sits exactly on I1 + I2 = I3; allow the eigen-solver's roundoff there.
   const double slack = 64 * 2.2e-16 * moments(2);
   if (moments(0) + moments(1) < moments(2) - slack) {
     throw std::invalid_argument("principal moments must satisfy I1 + I2 >= I3 (got " +
-                                std::to_string(moments(0)) + " + " + std::to_string(moments(1)) +
-                                " < " + std::to_string(moments(2)) + ")");
+                                format_number(moments(0)) + " + " + format_number(moments(1)) +
+                                " < " + format_number(moments(2)) + ")");
   }
 }
 

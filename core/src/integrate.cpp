@@ -18,6 +18,7 @@
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 
+#include "format_number.h"
 #include "rigid/splitting.h"
 
 namespace rigid {
@@ -31,7 +32,8 @@ constexpr std::array<std::string_view, 6> kNames = {"splitting", "splitting4", "
 
 [[noreturn]] void too_many_steps(Method m, std::size_t max_steps, double t_end) {
   std::ostringstream os;
-  os << method_name(m) << " needs more than " << max_steps << " steps to reach t = " << t_end
+  os << method_name(m) << " needs more than " << max_steps
+     << " steps to reach t = " << format_number(t_end)
      << " s; loosen the tolerance, lengthen the step, or raise max_steps";
   throw std::runtime_error(os.str());
 }
@@ -123,8 +125,8 @@ void run_fixed(const std::vector<double>& times, double h, Method m, std::size_t
   const double needed = std::ceil((t1 - t0) / h) + static_cast<double>(times.size());
   if (needed > static_cast<double>(max_steps)) {
     std::ostringstream os;
-    os << method_name(m) << " with step " << h << " s needs more than " << max_steps
-       << " steps to reach t = " << t1 << " s; lengthen the step or raise max_steps";
+    os << method_name(m) << " with step " << format_number(h) << " s needs more than " << max_steps
+       << " steps to reach t = " << format_number(t1) << " s; lengthen the step or raise max_steps";
     throw std::invalid_argument(os.str());
   }
   double t = t0;
@@ -170,7 +172,7 @@ void run_controlled(Stepper& stepper, System& rhs, FreeBodyState x,
       }
       if (!(dt_free > 0.0) || t + dt_free == t) {
         std::ostringstream os;
-        os << method_name(m) << ": step size underflow at t = " << t << " s";
+        os << method_name(m) << ": step size underflow at t = " << format_number(t) << " s";
         throw std::runtime_error(os.str());
       }
     }
@@ -219,12 +221,13 @@ void check_inputs(const PrincipalMoments& I, const FreeBodyState& x0,
     if (bad(o.abs_tol) || bad(o.rel_tol) || (o.abs_tol == 0.0 && o.rel_tol == 0.0)) {
       std::ostringstream os;
       os << method_name(o.method) << ": tolerances must lie in [0, 1) and not both be 0, got abs "
-         << o.abs_tol << ", rel " << o.rel_tol;
+         << format_number(o.abs_tol) << ", rel " << format_number(o.rel_tol);
       throw std::invalid_argument(os.str());
     }
   } else if (!(o.step > 0.0) || !std::isfinite(o.step)) {
     std::ostringstream os;
-    os << method_name(o.method) << ": step must be positive and finite, got " << o.step;
+    os << method_name(o.method) << ": step must be positive and finite, got "
+       << format_number(o.step);
     throw std::invalid_argument(os.str());
   }
 }

@@ -43,23 +43,19 @@ Eigen::Vector3d momentum_ratios_touching(const Eigen::Vector3d& moments, int j) 
   return m * (energy_ellipsoid_ratios(moments)(j) / m(j));
 }
 
-std::vector<Eigen::Vector3d> polhode(const PrincipalMoments& I, const Eigen::Vector3d& omega0_body,
-                                     int samples) {
+std::vector<std::vector<Eigen::Vector3d>> polhode(const PrincipalMoments& I,
+                                                  const Eigen::Vector3d& omega0_body, int samples) {
   const FreeBodyExact motion(I, omega0_body);
   if (motion.regime() == FreeMotionRegime::kSeparatrix) {
-    std::vector<Eigen::Vector3d> curve;
-    for (const auto& ellipse : separatrices(I, motion.energy(), samples / 2)) {
-      curve.insert(curve.end(), ellipse.begin(), ellipse.end());
-    }
-    return curve;
+    return separatrices(I, motion.energy(), samples);
   }
-  if (!std::isfinite(motion.period())) return {omega0_body};
+  if (!std::isfinite(motion.period())) return {};
   std::vector<Eigen::Vector3d> curve;
   curve.reserve(static_cast<size_t>(samples));
   for (int k = 0; k < samples; ++k) {
     curve.push_back(motion.omega_body(motion.period() * k / (samples - 1)));
   }
-  return curve;
+  return {curve};
 }
 
 Eigen::Vector3d omega_on_energy_ellipsoid(const PrincipalMoments& I, double T, double L2) {

@@ -39,6 +39,8 @@ std::optional<double> parse_number(const std::string& text) {
   return value;
 }
 
+constexpr double kSmallest = 1e-60, kLargest = 1e60;
+
 // The rule a number breaks, or "" when it is acceptable.
 std::string number_rule(const std::string& text, Accept accept) {
   const auto value = parse_number(text);
@@ -47,6 +49,14 @@ std::string number_rule(const std::string& text, Accept accept) {
   if (accept == Accept::Positive && !(*value > 0.0)) return "must be positive (got " + text + ")";
   if (accept == Accept::NonNegative && *value < 0.0) {
     return "must not be negative (got " + text + ")";
+  }
+  // Every result is a product of at most five inputs (m a^2 omega^2, say); inside
+  // this range no product overflows or underflows a double.
+  const double magnitude = std::abs(*value);
+  if (magnitude != 0.0 && (magnitude < kSmallest || magnitude > kLargest)) {
+    return std::string(accept == Accept::Positive ? "must be between 1e-60 and 1e60"
+                                                  : "must be 0 or between 1e-60 and 1e60 in magnitude") +
+           " (got " + text + ")";
   }
   return "";
 }
@@ -134,14 +144,17 @@ Lab::Lab(std::string name, std::string title)
 }
 
 void Lab::option(const std::string& flag, double& value, const std::string& unit,
-                 const std::string& help, Accept accept) {
-  app_.add_option(flag, value, help + (unit.empty() ? "" : " [" + unit + "]"))
-      ->type_name("NUMBER")
-      ->capture_default_str()
-      ->check(
+                 const std::string& help, Accept accept, bool show_default) {
+  CLI::Option* option = app_.add_option(flag, value, help + (unit.empty() ? "" : " [" + unit + "]"));
+  option->type_name("NUMBER");
+  if (show_default) option->capture_default_str();
+  option->check(
           CLI::Validator([accept](std::string& text) { return number_rule(text, accept); }, ""));
   const std::string key = key_of(flag);
-  record_inputs_.push_back([this, key, &value] { inputs_[key] = value; });
+  // An option whose default means "chosen by the lab" is recorded only when given.
+  record_inputs_.push_back([this, key, flag, show_default, &value] {
+    if (show_default || given(flag)) inputs_[key] = value;
+  });
 }
 
 void Lab::option_deg(const std::string& flag, double& degrees, double lo, double hi,
@@ -218,6 +231,8 @@ void Lab::flag(const std::string& flag, bool& value, const std::string& help) {
   record_inputs_.push_back([this, key, &value] { inputs_[key] = value; });
 }
 
+void Lab::drop_input(const std::string& key) { inputs_.erase(key); }
+
 bool Lab::given(const std::string& flag) const {
   return app_.count(flag) > 0;
 }
@@ -267,6 +282,12 @@ void Lab::result(const std::string& key, const std::string& label, const Eigen::
   }
 }
 
+void Lab::result_none(const std::string& key, const std::string& label,
+                      const std::string& why) {
+  results_[key] = nullptr;
+  rows_.push_back({label, "none", "", "(" + why + ")"});
+}
+
 void Lab::result_text(const std::string& key, const std::string& label, const std::string& value) {
   results_[key] = value;
   rows_.push_back({label, value, "", ""});
@@ -279,8 +300,12 @@ void Lab::note(const std::string& text) {
 void Lab::figure(const std::string& what,
                  const std::function<void(const std::string& path)>& save) {
   const std::string file = name_ + "_" + what + ".png";
+  const fs::path path = fs::path(figures_dir_) / file;
+  if (fs::is_directory(path)) {
+    throw UsageError("--figures", "'" + path.string() + "' is a directory, not a figure");
+  }
   const auto start = std::chrono::steady_clock::now();
-  save((fs::path(figures_dir_) / file).string());
+  save(path.string());
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   figures_.push_back(file);
   figure_seconds_[file] = elapsed.count();
@@ -294,6 +319,12 @@ std::string Lab::figure_title(const std::string& detail) const {
 
 void Lab::figures(const std::function<void(Lab&)>& draw) {
   if (!figures_requested()) return;
+  std::error_code error;
+  fs::create_directories(figures_dir_, error);
+  if (error) {
+    throw UsageError("--figures", "cannot create directory '" + figures_dir_ + "': " +
+                                      error.message());
+  }
   try {
     draw(*this);
   } catch (const UsageError&) {
@@ -304,36 +335,45 @@ void Lab::figures(const std::function<void(Lab&)>& draw) {
   }
 }
 
+void Lab::check_figures_directory() const {
+  // Nothing is created before the lab has computed its results: find the
+  // nearest existing ancestor and check that it can be written.
+  fs::path dir = fs::absolute(figures_dir_);
+  while (!fs::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) {
+    dir = dir.parent_path();
+  }
+  if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK | X_OK) != 0) {
+    throw UsageError("--figures", "cannot create or write directory '" + figures_dir_ + "'");
+  }
+}
+
 int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
   try {
     try {
+      app_.allow_extras();
       app_.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
       return app_.exit(e);
-    } catch (const CLI::ExtrasError& e) {
-      // CLI11 says "The following argument was not expected: --foo".
-      std::string what = e.what();
-      const auto colon = what.find(": ");
-      throw UsageError(colon == std::string::npos ? what : what.substr(colon + 2),
-                       "unknown option (see --help)");
     } catch (const CLI::ParseError& e) {
       throw std::invalid_argument(e.what());
     }
+    // The first word CLI11 could not place names the mistake.
+    if (const auto extras = app_.remaining(); !extras.empty()) {
+      const std::string& word = extras.front();
+      if (word.rfind("-", 0) == 0) throw UsageError(word, "unknown option (see --help)");
+      throw UsageError(word, "unexpected argument (options take the form --name VALUE)");
+    }
     for (auto& finish : finish_parsing_) finish();
     for (auto& record : record_inputs_) record();
-    if (figures_requested()) {
-      // Make sure the directory can be written before any work is done.
-      std::error_code error;
-      fs::create_directories(figures_dir_, error);
-      const std::string probe = (fs::path(figures_dir_) / (".probe-" + name_)).string();
-      std::ofstream test(probe);
-      if (error || !test) {
-        throw UsageError("--figures", "cannot create or write directory '" + figures_dir_ + "'");
-      }
-      test.close();
-      std::remove(probe.c_str());
+    if (app_.count("--figures") > 0 && figures_dir_.empty()) {
+      throw UsageError("--figures", "needs a directory name");
     }
-    if (!csv_path_.empty()) {
+    if (figures_requested()) check_figures_directory();
+    if (csv_enabled_ && app_.count("--csv") > 0) {
+      if (csv_path_.empty()) throw UsageError("--csv", "needs a file name");
+      if (fs::is_directory(csv_path_)) {
+        throw UsageError("--csv", "'" + csv_path_ + "' is a directory, not a file");
+      }
       const fs::path parent = fs::absolute(csv_path_).parent_path();
       if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0) {
         throw UsageError("--csv", "cannot write into directory '" + parent.string() + "'");

@@ -39,8 +39,11 @@ class Lab {
   Lab(std::string name, std::string title);
 
   /// A number in SI units with its default; `unit` shows in --help and the inputs.
+  /// Nonzero values must lie between 1e-60 and 1e60 in magnitude. With
+  /// `show_default` off the default is the lab's to choose (say so in `help`).
   void option(const std::string& flag, double& value, const std::string& unit,
-              const std::string& help, Accept accept = Accept::Positive);
+              const std::string& help, Accept accept = Accept::Positive,
+              bool show_default = true);
   /// An angle in degrees that must lie in the open interval (lo, hi).
   void option_deg(const std::string& flag, double& degrees, double lo, double hi,
                   const std::string& help);
@@ -54,6 +57,8 @@ class Lab {
                      const std::vector<std::string>& choices, const std::string& help);
   /// A switch with no value, e.g. --project.
   void flag(const std::string& flag, bool& value, const std::string& help);
+  /// Removes an input the run did not use (e.g. --mass when --inertia is given).
+  void drop_input(const std::string& key);
   /// True if the user gave this option on the command line.
   bool given(const std::string& flag) const;
   /// Offer --csv FILE for this lab's time series.
@@ -74,6 +79,8 @@ class Lab {
   /// A matrix result (JSON: array of rows).
   void result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
               const std::string& unit, std::optional<std::string> textbook = std::nullopt);
+  /// A result that does not exist for these inputs (JSON null), with the reason in the table.
+  void result_none(const std::string& key, const std::string& label, const std::string& why);
   /// A text result (e.g. a method name).
   void result_text(const std::string& key, const std::string& label, const std::string& value);
   /// A note under the table and in JSON "notes"; errata start with "errata:".
@@ -101,6 +108,7 @@ class Lab {
     std::string label, value, unit, textbook;
     bool heading = false;
   };
+  void check_figures_directory() const;
   void store(const std::string& key, Json value, bool finite,
              const std::optional<std::string>& textbook);
   void emit_table() const;

@@ -110,6 +110,42 @@ TEST_CASE("exact free body: omega repeats after the polhode period") {
              Catch::WithinAbs(10.2972, 1e-4));
 }
 
+TEST_CASE("exact free body: the phase loses eps per quarter period, and huge t stays defined") {
+  const Eigen::Vector3d w0(1, 1, 1);
+  const FreeBodyExact exact({kPi, 2 * kPi, 13 * kPi / 5}, w0);
+  const double T = exact.period();
+  // |u0| <= K, so at t = 0 at most eps; u advances by 4K a period
+  CHECK(exact.phase_precision(0.0) <= kEps);
+  for (double periods : {1e3, 1e6, 1e9}) {
+    const double t = periods * T;
+    CHECK_THAT(exact.phase_precision(t), Catch::WithinRel(4 * periods * kEps, 1.0 / periods));
+    CHECK(exact.phase_precision(-t) == exact.phase_precision(t));
+    // The periodicity check loses about that much (t and T carry relative eps each):
+    // measured 0.30, 0.68 and 0.42 of phase_precision for 1e3, 1e6 and 1e9 periods.
+    const double seen = (exact.omega_body(t + 0.37) - exact.omega_body(0.37)).norm() / w0.norm();
+    INFO(periods << " periods: phase precision " << exact.phase_precision(t) << ", seen " << seen);
+    CHECK(seen < 4 * exact.phase_precision(t));
+    CHECK(seen > 0.01 * exact.phase_precision(t));
+  }
+  // Far beyond 2^63 half periods (once undefined behaviour): a finite, bounded
+  // answer, and phase_precision says it has no digits left.
+  for (double t : {1e25, 1e300, -1e300}) {
+    INFO("t = " << t);
+    CHECK(exact.phase_precision(t) > 1.0);
+    const FreeBodyState x = exact.state(t);
+    for (double v : x) CHECK(std::isfinite(v));
+    // meaningless but bounded by the amplitudes (measured |w| = 1.78 and 1.65 here)
+    CHECK(exact.omega_body(t).norm() < 2 * w0.norm());
+  }
+  // steady rotation: no elliptic phase; separatrix: phase measured against the scale 1
+  CHECK(FreeBodyExact({1, 2, 3}, {0, 0, 2}).phase_precision(1e6) == 0.0);
+  const FreeBodyExact sep({3, 3.75, 5}, {5, 0, 3});
+  REQUIRE(sep.regime() == FreeMotionRegime::kSeparatrix);
+  CHECK(sep.phase_precision(1e3) > 0.0);
+  CHECK_THAT(sep.phase_precision(2e3),
+             Catch::WithinRel(2 * sep.phase_precision(1e3) - sep.phase_precision(0.0), 1e-12));
+}
+
 TEST_CASE("exact free body: symmetric body follows eqs. 109-115") {
   // I1 = I2 = I: w1 = w0 cos(Omega t + a), w2 = w0 sin(Omega t + a), Omega = w3 (Is - I) / I
   for (const double Is : {0.5, 2.0}) {  // prolate and oblate
@@ -197,6 +233,10 @@ TEST_CASE("exact free body: invalid input throws") {
   CHECK_NOTHROW(FreeBodyExact({2, 1, 2.0 / 3}, {1, 1, 1}, Eigen::Quaterniond::Identity(),
                               MomentsRule::kPositiveOnly));
   CHECK_THROWS_AS(FreeBodyExact({1, 2, 3}, {1, NAN, 1}), std::invalid_argument);
+  CHECK_THROWS_WITH(FreeBodyExact({1, 2, 3}, {1e-320, NAN, 1}),
+                    Catch::Contains("got (1e-320, nan, 1)"));
+  double sn, cn, dn;
+  CHECK_THROWS_WITH(jacobi_sn_cn_dn(1.0, -1e-320, sn, cn, dn), Catch::Contains("got -1e-320"));
   CHECK_THROWS_AS(FreeBodyExact({1, 2, 3}, {1, 1, 1}, Eigen::Quaterniond(0, 0, 0, 0)),
                   std::invalid_argument);
 }

@@ -27,6 +27,10 @@ TEST_CASE("free body: moments must be positive, finite and obey the triangle ine
   CHECK_THROWS_WITH(validate({1.0, -1.0, 1.0}), Contains("I2 must be positive"));
   CHECK_THROWS_WITH(validate({1.0, 1.0, NAN}), Contains("I3 must be positive and finite"));
   CHECK_THROWS_AS(validate({1.0, 1.0, INFINITY}), std::invalid_argument);
+  // the numbers in the message show the violation, however small or close
+  CHECK_THROWS_WITH(validate({1.0, 1.0, 2.0000001}), Contains("got 1 + 1 < 2.0000001"));
+  CHECK_THROWS_WITH(validate({1e-320, 1e-320, 3e-320}), Contains("got 1e-320 + 1e-320 < 3e-320"));
+  CHECK_THROWS_WITH(validate({-1e-320, 1.0, 1.0}), Contains("got -1e-320"));
   // Hairer-Lubich-Wanner's test body breaks the triangle inequality: allowed only as a test problem
   CHECK_THROWS_AS(validate({2.0, 1.0, 2.0 / 3.0}), std::invalid_argument);
   CHECK_NOTHROW(validate({2.0, 1.0, 2.0 / 3.0}, MomentsRule::kPositiveOnly));

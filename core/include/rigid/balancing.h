@@ -40,6 +40,10 @@ Vec3 bearing_torque(const CrookedWheel& wheel, double m0, double omega);
 /// axle, in the frame the wheel had at t = 0: L sweeps a cone about the axle.
 Vec3 angular_momentum_at(const CrookedWheel& wheel, double m0, double omega, double t);
 
+/// Torque the bearings supply at time t, in the frame the wheel had at t = 0:
+/// N(t) = dL/dt = omega axle x L(t), bearing_torque turned with the wheel (eqs. 74-76).
+Vec3 bearing_torque_at(const CrookedWheel& wheel, double m0, double omega, double t);
+
 /// Angle between the axle and the principal axis nearest to it (rad).
 double principal_axis_misalignment(const CrookedWheel& wheel, double m0);
 

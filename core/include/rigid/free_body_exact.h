@@ -67,6 +67,10 @@ class FreeBodyExact {
   FreeMotionRegime regime() const { return regime_; }
   /// The elliptic modulus k (0 for a symmetric body or a steady rotation).
   double modulus() const;
+  /// Relative precision left in the elliptic phase u = lambda t + u0 at time t,
+  /// about eps (|lambda t| + |u0|) / K (K -> 1 on the separatrix, 0 when steady):
+  /// omega_body(t) is meaningless once this nears 1.
+  double phase_precision(double t) const;
   /// The complementary parameter k'^2 = 1 - k^2, computed without cancellation.
   double complementary_parameter() const { return kp2_; }
   /// Kinetic energy T, J.
@@ -81,7 +85,8 @@ class FreeBodyExact {
  private:
   struct Elliptic {  // sn, cn, dn at one u, and u reduced to [-K, K]
     double sn, cn, dn, u_reduced;
-    long long half_periods;
+    double half_periods;  // n in u = u_reduced + 2K n, an integer held in a double
+    double flip;          // (-1)^n
   };
   Elliptic elliptic_at(double t) const;
   Eigen::Vector3d omega_from(const Elliptic& e) const;

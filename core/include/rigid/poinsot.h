@@ -29,10 +29,11 @@ Eigen::Vector3d energy_ellipsoid_ratios(const Eigen::Vector3d& moments);
 /// as for a spin about that axis (section 4.1).
 Eigen::Vector3d momentum_ratios_touching(const Eigen::Vector3d& moments, int j);
 
-/// The polhode through omega0_body: one period of omega_body(t) from the exact
-/// solution, `samples` points; on the separatrix, the separatrix ellipses.
-std::vector<Eigen::Vector3d> polhode(const PrincipalMoments& I, const Eigen::Vector3d& omega0_body,
-                                     int samples);
+/// The polhode through omega0_body as curves of `samples` points: one period of
+/// omega_body(t) from the exact solution; on the separatrix, its two ellipses;
+/// none for a steady rotation, whose polhode is the single point omega0_body.
+std::vector<std::vector<Eigen::Vector3d>> polhode(const PrincipalMoments& I,
+                                                  const Eigen::Vector3d& omega0_body, int samples);
 
 /// omega_body on the energy ellipsoid of energy T with |L|^2 = L2, chosen where
 /// the intermediate component is zero; L2 must lie in [2 T I_min, 2 T I_max].
