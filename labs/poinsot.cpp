@@ -188,6 +188,10 @@ int main(int argc, char** argv) {
         "gives ({:.3f} : {:.3f} : {:.3f}) and on axis 2 ({:.3f} : {:.3f} : {:.3f}), where the "
         "text prints (0.44 : 0.55 : 0.73) and (0.40 : 0.50 : 0.66)",
         touch1(0), touch1(1), touch1(2), touch2(0), touch2(1), touch2(2)));
+    lab.note(fmt::format("errata: 1/sqrt(5) = {:.4f} rounds to {:.2f}; the text's energy ratio "
+                         "prints 0.44, truncated",
+                         rigid::energy_ellipsoid_ratios(ratios)(0),
+                         rigid::energy_ellipsoid_ratios(ratios)(0)));
 
     rigid::lab::Series series{
         {"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz", "energy_J", "L_kg_m2_s"}, {}};
