@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < samples; ++k) {
       const double t = period * k / (samples - 1);
       const Vec3 L = rigid::angular_momentum_at(wheel, 0.0, omega, t);
-      const Vec3 N = omega * axle.cross(L);  // dL/dt for L turning with the wheel
+      const Vec3 N = rigid::bearing_torque_at(wheel, 0.0, omega, t);
       turn.rows.push_back({t, L(0), L(1), L(2), N(0), N(1), N(2)});
     }
     lab.series(std::move(turn));

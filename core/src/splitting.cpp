@@ -19,11 +19,14 @@ inline void axis_flow(int i, double tau, const double* inv_I, double* L, double*
   const double angle = L[i] * inv_I[i] * tau;
   // one sine and cosine of the half angle serve both L and q
   const double ch = std::cos(0.5 * angle), sh = std::sin(0.5 * angle);
-  const double c = 1.0 - 2.0 * sh * sh, s = 2.0 * sh * ch;
+  // 1 - cos(angle) = 2 sh^2 and sin(angle) = 2 sh ch, applied as increments:
+  // near the separatrix the same small angles recur step after step, and
+  // rounding c = 1 - 2 sh^2 would then drift |L| linearly instead of as a random walk.
+  const double one_minus_c = 2.0 * sh * sh, s = 2.0 * sh * ch;
   // L_j' = L_k w_i, L_k' = -L_j w_i
   const double Lj = L[j], Lk = L[k];
-  L[j] = c * Lj + s * Lk;
-  L[k] = c * Lk - s * Lj;
+  L[j] = Lj + (s * Lk - one_minus_c * Lj);
+  L[k] = Lk - (s * Lj + one_minus_c * Lk);
   // q <- q (x) (cos(angle/2), sin(angle/2) e_i); q = (w, x, y, z)
   const double w = q[0];
   double v[3] = {q[1], q[2], q[3]};
