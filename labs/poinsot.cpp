@@ -112,17 +112,10 @@ int main(int argc, char** argv) {
     options.step = lab.given("--step") ? step : scale / 2000.0;
     options.max_steps = kMaxSteps;
     options.method = method == "exact" ? rigid::Method::kDopri5 : rigid::method_from_name(method);
-    // Two hundred samples a period draw a smooth curve, at most 20001 in all. A
-    // fixed-step method is sampled on its own grid, every k-th step, so that no
-    // step is shortened to land on a sample; t_end then rounds up to a whole step.
-    double spacing = std::max(scale / 200.0, t_end / 20000.0);
+    // Two hundred samples a period; a fixed-step method is sampled on its own step grid.
     const bool fixed = method != "exact" && !rigid::is_adaptive(options.method);
-    if (fixed) {
-      spacing = options.step * std::max(1.0, std::round(spacing / options.step));
-      t_end = spacing * std::ceil(t_end / spacing - 1e-9);
-    }
-    const auto intervals = static_cast<std::size_t>(std::max(1.0, std::round(t_end / spacing)));
-    const std::vector<double> times = rigid::uniform_times(0.0, t_end, intervals + 1);
+    const std::vector<double> times = rigid::sample_times(t_end, scale, fixed ? options.step : 0.0);
+    t_end = times.back();
 
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));
     lab.result_text("method", "method", method);
@@ -188,10 +181,10 @@ int main(int argc, char** argv) {
         "gives ({:.3f} : {:.3f} : {:.3f}) and on axis 2 ({:.3f} : {:.3f} : {:.3f}), where the "
         "text prints (0.44 : 0.55 : 0.73) and (0.40 : 0.50 : 0.66)",
         touch1(0), touch1(1), touch1(2), touch2(0), touch2(1), touch2(2)));
-    lab.note(fmt::format("errata: 1/sqrt(5) = {:.4f} rounds to {:.2f}; the text's energy ratio "
-                         "prints 0.44, truncated",
-                         rigid::energy_ellipsoid_ratios(ratios)(0),
-                         rigid::energy_ellipsoid_ratios(ratios)(0)));
+    lab.note(fmt::format(
+        "errata: 1/sqrt(5) = {:.4f} rounds to {:.2f}; the text's energy ratio "
+        "prints 0.44, truncated",
+        rigid::energy_ellipsoid_ratios(ratios)(0), rigid::energy_ellipsoid_ratios(ratios)(0)));
 
     rigid::lab::Series series{
         {"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz", "energy_J", "L_kg_m2_s"}, {}};

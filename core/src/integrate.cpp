@@ -356,6 +356,17 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
   return out;
 }
 
+std::vector<double> sample_times(double t_end, double period, double step, double per_period,
+                                 std::size_t max_samples) {
+  double spacing = std::max(period / per_period, t_end / static_cast<double>(max_samples - 1));
+  if (step > 0.0) {
+    spacing = step * std::max(1.0, std::round(spacing / step));
+    t_end = spacing * std::ceil(t_end / spacing - 1e-9);
+  }
+  const double intervals = std::max(1.0, std::round(t_end / spacing));
+  return uniform_times(0.0, t_end, static_cast<std::size_t>(intervals) + 1);
+}
+
 IntegrationResult sample_exact(const FreeBodyExact& exact, const std::vector<double>& times) {
   IntegrationResult out;
   if (times.empty()) return out;

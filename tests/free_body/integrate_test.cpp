@@ -305,3 +305,16 @@ TEST_CASE("integrate: the exact motion sampled as a run has roundoff drift and n
   for (double e : omega_errors(r, exact)) CHECK(e == 0.0);
   for (double e : energy_errors(r, exact)) CHECK(e < 1e-14);
 }
+
+TEST_CASE("integrate: sample times fall on the step grid of a fixed-step method") {
+  // 200 a period, no step: uniform to t_end exactly.
+  const std::vector<double> smooth = sample_times(10.0, 1.0);
+  CHECK(smooth.size() == 2001);
+  CHECK(smooth.back() == 10.0);
+  // A step of 0.3 s: every sample a whole number of steps, t_end rounded up to 10.2 s.
+  const std::vector<double> grid = sample_times(10.0, 1.0, 0.3);
+  CHECK_THAT(grid.back(), Catch::Matchers::WithinAbs(10.2, 1e-12));
+  for (double t : grid) CHECK_THAT(t / 0.3, Catch::Matchers::WithinAbs(std::round(t / 0.3), 1e-9));
+  // At most max_samples however long the run.
+  CHECK(sample_times(1e6, 1.0).size() <= 20001);
+}

@@ -90,6 +90,13 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
 /// n equally spaced times from t0 to t1 inclusive (n >= 2), or {t0} for n = 1.
 std::vector<double> uniform_times(double t0, double t1, std::size_t n);
 
+/// Sample times from 0 to about t_end, `per_period` samples per `period` and at
+/// most `max_samples` in all. With `step` > 0 (a fixed-step method) they fall on
+/// the step grid, every k-th step, so no step is shortened to land on a sample,
+/// and t_end rounds up to a whole step: the last time is the end actually reached.
+std::vector<double> sample_times(double t_end, double period, double step = 0.0,
+                                 double per_period = 200.0, std::size_t max_samples = 20001);
+
 /// The exact motion sampled at `times` as a run of its own (no steps), with the
 /// same drift measures as an integrator's run: roundoff only.
 IntegrationResult sample_exact(const FreeBodyExact& exact, const std::vector<double>& times);
