@@ -50,6 +50,20 @@ void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const Principal
                   "L = I\\omega (direction)");
   scene.add_label(arrow * 1.08 * n, "\\omega", render::kBlue);
   scene.add_label(arrow * 1.08 * L_dir, "L", render::kVermillion);
+  // The angle between omega and L, as an arc in their plane (section 1.1).
+  const double angle = angle_between(L_dir, n);
+  if (angle > 1e-6) {
+    const Vec3 across = (L_dir - n * n.dot(L_dir)).normalized();
+    std::vector<Vec3> arc;
+    for (int k = 0; k <= 48; ++k) {
+      const double t = angle * k / 48.0;
+      arc.push_back(0.45 * size * (std::cos(t) * n + std::sin(t) * across));
+    }
+    scene.add_polyline(arc, render::kBlack, 3.0);
+    const Vec3 middle = std::cos(angle / 2) * n + std::sin(angle / 2) * across;
+    scene.add_label(0.53 * size * middle, fmt::format("{:.1f}\\deg", rad_to_deg(angle)),
+                    render::kBlack);
+  }
   // Principal axes through the origin, both directions, labelled by moment.
   const render::Color axis_colors[3] = {render::kBluishGreen, render::kOrange,
                                         render::kReddishPurple};
