@@ -1,7 +1,10 @@
 // Tests of the GL context: lazy creation, both backends, thread-count independence.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <filesystem>
+#include <string>
 
 #include "render_fixtures.h"
 #include "rigid/render/context.h"
@@ -12,7 +15,9 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path tmp(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "rigid_render_test_ctx";
+  // One directory per process, so two builds' test runs never share files.
+  const fs::path d =
+      fs::temp_directory_path() / ("rigid_render_test_ctx_" + std::to_string(::getpid()));
   fs::create_directories(d);
   return d / name;
 }
