@@ -761,7 +761,41 @@ void Scene3D::save(const std::string& path, int width, int height) const {
 
 // ---- Rendering -------------------------------------------------------------------
 
+Scene3D Scene3D::scaled(double k) const {
+  Scene3D out = *this;
+  const Eigen::Affine3d scale(Eigen::Scaling(k));
+  for (Object& o : out.objects_) {
+    if (o.shape == Shape::kTube) {
+      // A tube is built from its path in world coordinates (its transform is the identity).
+      for (Vector3d& p : o.path) p *= k;
+      o.tube_radius *= k;
+    } else {
+      o.transform = scale * o.transform;
+    }
+  }
+  for (Polyline& pl : out.polylines_)
+    for (Vector3d& p : pl.points) p *= k;
+  for (Label3D& l : out.labels_) l.position *= k;
+  out.camera.eye *= k;
+  out.camera.target *= k;
+  out.camera.ortho_height *= k;
+  return out;
+}
+
 Image Scene3D::render(int width, int height) const {
+  // GL works in float: bring a scene of any size (1e-50 m or 1e30 m) to about
+  // unit size, in double, before anything reaches the GPU. Perspective and the
+  // picture are unchanged by a uniform scale.
+  double extent = 0.0;
+  for (const Object& o : objects_) {
+    const auto [c, r] = bounds(o);
+    extent = std::max(extent, c.norm() + r);
+  }
+  for (const Polyline& pl : polylines_)
+    for (const Vector3d& p : pl.points) extent = std::max(extent, p.norm());
+  if (extent > 0.0 && std::isfinite(extent) && (extent < 1e-3 || extent > 1e3)) {
+    return scaled(1.0 / extent).render(width, height);
+  }
   detail::Target& tgt = detail::target();
   tgt.begin(width, height, true, kWhite);
   auto& gl = detail::gl;

@@ -187,3 +187,25 @@ TEST_CASE("scene3d: the fit keeps the viewing direction and up", "[render][scene
   CHECK(std::abs(0.5 * (p.y0 + p.y1) - 300) <= 1.5);
   CHECK(p.y1 - p.y0 >= layout.region.y1 - layout.region.y0 - 0.02 * 600);
 }
+
+TEST_CASE("scene3d: a scene looks the same at any scale (GL's float range is no limit)",
+          "[render][scene3d]") {
+  // Lengths from 1e-40 m to 1e30 m would underflow or overflow float; the
+  // renderer normalises in double first, so the picture is that of scale 1.
+  const auto draw = [](double k) {
+    Scene3D scene;
+    scene.camera.eye = Eigen::Vector3d(3, 2, 2) * k;
+    scene.add_ellipsoid(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0.7, 0.5) * k,
+                        Eigen::Matrix3d::Identity(), {kSkyBlue, 0.5f});
+    scene.add_tube({Eigen::Vector3d(-k, 0, 0.6 * k), Eigen::Vector3d(k, 0, 0.6 * k)}, 0.03 * k,
+                   {kVermillion});
+    scene.add_arrow(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, k), 0.02 * k, {kBlack});
+    return scene.render(400, 300);
+  };
+  const Image reference = draw(1.0);
+  for (double k : {1e-40, 1e-8, 1e8, 1e30}) {
+    INFO("scale " << k);
+    // The same picture up to float rounding of the normalised scene: a few edge pixels.
+    CHECK(compare_images(draw(k), reference).differing_fraction < 0.001);
+  }
+}

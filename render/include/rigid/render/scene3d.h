@@ -145,6 +145,8 @@ class Scene3D {
 
  private:
   Material resolve(Material m);
+  /// The same scene with every length multiplied by k (render's float-range guard).
+  Scene3D scaled(double k) const;
   std::vector<Object> objects_;
   std::vector<Polyline> polylines_;
   std::vector<Label3D> labels_;
