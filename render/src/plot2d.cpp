@@ -164,8 +164,10 @@ void finish_range(const Axis& axis, Range r, double& lo, double& hi) {
   const bool log = axis.scale == Scale::kLog10;
   if (std::isnan(r.lo)) r = log ? Range{1, 10} : Range{0, 1};
   double a = log ? std::log10(r.lo) : r.lo, b = log ? std::log10(r.hi) : r.hi;
-  if (b - a < 1e-12 * std::max(1.0, std::abs(a))) {
-    const double d = log ? 0.5 : std::max(1e-9, std::abs(a) * 0.1 + (a == 0 ? 1 : 0));
+  // Flat data (a span below 1e-12 of its size, whatever its units) gets a
+  // range of its own size, or 1 about zero; data of any magnitude keep their scale.
+  if (b - a <= 1e-12 * std::max(std::abs(a), std::abs(b))) {
+    const double d = log ? 0.5 : (a == 0 ? 1.0 : std::abs(a) * 0.1);
     a -= d;
     b += d;
   } else {
