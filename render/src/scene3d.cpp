@@ -157,28 +157,37 @@ MeshProgram& mesh_program() {
 }
 
 // Unit meshes, made once per process per (shape, segments, torus ratio).
-const GpuMesh& unit_mesh(Scene3D::Shape shape, int segments, double torus_minor) {
-  using Key = std::tuple<int, int, int>;
-  static std::map<Key, GpuMesh> cache;
-  const int ratio = shape == Scene3D::Shape::kTorus ? static_cast<int>(std::lround(torus_minor * 1000)) : 0;
-  const Key key{static_cast<int>(shape), segments, ratio};
-  auto it = cache.find(key);
-  if (it != cache.end()) return it->second;
-  Mesh m;
+// The minor/major ratio of a torus in thousandths (0 for other shapes): a cache key.
+int torus_ratio_key(Scene3D::Shape shape, double torus_minor) {
+  return shape == Scene3D::Shape::kTorus ? static_cast<int>(std::lround(torus_minor * 1000)) : 0;
+}
+
+// The unit mesh of a built-in shape with `segments` around (empty for tubes and custom meshes).
+Mesh unit_shape_mesh(Scene3D::Shape shape, int segments, int ratio) {
   switch (shape) {
-    case Scene3D::Shape::kSphere: m = make_sphere(segments); break;
-    case Scene3D::Shape::kCone: m = make_cone(segments); break;
-    case Scene3D::Shape::kCylinder: m = make_cylinder(segments); break;
-    case Scene3D::Shape::kDisk: m = make_disk(segments); break;
-    case Scene3D::Shape::kBox: m = make_box(); break;
+    case Scene3D::Shape::kSphere: return make_sphere(segments);
+    case Scene3D::Shape::kCone: return make_cone(segments);
+    case Scene3D::Shape::kCylinder: return make_cylinder(segments);
+    case Scene3D::Shape::kDisk: return make_disk(segments);
+    case Scene3D::Shape::kBox: return make_box();
     case Scene3D::Shape::kTorus:
-      m = make_torus(ratio / 1000.0, segments, std::max(8, static_cast<int>(segments * ratio / 1000.0) + 8));
-      break;
-    case Scene3D::Shape::kPlane: m = make_plane(); break;
+      return make_torus(ratio / 1000.0, segments,
+                        std::max(8, static_cast<int>(segments * ratio / 1000.0) + 8));
+    case Scene3D::Shape::kPlane: return make_plane();
     case Scene3D::Shape::kTube:
     case Scene3D::Shape::kCustom: break;
   }
-  return cache.emplace(key, upload(m)).first->second;
+  return {};
+}
+
+const GpuMesh& unit_mesh(Scene3D::Shape shape, int segments, double torus_minor) {
+  using Key = std::tuple<int, int, int>;
+  static std::map<Key, GpuMesh> cache;
+  const int ratio = torus_ratio_key(shape, torus_minor);
+  const Key key{static_cast<int>(shape), segments, ratio};
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  return cache.emplace(key, upload(unit_shape_mesh(shape, segments, ratio))).first->second;
 }
 
 // View and projection for a camera at an aspect ratio, with depth range fitted to the scene.
@@ -396,22 +405,11 @@ const std::vector<Vector3d>& unit_outline(Scene3D::Shape shape, double torus_min
   constexpr int kSegments = 64;
   using Key = std::pair<int, int>;
   static std::map<Key, std::vector<Vector3d>> cache;
-  const int ratio = shape == Scene3D::Shape::kTorus ? static_cast<int>(std::lround(torus_minor * 1000)) : 0;
+  const int ratio = torus_ratio_key(shape, torus_minor);
   const Key key{static_cast<int>(shape), ratio};
   auto it = cache.find(key);
   if (it != cache.end()) return it->second;
-  Mesh m;
-  switch (shape) {
-    case Scene3D::Shape::kSphere: m = make_sphere(kSegments); break;
-    case Scene3D::Shape::kCone: m = make_cone(kSegments); break;
-    case Scene3D::Shape::kCylinder: m = make_cylinder(kSegments); break;
-    case Scene3D::Shape::kDisk: m = make_disk(kSegments); break;
-    case Scene3D::Shape::kBox: m = make_box(); break;
-    case Scene3D::Shape::kTorus: m = make_torus(ratio / 1000.0, kSegments, kSegments / 2); break;
-    case Scene3D::Shape::kPlane: m = make_plane(); break;
-    case Scene3D::Shape::kTube:
-    case Scene3D::Shape::kCustom: break;
-  }
+  const Mesh m = unit_shape_mesh(shape, kSegments, ratio);
   std::vector<Vector3d> points;
   points.reserve(m.positions.size());
   for (const auto& p : m.positions) points.push_back(p.cast<double>());
