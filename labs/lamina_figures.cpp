@@ -105,7 +105,12 @@ void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
     double deg = rad_to_deg(theta);
     if (deg > 90) deg -= 180;
     panel.add_ref_line(deg, true, fmt::format("principal axis {:.1f}\\deg", deg));
-    panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
+    // The value beside its extremum, clear of the dashed line's own label at the top:
+    // below and right of the maximum, above and left of the minimum.
+    const bool maximum = value == std::max(axes.moment, axes.moment_other);
+    render::Annotation& note = panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
+    note.offset_x = maximum ? 110 : -130;
+    note.offset_y = maximum ? 80 : -70;
   }
   const Vec3 n = in.axis.stableNormalized();
   if (std::abs(n.z()) < 1e-12) {
