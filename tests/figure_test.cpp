@@ -1,15 +1,21 @@
 // Golden images: each lab's figures, regenerated with its textbook defaults,
-// match the committed figures/ within a tolerance. On a mismatch the actual,
-// expected and difference PNGs are written to build/figure-diff/. To accept new
-// goldens: `cmake --build build --target figures` and commit figures/.
+// match the committed figures/ within a tolerance; every golden of the lab is
+// drawn (a lab that stops drawing one fails), and the README gallery shows each
+// figure with the caption the lab gives it. On a mismatch the actual, expected
+// and difference PNGs are written to build/figure-diff/. To accept new goldens:
+// `cmake --build build --target figures` and commit figures/ and README.md.
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
 
 #include "lab_common.h"
 #include "rigid/render/image.h"
 #include "rigid/render/png.h"
 
 namespace fs = std::filesystem;
+using rigid::test::all_labs;
 using rigid::test::run_lab;
 
 namespace {
@@ -18,16 +24,46 @@ namespace {
 constexpr double kMaxDifferingFraction = 0.001;
 constexpr int kChannelThreshold = 16;
 
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The committed goldens of a lab: figures/<lab>_*.png, less those of a longer lab name.
+std::set<std::string> goldens_of(const std::string& lab) {
+  std::set<std::string> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(RIGID_SOURCE_DIR) / "figures")) {
+    const std::string file = entry.path().filename().string();
+    if (file.rfind(lab + "_", 0) != 0 || entry.path().extension() != ".png") continue;
+    bool other = false;
+    for (const std::string& longer : all_labs()) {
+      other = other || (longer.size() > lab.size() && file.rfind(longer + "_", 0) == 0);
+    }
+    if (!other) files.insert(file);
+  }
+  return files;
+}
+
 void check_lab_figures(const std::string& lab) {
   const fs::path actual_dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / lab;
   fs::remove_all(actual_dir);
   const auto run = run_lab(lab, "--json --figures " + actual_dir.string());
   REQUIRE(run.status == 0);
-  const auto figures = run.json()["figures"];
+  const auto j = run.json();
+  const auto figures = j["figures"];
   REQUIRE(!figures.empty());
+  std::set<std::string> drawn;
+  const std::string readme = read_text(fs::path(RIGID_SOURCE_DIR) / "README.md");
   for (const auto& name : figures) {
     const std::string file = name.get<std::string>();
     INFO(file);
+    drawn.insert(file);
+    // The gallery shows it with the lab's caption.
+    const std::string caption = j["captions"][file];
+    CHECK(readme.find("](figures/" + file + ")") != std::string::npos);
+    CHECK(readme.find("`" + lab + "`: " + caption + " |") != std::string::npos);
     const fs::path golden = fs::path(RIGID_SOURCE_DIR) / "figures" / file;
     REQUIRE(fs::exists(golden));
     const auto expected = rigid::render::read_png(golden.string());
@@ -46,17 +82,15 @@ void check_lab_figures(const std::string& lab) {
     }
     CHECK(diff.differing_fraction <= kMaxDifferingFraction);
   }
+  // Every committed golden of this lab is still drawn.
+  CHECK(drawn == goldens_of(lab));
 }
 }  // namespace
 
-TEST_CASE("figures: lamina_tensor matches its goldens") {
-  check_lab_figures("lamina_tensor");
-}
-TEST_CASE("figures: tire_balancing matches its goldens") {
-  check_lab_figures("tire_balancing");
-}
-TEST_CASE("figures: poinsot matches its goldens") {
-  check_lab_figures("poinsot");
+TEST_CASE("figures: every lab matches its goldens") {
+  for (const std::string& lab : all_labs()) {
+    DYNAMIC_SECTION(lab) { check_lab_figures(lab); }
+  }
 }
 
 TEST_CASE("figures: without a GL context the numbers still print, with one error line") {

@@ -10,8 +10,17 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace rigid::test {
+
+/// Every lab, in section order, from labs/CMakeLists.txt's one list.
+inline std::vector<std::string> all_labs() {
+  std::vector<std::string> labs;
+  std::stringstream list(RIGID_LABS);
+  for (std::string lab; std::getline(list, lab, ',');) labs.push_back(lab);
+  return labs;
+}
 
 struct Run {
   int status = -1;

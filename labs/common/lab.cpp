@@ -3,117 +3,126 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <list>
-#include <sstream>
+
+#include "rigid/format.h"
+#include "rigid/render/atomic_file.h"
 
 namespace rigid::lab {
 namespace fs = std::filesystem;
 namespace {
 
-// Option "--tilt-deg" is JSON input key "tilt_deg".
-std::string key_of(const std::string& flag) {
-  std::string key = flag.substr(flag.find_first_not_of('-'));
+// Every result is a product of at most five inputs (m a^2 omega^2, say); inside
+// this range of magnitudes no such product overflows or underflows a double.
+constexpr double kSmallest = 1e-60, kLargest = 1e60;
+
+std::string format_vec3(const Eigen::Vector3d& v) {
+  return fmt::format("({}, {}, {})", format_number(v(0), 5), format_number(v(1), 5),
+                     format_number(v(2), 5));
+}
+
+// A JSON input or result as the table shows it.
+std::string text_of(const Json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";
+  if (value.is_number()) return format_number(value.get<double>(), 6);
+  if (value.is_array() && value.size() == 3 && value[0].is_number()) {
+    return format_vec3({value[0].get<double>(), value[1].get<double>(), value[2].get<double>()});
+  }
+  return value.dump();
+}
+
+}  // namespace
+
+std::string json_key(const std::string& name) {
+  std::string key = name.substr(name.find_first_not_of('-'));
   for (char& c : key) {
     if (c == '-') c = '_';
   }
   return key;
 }
 
-// Parses a whole string as one double; nullopt if anything is left over.
-std::optional<double> parse_number(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(begin, &end);
-  if (end == begin || *end != '\0') return std::nullopt;
-  return value;
+// ---- Options ----------------------------------------------------------------
+
+Option::Option(Lab& lab, CLI::Option* cli, Kind kind, std::string key, std::string help)
+    : lab_(lab), cli_(cli), kind_(kind), key_(std::move(key)), help_(std::move(help)) {
+  if (cli_) describe();
 }
 
-constexpr double kSmallest = 1e-60, kLargest = 1e60;
+void Option::describe() {
+  std::string text = help_;
+  if (!unit_.empty()) text += " [" + unit_ + "]";
+  if (!lab_default_.empty()) text += " (default: " + lab_default_ + ")";
+  cli_->description(text);
+}
 
-// The rule a number breaks, or "" when it is acceptable.
-std::string number_rule(const std::string& text, Accept accept) {
-  const auto value = parse_number(text);
-  if (!value) return "must be a number (got '" + text + "')";
-  if (!std::isfinite(*value)) return "must be finite (got '" + text + "')";
-  if (accept == Accept::Positive && !(*value > 0.0)) return "must be positive (got " + text + ")";
-  if (accept == Accept::NonNegative && *value < 0.0) {
-    return "must not be negative (got " + text + ")";
+Option& Option::unit(const std::string& unit) {
+  unit_ = unit;
+  describe();
+  return *this;
+}
+Option& Option::positive() {
+  rule_ = Rule::kPositive;
+  return *this;
+}
+Option& Option::non_negative() {
+  rule_ = Rule::kNonNegative;
+  return *this;
+}
+Option& Option::open_range(double lo, double hi) {
+  rule_ = Rule::kOpenRange;
+  lo_ = lo;
+  hi_ = hi;
+  return *this;
+}
+Option& Option::nonzero() {
+  nonzero_ = true;
+  return *this;
+}
+Option& Option::symbol(const std::string& markup) {
+  symbol_ = markup;
+  return *this;
+}
+Option& Option::numerical() {
+  physical_ = false;
+  return *this;
+}
+Option& Option::lab_default(const std::string& what) {
+  lab_default_ = what;
+  cli_->default_str("");
+  describe();
+  return *this;
+}
+
+// The rule a parsed number breaks, as CLI11's validation message ("" if none).
+std::string Option::broken_rule(double value, const std::string& text) const {
+  const auto fail = [&](const std::string& rule) { return rule + " (got " + text + ")"; };
+  if (!std::isfinite(value)) return fail("must be finite");
+  switch (rule_) {
+    case Rule::kPositive:
+      if (!(value > 0.0)) return fail("must be positive");
+      break;
+    case Rule::kNonNegative:
+      if (value < 0.0) return fail("must not be negative");
+      break;
+    case Rule::kOpenRange:
+      if (!(value > lo_ && value < hi_)) {
+        return fail(fmt::format("must be between {} and {}{}, exclusive", lo_, hi_,
+                                unit_.empty() ? "" : " " + unit_));
+      }
+      break;
+    case Rule::kFinite:
+      break;
   }
-  // Every result is a product of at most five inputs (m a^2 omega^2, say); inside
-  // this range no product overflows or underflows a double.
-  const double magnitude = std::abs(*value);
-  if (magnitude != 0.0 && (magnitude < kSmallest || magnitude > kLargest)) {
-    return std::string(accept == Accept::Positive ? "must be between 1e-60 and 1e60"
-                                                  : "must be 0 or between 1e-60 and 1e60 in magnitude") +
-           " (got " + text + ")";
+  const double magnitude = std::abs(value);
+  if (rule_ != Rule::kOpenRange && magnitude != 0.0 &&
+      (magnitude < kSmallest || magnitude > kLargest)) {
+    return fail(rule_ == Rule::kPositive ? "must be between 1e-60 and 1e60"
+                                         : "must be 0 or between 1e-60 and 1e60 in magnitude");
   }
   return "";
-}
-
-std::vector<std::string> split(const std::string& text, char by) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  std::string part;
-  while (std::getline(stream, part, by)) parts.push_back(part);
-  if (!text.empty() && text.back() == by) parts.emplace_back();
-  return parts;
-}
-
-std::string vec3_rule(const std::string& text, Accept accept) {
-  const auto parts = split(text, ',');
-  if (parts.size() != 3) return "must be three comma-separated numbers X,Y,Z (got '" + text + "')";
-  for (const auto& part : parts) {
-    const std::string rule = number_rule(part, accept);
-    if (!rule.empty()) return "each component " + rule;
-  }
-  return "";
-}
-
-// Adding +0.0 prints a negative zero as 0.
-std::string format_number(double value) {
-  return fmt::format("{:.6g}", value + 0.0);
-}
-
-std::string format_vec3(const Eigen::Vector3d& v) {
-  return fmt::format("({:.5g}, {:.5g}, {:.5g})", v(0) + 0.0, v(1) + 0.0, v(2) + 0.0);
-}
-
-// Storage for string-valued options that are converted after parsing.
-std::list<std::string>& option_strings() {
-  static std::list<std::string> strings;
-  return strings;
-}
-
-}  // namespace
-
-void write_file_atomically(const std::string& path, const std::string& text,
-                           const std::string& option) {
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw UsageError(option, "cannot write '" + path + "'");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw UsageError(option, "cannot write '" + path + "': " + reason);
-  }
 }
 
 Lab::Lab(std::string name, std::string title)
@@ -123,118 +132,100 @@ Lab::Lab(std::string name, std::string title)
   app_.add_flag("--timing", timing_, "with --json: the wall time of each figure, for bench/");
   app_.add_option("--figures", figures_dir_, "write this lab's PNG figures into DIR")
       ->type_name("DIR");
-  app_.add_option("--figure-size", figure_size_, "figure size in pixels")
+  // The figure style is laid out for 800x600 and up; 8192 bounds memory.
+  app_.add_option("--figure-size", figure_size_, "figure size in pixels, 800x600 to 8192x8192")
       ->type_name("WxH")
       ->capture_default_str()
       ->check(CLI::Validator(
           [this](std::string& text) -> std::string {
-            const auto parts = split(text, 'x');
-            const auto w = parts.size() == 2 ? parse_number(parts[0]) : std::nullopt;
-            const auto h = parts.size() == 2 ? parse_number(parts[1]) : std::nullopt;
-            // The figure style is laid out for 800x600 and up; 8192 bounds memory.
-            if (!w || !h || *w != std::floor(*w) || *h != std::floor(*h) || *w < 800 || *h < 600 ||
-                *w > 8192 || *h > 8192) {
+            int w = 0, h = 0;
+            char x = 0, extra = 0;
+            const int read = std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
+            if (read != 3 || x != 'x' || w < 800 || h < 600 || w > 8192 || h > 8192) {
               return "must be WxH with 800 <= W <= 8192 and 600 <= H <= 8192 (got '" + text + "')";
             }
-            figure_width_ = static_cast<int>(*w);
-            figure_height_ = static_cast<int>(*h);
+            figure_width_ = w;
+            figure_height_ = h;
             return "";
           },
           ""));
 }
 
-void Lab::option(const std::string& flag, double& value, const std::string& unit,
-                 const std::string& help, Accept accept, bool show_default) {
-  CLI::Option* option = app_.add_option(flag, value, help + (unit.empty() ? "" : " [" + unit + "]"));
-  option->type_name("NUMBER");
-  if (show_default) option->capture_default_str();
-  option->check(
-          CLI::Validator([accept](std::string& text) { return number_rule(text, accept); }, ""));
-  const std::string key = key_of(flag);
-  // An option whose default means "chosen by the lab" is recorded only when given.
-  record_inputs_.push_back([this, key, flag, show_default, &value] {
-    if (show_default || given(flag)) inputs_[key] = value;
-  });
-}
+Lab::~Lab() = default;
 
-void Lab::option_deg(const std::string& flag, double& degrees, double lo, double hi,
+Option& Lab::declare(CLI::Option* cli, Option::Kind kind, const std::string& flag,
                      const std::string& help) {
-  const std::string range = fmt::format("must be between {} and {} degrees, exclusive", lo, hi);
-  app_.add_option(flag, degrees, help + " [deg]")
-      ->type_name("DEG")
-      ->capture_default_str()
-      ->check(CLI::Validator(
-          [lo, hi, range](std::string& text) -> std::string {
-            const std::string rule = number_rule(text, Accept::Finite);
-            if (!rule.empty()) return rule;
-            const double value = *parse_number(text);
-            return (value > lo && value < hi) ? "" : range + " (got " + text + ")";
-          },
-          ""));
-  const std::string key = key_of(flag);
-  record_inputs_.push_back([this, key, &degrees] { inputs_[key] = degrees; });
+  return options_.emplace_back(Option(*this, cli, kind, json_key(flag), help));
 }
 
-void Lab::option_vec3(const std::string& flag, Eigen::Vector3d& value, const std::string& unit,
-                      const std::string& help, Accept accept, bool nonzero, bool show_default) {
-  std::string& text =
-      option_strings().emplace_back(fmt::format("{},{},{}", value(0), value(1), value(2)));
-  CLI::Option* option = app_.add_option(flag, text, help + (unit.empty() ? "" : " [" + unit + "]"));
-  option->type_name("X,Y,Z");
-  if (show_default) option->capture_default_str();
-  option
-      ->check(CLI::Validator(
-          [accept, nonzero](std::string& s) -> std::string {
-            std::string rule = vec3_rule(s, accept);
-            if (rule.empty() && nonzero) {
-              const auto parts = split(s, ',');
-              bool all_zero = true;
-              for (const auto& part : parts) all_zero = all_zero && *parse_number(part) == 0.0;
-              if (all_zero) rule = "must not be the zero vector";
-            }
-            return rule;
-          },
-          ""));
-  const std::string key = key_of(flag);
-  finish_parsing_.push_back([&text, &value] {
-    const auto parts = split(text, ',');
-    for (int i = 0; i < 3; ++i) value(i) = *parse_number(parts[static_cast<size_t>(i)]);
-  });
-  // An option whose default is unused appears in the inputs only when given.
-  record_inputs_.push_back([this, key, flag, show_default, &value] {
-    if (show_default || given(flag)) inputs_[key] = Json::array({value(0), value(1), value(2)});
-  });
+Option& Lab::number(const std::string& flag, double& value, const std::string& help) {
+  CLI::Option* cli = app_.add_option(flag, value)->type_name("NUMBER")->capture_default_str();
+  Option& option = declare(cli, Option::Kind::kNumber, flag, help);
+  cli->check(CLI::Validator(
+      [&option](std::string& text) -> std::string {
+        double parsed = 0.0;
+        if (!CLI::detail::lexical_cast(text, parsed)) return "must be a number (got '" + text + "')";
+        return option.broken_rule(parsed, text);
+      },
+      ""));
+  option.record_ = [&option, &value] {
+    option.lab_.inputs_[option.key_] = value;
+  };
+  return option;
 }
 
-void Lab::option_choice(const std::string& flag, std::string& value,
-                        const std::vector<std::string>& choices, const std::string& help) {
+Option& Lab::angle_deg(const std::string& flag, double& degrees, const std::string& help) {
+  Option& option = number(flag, degrees, help).unit("deg");
+  option.cli_->type_name("DEG");
+  return option;
+}
+
+Option& Lab::vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help) {
+  // CLI11 splits X,Y,Z at the commas, insists on three values and checks each.
+  options_.emplace_back(Option(*this, nullptr, Option::Kind::kVector, json_key(flag), help));
+  Option& option = options_.back();
+  CLI::Option* cli = app_.add_option(flag, option.parts_)
+                         ->delimiter(',')
+                         ->expected(3)
+                         ->type_name("X,Y,Z")
+                         ->default_str(fmt::format("{},{},{}", value(0), value(1), value(2)));
+  option.cli_ = cli;
+  option.describe();
+  cli->check(CLI::Validator(
+      [&option](std::string& text) -> std::string {
+        double parsed = 0.0;
+        if (!CLI::detail::lexical_cast(text, parsed)) {
+          return "each component must be a number (got '" + text + "')";
+        }
+        return option.broken_rule(parsed, text);
+      },
+      ""));
+  option.store_ = [&option, &value, flag] {
+    if (option.parts_.empty()) return;
+    value = Eigen::Vector3d(option.parts_[0], option.parts_[1], option.parts_[2]);
+    if (option.nonzero_ && value.isZero(0.0)) throw UsageError(flag, "must not be the zero vector");
+  };
+  option.record_ = [&option, &value] {
+    option.lab_.inputs_[option.key_] = Json::array({value(0), value(1), value(2)});
+  };
+  return option;
+}
+
+Option& Lab::choice(const std::string& flag, std::string& value,
+                    const std::vector<std::string>& choices, const std::string& help) {
   std::string names;
   for (const auto& choice : choices) names += (names.empty() ? "" : "|") + choice;
-  app_.add_option(flag, value, help + " (" + names + ")")
-      ->type_name("WORD")
-      ->capture_default_str()
-      ->check(CLI::Validator(
-          [choices, names](std::string& text) -> std::string {
-            for (const auto& choice : choices) {
-              if (text == choice) return "";
-            }
-            return "must be one of " + names + " (got '" + text + "')";
-          },
-          ""));
-  const std::string key = key_of(flag);
-  record_inputs_.push_back([this, key, &value] { inputs_[key] = value; });
+  CLI::Option* cli = app_.add_option(flag, value)->type_name("WORD")->capture_default_str();
+  cli->check(CLI::IsMember(choices).description(""));
+  Option& option = declare(cli, Option::Kind::kChoice, flag, help + " (" + names + ")");
+  option.record_ = [&option, &value] { option.lab_.inputs_[option.key_] = value; };
+  return option;
 }
 
-void Lab::flag(const std::string& flag, bool& value, const std::string& help) {
-  app_.add_flag(flag, value, help);
-  const std::string key = key_of(flag);
-  record_inputs_.push_back([this, key, &value] { inputs_[key] = value; });
-}
-
-void Lab::drop_input(const std::string& key) { inputs_.erase(key); }
-
-bool Lab::given(const std::string& flag) const {
-  return app_.count(flag) > 0;
+Option& Lab::flag(const std::string& flag, bool& value, const std::string& help) {
+  Option& option = declare(app_.add_flag(flag, value), Option::Kind::kFlag, flag, help);
+  option.record_ = [&option, &value] { option.lab_.inputs_[option.key_] = value; };
+  return option;
 }
 
 void Lab::enable_csv() {
@@ -243,48 +234,70 @@ void Lab::enable_csv() {
       ->type_name("FILE");
 }
 
+bool Lab::given(const std::string& flag) const {
+  return app_.count(flag) > 0;
+}
+
+bool Lab::textbook_inputs() const {
+  for (const Option& option : options_) {
+    if (option.physical_ && option.cli_->count() > 0) return false;
+  }
+  return true;
+}
+
+std::optional<std::string> Lab::textbook(const std::string& printed) const {
+  return textbook_inputs() ? std::optional<std::string>(printed) : std::nullopt;
+}
+
+void Lab::drop_input(const std::string& key) { inputs_.erase(key); }
+
+// ---- Results ----------------------------------------------------------------
+
 void Lab::section(const std::string& heading) {
   rows_.push_back({heading, "", "", "", true});
 }
 
-void Lab::store(const std::string& key, Json value, bool finite,
-                const std::optional<std::string>& textbook) {
+void Lab::store(const std::string& key, Json value, bool finite, const std::string& unit,
+                const std::optional<std::string>& printed) {
   // A NaN or an overflow must never reach the output: JSON would print null.
   if (!finite) throw std::domain_error("result '" + key + "' is not finite for these inputs");
   results_[key] = std::move(value);
-  if (textbook) textbook_[key] = *textbook;
+  // A pure number has the unit "1", as SI writes it.
+  units_[key] = unit.empty() ? "1" : unit;
+  if (printed) textbook_[key] = *printed;
 }
 
 void Lab::result(const std::string& key, const std::string& label, double value,
-                 const std::string& unit, std::optional<std::string> textbook) {
-  store(key, value + 0.0, std::isfinite(value), textbook);
-  rows_.push_back({label, format_number(value), unit, textbook.value_or(std::string())});
+                 const std::string& unit, std::optional<std::string> printed) {
+  // Adding +0.0 turns a negative zero into 0.
+  store(key, value + 0.0, std::isfinite(value), unit, printed);
+  rows_.push_back({label, format_number(value, 6), unit, printed.value_or("")});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
-                 const std::string& unit, std::optional<std::string> textbook) {
-  // Adding +0.0 turns a negative zero into 0 in the JSON too.
+                 const std::string& unit, std::optional<std::string> printed) {
   store(key, Json::array({value(0) + 0.0, value(1) + 0.0, value(2) + 0.0}), value.allFinite(),
-        textbook);
-  rows_.push_back({label, format_vec3(value), unit, textbook.value_or(std::string())});
+        unit, printed);
+  rows_.push_back({label, format_vec3(value), unit, printed.value_or("")});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
-                 const std::string& unit, std::optional<std::string> textbook) {
+                 const std::string& unit, std::optional<std::string> printed) {
   Json rows = Json::array();
   for (int i = 0; i < 3; ++i) {
     rows.push_back(Json::array({value(i, 0) + 0.0, value(i, 1) + 0.0, value(i, 2) + 0.0}));
   }
-  store(key, rows, value.allFinite(), textbook);
+  store(key, rows, value.allFinite(), unit, printed);
   for (int i = 0; i < 3; ++i) {
     rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()),
-                     i == 0 ? unit : "", i == 0 ? textbook.value_or("") : ""});
+                     i == 0 ? unit : "", i == 0 ? printed.value_or("") : ""});
   }
 }
 
-void Lab::result_none(const std::string& key, const std::string& label,
+void Lab::result_none(const std::string& key, const std::string& label, const std::string& unit,
                       const std::string& why) {
   results_[key] = nullptr;
+  units_[key] = unit.empty() ? "1" : unit;
   rows_.push_back({label, "none", "", "(" + why + ")"});
 }
 
@@ -297,53 +310,54 @@ void Lab::note(const std::string& text) {
   notes_.push_back(text);
 }
 
-void Lab::figure(const std::string& what,
-                 const std::function<void(const std::string& path)>& save) {
-  const std::string file = name_ + "_" + what + ".png";
-  const fs::path path = fs::path(figures_dir_) / file;
-  if (fs::is_directory(path)) {
-    throw UsageError("--figures", "'" + path.string() + "' is a directory, not a figure");
+// The inputs that carry a symbol, as figure titles show them: "m = 1 kg, a = 1 m".
+std::string Lab::title_inputs() const {
+  std::string text;
+  for (const Option& option : options_) {
+    if (option.symbol_.empty() || !inputs_.contains(option.key_)) continue;
+    const Json& value = inputs_[option.key_];
+    std::string shown = value.is_number() ? fmt::format("{:g}", value.get<double>() + 0.0)
+                        : value.is_array()
+                            ? fmt::format("({:g}, {:g}, {:g})", value[0].get<double>() + 0.0,
+                                          value[1].get<double>() + 0.0,
+                                          value[2].get<double>() + 0.0)
+                            : text_of(value);
+    if (option.unit_ == "deg") {
+      shown += "\\deg";
+    } else if (!option.unit_.empty()) {
+      shown += " " + option.unit_;
+    }
+    text += (text.empty() ? "" : ", ") + option.symbol_ + " = " + shown;
   }
-  const auto start = std::chrono::steady_clock::now();
-  save(path.string());
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  figures_.push_back(file);
-  figure_seconds_[file] = elapsed.count();
+  return text;
 }
 
-std::string Lab::figure_title(const std::string& detail) const {
-  std::string escaped;
-  for (char c : name_) escaped += c == '_' ? std::string("\\_") : std::string(1, c);
-  return escaped + ": " + detail;
-}
+// ---- Running ----------------------------------------------------------------
 
-void Lab::figures(const std::function<void(Lab&)>& draw) {
-  if (!figures_requested()) return;
-  std::error_code error;
-  fs::create_directories(figures_dir_, error);
-  if (error) {
-    throw UsageError("--figures", "cannot create directory '" + figures_dir_ + "': " +
-                                      error.message());
+void Lab::check_output_paths() const {
+  if (app_.count("--figures") > 0 && figures_dir_.empty()) {
+    throw UsageError("--figures", "needs a directory name");
   }
-  try {
-    draw(*this);
-  } catch (const UsageError&) {
-    throw;
-  } catch (const std::exception& e) {
-    figures_failed_ = true;
-    std::cerr << name_ << ": error: --figures: " << e.what() << '\n';
+  if (!figures_dir_.empty()) {
+    // Nothing is created before the lab has computed its results: find the
+    // nearest existing ancestor and check that it can be written.
+    fs::path dir = fs::absolute(figures_dir_);
+    while (!fs::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) {
+      dir = dir.parent_path();
+    }
+    if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK | X_OK) != 0) {
+      throw UsageError("--figures", "cannot create or write directory '" + figures_dir_ + "'");
+    }
   }
-}
-
-void Lab::check_figures_directory() const {
-  // Nothing is created before the lab has computed its results: find the
-  // nearest existing ancestor and check that it can be written.
-  fs::path dir = fs::absolute(figures_dir_);
-  while (!fs::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) {
-    dir = dir.parent_path();
-  }
-  if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK | X_OK) != 0) {
-    throw UsageError("--figures", "cannot create or write directory '" + figures_dir_ + "'");
+  if (csv_enabled_ && app_.count("--csv") > 0) {
+    if (csv_path_.empty()) throw UsageError("--csv", "needs a file name");
+    if (fs::is_directory(csv_path_)) {
+      throw UsageError("--csv", "'" + csv_path_ + "' is a directory, not a file");
+    }
+    const fs::path parent = fs::absolute(csv_path_).parent_path();
+    if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0) {
+      throw UsageError("--csv", "cannot write into directory '" + parent.string() + "'");
+    }
   }
 }
 
@@ -363,22 +377,12 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
       if (word.rfind("-", 0) == 0) throw UsageError(word, "unknown option (see --help)");
       throw UsageError(word, "unexpected argument (options take the form --name VALUE)");
     }
-    for (auto& finish : finish_parsing_) finish();
-    for (auto& record : record_inputs_) record();
-    if (app_.count("--figures") > 0 && figures_dir_.empty()) {
-      throw UsageError("--figures", "needs a directory name");
+    for (Option& option : options_) {
+      if (option.store_) option.store_();
+      // An option whose default the lab chooses is an input only when given.
+      if (option.lab_default_.empty() || option.cli_->count() > 0) option.record_();
     }
-    if (figures_requested()) check_figures_directory();
-    if (csv_enabled_ && app_.count("--csv") > 0) {
-      if (csv_path_.empty()) throw UsageError("--csv", "needs a file name");
-      if (fs::is_directory(csv_path_)) {
-        throw UsageError("--csv", "'" + csv_path_ + "' is a directory, not a file");
-      }
-      const fs::path parent = fs::absolute(csv_path_).parent_path();
-      if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0) {
-        throw UsageError("--csv", "cannot write into directory '" + parent.string() + "'");
-      }
-    }
+    check_output_paths();
     body(*this);
     if (!csv_path_.empty()) write_csv();
   } catch (const std::exception& e) {
@@ -396,27 +400,19 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
 void Lab::emit_table() const {
   std::cout << name_ << " - " << title_ << "\n";
   std::string inputs;
-  const auto text_of = [](const Json& value) -> std::string {
-    if (value.is_string()) return value.get<std::string>();
-    if (value.is_number()) return format_number(value.get<double>());
-    if (value.is_array() && value.size() == 3) {
-      return format_vec3({value[0].get<double>(), value[1].get<double>(), value[2].get<double>()});
-    }
-    return value.dump();
-  };
   for (const auto& [key, value] : inputs_.items()) {
     inputs += (inputs.empty() ? "" : ", ") + key + " = " + text_of(value);
   }
   std::cout << "inputs: " << inputs << "\n";
   size_t label_width = 8, value_width = 5, unit_width = 4;
+  bool any_textbook = false;
   for (const auto& row : rows_) {
     if (row.heading) continue;
     label_width = std::max(label_width, row.label.size());
     value_width = std::max(value_width, row.value.size());
     unit_width = std::max(unit_width, row.unit.size());
+    any_textbook = any_textbook || !row.textbook.empty();
   }
-  bool any_textbook = false;
-  for (const auto& row : rows_) any_textbook = any_textbook || !row.textbook.empty();
   std::cout << "\n"
             << fmt::format("{:<{}}  {:<{}}  {:<{}}{}", "quantity", label_width, "value",
                            value_width, "unit", unit_width, any_textbook ? "  textbook" : "")
@@ -438,7 +434,9 @@ void Lab::emit_table() const {
   }
   if (!figures_.empty()) {
     std::cout << "\nfigures in " << figures_dir_ << ":\n";
-    for (const auto& figure : figures_) std::cout << "  " << figure << "\n";
+    for (const auto& figure : figures_) {
+      std::cout << "  " << figure << "  " << captions_[figure].get<std::string>() << "\n";
+    }
   }
 }
 
@@ -447,7 +445,9 @@ void Lab::emit_json() const {
   out["lab"] = name_;
   out["inputs"] = inputs_;
   out["results"] = results_;
+  out["units"] = units_;
   out["figures"] = figures_;
+  out["captions"] = captions_;
   if (timing_) out["timing"] = {{"figure_seconds", figure_seconds_}};
   out["textbook"] = textbook_;
   out["notes"] = notes_;
@@ -465,7 +465,13 @@ void Lab::write_csv() const {
     for (size_t i = 0; i < row.size(); ++i) text += fmt::format("{}{:.17g}", i ? "," : "", row[i]);
     text += "\n";
   }
-  write_file_atomically(csv_path_, text, "--csv");
+  try {
+    render::write_file_atomically(csv_path_, [&](std::FILE* file) {
+      std::fwrite(text.data(), 1, text.size(), file);
+    });
+  } catch (const std::runtime_error& e) {
+    throw UsageError("--csv", e.what());
+  }
 }
 
 }  // namespace rigid::lab

@@ -1,16 +1,25 @@
 // The lab layer every rigidlab program shares: its options, its human table,
-// its JSON, its CSV, its figure directory and its errors (design.md, "The lab
-// contract"). A lab declares options, computes with rigid::core, reports
-// results here, and hands figures to rigid::render; this layer does the I/O.
+// its JSON, its CSV, its figures and its errors (design.md, "The lab
+// contract"). A lab declares its inputs, computes with rigid::core, reports
+// results here, and hands figure descriptions to the figure set; this layer
+// does all the I/O.
+//
+//   Inputs in;                                  // the lab's aggregate of inputs, with defaults
+//   Lab lab("tire_balancing", "dynamic balancing of a wheel (sections 2.2-2.3)");
+//   lab.number("--mass", in.mass, "mass m of the disk").unit("kg").positive().symbol("m");
+//   return lab.run(argc, argv, [&](Lab& lab) { lab.result(...); lab.figures(draw); });
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <functional>
+#include <list>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace rigid::lab {
@@ -23,13 +32,67 @@ struct UsageError : std::runtime_error {
       : std::runtime_error(option + ": " + rule) {}
 };
 
-/// Which values a numeric option accepts.
-enum class Accept { Finite, Positive, NonNegative };
+/// Runs `compute`; an std::invalid_argument from core (a physics rule broken by
+/// the inputs) becomes a UsageError naming `option`.
+template <class Compute>
+auto for_option(const std::string& option, Compute&& compute) -> decltype(compute()) {
+  try {
+    return compute();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(option, e.what());
+  }
+}
 
-/// Time series for --csv: a header and rows of numbers.
-struct Series {
+/// A name as a JSON key: "--tilt-deg" is "tilt_deg", "bulirsch-stoer" is "bulirsch_stoer".
+std::string json_key(const std::string& name);
+
+/// The time series written by --csv: a header and rows of numbers.
+struct TimeSeries {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
+};
+
+class Lab;
+class FigureSet;
+
+/// One declared option; its rule, unit and role are chained onto the declaration.
+class Option {
+ public:
+  /// The SI unit shown in --help, the inputs and figure titles.
+  Option& unit(const std::string& unit);
+  /// Values must be > 0.
+  Option& positive();
+  /// Values must be >= 0.
+  Option& non_negative();
+  /// Values must lie strictly between lo and hi.
+  Option& open_range(double lo, double hi);
+  /// A vector must not be (0, 0, 0).
+  Option& nonzero();
+  /// The symbol (text markup) that names this input in figure titles, e.g. "\\theta".
+  Option& symbol(const std::string& markup);
+  /// How to compute (method, tolerance, step, end time), not what is computed:
+  /// giving it keeps "the inputs are the textbook's" true.
+  Option& numerical();
+  /// The default is chosen by the lab from the other inputs (`what` says how, in
+  /// --help); the value is recorded among the inputs only when given.
+  Option& lab_default(const std::string& what);
+
+ private:
+  friend class Lab;
+  enum class Kind { kNumber, kVector, kChoice, kFlag };
+  Option(Lab& lab, CLI::Option* cli, Kind kind, std::string key, std::string help);
+  std::string broken_rule(double value, const std::string& text) const;
+  void describe();
+
+  Lab& lab_;
+  CLI::Option* cli_;
+  Kind kind_;
+  std::string key_, help_, unit_, symbol_, lab_default_;
+  bool physical_ = true, nonzero_ = false;
+  double lo_ = -1, hi_ = -1;
+  enum class Rule { kFinite, kPositive, kNonNegative, kOpenRange } rule_ = Rule::kFinite;
+  std::vector<double> parts_;                 // a vector's components as parsed
+  std::function<void()> store_, record_;      // after parsing: into the lab's inputs
 };
 
 /// One lab program: declare options, then `run` parses, computes and reports.
@@ -37,95 +100,90 @@ class Lab {
  public:
   /// `name` is the executable and JSON `lab`; `title` heads the table and --help.
   Lab(std::string name, std::string title);
+  ~Lab();
 
-  /// A number in SI units with its default; `unit` shows in --help and the inputs.
-  /// Nonzero values must lie between 1e-60 and 1e60 in magnitude. With
-  /// `show_default` off the default is the lab's to choose (say so in `help`).
-  void option(const std::string& flag, double& value, const std::string& unit,
-              const std::string& help, Accept accept = Accept::Positive,
-              bool show_default = true);
-  /// An angle in degrees that must lie in the open interval (lo, hi).
-  void option_deg(const std::string& flag, double& degrees, double lo, double hi,
-                  const std::string& help);
-  /// Three comma-separated finite numbers, e.g. --axis 0.8,0.6,0; `show_default`
-  /// off for an option whose default is not used unless it is given.
-  void option_vec3(const std::string& flag, Eigen::Vector3d& value, const std::string& unit,
-                   const std::string& help, Accept accept = Accept::Finite, bool nonzero = false,
-                   bool show_default = true);
+  /// A number in SI units; finite, and nonzero values between 1e-60 and 1e60 in
+  /// magnitude (every result is a product of at most five inputs, which then
+  /// neither overflows nor underflows a double).
+  Option& number(const std::string& flag, double& value, const std::string& help);
+  /// An angle in degrees (unit "deg"); the flag ends in "-deg".
+  Option& angle_deg(const std::string& flag, double& degrees, const std::string& help);
+  /// Three numbers X,Y,Z, each under the number's rules.
+  Option& vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help);
   /// One word out of `choices`.
-  void option_choice(const std::string& flag, std::string& value,
-                     const std::vector<std::string>& choices, const std::string& help);
+  Option& choice(const std::string& flag, std::string& value,
+                 const std::vector<std::string>& choices, const std::string& help);
   /// A switch with no value, e.g. --project.
-  void flag(const std::string& flag, bool& value, const std::string& help);
-  /// Removes an input the run did not use (e.g. --mass when --inertia is given).
-  void drop_input(const std::string& key);
-  /// True if the user gave this option on the command line.
-  bool given(const std::string& flag) const;
+  Option& flag(const std::string& flag, bool& value, const std::string& help);
   /// Offer --csv FILE for this lab's time series.
   void enable_csv();
+
+  /// True if the user gave this option on the command line.
+  bool given(const std::string& flag) const;
+  /// True when no physical option was given: the run is the textbook's example.
+  bool textbook_inputs() const;
+  /// The value the text prints, shown beside a result when the inputs are the textbook's.
+  std::optional<std::string> textbook(const std::string& printed) const;
+  /// Removes an input the run did not use (e.g. --mass when --inertia is given).
+  void drop_input(const std::string& key);
 
   /// Parses the command line, runs `body`, prints the table or JSON; returns the exit status.
   int run(int argc, char** argv, const std::function<void(Lab&)>& body);
 
   /// A section heading in the human table.
   void section(const std::string& heading);
-  /// A scalar result; `textbook` is the value the seed prints for these inputs,
-  /// shown beside it (pass it only when the inputs are the textbook's).
+  /// A scalar result with its unit ("" for a pure number); `printed` is the text's value.
   void result(const std::string& key, const std::string& label, double value,
-              const std::string& unit, std::optional<std::string> textbook = std::nullopt);
+              const std::string& unit, std::optional<std::string> printed = std::nullopt);
   /// A vector result.
   void result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
-              const std::string& unit, std::optional<std::string> textbook = std::nullopt);
+              const std::string& unit, std::optional<std::string> printed = std::nullopt);
   /// A matrix result (JSON: array of rows).
   void result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
-              const std::string& unit, std::optional<std::string> textbook = std::nullopt);
+              const std::string& unit, std::optional<std::string> printed = std::nullopt);
   /// A result that does not exist for these inputs (JSON null), with the reason in the table.
-  void result_none(const std::string& key, const std::string& label, const std::string& why);
+  void result_none(const std::string& key, const std::string& label, const std::string& unit,
+                   const std::string& why);
   /// A text result (e.g. a method name).
   void result_text(const std::string& key, const std::string& label, const std::string& value);
   /// A note under the table and in JSON "notes"; errata start with "errata:".
   void note(const std::string& text);
 
-  /// The time series written by --csv (if the user asked for it).
-  void series(Series s) { series_ = std::move(s); }
-  /// True if --figures DIR was given; then `figure` writes each PNG.
-  bool figures_requested() const { return !figures_dir_.empty(); }
-  /// Writes figure `<lab>_<what>.png`: `save` gets the full path; the figure is
-  /// listed in the JSON "figures" and, with --timing, its wall time in "timing".
-  void figure(const std::string& what, const std::function<void(const std::string& path)>& save);
-  /// Runs `draw` if --figures was given; a failure there (no GL context, say) is
-  /// reported on stderr and sets exit status 1, but the numeric results still print.
-  void figures(const std::function<void(Lab&)>& draw);
-  /// Requested figure size in pixels (--figure-size WxH, default 1600x1200).
-  int figure_width() const { return figure_width_; }
-  int figure_height() const { return figure_height_; }
+
+/// The time series written by --csv (if the user asked for it).
+  void series(TimeSeries s) { series_ = std::move(s); }
+  /// Draws the figures if --figures DIR was given: `draw` hands each figure to the
+  /// set. A drawing failure (no GL context, say) is reported on stderr and sets
+  /// exit status 1; the numeric results still print.
+  void figures(const std::function<void(FigureSet&)>& draw);
+
   const std::string& name() const { return name_; }
-  /// A figure title "<lab>: <detail>" in the renderer's markup (the lab's name escaped).
-  std::string figure_title(const std::string& detail) const;
 
  private:
+  friend class Option;
+  friend class FigureSet;
   struct Row {
     std::string label, value, unit, textbook;
     bool heading = false;
   };
-  void check_figures_directory() const;
-  void store(const std::string& key, Json value, bool finite,
-             const std::optional<std::string>& textbook);
+  Option& declare(CLI::Option* cli, Option::Kind kind, const std::string& flag,
+                  const std::string& help);
+  void check_output_paths() const;
+  void store(const std::string& key, Json value, bool finite, const std::string& unit,
+             const std::optional<std::string>& printed);
+  std::string title_inputs() const;
   void emit_table() const;
   void emit_json() const;
   void write_csv() const;
 
   std::string name_, title_;
   CLI::App app_;
-  Json inputs_ = Json::object();
-  Json results_ = Json::object();
-  Json textbook_ = Json::object();
-  std::vector<std::function<void()>> record_inputs_;
-  std::vector<std::function<void()>> finish_parsing_;
+  std::list<Option> options_;
+  Json inputs_ = Json::object(), results_ = Json::object(), units_ = Json::object();
+  Json textbook_ = Json::object(), captions_ = Json::object();
   std::vector<Row> rows_;
-  std::vector<std::string> notes_;
-  std::vector<std::string> figures_;
-  Series series_;
+  std::vector<std::string> notes_, figures_;
+  TimeSeries series_;
   bool json_ = false, quiet_ = false, csv_enabled_ = false;
   bool figures_failed_ = false, timing_ = false;
   Json figure_seconds_ = Json::object();
@@ -133,13 +191,7 @@ class Lab {
   int figure_width_ = 1600, figure_height_ = 1200;
 };
 
-/// The textbook's printed value, when `applies` (the inputs are the text's).
-inline std::optional<std::string> textbook_if(bool applies, const std::string& printed) {
-  return applies ? std::optional<std::string>(printed) : std::nullopt;
-}
-
-/// Writes `text` to `path` through a temporary file renamed into place.
-void write_file_atomically(const std::string& path, const std::string& text,
-                           const std::string& option);
+/// The text's printed value for a fixed example that does not depend on the inputs.
+inline std::optional<std::string> printed(const std::string& value) { return value; }
 
 }  // namespace rigid::lab

@@ -1,40 +1,27 @@
-#include "lamina_figures.h"
+// lamina_tensor's figures: the lamina with its rotation axis, omega, L and the
+// principal axes; the moment about an in-plane axis against its angle.
+#include "figures.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
-#if RIGID_HAVE_RENDER
-#include "rigid/render/context.h"
-#include "rigid/render/plot2d.h"
-#include "rigid/render/scene3d.h"
 #include "rigid/units.h"
 
-#endif
-
-namespace rigid::lab {
-#if RIGID_HAVE_RENDER
-namespace render = rigid::render;
+namespace rigid::lab::lamina_tensor {
 namespace {
 
-std::string title_of(const Lab& lab, const LaminaInputs& in) {
-  return lab.figure_title(fmt::format("m = {:g} kg, a = {:g} m, b = {:g} m, origin at the {}",
-                                      in.mass, in.a, in.b, in.origin));
-}
-
 // The lamina with its rotation axis, omega, L and the principal axes.
-void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const PrincipalAxes& principal) {
+render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& principal) {
   const Vec3 n = in.axis.stableNormalized();
   const Vec3 L_dir = (I * n).normalized();
   const double size = std::max(in.a, in.b);
   const Vec3 centre = in.origin == "corner" ? Vec3(in.a / 2, in.b / 2, 0) : Vec3::Zero();
 
   render::Scene3D scene;
-  scene.title = title_of(lab, in) + fmt::format(", angle(L, \\omega) = {:.1f}\\deg",
-                                                rad_to_deg(angle_between(I * n, n)));
+  scene.title = fmt::format("angle(L, \\omega) = {:.1f}\\deg", rad_to_deg(angle_between(I * n, n)));
   scene.camera.eye = centre + size * Vec3(1.2, -2.2, 2.6);
   scene.camera.target = centre + Vec3(0, 0, 0.1 * size);
   scene.camera.fov_y_deg = 38;
@@ -76,14 +63,12 @@ void draw_scene(Lab& lab, const LaminaInputs& in, const Mat3& I, const Principal
     scene.add_label(reach * 1.1 * e, std::to_string(i + 1), axis_colors[i]);
   }
   scene.add_axes(Vec3::Zero(), Mat3::Identity(), 0.35 * size, {"x", "y", "z"});
-  lab.figure("scene", [&](const std::string& path) {
-    scene.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return scene;
 }
 
 // The moment n.I.n about an in-plane axis at angle alpha from x: the principal
 // axes are its extremes (section 2.3).
-void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
+render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
   std::vector<double> alpha_deg, moment;
   for (int k = 0; k <= 360; ++k) {
     const double alpha = deg_to_rad(-90.0 + 0.5 * k);
@@ -91,7 +76,7 @@ void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
     moment.push_back(moment_about_axis(I, Vec3(std::cos(alpha), std::sin(alpha), 0)));
   }
   render::Plot2D plot;
-  plot.title = title_of(lab, in) + ": moment about an axis in the x-y plane";
+  plot.title = "moment about an axis in the x-y plane";
   render::Panel& panel = plot.panel();
   panel.x = {"axis angle \\alpha from x (\\deg)", render::Scale::kLinear, -90, 90};
   const double top = *std::max_element(moment.begin(), moment.end());
@@ -120,27 +105,14 @@ void draw_moment_curve(Lab& lab, const LaminaInputs& in, const Mat3& I) {
     panel.add_points({deg}, {moment_about_axis(I, n)}, "chosen axis n", render::Marker::kCircle)
         .color = render::kVermillion;
   }
-  lab.figure("moment", [&](const std::string& path) {
-    plot.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return plot;
 }
 
 }  // namespace
 
-#endif
-
-void draw_lamina_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const LaminaInputs& in,
-                         [[maybe_unused]] const Mat3& I,
-                         [[maybe_unused]] const PrincipalAxes& principal) {
-#if RIGID_HAVE_RENDER
-  // The GL context is made once per process, before any figure is drawn and
-  // timed (like matplotlib's import, bench/ reports it on its own).
-  rigid::render::context();
-  draw_scene(lab, in, I, principal);
-  draw_moment_curve(lab, in, I);
-#else
-  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
-#endif
+void draw(FigureSet& set, const Inputs& in, const Mat3& I, const PrincipalAxes& principal) {
+  set.add("scene", "L is not along omega; the principal axes", scene_of(in, I, principal));
+  set.add("moment", "the moment n.I.n is extreme on the principal axes", moment_plot(in, I));
 }
 
-}  // namespace rigid::lab
+}  // namespace rigid::lab::lamina_tensor

@@ -1,35 +1,22 @@
-#include "tire_figures.h"
+// tire_balancing's figures: the wheel on its crooked axle with the cone L
+// sweeps; the balancing mass against the tilt, exact and small-angle.
+#include "figures.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
-#if RIGID_HAVE_RENDER
-#include "rigid/render/context.h"
-#include "rigid/render/plot2d.h"
-#include "rigid/render/scene3d.h"
 #include "rigid/units.h"
 
-#endif
-
-namespace rigid::lab {
-#if RIGID_HAVE_RENDER
-namespace render = rigid::render;
+namespace rigid::lab::tire_balancing {
 namespace {
-
-std::string title_of(const Lab& lab, const CrookedWheel& wheel) {
-  return lab.figure_title(fmt::format("m = {:g} kg, a = {:g} m, b = {:g} m, \\theta = {:g}\\deg",
-                                      wheel.mass, wheel.radius, wheel.offset,
-                                      rad_to_deg(wheel.tilt)));
-}
 
 // The wheel, its crooked axle, the balancing masses and the cone L sweeps
 // before balancing. Angles of a degree would be invisible, so the scene
 // magnifies every angle about the symmetry axis by the same factor and says so.
-void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
+render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
   const double a = wheel.radius, b = wheel.offset;
   const double magnify = std::max(1.0, deg_to_rad(12.0) / wheel.tilt);
   const auto shown = [&](const Vec3& v) -> Vec3 {
@@ -44,9 +31,7 @@ void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
   const double cone_angle = magnify * angle_between(L0, axle_direction(wheel));
 
   render::Scene3D scene;
-  scene.title =
-      title_of(lab, wheel) +
-      (magnify > 1 ? fmt::format(" (angles drawn \\times{:.0f})", magnify) : std::string());
+  if (magnify > 1) scene.title = fmt::format("angles drawn \\times{:.0f}", magnify);
   scene.camera.eye = Vec3(1.9, -3.0, 1.5) * a * 1.6;
   scene.camera.target = Vec3(0.05 * a, 0, 0);
   scene.camera.fov_y_deg = 34;
@@ -73,13 +58,11 @@ void draw_scene(Lab& lab, const CrookedWheel& wheel, double m0, double omega) {
   omega_label.offset_y = -36;
   scene.add_label(omega_label);
   scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"});
-  lab.figure("scene", [&](const std::string& path) {
-    scene.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return scene;
 }
 
 // The balancing mass against the tilt: exact (eq. 60) against small-angle (eq. 61).
-void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
+render::Plot2D mass_plot(const CrookedWheel& wheel, double m0) {
   std::vector<double> tilt_deg, exact_g, small_g;
   const double top = std::min(44.0, std::max(5.0, 4.0 * rad_to_deg(wheel.tilt)));
   CrookedWheel w = wheel;
@@ -94,7 +77,7 @@ void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
     small_g.push_back(1e3 * balance_mass_small_angle(w));
   }
   render::Plot2D plot;
-  plot.title = title_of(lab, wheel) + ": balancing mass against axle tilt";
+  plot.title = "balancing mass against axle tilt";
   render::Panel& panel = plot.panel();
   panel.x = {"axle tilt \\theta (\\deg)", render::Scale::kLinear, 0, top};
   panel.y = {"balancing mass m_0 (g)", render::Scale::kLinear, 0};
@@ -107,26 +90,14 @@ void draw_mass_curve(Lab& lab, const CrookedWheel& wheel, double m0) {
       .add_points({rad_to_deg(wheel.tilt)}, {1e3 * m0},
                   fmt::format("this wheel: {:.1f} g", 1e3 * m0))
       .color = render::kBlue;
-  lab.figure("mass", [&](const std::string& path) {
-    plot.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return plot;
 }
 
 }  // namespace
 
-#endif
-
-void draw_tire_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const CrookedWheel& wheel,
-                       [[maybe_unused]] double m0, [[maybe_unused]] double omega) {
-#if RIGID_HAVE_RENDER
-  // The GL context is made once per process, before any figure is drawn and
-  // timed (like matplotlib's import, bench/ reports it on its own).
-  rigid::render::context();
-  draw_scene(lab, wheel, m0, omega);
-  draw_mass_curve(lab, wheel, m0);
-#else
-  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
-#endif
+void draw(FigureSet& set, const Inputs& in, double m0) {
+  set.add("scene", "the crooked axle and the cone L sweeps", scene_of(in.wheel, m0, in.omega));
+  set.add("mass", "balancing mass, exact against small-angle", mass_plot(in.wheel, m0));
 }
 
-}  // namespace rigid::lab
+}  // namespace rigid::lab::tire_balancing

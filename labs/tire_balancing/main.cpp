@@ -8,31 +8,32 @@
 #include <cmath>
 
 #include "common/lab.h"
+#include "figures.h"
 #include "rigid/balancing.h"
 #include "rigid/units.h"
-#include "tire_figures.h"
 
 using rigid::Vec3;
 using rigid::lab::Lab;
-using rigid::lab::textbook_if;
 
 int main(int argc, char** argv) {
   Lab lab("tire_balancing", "dynamic balancing of a wheel on a crooked axle (sections 2.2-2.3)");
-  rigid::CrookedWheel wheel;
-  double tilt_deg = 1.0;
-  // 90 rad/s is a wheel of 0.31 m rolling radius at about 100 km/h.
-  double omega = 90.0;
-  lab.option("--mass", wheel.mass, "kg", "mass m of the disk");
-  lab.option("--radius", wheel.radius, "m", "radius a of the disk");
-  lab.option("--offset", wheel.offset, "m", "distance b of each balancing mass from the disk");
-  lab.option_deg("--tilt-deg", tilt_deg, 0.0, 45.0, "angle theta between axle and symmetry axis");
-  lab.option("--omega", omega, "rad/s", "spin of the wheel about its axle");
+  rigid::lab::tire_balancing::Inputs in;
+  rigid::CrookedWheel& wheel = in.wheel;
+  lab.number("--mass", wheel.mass, "mass m of the disk").unit("kg").positive().symbol("m");
+  lab.number("--radius", wheel.radius, "radius a of the disk").unit("m").positive().symbol("a");
+  lab.number("--offset", wheel.offset, "distance b of each balancing mass from the disk")
+      .unit("m")
+      .positive()
+      .symbol("b");
+  lab.angle_deg("--tilt-deg", in.tilt_deg, "angle theta between axle and symmetry axis")
+      .open_range(0.0, 45.0)
+      .symbol("\\theta");
+  lab.number("--omega", in.omega, "spin of the wheel about its axle").unit("rad/s").positive();
   lab.enable_csv();
 
   return lab.run(argc, argv, [&](Lab& lab) {
-    wheel.tilt = rigid::deg_to_rad(tilt_deg);
-    const bool book =
-        wheel.mass == 10.0 && wheel.radius == 0.18 && wheel.offset == 0.05 && tilt_deg == 1.0;
+    wheel.tilt = rigid::deg_to_rad(in.tilt_deg);
+    const double omega = in.omega;
 
     lab.section("2.2 before balancing: L is off the axle");
     const Vec3 axle = rigid::axle_direction(wheel);
@@ -43,33 +44,31 @@ int main(int argc, char** argv) {
                rigid::bearing_torque(wheel, 0.0, omega).norm(), "N m");
 
     lab.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
-    double m0 = 0.0;
-    try {
-      m0 = rigid::balance_mass_exact(wheel);
-    } catch (const std::invalid_argument& e) {
-      throw rigid::lab::UsageError("--tilt-deg", std::string(e.what()) + " with this --offset");
-    }
+    const double m0 = rigid::lab::for_option("--tilt-deg", [&] {
+      return rigid::balance_mass_exact(wheel);
+    });
     const double m0_small = rigid::balance_mass_small_angle(wheel);
     lab.result("balance_mass_kg", "m0, exact from tan 2 theta (eq. 60)", m0, "kg",
-               textbook_if(book, "0.076 (76 g)"));
+               lab.textbook("0.076 (76 g)"));
     lab.result("balance_mass_small_angle_kg", "m0, small angle theta = 8 b m0 / (a m) (eq. 61)",
-               m0_small, "kg", textbook_if(book, "0.076 (76 g)"));
+               m0_small, "kg", lab.textbook("0.076 (76 g)"));
     lab.result("residual_tilt_exact_deg", "principal axis to axle, exact m0",
                rigid::rad_to_deg(rigid::principal_axis_misalignment(wheel, m0)), "deg");
     lab.result("residual_tilt_small_angle_deg", "principal axis to axle, small-angle m0",
                rigid::rad_to_deg(rigid::principal_axis_misalignment(wheel, m0_small)), "deg");
     lab.result("torque_balanced_nm", "bearing torque after balancing",
                rigid::bearing_torque(wheel, m0, omega).norm(), "N m");
-    if (book) {
+    if (lab.textbook_inputs()) {
       lab.note(fmt::format(
           "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "
           "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
           "b = {:g} cm, theta = {:g} deg",
-          1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset, tilt_deg));
+          1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset,
+          in.tilt_deg));
     }
 
     // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.
-    rigid::lab::Series turn{{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"}, {}};
+    rigid::lab::TimeSeries turn{{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"}, {}};
     const int samples = 361;
     const double period = 2.0 * rigid::kPi / omega;
     for (int k = 0; k < samples; ++k) {
@@ -80,6 +79,6 @@ int main(int argc, char** argv) {
     }
     lab.series(std::move(turn));
 
-    lab.figures([&](Lab& lab) { rigid::lab::draw_tire_figures(lab, wheel, m0, omega); });
+    lab.figures([&](rigid::lab::FigureSet& set) { rigid::lab::tire_balancing::draw(set, in, m0); });
   });
 }

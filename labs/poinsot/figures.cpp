@@ -1,31 +1,18 @@
-#include "poinsot_figures.h"
+// poinsot's figures: the energy and momentum ellipsoids with their polhode, a
+// family of polhodes with the separatrix, omega(t) with its phase plot, and
+// every integrator's error against the exact solution.
+#include "figures.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "rigid/poinsot.h"
-#if RIGID_HAVE_RENDER
-#include "rigid/render/context.h"
-#include "rigid/render/plot2d.h"
-#include "rigid/render/scene3d.h"
 
-#endif
-
-namespace rigid::lab {
+namespace rigid::lab::poinsot {
 using Eigen::Vector3d;
-#if RIGID_HAVE_RENDER
-namespace render = rigid::render;
 namespace {
-
-std::string title_of(const Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0) {
-  const auto& I = motion.moments();
-  return lab.figure_title(
-      fmt::format("I = ({:.4g}, {:.4g}, {:.4g}) kg m^2, \\omega_0 = ({:g}, {:g}, {:g}) rad/s", I.I1,
-                  I.I2, I.I3, omega0(0), omega0(1), omega0(2)));
-}
 
 // A camera that looks at the ellipsoids from between the axes.
 void frame_camera(render::Scene3D& scene, double size) {
@@ -35,12 +22,12 @@ void frame_camera(render::Scene3D& scene, double size) {
 }
 
 // The energy and momentum ellipsoids and the polhode where they meet (section 4).
-void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                     const std::vector<std::vector<Vector3d>>& polhode) {
+render::Scene3D ellipsoids_scene(const FreeBodyExact& motion, const Vector3d& omega0,
+                                 const std::vector<std::vector<Vector3d>>& polhode) {
   const PoinsotEllipsoids e = poinsot_ellipsoids(motion.moments(), omega0);
   const double size = std::max(e.energy_semi_axes.maxCoeff(), e.momentum_semi_axes.maxCoeff());
   render::Scene3D scene;
-  scene.title = title_of(lab, motion, omega0) + ": energy and momentum ellipsoids";
+  scene.title = "energy and momentum ellipsoids";
   frame_camera(scene, size);
   scene.add_ellipsoid(Vector3d::Zero(), e.energy_semi_axes, Eigen::Matrix3d::Identity(),
                       {render::kSkyBlue, 0.45f}, "energy ellipsoid \\Sigma I_i\\omega_i^2 = 2T");
@@ -54,15 +41,13 @@ void draw_ellipsoids(Lab& lab, const FreeBodyExact& motion, const Vector3d& omeg
   scene.add_sphere(omega0, 0.03 * size, {render::kBlack}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
-  lab.figure("ellipsoids", [&](const std::string& path) {
-    scene.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return scene;
 }
 
 // Polhodes on one energy ellipsoid, about the largest and the smallest axis,
 // split by the separatrix through the intermediate axis (section 4.1).
-void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                         const std::vector<std::vector<Vector3d>>& polhode) {
+render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omega0,
+                               const std::vector<std::vector<Vector3d>>& polhode) {
   const PrincipalMoments& I = motion.moments();
   const double T = motion.energy();
   const Vector3d moments = I.vector();
@@ -70,7 +55,7 @@ void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& 
   const Vector3d semi = (2.0 * T * moments.cwiseInverse()).cwiseSqrt();
   const double size = semi.maxCoeff();
   render::Scene3D scene;
-  scene.title = title_of(lab, motion, omega0) + ": polhodes on the energy ellipsoid";
+  scene.title = "polhodes on the energy ellipsoid";
   frame_camera(scene, size);
   scene.add_ellipsoid(Vector3d::Zero(), semi, Eigen::Matrix3d::Identity(),
                       {render::kLightGray, 1.0f, 0.15f}, "energy ellipsoid");
@@ -110,21 +95,17 @@ void draw_polhode_family(Lab& lab, const FreeBodyExact& motion, const Vector3d& 
   scene.add_sphere(omega0 * 1.004, 0.02 * size, {render::kBlack}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.3 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
-  lab.figure("polhodes", [&](const std::string& path) {
-    scene.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return scene;
 }
 
 // omega_1, omega_2, omega_3 against t and the phase plot of section 5.1.
-void draw_omega(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                const std::vector<FreeBodySample>& samples) {
+render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySample>& samples) {
   std::vector<double> t, w[3];
   for (const auto& s : samples) {
     t.push_back(s.t);
     for (int i = 0; i < 3; ++i) w[i].push_back(s.omega_body(i));
   }
   render::Plot2D plot(1, 2);
-  plot.title = title_of(lab, motion, omega0);
   render::Panel& left = plot.panel(0, 0);
   left.title = "angular velocity in body axes";
   left.x.label = "t (s)";
@@ -153,79 +134,62 @@ void draw_omega(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
   right.y.min = lo - 0.04 * (hi - lo);
   right.y.max = hi + 0.6 * (hi - lo);
   right.legend = render::LegendPlace::kTopRight;
-  lab.figure("omega", [&](const std::string& path) {
-    plot.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return plot;
 }
 
 // Each integrator's error against the exact solution, and its energy error,
-// every method at the lab's tolerance or step.
-void draw_integrators(Lab& lab, const FreeBodyExact& motion, const Vector3d& omega0,
-                      const std::vector<double>& times, const IntegrateOptions& options) {
+// every method at the lab's tolerance or step (section "every integrator").
+render::Plot2D integrators_plot(const std::vector<double>& times,
+                                const std::vector<MethodErrors>& methods) {
   render::Plot2D plot(1, 2);
-  plot.title = title_of(lab, motion, omega0) + ": integrators against the exact solution";
+  plot.title = "integrators against the exact solution";
   render::Panel& error = plot.panel(0, 0);
   error.title = "error in \\omega";
   error.x.label = "t (s)";
-  // Room above the curves for the legend: up to 10^3.
   error.y = {"|\\omega - \\omega_{exact}| / |\\omega_0|", render::Scale::kLog10, 1e-17, 1e3};
   render::Panel& energy = plot.panel(0, 1);
   energy.title = "energy error";
   energy.x.label = "t (s)";
   energy.y = {"|T - T_0| / T_0", render::Scale::kLog10, 1e-17, 1e3};
   // Zero errors have no logarithm: show them at a floor below double roundoff.
-  const auto floored = [](std::vector<double> v) {
-    for (double& x : v) x = std::max(x, 1e-17);
-    return v;
-  };
-  render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed, render::Dash::kSolid,
-                           render::Dash::kDashDot, render::Dash::kSolid,  render::Dash::kDotted};
   // The first sample (t = 0) has no error to show on a log axis.
+  const auto floored = [](const std::vector<double>& v) {
+    std::vector<double> out(v.begin() + 1, v.end());
+    for (double& x : out) x = std::max(x, 1e-17);
+    return out;
+  };
+  const render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed,
+                                 render::Dash::kSolid,   render::Dash::kDashDot,
+                                 render::Dash::kSolid,   render::Dash::kDotted};
   const std::vector<double> t(times.begin() + 1, times.end());
-  for (std::size_t k = 0; k < kAllMethods.size(); ++k) {
-    IntegrateOptions each = options;
-    each.method = kAllMethods[k];
-    each.project_invariants = false;
-    const IntegrationResult run =
-        integrate_free_body(motion.moments(), motion.state(times.front()), times, each);
-    const std::vector<double> we = omega_errors(run, motion), ee = energy_errors(run, motion);
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const IntegrateOptions& o = methods[k].options;
     const std::string name =
-        std::string(method_name(each.method)) + ", " +
-        (is_adaptive(each.method) ? fmt::format("tol {:g}", each.rel_tol)
-                                  : fmt::format("h = {:.3g} s", each.step));
-    auto& a = error.add_line(t, floored({we.begin() + 1, we.end()}), name);
-    auto& b = energy.add_line(t, floored({ee.begin() + 1, ee.end()}), name);
+        std::string(method_name(o.method)) + ", " +
+        (is_adaptive(o.method) ? fmt::format("tol {:g}", o.rel_tol)
+                               : fmt::format("h = {:.3g} s", o.step));
+    auto& a = error.add_line(t, floored(methods[k].omega_error), name);
+    auto& b = energy.add_line(t, floored(methods[k].energy_error), name);
     a.color = b.color = render::palette_color(k);
     a.dash = b.dash = dashes[k % 6];
   }
   error.legend = render::LegendPlace::kTopRight;
   energy.legend = render::LegendPlace::kNone;
-  lab.figure("integrators", [&](const std::string& path) {
-    plot.save(path, lab.figure_width(), lab.figure_height());
-  });
+  return plot;
 }
 
 }  // namespace
 
-#endif
-
-void draw_poinsot_figures([[maybe_unused]] Lab& lab, [[maybe_unused]] const FreeBodyExact& motion,
-                          [[maybe_unused]] const Vector3d& omega0,
-                          [[maybe_unused]] const std::vector<FreeBodySample>& samples,
-                          [[maybe_unused]] const std::vector<double>& times,
-                          [[maybe_unused]] const IntegrateOptions& options) {
-#if RIGID_HAVE_RENDER
-  // The GL context is made once per process, before any figure is drawn and
-  // timed (like matplotlib's import, bench/ reports it on its own).
-  rigid::render::context();
-  const auto curve = rigid::polhode(motion.moments(), omega0, 400);
-  draw_ellipsoids(lab, motion, omega0, curve);
-  draw_polhode_family(lab, motion, omega0, curve);
-  draw_omega(lab, motion, omega0, samples);
-  draw_integrators(lab, motion, omega0, times, options);
-#else
-  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
-#endif
+void draw(FigureSet& set, const Run& run) {
+  const auto curve = polhode(run.motion.moments(), run.omega0, 400);
+  set.add("ellipsoids", "energy and momentum ellipsoids meet on the polhode",
+          ellipsoids_scene(run.motion, run.omega0, curve));
+  set.add("polhodes", "polhodes about the largest and smallest axes, the separatrix",
+          polhodes_scene(run.motion, run.omega0, curve));
+  set.add("omega", "omega(t) of the text's ellipsoid and its phase plot",
+          omega_plot(run.omega0, run.samples));
+  set.add("integrators", "every integrator against the exact solution",
+          integrators_plot(run.times, run.methods));
 }
 
-}  // namespace rigid::lab
+}  // namespace rigid::lab::poinsot

@@ -1,0 +1,34 @@
+// Numbers as text, for core's error messages and the labs' tables: one
+// formatter, locale-independent (std::to_chars), never a negative zero.
+#pragma once
+
+#include <Eigen/Core>
+#include <charconv>
+#include <string>
+
+namespace rigid {
+
+/// x in the shortest form that reads back as the same double, %g-like ("1e-320",
+/// "0.3", "2.0000001"): six significant digits would print 2.0000001 as 2, so a
+/// message like "1 + 1 < 2" could contradict itself.
+inline std::string format_number(double x) {
+  char buf[32];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, x + 0.0);
+  return std::string(buf, r.ptr);
+}
+
+/// x to `significant` digits as printf's %g writes it ("0.493333", "1e-07").
+inline std::string format_number(double x, int significant) {
+  char buf[64];
+  const std::to_chars_result r =
+      std::to_chars(buf, buf + sizeof buf, x + 0.0, std::chars_format::general, significant);
+  return std::string(buf, r.ptr);
+}
+
+/// v as "(x, y, z)" with format_number's shortest components.
+inline std::string format_vector(const Eigen::Vector3d& v) {
+  return "(" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) +
+         ")";
+}
+
+}  // namespace rigid

@@ -1,0 +1,49 @@
+// poinsot's inputs and figures: the energy and momentum ellipsoids with their
+// polhode, a family of polhodes with the separatrix, omega(t) with its phase
+// plot, and every integrator's error against the exact solution.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/figures.h"
+#include "rigid/free_body_exact.h"
+#include "rigid/integrate.h"
+#include "rigid/units.h"
+
+namespace rigid::lab::poinsot {
+
+/// The lab's inputs, with the text's defaults (section 5.1: the solid ellipsoid
+/// x^2/9 + y^2/4 + z^2 = 1 of mass pi, started at omega = (1, 1, 1)).
+struct Inputs {
+  Eigen::Vector3d inertia{1, 1, 1};    ///< used only when --inertia is given
+  Eigen::Vector3d ellipsoid{3, 2, 1};  ///< semi-axes A, B, C
+  double mass = kPi;
+  Eigen::Vector3d omega0{1, 1, 1};
+  double t_end = 0.0;  ///< 0: three polhode periods
+  std::string method = "exact";
+  double tolerance = 1e-10;
+  double step = 0.0;  ///< 0: period / 2000
+  bool project = false;
+};
+
+/// One integrator's run against the exact solution, sample by sample.
+struct MethodErrors {
+  IntegrateOptions options;
+  std::vector<double> omega_error;   ///< |omega - omega_exact| / |omega0|
+  std::vector<double> energy_error;  ///< |T - T0| / T0
+};
+
+/// What the figures show of a run.
+struct Run {
+  const FreeBodyExact& motion;
+  Eigen::Vector3d omega0;
+  const std::vector<FreeBodySample>& samples;  ///< the lab's own run (exact or integrated)
+  const std::vector<double>& times;
+  const std::vector<MethodErrors>& methods;  ///< every integrator at the lab's settings
+};
+
+/// Hands the lab's figures to the set.
+void draw(FigureSet& set, const Run& run);
+
+}  // namespace rigid::lab::poinsot
