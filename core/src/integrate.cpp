@@ -136,6 +136,7 @@ std::vector<double> uniform_times(double t0, double t1, std::size_t n) {
 IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyState& x0,
                                       const std::vector<double>& times, const IntegrateOptions& o) {
   check_inputs(I, x0, o.moments_rule);
+  // the generic rules here too: the splittings do not pass through integrate_sampled
   validate_run(o, times, o.project_invariants);
   IntegrationResult out;
   out.method = o.method;

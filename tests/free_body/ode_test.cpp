@@ -73,6 +73,17 @@ OdeOptions options_for(Method m, double step_or_tol, std::size_t max_steps = 50'
   return o;
 }
 
+// One rk4 run on the grid of step h from (1, 0), with its steps recorded.
+struct GridRun {
+  RecordingRk4 stepper;
+  Samples seen;
+  State x{1.0, 0.0};
+  OdeStats stats;
+  GridRun(const std::vector<double>& times, double h) {
+    stats = integrate_on_grid(stepper, Oscillator{}, x, times, options_for(Method::kRk4, h), seen);
+  }
+};
+
 }  // namespace
 
 TEST_CASE("ode: a fixed-step run ends exactly at t_end, only its last step shortened") {
@@ -82,11 +93,8 @@ TEST_CASE("ode: a fixed-step run ends exactly at t_end, only its last step short
   std::vector<double> times;
   for (int n = 0; n * h < t_end; n += 3) times.push_back(n * h);
   times.push_back(t_end);
-  RecordingRk4 stepper;
-  Samples seen;
-  State x{1.0, 0.0};
-  const OdeStats stats =
-      integrate_on_grid(stepper, Oscillator{}, x, times, options_for(Method::kRk4, h), seen);
+  const GridRun run(times, h);
+  const auto& [stepper, seen, x, stats] = run;
   CHECK(seen.t == times);
   REQUIRE(stats.steps == 34);
   REQUIRE(stepper.lengths.size() == 34);
@@ -106,11 +114,8 @@ TEST_CASE("ode: a fixed-step run ends exactly at t_end, only its last step short
 TEST_CASE("ode: a step that divides t_end to roundoff takes no roundoff-sized step") {
   // 0.1 * 100 is 10 to roundoff only: the last sample is grid point 100, reached
   // by a whole step that lands on 10 exactly.
-  RecordingRk4 stepper;
-  Samples seen;
-  State x{1.0, 0.0};
-  const OdeStats stats = integrate_on_grid(stepper, Oscillator{}, x, {0.0, 5.0, 10.0},
-                                           options_for(Method::kRk4, 0.1), seen);
+  const GridRun run({0.0, 5.0, 10.0}, 0.1);
+  const auto& [stepper, seen, x, stats] = run;
   CHECK(stats.steps == 100);
   CHECK(stepper.starts.back() + stepper.lengths.back() == 10.0);
   for (double dt : stepper.lengths) CHECK(std::abs(dt - 0.1) < 1e-13);
@@ -118,11 +123,8 @@ TEST_CASE("ode: a step that divides t_end to roundoff takes no roundoff-sized st
 
 TEST_CASE("ode: a sample between grid points is reached without moving the grid") {
   // 0.35 lies between grid points 0.3 and 0.6: one step to it, one back to 0.6.
-  RecordingRk4 stepper;
-  Samples seen;
-  State x{1.0, 0.0};
-  const OdeStats stats = integrate_on_grid(stepper, Oscillator{}, x, {0.0, 0.35, 0.9},
-                                           options_for(Method::kRk4, 0.3), seen);
+  const GridRun run({0.0, 0.35, 0.9}, 0.3);
+  const auto& [stepper, seen, x, stats] = run;
   CHECK(seen.t == std::vector<double>{0.0, 0.35, 0.9});
   CHECK(stats.steps == 4);
   CHECK(stepper.starts == std::vector<double>{0.0, 0.3, 0.35, 2 * 0.3});

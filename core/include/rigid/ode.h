@@ -32,6 +32,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 // GCC 12 sees odeint's steppers copy their (never read) scratch states when
