@@ -258,6 +258,19 @@ TEST_CASE("ode: the step cap counts the whole run and stops it at once") {
   CHECK(seconds < 0.5);
 }
 
+TEST_CASE("ode: a purely relative tolerance copes with a zero component") {
+  // v(0) = 0 has no relative scale: the starting step must leave it out, not divide by 0.
+  for (Method m : {Method::kDopri5, Method::kRkf78, Method::kBulirschStoer}) {
+    OdeOptions o = options_for(m, 1e-10);
+    o.abs_tol = 0.0;
+    Samples seen;
+    const OdeStats stats = integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 1.0, 10.0}, o, seen);
+    INFO(method_name(m) << ": " << stats.steps << " steps, error " << seen.worst);
+    // as above, 5 tol per step (|x| + h |x'| <= 4 here), summed over the steps
+    CHECK(seen.worst < 5e-10 * static_cast<double>(stats.steps));
+  }
+}
+
 TEST_CASE("ode: bad input is refused by name") {
   const auto none = [](const State&, double) {};
   CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{NAN, 0}, {0.0, 1.0},

@@ -195,12 +195,13 @@ double starting_step(const System& system, const State& x0, double t0, double sp
   const std::size_t n = static_cast<std::size_t>(x0.size());
   State f0 = x0, x1 = x0, f1 = x0;
   system(x0, f0, t0);
-  // RMS norm weighted by the tolerance each component is held to
+  // RMS norm weighted by the tolerance each component is held to; a zero
+  // component under a purely relative tolerance has no scale and is left out
   const auto norm = [&](const auto& component) {
     double sum = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      const double v = component(i) / (o.abs_tol + o.rel_tol * std::abs(x0[i]));
-      sum += v * v;
+      const double scale = o.abs_tol + o.rel_tol * std::abs(x0[i]);
+      if (scale > 0.0) sum += (component(i) / scale) * (component(i) / scale);
     }
     return std::sqrt(sum / static_cast<double>(n));
   };
