@@ -255,17 +255,33 @@ TEST_CASE("poinsot: steady rotation and the separatrix have no polhode period") 
   }
 }
 
-TEST_CASE("poinsot: a fixed step is taken as given, never shortened to meet a sample") {
+TEST_CASE("poinsot: a fixed step is taken as given, only the last shortened to end at t_end") {
   // h = 1 s on a 10.3 s polhode period: rk4's error is large, as it must be.
   const auto run = run_lab("poinsot", "--json --method rk4 --step 1");
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const auto& r = j["results"];
   CHECK(double(r["step_s"]) == 1.0);
-  // t_end rounds up to a whole number of steps, each taken once.
-  CHECK(double(r["steps"]) == double(r["t_end_s"]));
+  // t_end is three periods, reached by whole steps and one shortened last step.
+  CHECK(double(r["t_end_s"]) == 3 * double(r["polhode_period_s"]));
+  CHECK(double(r["steps"]) == std::ceil(double(r["t_end_s"])));
   CHECK(double(r["max_error_vs_exact"]) > 1e-3);
   CHECK(!j["inputs"].contains("inertia"));
+}
+
+TEST_CASE("poinsot: omega is reported at exactly the t_end asked for, by every fixed-step method") {
+  // 37.5 s is no whole number of steps of period / 2000 nor of 0.00125 s (to roundoff).
+  const char* cases[] = {"--method rk4", "--method rk4 --step 0.00125", "--method splitting",
+                         "--method splitting4"};
+  for (const char* c : cases) {
+    INFO(c);
+    const auto run =
+        run_lab("poinsot", std::string("--json --inertia 1.2,2.3,3.1 --omega 0.3,1.7,-0.4 "
+                                       "--t-end 37.5 ") + c);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    CHECK(double(j["results"]["t_end_s"]) == 37.5);
+  }
 }
 
 TEST_CASE("poinsot: stress - nearly spherical, flat, fast and near-separatrix bodies") {

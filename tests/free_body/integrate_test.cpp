@@ -306,15 +306,46 @@ TEST_CASE("integrate: the exact motion sampled as a run has roundoff drift and n
   for (double e : energy_errors(r, exact)) CHECK(e < 1e-14);
 }
 
-TEST_CASE("integrate: sample times fall on the step grid of a fixed-step method") {
+TEST_CASE("integrate: sample times end at t_end and lie on the step grid of a fixed-step method") {
   // 200 a period, no step: uniform to t_end exactly.
   const std::vector<double> smooth = sample_times(10.0, 1.0);
   CHECK(smooth.size() == 2001);
   CHECK(smooth.back() == 10.0);
-  // A step of 0.3 s: every sample a whole number of steps, t_end rounded up to 10.2 s.
+  // A step of 0.3 s, coarser than 200 a period: every step is a sample, n * 0.3
+  // as the grid computes it, up to 33 * 0.3 = 9.9; then t_end itself.
   const std::vector<double> grid = sample_times(10.0, 1.0, 0.3);
-  CHECK_THAT(grid.back(), Catch::Matchers::WithinAbs(10.2, 1e-12));
-  for (double t : grid) CHECK_THAT(t / 0.3, Catch::Matchers::WithinAbs(std::round(t / 0.3), 1e-9));
-  // At most max_samples however long the run.
+  REQUIRE(grid.size() == 35);
+  CHECK(grid.back() == 10.0);
+  for (std::size_t n = 0; n + 1 < grid.size(); ++n) CHECK(grid[n] == static_cast<double>(n) * 0.3);
+  // A step that divides t_end: t_end once, not twice.
+  const std::vector<double> divides = sample_times(10.0, 1.0, 0.25);
+  CHECK(divides.size() == 41);
+  CHECK(divides.back() == 10.0);
+  CHECK(divides[39] == 39 * 0.25);
+  // Every k-th step when the step is finer than the sample spacing (1/200 s = 5 steps).
+  const std::vector<double> every5 = sample_times(1.0, 1.0, 0.001);
+  CHECK(every5.size() == 201);
+  CHECK(every5[1] == 5 * 0.001);
+  // At most max_samples however long the run, with or without a step.
   CHECK(sample_times(1e6, 1.0).size() <= 20001);
+  CHECK(sample_times(1e6, 1.0, 1e-3).size() <= 20001);
+  CHECK(sample_times(1e6, 1.0, 1e-3).back() == 1e6);
+}
+
+TEST_CASE("integrate: a fixed-step run of the free body reports the state at exactly t_end") {
+  // The lab's case: 37.5 s is no whole number of steps of period / 2000, nor a
+  // whole number of sample spacings; the run must still end at 37.5 s.
+  const FreeBodyExact exact(kEllipsoid, kOmega0, kQ0);
+  const double h = exact.period() / 2000;
+  const std::vector<double> times = sample_times(37.5, exact.period(), h);
+  REQUIRE(times.back() == 37.5);
+  for (Method m : {Method::kRk4, Method::kSplitting, Method::kSplitting4}) {
+    const IntegrationResult r = run(m, h, times);
+    REQUIRE(r.samples.back().t == 37.5);
+    // ceil(37.5 / h) steps: whole ones and the one shortened last step
+    CHECK(r.steps == static_cast<std::size_t>(std::ceil(37.5 / h)));
+    // order 4: ~1e-11 (see "agrees with the exact motion"); order 2: 1e-4 bound there
+    const double bound = fixed_step_order(m) == 4 ? 1e-9 : 1e-4;
+    CHECK((r.samples.back().omega_body - exact.omega_body(37.5)).norm() < bound);
+  }
 }

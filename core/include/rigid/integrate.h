@@ -7,51 +7,33 @@
 //  - "dopri5": runge_kutta_dopri5, error-controlled, with dense output.
 //  - "rkf78": runge_kutta_fehlberg78, error-controlled.
 //  - "bulirsch-stoer": bulirsch_stoer with dense output.
-// All run on the fixed-size FreeBodyState. Samples are produced exactly at the
-// requested times: dense-output methods interpolate, the others shorten the
-// one step that would pass a sample time. The Runge-Kutta methods do not keep
+// All run through the generic layer of ode.h on the fixed-size FreeBodyState
+// (the splittings on L_body and q). Samples are produced exactly at the
+// requested times: dense-output methods interpolate, the controlled one
+// shortens the step that would pass a sample time, the fixed-step ones keep
+// their grid t0 + n h (ode.h). The Runge-Kutta methods do not keep
 // |q| = 1; their quaternion is not touched during the run, its norm drift is
 // reported and the sampled attitudes are normalised.
 #pragma once
 
 #include <Eigen/Geometry>
-#include <array>
 #include <cstddef>
-#include <string_view>
 #include <vector>
 
 #include "rigid/free_body.h"
 #include "rigid/free_body_exact.h"
+#include "rigid/ode.h"
 
 namespace rigid {
 
-/// The integrators, by their command-line names.
-enum class Method { kSplitting, kSplitting4, kRk4, kDopri5, kRkf78, kBulirschStoer };
-
-/// Every method, in the order of `method_name`.
-inline constexpr std::array<Method, 6> kAllMethods = {Method::kSplitting, Method::kSplitting4,
-                                                      Method::kRk4,       Method::kDopri5,
-                                                      Method::kRkf78,     Method::kBulirschStoer};
-
-/// The command-line name: "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer".
-std::string_view method_name(Method m);
-/// The method of a name; throws std::invalid_argument listing the valid names.
-Method method_from_name(std::string_view name);
-/// True for the error-controlled methods (dopri5, rkf78, bulirsch-stoer), which take
-/// tolerances; the others take a fixed step.
-bool is_adaptive(Method m);
 /// True for the methods that can project onto the invariants (rk4, rkf78).
-bool can_project(Method m);
-/// The order of accuracy of a fixed-step method (2, 4, 4); 0 for the adaptive ones.
-int fixed_step_order(Method m);
+inline bool can_project(Method m) {
+  return takes_after_step(m);
+}
 
-/// How to integrate. Set only what differs from the defaults.
-struct IntegrateOptions {
-  Method method = Method::kDopri5;
-  double abs_tol = 1e-10;  ///< adaptive methods: absolute tolerance on each state component
-  double rel_tol = 1e-10;  ///< adaptive methods: relative tolerance
-  double step = 1e-2;      ///< fixed-step methods: the step, s
-  std::size_t max_steps = 50'000'000;  ///< a run needing more steps throws instead of hanging
+/// How to integrate the free body: the generic options (method, abs_tol,
+/// rel_tol, step, max_steps) and the free body's own. Set only what differs.
+struct IntegrateOptions : OdeOptions {
   MomentsRule moments_rule = MomentsRule::kPhysical;
   /// rk4 and rkf78 only: after every step, pull omega back onto the energy and
   /// |L| of the start (the standard projection, Hairer, Lubich & Wanner IV.4),
@@ -90,10 +72,10 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
 /// n equally spaced times from t0 to t1 inclusive (n >= 2), or {t0} for n = 1.
 std::vector<double> uniform_times(double t0, double t1, std::size_t n);
 
-/// Sample times from 0 to about t_end, `per_period` samples per `period` and at
-/// most `max_samples` in all. With `step` > 0 (a fixed-step method) they fall on
-/// the step grid, every k-th step, so no step is shortened to land on a sample,
-/// and t_end rounds up to a whole step: the last time is the end actually reached.
+/// Sample times from 0 to exactly t_end, `per_period` samples per `period` and at
+/// most `max_samples` in all. With `step` > 0 (a fixed-step method) every sample
+/// but the last falls on the step grid n * step, every k-th step, and the last
+/// is t_end itself: only the run's last step is shortened, when step does not divide t_end.
 std::vector<double> sample_times(double t_end, double period, double step = 0.0,
                                  double per_period = 200.0, std::size_t max_samples = 20001);
 

@@ -1,0 +1,326 @@
+// Sampled integration of any ODE on fixed-size state, one layer for every
+// system (the free body, the heavy top): a system brings its right-hand side
+// (an odeint functor `void operator()(const State& x, State& dxdt, double t) const`),
+// an observer of its invariants `observe(const State& x, double t)` and, if it
+// wants one, an after-step hook (a projection onto its invariants); the
+// stepping is done here, once.
+//
+//  - "rk4": Boost.Odeint runge_kutta4 on the fixed grid t0 + n h.
+//  - "dopri5": runge_kutta_dopri5, error-controlled, with dense output.
+//  - "rkf78": runge_kutta_fehlberg78, error-controlled.
+//  - "bulirsch-stoer": bulirsch_stoer_dense_out.
+//  - "splitting", "splitting4": the free body's Lie-Poisson splittings
+//    (splitting.h); named here so one Method lists every integrator, they run
+//    through integrate_on_grid from integrate.cpp.
+//
+// Samples land exactly on the requested times. The error-controlled methods go
+// through odeint's integrate_times (dense output interpolates, the controlled
+// stepper shortens the step that would pass a sample). A fixed-step method
+// steps on the grid t0 + n h, each grid time computed by multiplication, never
+// accumulated; a sample on the grid (to roundoff) is reached by whole steps;
+// the last sample is reached by shortening only the last step; a sample
+// between grid points and before the last costs one shortened step to reach
+// it and one to rejoin the grid, so the grid never shifts.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+// GCC 12 sees odeint's steppers copy their (never read) scratch states when
+// they are built and warns -Wmaybe-uninitialized inside Boost; silence only
+// that, only for the code of this header.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <boost/numeric/odeint/integrate/integrate_times.hpp>
+#include <boost/numeric/odeint/stepper/bulirsch_stoer_dense_out.hpp>
+#include <boost/numeric/odeint/stepper/generation.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+// odeint's Eigen support must follow its own headers (it specialises their templates).
+#include <boost/numeric/odeint/external/eigen/eigen.hpp>
+
+namespace rigid {
+
+/// The integrators, by their command-line names.
+enum class Method { kSplitting, kSplitting4, kRk4, kDopri5, kRkf78, kBulirschStoer };
+
+/// Every method, in the order of `method_name`.
+inline constexpr std::array<Method, 6> kAllMethods = {Method::kSplitting, Method::kSplitting4,
+                                                      Method::kRk4,       Method::kDopri5,
+                                                      Method::kRkf78,     Method::kBulirschStoer};
+
+/// The command-line name: "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer".
+std::string_view method_name(Method m);
+/// The method of a name; throws std::invalid_argument listing the valid names.
+Method method_from_name(std::string_view name);
+/// True for the error-controlled methods (dopri5, rkf78, bulirsch-stoer), which take
+/// tolerances; the others take a fixed step.
+bool is_adaptive(Method m);
+/// True for the methods that apply an after-step hook (rk4, rkf78); the dense-output
+/// ones interpolate between steps, where a hook would not act.
+bool takes_after_step(Method m);
+/// The order of accuracy of a fixed-step method (2, 4, 4); 0 for the adaptive ones.
+int fixed_step_order(Method m);
+
+/// How to integrate, for any system. Set only what differs from the defaults.
+struct OdeOptions {
+  Method method = Method::kDopri5;
+  double abs_tol = 1e-10;  ///< adaptive methods: absolute tolerance on each state component
+  double rel_tol = 1e-10;  ///< adaptive methods: relative tolerance
+  double step = 1e-2;      ///< fixed-step methods: the step, s
+  std::size_t max_steps = 50'000'000;  ///< accepted steps; a run needing more throws
+};
+
+/// What a run cost.
+struct OdeStats {
+  std::size_t steps = 0;           ///< accepted steps (shortened ones included)
+  std::size_t rejected_steps = 0;  ///< steps rejected by the error control (rkf78 only)
+};
+
+/// Throws std::invalid_argument unless `times` is nonempty, finite and
+/// nondecreasing, the options suit their method (tolerances in [0, 1) and not
+/// both 0; a positive finite step) and, with `after_step`, the method takes a hook.
+void validate_run(const OdeOptions& options, const std::vector<double>& times,
+                  bool after_step = false);
+
+/// The after-step hook that does nothing.
+struct NoAfterStep {
+  template <class State>
+  void operator()(State& /*x*/) const {}
+};
+
+/// An odeint stepper (simple or controlled) that applies `after_step` to the
+/// state after every accepted step of `Stepper`, and counts rejected steps.
+template <class Stepper, class AfterStep>
+class AfterStepStepper {
+ public:
+  using stepper_category = typename Stepper::stepper_category;
+  using state_type = typename Stepper::state_type;
+  using value_type = typename Stepper::value_type;
+  using deriv_type = typename Stepper::deriv_type;
+  using time_type = typename Stepper::time_type;
+
+  /// Wraps a stepper and a hook `void(State&)`.
+  AfterStepStepper(Stepper stepper, AfterStep after_step)
+      : stepper_(std::move(stepper)), after_step_(std::move(after_step)) {}
+
+  /// odeint's Stepper concept: one step of dt from t, then the hook.
+  template <class System, class State>
+  void do_step(System system, State& x, time_type t, time_type dt) {
+    stepper_.do_step(system, x, t, dt);
+    after_step_(x);
+  }
+
+  /// odeint's ControlledStepper concept: the hook after a success, a count after a failure.
+  template <class System, class State>
+  boost::numeric::odeint::controlled_step_result try_step(System system, State& x, time_type& t,
+                                                          time_type& dt) {
+    const auto r = stepper_.try_step(system, x, t, dt);
+    if (r == boost::numeric::odeint::success) {
+      after_step_(x);
+    } else {
+      ++rejected_;
+    }
+    return r;
+  }
+
+  /// Steps rejected by the error control so far.
+  std::size_t rejected_steps() const { return rejected_; }
+
+ private:
+  Stepper stepper_;
+  AfterStep after_step_;
+  std::size_t rejected_ = 0;
+};
+
+/// An odeint StepOverflowChecker that caps the total steps of a run: odeint
+/// calls reset() at every observation, which leaves the total alone.
+class TotalStepCap {
+ public:
+  /// A cap of max_steps for a run of method m to t_end (both named in the error).
+  TotalStepCap(Method m, std::size_t max_steps, double t_end)
+      : method_(m), max_steps_(max_steps), t_end_(t_end) {}
+  /// Counts one step; throws std::runtime_error naming the method, the cap and t_end past the cap.
+  void operator()();
+  /// Called by odeint at each observation: a cap per run, not per sample, so nothing to do.
+  void reset() {}
+
+ private:
+  Method method_;
+  std::size_t max_steps_;
+  double t_end_;
+  std::size_t steps_ = 0;
+};
+
+namespace detail {
+
+// Where a sample time falls on the grid t0 + n h: the last grid index at or
+// before it (to roundoff), and whether it is that grid point.
+struct GridSample {
+  std::size_t n = 0;
+  bool on_grid = true;
+};
+
+// The grid position of every sample time (validated); throws
+// std::invalid_argument naming the method, step and t_end when the run would
+// need more than options.max_steps steps, before any is taken.
+std::vector<GridSample> plan_grid(const std::vector<double>& times, const OdeOptions& options);
+
+// Throws std::invalid_argument unless every component of x is finite.
+template <class State>
+void require_finite(const State& x) {
+  for (const double v : x) {
+    if (!std::isfinite(v)) throw std::invalid_argument("initial state must be finite");
+  }
+}
+
+// A first trial step for an error-controlled method of order p (Hairer, Norsett
+// & Wanner, Solving ODEs I, II.4, "starting step size"): the step whose local
+// error, estimated from f and a difference quotient of f, is about the tolerance.
+template <class System, class State>
+double starting_step(const System& system, const State& x0, double t0, double span, int order,
+                     const OdeOptions& o) {
+  const std::size_t n = static_cast<std::size_t>(x0.size());
+  State f0 = x0, x1 = x0, f1 = x0;
+  system(x0, f0, t0);
+  // RMS norm weighted by the tolerance each component is held to; a zero
+  // component under a purely relative tolerance has no scale and is left out
+  const auto norm = [&](const auto& component) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double scale = o.abs_tol + o.rel_tol * std::abs(x0[i]);
+      if (scale > 0.0) sum += (component(i) / scale) * (component(i) / scale);
+    }
+    return std::sqrt(sum / static_cast<double>(n));
+  };
+  const double d0 = norm([&](std::size_t i) { return x0[i]; });
+  const double d1 = norm([&](std::size_t i) { return f0[i]; });
+  const double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 * span : 0.01 * d0 / d1;
+  for (std::size_t i = 0; i < n; ++i) x1[i] = x0[i] + h0 * f0[i];
+  system(x1, f1, t0 + h0);
+  const double d2 = norm([&](std::size_t i) { return f1[i] - f0[i]; }) / h0;
+  const double d = std::max(d1, d2);
+  const double h1 = d <= 1e-15 ? std::max(1e-6 * span, 1e-3 * h0)
+                               : std::pow(0.01 / d, 1.0 / (order + 1));
+  return std::min({100.0 * h0, h1, span});
+}
+
+// Error-controlled runs: odeint's integrate_times with a cap on the total steps.
+template <class Stepper, class System, class State, class Observer>
+std::size_t integrate_times_capped(Stepper& stepper, const System& system, State& x,
+                                   const std::vector<double>& times, double dt0,
+                                   const OdeOptions& o, Observer& observe) {
+  TotalStepCap cap(o.method, o.max_steps, times.back());
+  return boost::numeric::odeint::integrate_times(std::ref(stepper), system, x, times.begin(),
+                                                 times.end(), dt0, std::ref(observe),
+                                                 std::ref(cap));
+}
+
+}  // namespace detail
+
+/// Steps any fixed-step stepper (odeint's Stepper concept, `do_step(system, x, t, dt)`)
+/// from x at times.front() on the grid t0 + n h, h = options.step, and calls
+/// observe(x, t) at every sample time; the grid rules are in the header comment.
+template <class Stepper, class System, class State, class Observer>
+OdeStats integrate_on_grid(Stepper& stepper, const System& system, State& x,
+                           const std::vector<double>& times, const OdeOptions& options,
+                           Observer& observe) {
+  const std::vector<detail::GridSample> plan = detail::plan_grid(times, options);
+  const double t0 = times.front(), h = options.step;
+  OdeStats stats;
+  std::size_t n = 0;  // the last grid point reached or passed
+  double t = t0;      // the time of x
+  const auto advance = [&](double t_next) {
+    stepper.do_step(system, x, t, t_next - t);
+    t = t_next;
+    ++stats.steps;
+  };
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double ts = times[i];
+    // whole steps to grid point m (the first shortened if a sample left x off the
+    // grid); a sample on the grid is landed on exactly, not on its rounded twin
+    for (const detail::GridSample s = plan[i]; n < s.n; ++n) {
+      advance(s.on_grid && n + 1 == s.n ? ts : t0 + static_cast<double>(n + 1) * h);
+    }
+    // a sample between grid points: one shortened step to it
+    if (t != ts) advance(ts);
+    observe(static_cast<const State&>(x), ts);
+  }
+  return stats;
+}
+
+/// Integrates `system` from x0 at t = times.front() by options.method (rk4, dopri5,
+/// rkf78 or bulirsch-stoer), calls observe(x, t) at every entry of `times`, and
+/// applies after_step(x) after every accepted step (rk4 and rkf78 only). Throws
+/// std::invalid_argument for bad input (validate_run, a nonfinite x0, a fixed-step
+/// run needing more than max_steps, a splitting method) and std::runtime_error
+/// when an adaptive run needs more than max_steps steps.
+template <class System, class State, class Observer, class AfterStep = NoAfterStep>
+OdeStats integrate_sampled(const System& system, const State& x0, const std::vector<double>& times,
+                           const OdeOptions& options, Observer&& observe,
+                           AfterStep after_step = {}) {
+  namespace odeint = boost::numeric::odeint;
+  constexpr bool kHasHook = !std::is_same_v<AfterStep, NoAfterStep>;
+  validate_run(options, times, kHasHook);
+  detail::require_finite(x0);
+  State x = x0;
+  const double span = times.back() - times.front();
+  switch (options.method) {
+    case Method::kRk4: {
+      AfterStepStepper stepper(odeint::runge_kutta4<State>(), std::move(after_step));
+      return integrate_on_grid(stepper, system, x, times, options, observe);
+    }
+    case Method::kRkf78: {
+      AfterStepStepper stepper(
+          odeint::make_controlled(options.abs_tol, options.rel_tol,
+                                  odeint::runge_kutta_fehlberg78<State>()),
+          std::move(after_step));
+      const double dt0 = detail::starting_step(system, x0, times.front(), span, 8, options);
+      const std::size_t steps =
+          detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe);
+      return {steps, stepper.rejected_steps()};
+    }
+    // the dense-output methods take no hook (validate_run has thrown if given one)
+    case Method::kDopri5:
+      if constexpr (!kHasHook) {
+        auto stepper = odeint::make_dense_output(options.abs_tol, options.rel_tol,
+                                                 odeint::runge_kutta_dopri5<State>());
+        const double dt0 = detail::starting_step(system, x0, times.front(), span, 5, options);
+        return {detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe),
+                0};
+      }
+      break;
+    case Method::kBulirschStoer:
+      if constexpr (!kHasHook) {
+        odeint::bulirsch_stoer_dense_out<State> stepper(options.abs_tol, options.rel_tol);
+        const double dt0 = detail::starting_step(system, x0, times.front(), span, 8, options);
+        return {detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe),
+                0};
+      }
+      break;
+    case Method::kSplitting:
+    case Method::kSplitting4:
+      break;
+  }
+  throw std::invalid_argument(std::string(method_name(options.method)) +
+                              " splits the free body's energy and needs no right-hand side: "
+                              "use integrate_free_body");
+}
+
+}  // namespace rigid
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
