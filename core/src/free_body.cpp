@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "format_number.h"
+#include "rigid/format.h"
 
 namespace rigid {
 

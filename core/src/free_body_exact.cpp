@@ -9,14 +9,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "format_number.h"
+#include "rigid/format.h"
 #include "rigid/rotation.h"
+#include "rigid/units.h"
 
 namespace rigid {
 
 namespace {
 
-constexpr double kPi = 3.141592653589793238462643383279502884;
 // Double stays double inside Boost.Math: no silent long-double promotion.
 using NoPromote = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
 

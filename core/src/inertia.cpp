@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "format_number.h"
+#include "rigid/format.h"
 #include "rigid/units.h"
 
 namespace rigid {

@@ -3,7 +3,7 @@
 #include <limits>
 #include <sstream>
 
-#include "format_number.h"
+#include "rigid/format.h"
 
 namespace rigid {
 

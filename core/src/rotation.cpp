@@ -3,10 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "rigid/units.h"
+
 namespace rigid {
 
 namespace {
-constexpr double kPi = 3.141592653589793238462643383279502884;
 
 // Wraps an angle into (-pi, pi].
 double wrap_pi(double a) {

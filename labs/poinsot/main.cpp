@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
     lab.result_text("regime", "motion", regime);
 
     const double scale = time_scale(exact, in.omega0);
-    double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
+    const double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
     // Past 1e9 periods the phase lambda t keeps fewer than 7 of its 16 digits.
     if (t_end > 1e9 * scale) {
       throw UsageError("--t-end", fmt::format("at most 1e9 periods ({:g} s) for these inputs: "
@@ -124,7 +124,6 @@ int main(int argc, char** argv) {
     // Two hundred samples a period; a fixed-step method is sampled on its own step grid.
     const bool fixed = in.method != "exact" && !rigid::is_adaptive(options.method);
     const std::vector<double> times = rigid::sample_times(t_end, scale, fixed ? options.step : 0.0);
-    t_end = times.back();
     const char* integration_option = fixed ? "--step" : "--tolerance";
 
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));

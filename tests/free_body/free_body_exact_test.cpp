@@ -1,6 +1,7 @@
 // The exact torque-free motion (free_body_exact.h) against an mpmath reference
 // computed offline (make_reference.py: 30-digit Taylor integration of the ODE
 // from the same double inputs), and its limits.
+#include "rigid/units.h"
 #include "rigid/free_body_exact.h"
 
 #include <algorithm>
@@ -17,7 +18,6 @@ using namespace rigid;
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kPi = 3.141592653589793;
 
 struct RefPoint {
   double t;

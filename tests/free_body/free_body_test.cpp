@@ -1,4 +1,5 @@
 // Euler's equations, diagnostics, validation and Euler angles (free_body.h, rotation.h).
+#include "rigid/units.h"
 #include "rigid/free_body.h"
 
 #include <catch2/catch.hpp>
@@ -11,7 +12,6 @@ using namespace rigid;
 using Catch::Matchers::Contains;
 
 namespace {
-constexpr double kPi = 3.141592653589793;
 }
 
 TEST_CASE("free body: moments must be positive, finite and obey the triangle inequality") {

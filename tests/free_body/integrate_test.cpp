@@ -1,5 +1,6 @@
 // The integrators (integrate.h, splitting.h): order by step halving, invariants,
 // agreement with the exact motion within their tolerance, and bad input.
+#include "rigid/units.h"
 #include "rigid/integrate.h"
 
 #include <algorithm>
@@ -17,7 +18,6 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-constexpr double kPi = 3.141592653589793;
 const PrincipalMoments kEllipsoid{kPi, 2 * kPi, 13 * kPi / 5};  // the text's, section 5.1
 const Eigen::Vector3d kOmega0(1, 1, 1);
 const Eigen::Quaterniond kQ0 = axis_angle(Eigen::Vector3d(1, 2, 3).normalized(), 0.3);
