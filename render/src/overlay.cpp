@@ -74,6 +74,15 @@ ScreenRect text_box(const TextExtent& e, double x, double y, HAlign h, VAlign v)
 
 // ---- Title -------------------------------------------------------------------
 
+double fitting_size(std::string_view markup, double size, double max_width) {
+  double w = measure_text(markup, size).width;
+  for (int k = 0; k < 8 && w > max_width && size > 1; ++k) {
+    size = std::min(size * max_width / w, size - 0.5);
+    w = measure_text(markup, size).width;
+  }
+  return size;
+}
+
 std::vector<std::string> split_title(std::string_view m, double size) {
   // Candidate break points: the index of the mark of a ", " or ": " at depth 0.
   std::vector<std::size_t> marks;
@@ -112,12 +121,10 @@ TitleBlock layout_title(const std::string& markup, double size, double left, dou
     std::vector<std::string> two = split_title(markup, size);
     if (!two.empty()) t.lines = std::move(two);
   }
-  double widest = 0;
-  for (const std::string& l : t.lines) widest = std::max(widest, measure_text(l, size).width);
-  t.size = widest > room ? size * room / widest : size;
+  t.size = size;
+  for (const std::string& l : t.lines) t.size = std::min(t.size, fitting_size(l, size, room));
   // Lines a tenth of a text height apart.
-  double height = 0;
-  widest = 0;
+  double height = 0, widest = 0;
   for (const std::string& l : t.lines) {
     const TextExtent e = measure_text(l, t.size);
     widest = std::max(widest, e.width);

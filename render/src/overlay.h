@@ -55,6 +55,10 @@ DashPattern dash_pattern(Dash dash, double width, const Style& st);
 /// Draws a marker symbol of a diameter centred at (x, y).
 void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c);
 
+/// The largest font size up to `size` at which markup fits in max_width (glyphs snap to whole
+/// pixel sizes, so a proportional shrink alone can overshoot).
+double fitting_size(std::string_view markup, double size, double max_width);
+
 /// A title laid out: one or two lines at a size, in a box.
 struct TitleBlock {
   std::vector<std::string> lines;

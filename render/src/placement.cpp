@@ -123,15 +123,28 @@ std::vector<ScreenRect> boxes_around(double x, double y, double w, double h, dou
 
 Placement choose_place(const std::vector<ScreenRect>& candidates, const Occupancy& grid,
                        const ScreenRect& bounds, const std::vector<ScreenRect>& taken) {
+  // Area shared with the boxes taken: zero for an acceptable place.
+  auto clash = [&](const ScreenRect& c) {
+    double area = 0;
+    for (const ScreenRect& t : taken)
+      if (t.overlaps(c))
+        area += (std::min(c.x1, t.x1) - std::max(c.x0, t.x0)) * (std::min(c.y1, t.y1) - std::max(c.y0, t.y0));
+    return area;
+  };
   Placement best;
+  double best_clash = 0;
   for (const ScreenRect& c : candidates) {
     if (!bounds.contains(c)) continue;
-    if (std::any_of(taken.begin(), taken.end(), [&](const ScreenRect& t) { return t.overlaps(c); }))
-      continue;
+    const double k = clash(c);
     const Cover cover = grid.cover(c);
-    if (!best.found || cover < best.cover) best = {c, cover, true};
-    if (cover.clear()) break;
+    // Clear of other text first, then the least data covered.
+    if (!best.found || k < best_clash || (k == best_clash && cover < best.cover)) {
+      best = {c, cover, true};
+      best_clash = k;
+    }
+    if (k == 0 && cover.clear()) break;
   }
+  best.found = best.found && best_clash == 0;
   return best;
 }
 

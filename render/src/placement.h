@@ -57,8 +57,8 @@ class Occupancy {
 /// right, left, above, below, then above-right, above-left, below-right, below-left.
 std::vector<ScreenRect> boxes_around(double x, double y, double w, double h, double distance);
 
-/// A chosen place and what it covers; found is false when no candidate was inside its bounds
-/// and clear of the boxes taken.
+/// A chosen place and what it covers; found is false when every candidate inside the bounds
+/// overlaps a box taken (box is then the one overlapping least) or none is inside (box empty).
 struct Placement {
   ScreenRect box;
   Cover cover;
@@ -66,7 +66,8 @@ struct Placement {
 };
 
 /// The first candidate inside `bounds`, overlapping none of `taken`, that covers nothing;
-/// else, of those inside and clear of `taken`, the one covering the least (earliest on ties).
+/// else, of those inside and clear of `taken`, the one covering the least (earliest on ties);
+/// else the one inside overlapping `taken` the least.
 Placement choose_place(const std::vector<ScreenRect>& candidates, const Occupancy& grid,
                        const ScreenRect& bounds, const std::vector<ScreenRect>& taken);
 

@@ -31,12 +31,6 @@ double clamp_safe(double v, double lo, double hi) {
   return lo <= hi ? std::clamp(v, lo, hi) : 0.5 * (lo + hi);
 }
 
-// A font size no larger than `size` at which text fits into max_width.
-double fit_size(const std::string& text, double size, double max_width) {
-  const double w = measure_text(text, size).width;
-  return w > max_width && w > 0 ? size * max_width / w : size;
-}
-
 struct Range {
   double lo = kNaN, hi = kNaN;
   void add(double v) {
@@ -265,8 +259,8 @@ class PanelPlan {
       const Ticks yt = ticks_fitting(pn_.y, ym_, false);
       const TextExtent xe = tick_extent(xt), ye = tick_extent(yt);
       // Axis labels shrink if longer than their side of the cell.
-      xlabel_size_ = fit_size(pn_.x.label, st_.axis_label_font, cell.width() - 2 * st_.pad);
-      ylabel_size_ = fit_size(pn_.y.label, st_.axis_label_font, cell.height() - 2 * st_.pad);
+      xlabel_size_ = detail::fitting_size(pn_.x.label, st_.axis_label_font, cell.width() - 2 * st_.pad);
+      ylabel_size_ = detail::fitting_size(pn_.y.label, st_.axis_label_font, cell.height() - 2 * st_.pad);
       const double ylabel_h = pn_.y.label.empty() ? 0 : measure_text(pn_.y.label, ylabel_size_).height() + st_.pad;
       const double xlabel_h = pn_.x.label.empty() ? 0 : measure_text(pn_.x.label, xlabel_size_).height() + st_.pad;
       const double title_bottom = pn_.title.empty() ? cell.y0 + st_.pad : title_.box.y1 + 0.8 * st_.pad;
@@ -372,7 +366,7 @@ class PanelPlan {
              {rect_.x0 + end, y + gap, rect_.x0 + end + w, y + gap + h}};
       }
       const detail::Placement pl = detail::choose_place(c, grid, rect_, taken);
-      ref_boxes_[k] = pl.found ? pl.box : c.front();
+      ref_boxes_[k] = pl.box.empty() ? c.front() : pl.box;
       taken.push_back(ref_boxes_[k]);
     }
   }
@@ -462,14 +456,16 @@ class PanelPlan {
       const TextExtent e = measure_text(a.text, st_.note_font);
       const P3 q = map(a.x, a.y);
       // With an arrow the text stands off far enough for the arrow to show.
-      const double d1 = a.arrow ? 3.0 * st_.pad : 0.5 * st_.pad, d2 = a.arrow ? 6.0 * st_.pad : 2.0 * st_.pad;
-      std::vector<ScreenRect> c = detail::boxes_around(q.x(), q.y(), e.width, e.height(), d1);
-      const std::vector<ScreenRect> far = detail::boxes_around(q.x(), q.y(), e.width, e.height(), d2);
-      c.insert(c.end(), far.begin(), far.end());
+      std::vector<ScreenRect> c;
+      for (double d : a.arrow ? std::vector<double>{3, 6, 10} : std::vector<double>{0.5, 2, 4}) {
+        const std::vector<ScreenRect> ring = detail::boxes_around(q.x(), q.y(), e.width, e.height(), d * st_.pad);
+        c.insert(c.end(), ring.begin(), ring.end());
+      }
       const detail::Placement pl = detail::choose_place(c, grid, bounds, taken);
-      ScreenRect box = pl.found ? pl.box : c.front();
-      if (!pl.found) {
-        // Nowhere clear: keep the text inside the frame at least.
+      ScreenRect box = pl.box;
+      if (box.empty()) {
+        // No place inside the frame (a text wider than it): keep what fits in view.
+        box = c.front();
         const double dx = clamp_safe(box.x0, bounds.x0, bounds.x1 - box.width()) - box.x0;
         const double dy = clamp_safe(box.y0, bounds.y0, bounds.y1 - box.height()) - box.y0;
         box = {box.x0 + dx, box.y0 + dy, box.x1 + dx, box.y1 + dy};

@@ -86,11 +86,11 @@ Occupancy scene_grid(const Scene3D& scene, const View& view, const Style& st) {
 }
 
 // Where a label's text may go about its projected point: on it, then beside it (right,
-// left, above, below, diagonally), near and then a little farther.
+// left, above, below, diagonally), near and then farther.
 std::vector<ScreenRect> label_candidates(const Vector2d& q, const TextExtent& e, const Style& st) {
   const double w = e.width, h = e.height();
   std::vector<ScreenRect> c{{q.x() - 0.5 * w, q.y() - 0.5 * h, q.x() + 0.5 * w, q.y() + 0.5 * h}};
-  for (double d : {0.5 * st.pad, 2.0 * st.pad}) {
+  for (double d : {0.5 * st.pad, 2.0 * st.pad, 4.0 * st.pad}) {
     const std::vector<ScreenRect> ring = boxes_around(q.x(), q.y(), w, h, d);
     c.insert(c.end(), ring.begin(), ring.end());
   }
@@ -129,12 +129,12 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height) {
   fr.view = make_view(fr.camera, width, height, znear, zfar);
 
   // Labels in order, each clear of the geometry where it can be, never over the title,
-  // the legend or an earlier label, and inside the image.
+  // the legend or an earlier label, and inside the region the scene was fitted into.
   const Occupancy grid = scene_grid(scene, fr.view, st);
   std::vector<ScreenRect> taken;
   if (!fr.title.box.empty()) taken.push_back(fr.title.box);
   if (!fr.legend.empty()) taken.push_back(fr.legend.grown(0.5 * st.pad));
-  const ScreenRect bounds{st.pad, st.pad, width - st.pad, height - st.pad};
+  const ScreenRect& bounds = fr.region;
   for (std::size_t k = 0; k < scene.labels().size(); ++k) {
     const Label3D& l = scene.labels()[k];
     const Eigen::Vector4d s = fr.view.project(l.position);
@@ -144,11 +144,10 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height) {
     }
     const std::vector<ScreenRect> c = label_candidates({s.x(), s.y()}, extents[k], st);
     const Placement pl = choose_place(c, grid, bounds, taken);
-    ScreenRect box = c.front();
-    if (pl.found) {
-      box = pl.box;
-    } else {
-      // Nowhere free: on the point, kept inside the image.
+    ScreenRect box = pl.box;
+    if (box.empty()) {
+      // No candidate inside the region (text wider than it): on the point, kept in view.
+      box = c.front();
       const double dx = std::clamp(box.x0, bounds.x0, std::max(bounds.x0, bounds.x1 - box.width())) - box.x0;
       const double dy = std::clamp(box.y0, bounds.y0, std::max(bounds.y0, bounds.y1 - box.height())) - box.y0;
       box = {box.x0 + dx, box.y0 + dy, box.x1 + dx, box.y1 + dy};
