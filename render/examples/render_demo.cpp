@@ -72,7 +72,7 @@ rr::Scene3D sample_scene() {
   // A polhode-like curve on the inner ellipsoid.
   std::vector<Eigen::Vector3d> curve;
   for (int i = 0; i <= 400; ++i) {
-    const double a = 2 * 3.14159265358979 * i / 400;
+    const double a = 2 * EIGEN_PI * i / 400;
     Eigen::Vector3d d(0.45 * std::cos(a), 0.5 * std::sin(a), 1.0);
     d = d.cwiseQuotient(Eigen::Vector3d(1.25, 0.95, 0.8));
     d.normalize();

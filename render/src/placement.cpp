@@ -121,6 +121,12 @@ std::vector<ScreenRect> boxes_around(double x, double y, double w, double h, dou
   };
 }
 
+ScreenRect keep_inside(const ScreenRect& box, const ScreenRect& bounds) {
+  const double dx = std::clamp(box.x0, bounds.x0, std::max(bounds.x0, bounds.x1 - box.width())) - box.x0;
+  const double dy = std::clamp(box.y0, bounds.y0, std::max(bounds.y0, bounds.y1 - box.height())) - box.y0;
+  return {box.x0 + dx, box.y0 + dy, box.x1 + dx, box.y1 + dy};
+}
+
 Placement choose_place(const std::vector<ScreenRect>& candidates, const Occupancy& grid,
                        const ScreenRect& bounds, const std::vector<ScreenRect>& taken) {
   // Area shared with the boxes taken: zero for an acceptable place.

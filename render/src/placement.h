@@ -57,6 +57,10 @@ class Occupancy {
 /// right, left, above, below, then above-right, above-left, below-right, below-left.
 std::vector<ScreenRect> boxes_around(double x, double y, double w, double h, double distance);
 
+/// The box moved (not resized) the least to lie inside bounds; left- and top-aligned in
+/// them when it is larger.
+ScreenRect keep_inside(const ScreenRect& box, const ScreenRect& bounds);
+
 /// A chosen place and what it covers; found is false when every candidate inside the bounds
 /// overlaps a box taken (box is then the one overlapping least) or none is inside (box empty).
 struct Placement {

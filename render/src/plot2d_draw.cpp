@@ -462,14 +462,8 @@ class PanelPlan {
         c.insert(c.end(), ring.begin(), ring.end());
       }
       const detail::Placement pl = detail::choose_place(c, grid, bounds, taken);
-      ScreenRect box = pl.box;
-      if (box.empty()) {
-        // No place inside the frame (a text wider than it): keep what fits in view.
-        box = c.front();
-        const double dx = clamp_safe(box.x0, bounds.x0, bounds.x1 - box.width()) - box.x0;
-        const double dy = clamp_safe(box.y0, bounds.y0, bounds.y1 - box.height()) - box.y0;
-        box = {box.x0 + dx, box.y0 + dy, box.x1 + dx, box.y1 + dy};
-      }
+      // No place inside the frame (a text wider than it): keep what fits in view.
+      const ScreenRect box = pl.box.empty() ? detail::keep_inside(c.front(), bounds) : pl.box;
       note_boxes_.push_back(box);
       taken.push_back(box.grown(0.3 * st_.pad));
     }

@@ -23,6 +23,41 @@ using Eigen::Affine3d;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
+// The path of a tube thinned to what the screen shows: a point is dropped while
+// every point between its neighbours kept stays within kTubePathError pixels of
+// the straight segment that replaces them (measured in 3D, in pixels at the
+// point's depth, so a chord cannot sink into a surface the tube lies on even
+// where the path turns towards the camera), and no segment grows past
+// kTubeSegmentMax pixels (so shading along the tube stays smooth). Each dropped
+// point saves a ring of triangles, which llvmpipe sets up and rasterises one
+// by one; a polhode of 240 samples keeps about a third of them.
+std::vector<Vector3d> thin_path(const std::vector<Vector3d>& path, const View& view) {
+  constexpr double kTubePathError = 0.2, kTubeSegmentMax = 40.0;
+  if (path.size() < 3) return path;
+  for (const Vector3d& p : path)
+    if (view.project(p).w() < 0) return path;  // behind the camera: keep every point
+  auto off_chord = [&](const Vector3d& a, const Vector3d& b, const Vector3d& q) {
+    const Vector3d d = b - a;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((q - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return view.pixels((a + t * d - q).norm(), q);
+  };
+  std::vector<Vector3d> out{path.front()};
+  std::size_t anchor = 0;
+  for (std::size_t j = 2; j < path.size(); ++j) {
+    const Vector3d& a = path[anchor];
+    bool ok = view.pixels((path[j] - a).norm(), a) <= kTubeSegmentMax;
+    for (std::size_t k = anchor + 1; ok && k < j; ++k)
+      ok = off_chord(a, path[j], path[k]) <= kTubePathError;
+    if (!ok) {
+      anchor = j - 1;
+      out.push_back(path[anchor]);
+    }
+  }
+  out.push_back(path.back());
+  return out;
+}
+
 // Draws the surfaces and lines of a framed scene into the bound target. Tessellation
 // follows each object's on-screen size.
 void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {

@@ -57,7 +57,4 @@ Camera fitted(Camera cam, std::vector<FitPoint> points, const ScreenRect& region
 /// Depth range of the points seen from a camera, padded a little.
 std::pair<double, double> depth_range(const Camera& cam, const std::vector<FitPoint>& points);
 
-/// A tube's path thinned to what the screen shows (see scene_fit.cpp).
-std::vector<Eigen::Vector3d> thin_path(const std::vector<Eigen::Vector3d>& path, const View& view);
-
 }  // namespace rigid::render::detail

@@ -144,14 +144,8 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height) {
     }
     const std::vector<ScreenRect> c = label_candidates({s.x(), s.y()}, extents[k], st);
     const Placement pl = choose_place(c, grid, bounds, taken);
-    ScreenRect box = pl.box;
-    if (box.empty()) {
-      // No candidate inside the region (text wider than it): on the point, kept in view.
-      box = c.front();
-      const double dx = std::clamp(box.x0, bounds.x0, std::max(bounds.x0, bounds.x1 - box.width())) - box.x0;
-      const double dy = std::clamp(box.y0, bounds.y0, std::max(bounds.y0, bounds.y1 - box.height())) - box.y0;
-      box = {box.x0 + dx, box.y0 + dy, box.x1 + dx, box.y1 + dy};
-    }
+    // No candidate inside the region (text wider than it): on the point, kept in view.
+    const ScreenRect box = pl.box.empty() ? keep_inside(c.front(), bounds) : pl.box;
     fr.labels.push_back(box);
     taken.push_back(box.grown(0.25 * st.pad));
   }
