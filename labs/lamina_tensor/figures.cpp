@@ -79,9 +79,7 @@ render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
   plot.title = "moment about an axis in the x-y plane";
   render::Panel& panel = plot.panel();
   panel.x = {"axis angle \\alpha from x (\\deg)", render::Scale::kLinear, -90, 90};
-  const double top = *std::max_element(moment.begin(), moment.end());
-  panel.legend = render::LegendPlace::kBottomLeft;
-  panel.y = {"moment n\u00b7I\u00b7n (kg m^2)", render::Scale::kLinear, 0.0, 1.15 * top};
+  panel.y = {"moment n\u00b7I\u00b7n (kg m^2)", render::Scale::kLinear, 0.0};
   panel.add_line(alpha_deg, moment, "I(\\alpha) = n\u00b7I\u00b7n").color = render::kBlue;
 
   const InPlaneAxes axes = in_plane_principal_axes(I);
@@ -90,12 +88,7 @@ render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
     double deg = rad_to_deg(theta);
     if (deg > 90) deg -= 180;
     panel.add_ref_line(deg, true, fmt::format("principal axis {:.1f}\\deg", deg));
-    // The value beside its extremum, clear of the dashed line's own label at the top:
-    // below and right of the maximum, above and left of the minimum.
-    const bool maximum = value == std::max(axes.moment, axes.moment_other);
-    render::Annotation& note = panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
-    note.offset_x = maximum ? 110 : -130;
-    note.offset_y = maximum ? 80 : -70;
+    panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
   }
   const Vec3 n = in.axis.stableNormalized();
   if (std::abs(n.z()) < 1e-12) {

@@ -113,15 +113,6 @@ render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySamp
   for (int i = 0; i < 3; ++i) {
     left.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = render::palette_color(i);
   }
-  // Room above the curves for the legend, so it hides none of them.
-  double lo = 0.0, hi = 0.0;
-  for (const auto& wi : w) {
-    lo = std::min(lo, *std::min_element(wi.begin(), wi.end()));
-    hi = std::max(hi, *std::max_element(wi.begin(), wi.end()));
-  }
-  left.y.min = lo - 0.04 * (hi - lo);
-  left.y.max = hi + 0.45 * (hi - lo);
-  left.legend = render::LegendPlace::kTopRight;
   render::Panel& right = plot.panel(0, 1);
   right.title = "phase plot";
   right.x.label = "\\omega_1 (rad/s)";
@@ -130,10 +121,6 @@ render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySamp
   right.add_line(w[0], w[2], "\\omega_3 against \\omega_1").color = render::palette_color(2);
   right.add_points({omega0(0), omega0(0)}, {omega0(1), omega0(2)}, "t = 0").color = render::kBlack;
   right.equal_aspect = true;
-  // The same headroom for the phase plot's legend.
-  right.y.min = lo - 0.04 * (hi - lo);
-  right.y.max = hi + 0.6 * (hi - lo);
-  right.legend = render::LegendPlace::kTopRight;
   return plot;
 }
 
@@ -146,11 +133,11 @@ render::Plot2D integrators_plot(const std::vector<double>& times,
   render::Panel& error = plot.panel(0, 0);
   error.title = "error in \\omega";
   error.x.label = "t (s)";
-  error.y = {"|\\omega - \\omega_{exact}| / |\\omega_0|", render::Scale::kLog10, 1e-17, 1e3};
+  error.y = {"|\\omega - \\omega_{exact}| / |\\omega_0|", render::Scale::kLog10, 1e-17};
   render::Panel& energy = plot.panel(0, 1);
   energy.title = "energy error";
   energy.x.label = "t (s)";
-  energy.y = {"|T - T_0| / T_0", render::Scale::kLog10, 1e-17, 1e3};
+  energy.y = {"|T - T_0| / T_0", render::Scale::kLog10, 1e-17};
   // Zero errors have no logarithm: show them at a floor below double roundoff.
   // The first sample (t = 0) has no error to show on a log axis.
   const auto floored = [](const std::vector<double>& v) {
@@ -173,7 +160,6 @@ render::Plot2D integrators_plot(const std::vector<double>& times,
     a.color = b.color = render::palette_color(k);
     a.dash = b.dash = dashes[k % 6];
   }
-  error.legend = render::LegendPlace::kTopRight;
   energy.legend = render::LegendPlace::kNone;
   return plot;
 }

@@ -51,12 +51,8 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
   scene.add_arrow(Vec3::Zero(), length * L_shown, 0.03 * a, {render::kBlue}, "L before balancing");
   scene.add_arrow(Vec3::Zero(), length * 1.12 * axle, 0.03 * a, {render::kBluishGreen},
                   "\\omega along the axle");
-  render::Label3D L_label{length * 1.05 * L_shown, "L", render::kBlue};
-  L_label.offset_y = 36;
-  scene.add_label(L_label);
-  render::Label3D omega_label{length * 1.15 * axle, "\\omega", render::kBluishGreen};
-  omega_label.offset_y = -36;
-  scene.add_label(omega_label);
+  scene.add_label(length * 1.05 * L_shown, "L", render::kBlue);
+  scene.add_label(length * 1.15 * axle, "\\omega", render::kBluishGreen);
   scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"});
   return scene;
 }

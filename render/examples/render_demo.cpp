@@ -38,7 +38,7 @@ rr::Plot2D sample_plot() {
   a.add_line(t, w2, "\\omega_2").dash = rr::Dash::kDashed;
   a.add_line(t, w3, "\\omega_3");
   a.add_ref_line(0, false);
-  a.annotate(t[157], w1[157], "\\dot{\\theta} = 0").offset_y = -60;
+  a.annotate(t[157], w1[157], "\\dot{\\theta} = 0");
 
   rr::Panel& b = plot.panel(0, 1);
   b.title = "Energy drift";
@@ -72,7 +72,7 @@ rr::Scene3D sample_scene() {
   // A polhode-like curve on the inner ellipsoid.
   std::vector<Eigen::Vector3d> curve;
   for (int i = 0; i <= 400; ++i) {
-    const double a = 2 * 3.14159265358979 * i / 400;
+    const double a = 2 * EIGEN_PI * i / 400;
     Eigen::Vector3d d(0.45 * std::cos(a), 0.5 * std::sin(a), 1.0);
     d = d.cwiseQuotient(Eigen::Vector3d(1.25, 0.95, 0.8));
     d.normalize();
@@ -82,8 +82,7 @@ rr::Scene3D sample_scene() {
   scene.add_axes({0, 0, 0}, I3, 2.2, {"1", "2", "3"});
   scene.add_arrow({0, 0, 0}, {0.9, 0.6, 1.6}, 0.035, {rr::kBluishGreen}, "\\omega");
   scene.add_arrow({0, 0, 0}, {0.6, 1.1, 1.9}, 0.035, {rr::kReddishPurple}, "L");
-  scene.add_label(rr::Label3D{{0.9, 0.6, 1.6}, "\\omega", rr::kBluishGreen, 38, rr::HAlign::kLeft,
-                              rr::VAlign::kBottom, 8, -4});
+  scene.add_label({0.9, 0.6, 1.6}, "\\omega", rr::kBluishGreen);
   scene.add_cone({0, 0, 0}, {-1.4, -1.6, -0.6}, 0.5, {rr::kBlue, 0.9f}, "space cone");
   scene.add_disk({1.8, -1.4, -0.9}, {0, 0, 1}, 0.6, {rr::kYellow}, "disk");
   scene.add_polyline({{-2, -2, -1.2}, {2, -2, -1.2}, {2, 2, -1.2}, {-2, 2, -1.2}, {-2, -2, -1.2}},

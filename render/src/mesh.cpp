@@ -10,7 +10,6 @@ namespace rigid::render {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using V3 = Eigen::Vector3f;
 
 std::uint32_t add_vertex(Mesh& m, const V3& p, const V3& n) {
@@ -29,7 +28,7 @@ void add_cap(Mesh& m, int slices, float z, bool up) {
   const std::uint32_t c = add_vertex(m, V3(0, 0, z), n);
   const std::uint32_t first = static_cast<std::uint32_t>(m.positions.size());
   for (int i = 0; i <= slices; ++i) {
-    const double a = 2 * kPi * i / slices;
+    const double a = 2 * EIGEN_PI * i / slices;
     add_vertex(m, V3(float(std::cos(a)), float(std::sin(a)), z), n);
   }
   for (int i = 0; i < slices; ++i) {
@@ -45,9 +44,9 @@ Mesh make_sphere(int slices) {
   const int stacks = std::max(3, slices / 2);
   Mesh m;
   for (int j = 0; j <= stacks; ++j) {
-    const double th = kPi * j / stacks;
+    const double th = EIGEN_PI * j / stacks;
     for (int i = 0; i <= slices; ++i) {
-      const double ph = 2 * kPi * i / slices;
+      const double ph = 2 * EIGEN_PI * i / slices;
       const V3 p(float(std::sin(th) * std::cos(ph)), float(std::sin(th) * std::sin(ph)), float(std::cos(th)));
       add_vertex(m, p, p);
     }
@@ -68,7 +67,7 @@ Mesh make_cone(int slices) {
   // Side normals tilt up by 45° for the unit cone (radius 1, height 1); apex per segment.
   const float k = 1.0f / std::sqrt(2.0f);
   for (int i = 0; i < slices; ++i) {
-    const double a0 = 2 * kPi * i / slices, a1 = 2 * kPi * (i + 1) / slices, am = 0.5 * (a0 + a1);
+    const double a0 = 2 * EIGEN_PI * i / slices, a1 = 2 * EIGEN_PI * (i + 1) / slices, am = 0.5 * (a0 + a1);
     const V3 n0(float(std::cos(a0)) * k, float(std::sin(a0)) * k, k);
     const V3 n1(float(std::cos(a1)) * k, float(std::sin(a1)) * k, k);
     const V3 nm(float(std::cos(am)) * k, float(std::sin(am)) * k, k);
@@ -85,7 +84,7 @@ Mesh make_cylinder(int slices) {
   slices = std::max(slices, 6);
   Mesh m;
   for (int i = 0; i <= slices; ++i) {
-    const double a = 2 * kPi * i / slices;
+    const double a = 2 * EIGEN_PI * i / slices;
     const V3 n(float(std::cos(a)), float(std::sin(a)), 0);
     add_vertex(m, V3(n.x(), n.y(), 0), n);
     add_vertex(m, V3(n.x(), n.y(), 1), n);
@@ -138,9 +137,9 @@ Mesh make_torus(double minor, int major_segments, int minor_segments) {
   minor_segments = std::max(minor_segments, 6);
   Mesh m;
   for (int i = 0; i <= major_segments; ++i) {
-    const double u = 2 * kPi * i / major_segments;
+    const double u = 2 * EIGEN_PI * i / major_segments;
     for (int j = 0; j <= minor_segments; ++j) {
-      const double v = 2 * kPi * j / minor_segments;
+      const double v = 2 * EIGEN_PI * j / minor_segments;
       const V3 n(float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v)));
       const V3 c(float(std::cos(u)), float(std::sin(u)), 0);
       add_vertex(m, c + float(minor) * n, n);
@@ -194,7 +193,7 @@ Mesh make_tube(const std::vector<Eigen::Vector3d>& path_in, double radius, int s
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d b = tangent[i].cross(normals[i]);
     for (int j = 0; j <= sides; ++j) {
-      const double a = 2 * kPi * j / sides;
+      const double a = 2 * EIGEN_PI * j / sides;
       const Eigen::Vector3d d = std::cos(a) * normals[i] + std::sin(a) * b;
       add_vertex(m, (path[i] + radius * d).cast<float>(), d.cast<float>());
     }
@@ -214,7 +213,7 @@ Mesh make_tube(const std::vector<Eigen::Vector3d>& path_in, double radius, int s
     const auto c = add_vertex(m, path[i].cast<float>(), nn);
     const auto first = static_cast<std::uint32_t>(m.positions.size());
     for (int j = 0; j <= sides; ++j) {
-      const double a = 2 * kPi * j / sides;
+      const double a = 2 * EIGEN_PI * j / sides;
       add_vertex(m, (path[i] + radius * (std::cos(a) * normals[i] + std::sin(a) * b)).cast<float>(), nn);
     }
     for (int j = 0; j < sides; ++j) {
@@ -234,7 +233,7 @@ int segments_for_radius(double radius_px) {
   // 5 px tube 12.
   constexpr double kChordError = 0.2;
   const double r = std::max(radius_px, kChordError);
-  const double n = kPi / std::acos(std::max(1.0 - kChordError / r, -1.0));
+  const double n = EIGEN_PI / std::acos(std::max(1.0 - kChordError / r, -1.0));
   return std::clamp(static_cast<int>(std::ceil(n / 4.0)) * 4, 12, 160);
 }
 

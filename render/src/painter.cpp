@@ -15,7 +15,6 @@ namespace rigid::render::detail {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 const char* kVertexSrc = R"(#version 330 core
 in vec3 a_pos;
@@ -206,10 +205,10 @@ void Painter::convex(const std::vector<P3>& pts, Color color) {
 
 void Painter::disc(const P3& c, double radius, Color color) {
   // About 2 px per edge keeps discs round after MSAA.
-  const int n = std::clamp(static_cast<int>(2 * kPi * radius / 2.0), 12, 96);
+  const int n = std::clamp(static_cast<int>(2 * EIGEN_PI * radius / 2.0), 12, 96);
   P3 prev = c + P3(radius, 0, 0);
   for (int i = 1; i <= n; ++i) {
-    const double a = 2 * kPi * i / n;
+    const double a = 2 * EIGEN_PI * i / n;
     const P3 p = c + P3(radius * std::cos(a), radius * std::sin(a), 0);
     triangle(c, prev, p, color);
     prev = p;

@@ -1,12 +1,12 @@
-// PNG output and input through libpng, written atomically.
+// PNG output and input through libpng, written atomically (atomic_file.h).
 #include "rigid/render/png.h"
 
+#include "rigid/render/atomic_file.h"
+
 #include <png.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <csetjmp>
-#include <sys/stat.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -101,34 +101,11 @@ void write_png(const Image& img, const std::string& path) {
   if (img.width <= 0 || img.height <= 0 ||
       img.rgb.size() != static_cast<std::size_t>(img.width) * img.height * 3)
     throw std::invalid_argument("write_png: image buffer does not match its size");
-  // A temporary in the same directory, so rename() is atomic.
-  std::string tmp = path + ".tmp-XXXXXX";
-  const int fd = mkstemp(tmp.data());
-  if (fd < 0)
-    throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-  // mkstemp makes the file private (0600); a figure is an ordinary file (0644 less the umask).
-  const mode_t mask = umask(0);
-  umask(mask);
-  fchmod(fd, 0666 & ~mask);
-  std::FILE* f = fdopen(fd, "wb");
-  if (f == nullptr) {
-    const int e = errno;
-    close(fd);
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + std::strerror(e));
-  }
   std::vector<const std::uint8_t*> rows(img.height);
   for (int y = 0; y < img.height; ++y) rows[y] = img.at(0, y);
-  const char* err = encode(f, img, rows.data());
-  const bool flushed = std::fflush(f) == 0;
-  const int e = errno;
-  const bool closed = std::fclose(f) == 0;
-  if (err == nullptr && (!flushed || !closed)) err = std::strerror(e);
-  if (err == nullptr && std::rename(tmp.c_str(), path.c_str()) != 0) err = std::strerror(errno);
-  if (err != nullptr) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + err);
-  }
+  write_file_atomically(path, [&](std::FILE* f) {
+    if (const char* err = encode(f, img, rows.data())) throw std::runtime_error(err);
+  });
 }
 
 Image read_png(const std::string& path) {

@@ -82,19 +82,23 @@ TEST_CASE("plot2d: drawn text has about its measured extent", "[render][plot2d]"
   p.x.grid = p.y.grid = false;
   Annotation& a = p.annotate(0.5, 0.5, "0123456789");
   a.arrow = false;
-  a.offset_x = a.offset_y = 0;
-  Image img = plot.render(1600, 1200);
-  // Blank out everything but a box around the centre, then measure the ink.
+  const Image img = plot.render(1600, 1200);
+  // Blank out everything but the annotation's box (a few px around), then measure the ink.
+  const ScreenRect box = plot.layout(1600, 1200).panels.at(0).annotations.at(0);
   const double w = measure_text("0123456789", 27).width;  // annotations use 27 px at 1600×1200
+  CHECK(box.width() == Approx(w).margin(0.5));
   Image crop = img;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
-      if (std::abs(x - 780) > w || std::abs(y - 600) > 60) std::fill_n(crop.at(x, y), 3, 255);
+      if (!box.grown(4).contains(x, y)) std::fill_n(crop.at(x, y), 3, 255);
   const Ink k = ink(crop);
   REQUIRE(k.x1 > k.x0);
   // Ink is the advance width less the side bearings of '0' and '9' (a few px).
   CHECK(k.x1 - k.x0 + 1 <= w + 1);
   CHECK(k.x1 - k.x0 + 1 >= w - 6);
+  // The text's ink lies in its box: placement and drawing agree.
+  CHECK(k.x0 >= box.x0 - 1);
+  CHECK(k.x1 <= box.x1 + 1);
 }
 
 TEST_CASE("plot2d: nothing is drawn outside the image at 800x600 with long labels", "[render][plot2d]") {

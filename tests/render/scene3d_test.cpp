@@ -112,9 +112,7 @@ Scene3D bar_scene(const Eigen::Vector3d& axis) {
   scene.add_sphere(-1.5 * axis, 0.5, {kVermillion});
   scene.add_sphere(0.3 * Eigen::Vector3d::UnitY(), 0.1, {kBlue}, "marker");
   scene.add_polyline({{0, 0, 0}, {0, -0.3, 0}}, kBluishGreen, 3.5, "a line");
-  Label3D low{-2.3 * axis, "low end"};
-  low.halign = HAlign::kRight;
-  scene.add_label(low);
+  scene.add_label(-2.3 * axis, "low end");
   scene.add_label(2.3 * axis, "high end");
   return scene;
 }

@@ -5,9 +5,17 @@
 // hands it series computed elsewhere. Rendering draws antialiased thick lines
 // (triangle strips, 4× MSAA) with no depth buffer and no lighting.
 //
-// Sizes (line widths, marker and font sizes) are given in pixels at the
-// reference 1600×1200 figure and scale with the image, so a figure looks the
-// same from 800×600 to 1600×1200; lines never get thinner than 2 px.
+// Sizes (line widths, marker sizes) are given in pixels at the reference
+// 1600×1200 figure and scale with the image, so a figure looks the same from
+// 800×600 to 1600×1200; lines never get thinner than 2 px. Fonts, paddings and
+// the legend's look are the one figure style shared with Scene3D.
+//
+// Nothing here takes a pixel offset: the legend, annotations and reference-line
+// labels place themselves clear of the data and of each other.
+//
+// This header is the description library (rigid::render, Eigen only);
+// render(), save() and layout() are defined in the drawing library
+// (rigid::render_gl) and exist only in builds with the renderer.
 #pragma once
 
 #include <limits>
@@ -16,6 +24,7 @@
 
 #include "rigid/render/image.h"
 #include "rigid/render/palette.h"
+#include "rigid/render/rect.h"
 
 namespace rigid::render {
 
@@ -25,7 +34,10 @@ enum class Scale { kLinear, kLog10 };
 enum class Dash { kSolid, kDashed, kDotted, kDashDot };
 /// Symbol drawn at each data point.
 enum class Marker { kNone, kCircle, kSquare, kTriangle };
-/// Where a legend box goes; kAuto picks the corner covering the least data.
+/// Where a legend box goes. kAuto (like matplotlib's loc="best") takes the place among the
+/// corners, the top and bottom centre and the middle of the sides whose box covers the least
+/// data; if each covers some, the y axis grows at its free end (top or bottom, not one the
+/// user fixed) just enough for the box to sit clear of the data.
 enum class LegendPlace { kAuto, kTopRight, kTopLeft, kBottomRight, kBottomLeft, kNone };
 
 /// One axis of a panel; min/max left NaN are taken from the data.
@@ -75,11 +87,11 @@ struct RefLine {
   Dash dash = Dash::kDashed;
 };
 
-/// Text at a data point, offset in reference pixels, optionally with an arrow to the point.
+/// Text about a data point, optionally with an arrow to it; the text places itself near the
+/// point, clear of the data, the legend, other labels and the panel's frame.
 struct Annotation {
   double x = 0, y = 0;
   std::string text;
-  double offset_x = 40, offset_y = -40;  ///< text position relative to the point (y down)
   bool arrow = true;
   Color color = kTextColor;
 };
@@ -128,6 +140,26 @@ class Plot2D {
 
   /// Figure title over all panels (text.h markup); empty for none.
   std::string title;
+
+  /// Where one panel's parts land at a size, in pixels.
+  struct PanelLayout {
+    ScreenRect frame;   ///< the plot area inside the axes
+    ScreenRect title;   ///< the panel title (empty when none)
+    ScreenRect legend;  ///< the legend box (empty when none is drawn)
+    std::vector<ScreenRect> annotations;  ///< each annotation's text, in the panel's order
+    std::vector<ScreenRect> ref_labels;   ///< each labelled reference line's label, in order
+    double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;  ///< the axis ranges drawn
+  };
+  /// Where the figure's parts land at a size: the title (one or two lines, maybe shrunk) and
+  /// every panel, row by row.
+  struct Layout {
+    ScreenRect title;
+    int title_lines = 0;
+    double title_size = 0;  ///< the title's font size in pixels
+    std::vector<PanelLayout> panels;
+  };
+  /// The layout render() draws at width × height (needs fonts, not a GL context).
+  Layout layout(int width = 1600, int height = 1200) const;
 
   /// Draws the figure into an image of width × height pixels (makes the GL context on first use).
   Image render(int width = 1600, int height = 1200) const;

@@ -6,7 +6,13 @@
 // energy ellipsoid inside a momentum ellipsoid. The scene knows only
 // geometry: a lab converts its physics into points, directions and sizes.
 // Coordinates are right-handed; the default camera looks at the origin with
-// +z up. Rendering uses a depth buffer and 4× MSAA.
+// +z up. Rendering uses a depth buffer and 4× MSAA. The title and legend share
+// Plot2D's style; labels place themselves beside their points, clear of the
+// drawn geometry, of each other and of the title and legend.
+//
+// This header is the description library (rigid::render, Eigen only);
+// render(), save() and layout() are defined in the drawing library
+// (rigid::render_gl) and exist only in builds with the renderer.
 #pragma once
 
 #include <array>
@@ -18,7 +24,7 @@
 #include "rigid/render/image.h"
 #include "rigid/render/mesh.h"
 #include "rigid/render/palette.h"
-#include "rigid/render/text.h"
+#include "rigid/render/rect.h"
 
 namespace rigid::render {
 
@@ -37,12 +43,6 @@ struct Camera {
   bool fit = true;
 };
 
-/// A rectangle in pixels, y down; empty when x1 <= x0 or y1 <= y0.
-struct ScreenRect {
-  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  bool empty() const { return !(x1 > x0 && y1 > y0); }
-};
-
 /// Surface appearance; opacity < 1 makes the surface translucent.
 struct Material {
   Color color = kAutoColor;
@@ -51,15 +51,12 @@ struct Material {
   float shininess = 48.0f;  ///< Blinn-Phong exponent
 };
 
-/// Text anchored at a 3D point, offset on screen by reference pixels (y down).
+/// Text naming a 3D point: drawn on the point where that is clear, else beside it (right,
+/// left, above, below, diagonally), wherever it covers the least geometry and no other text.
 struct Label3D {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   std::string text;
   Color color = kTextColor;
-  double size = 34;  ///< font size in reference pixels (1600×1200)
-  HAlign halign = HAlign::kCenter;
-  VAlign valign = VAlign::kCenter;
-  double offset_x = 0, offset_y = 0;
 };
 
 /// A scene of shapes, lines and labels rendered to an image.
@@ -110,12 +107,17 @@ class Scene3D {
   /// Convenience: text at a point, centred.
   void add_label(const Eigen::Vector3d& position, std::string text, Color color = kTextColor);
 
-  /// Where the overlay and the scene go at a size: the title band, the legend box (empty when
-  /// there is none) and the region the fitted scene fills, a few % inside the image's edges;
-  /// the scene also keeps that margin from the legend box.
+  /// Where the overlay and the scene go at a size: the title (one or two lines), the legend
+  /// box (empty when there is none), the region the fitted scene fills, the figure style's
+  /// margin inside the image's edges (the scene also keeps that margin from the legend box),
+  /// and each label's text box (empty if its point is behind the camera).
   struct Layout {
     ScreenRect title, legend, region;
+    int title_lines = 0;
+    double title_size = 0;  ///< the title's font size in pixels
+    std::vector<ScreenRect> labels;
   };
+  /// The layout render() draws at width × height (needs fonts, not a GL context).
   Layout layout(int width, int height) const;
 
   /// Draws the scene at width × height pixels (makes the GL context on first use).
@@ -141,7 +143,12 @@ class Scene3D {
     double width;
     std::string label;
   };
+  /// The surfaces added so far, in order.
   const std::vector<Object>& objects() const { return objects_; }
+  /// The screen-space polylines added so far, in order.
+  const std::vector<Polyline>& polylines() const { return polylines_; }
+  /// The labels added so far (add_axes adds one per axis), in order.
+  const std::vector<Label3D>& labels() const { return labels_; }
 
  private:
   Material resolve(Material m);

@@ -1,0 +1,188 @@
+// The figure style, the title and the legend of every plot and scene.
+#include "overlay.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace rigid::render::detail {
+
+Style figure_style(int width, int height) {
+  Style st;
+  st.s = std::min(width / 1600.0, height / 1200.0);
+  st.f = std::pow(st.s, 0.7);
+  const double f = st.f, s = st.s;
+  st.title_font = 40 * f;
+  st.panel_title_font = 33 * f;
+  st.axis_label_font = 31 * f;
+  st.tick_font = 27 * f;
+  st.legend_font = 27 * f;
+  st.note_font = 27 * f;
+  st.label_font = 34 * f;
+  st.pad = 14 * f;
+  // Two paddings: the title, a plot's axis labels and a scene's geometry all
+  // keep this much white between themselves and the image's edge.
+  st.margin = 2 * st.pad;
+  st.tick_len = 9 * s;
+  st.frame_width = std::max(1.0, 1.6 * s);
+  st.grid_width = std::max(1.0, 1.5 * s);
+  st.swatch = 52 * f;
+  st.swatch_gap = 0.7 * st.pad;
+  st.legend_padding = 0.8 * st.pad;
+  st.row_gap = 0.35 * st.pad;
+  st.legend_edge = std::max(1.0, 1.2 * s);
+  return st;
+}
+
+double Style::line(double ref) const { return std::max(2.0, ref * s); }
+
+double Style::marker(double ref) const { return std::max(5.0, ref * s); }
+
+DashPattern dash_pattern(Dash d, double width, const Style& st) {
+  const double u = st.s;
+  switch (d) {
+    case Dash::kSolid: return {};
+    case Dash::kDashed: return {std::max(6.0, 18 * u), std::max(4.0, 11 * u) + width};
+    case Dash::kDotted: return {0.01, std::max(3.0, 2.2 * width)};
+    case Dash::kDashDot:
+      return {std::max(6.0, 18 * u), std::max(3.0, 8 * u) + width, 0.01, std::max(3.0, 8 * u) + width};
+  }
+  return {};
+}
+
+void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c) {
+  const double r = 0.5 * size;
+  switch (m) {
+    case Marker::kNone: break;
+    case Marker::kCircle: p.disc({x, y, 0}, r, c); break;
+    case Marker::kSquare: p.rect(x - 0.85 * r, y - 0.85 * r, x + 0.85 * r, y + 0.85 * r, c); break;
+    case Marker::kTriangle:
+      p.triangle({x, y - 1.15 * r, 0}, {x - r, y + 0.6 * r, 0}, {x + r, y + 0.6 * r, 0}, c);
+      break;
+  }
+}
+
+ScreenRect text_box(const TextExtent& e, double x, double y, HAlign h, VAlign v) {
+  const double x0 = h == HAlign::kLeft ? x : h == HAlign::kCenter ? x - 0.5 * e.width : x - e.width;
+  // The baseline's distance below the anchor, as Painter::text computes it.
+  const double base = v == VAlign::kTop        ? e.ascent
+                      : v == VAlign::kCenter   ? 0.5 * (e.ascent - e.descent)
+                      : v == VAlign::kBaseline ? 0
+                                               : -e.descent;
+  return {x0, y + base - e.ascent, x0 + e.width, y + base + e.descent};
+}
+
+// ---- Title -------------------------------------------------------------------
+
+double fitting_size(std::string_view markup, double size, double max_width) {
+  double w = measure_text(markup, size).width;
+  for (int k = 0; k < 8 && w > max_width && size > 1; ++k) {
+    size = std::min(size * max_width / w, size - 0.5);
+    w = measure_text(markup, size).width;
+  }
+  return size;
+}
+
+std::vector<std::string> split_title(std::string_view m, double size) {
+  // Candidate break points: the index of the mark of a ", " or ": " at depth 0.
+  std::vector<std::size_t> marks;
+  int depth = 0;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const char c = m[i];
+    if (c == '\\') {
+      // An escaped character (\{, \_, \\) is literal; a command name is letters.
+      if (i + 1 < m.size() && !std::isalpha(static_cast<unsigned char>(m[i + 1]))) ++i;
+      continue;
+    }
+    if (c == '(' || c == '{' || c == '[') ++depth;
+    else if (c == ')' || c == '}' || c == ']') depth = std::max(0, depth - 1);
+    else if ((c == ',' || c == ':') && depth == 0 && i + 1 < m.size() && m[i + 1] == ' ')
+      marks.push_back(i);
+  }
+  if (marks.empty()) return {};
+  // Nearest the middle by drawn width, so both lines come out about as long.
+  const double half = 0.5 * measure_text(m, size).width;
+  std::size_t best = marks.front();
+  double best_gap = 1e300;
+  for (std::size_t i : marks) {
+    const double gap = std::abs(measure_text(m.substr(0, i + 1), size).width - half);
+    if (gap < best_gap) best_gap = gap, best = i;
+  }
+  return {std::string(m.substr(0, best + 1)), std::string(m.substr(best + 2))};
+}
+
+TitleBlock layout_title(const std::string& markup, double size, double left, double right,
+                        double centre, double top) {
+  TitleBlock t;
+  if (markup.empty()) return t;
+  const double room = std::max(1.0, right - left);
+  t.lines = {markup};
+  if (measure_text(markup, size).width > room) {
+    std::vector<std::string> two = split_title(markup, size);
+    if (!two.empty()) t.lines = std::move(two);
+  }
+  t.size = size;
+  for (const std::string& l : t.lines) t.size = std::min(t.size, fitting_size(l, size, room));
+  // Lines a tenth of a text height apart.
+  double height = 0, widest = 0;
+  for (const std::string& l : t.lines) {
+    const TextExtent e = measure_text(l, t.size);
+    widest = std::max(widest, e.width);
+    height = std::max(height, e.height());
+  }
+  t.line_step = 1.1 * height;
+  const double half = 0.5 * widest;
+  const double x = std::clamp(centre, left + half, std::max(left + half, right - half));
+  t.box = {x - half, top, x + half, top + t.line_step * (t.lines.size() - 1) + height};
+  return t;
+}
+
+void draw_title(Painter& p, const TitleBlock& t, Color color) {
+  const double x = 0.5 * (t.box.x0 + t.box.x1);
+  for (std::size_t i = 0; i < t.lines.size(); ++i)
+    p.text(t.lines[i], x, t.box.y0 + i * t.line_step, t.size, color, HAlign::kCenter, VAlign::kTop);
+}
+
+// ---- Legend ------------------------------------------------------------------
+
+LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& st) {
+  LegendSize z;
+  if (entries.empty()) return z;
+  double text_w = 0;
+  for (const LegendEntry& e : entries) {
+    const TextExtent m = measure_text(e.label, st.legend_font);
+    text_w = std::max(text_w, m.width);
+    z.row = std::max(z.row, m.height());
+  }
+  z.row += st.row_gap;
+  z.width = 2 * st.legend_padding + st.swatch + st.swatch_gap + text_w;
+  z.height = 2 * st.legend_padding + z.row * entries.size();
+  return z;
+}
+
+void draw_legend(Painter& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
+                 const Style& st) {
+  if (entries.empty() || box.empty()) return;
+  const LegendSize z = measure_legend(entries, st);
+  p.rect(box.x0, box.y0, box.x1, box.y1, kLegendFill);
+  p.rect_outline(box.x0, box.y0, box.x1, box.y1, st.legend_edge, kLegendEdge);
+  double y = box.y0 + st.legend_padding + 0.5 * z.row;
+  for (const LegendEntry& e : entries) {
+    const double x0 = box.x0 + st.legend_padding, x1 = x0 + st.swatch;
+    if (e.filled) {
+      p.rect(x0, y - 0.3 * z.row, x1, y + 0.3 * z.row, e.color);
+    } else {
+      if (e.line_width > 0) {
+        const double w = st.line(e.line_width);
+        p.polyline({{x0, y, 0}, {x1, y, 0}}, w, e.color, dash_pattern(e.dash, w, st),
+                   e.dash == Dash::kDotted || e.dash == Dash::kDashDot);
+      }
+      if (e.marker != Marker::kNone)
+        draw_marker(p, e.marker, 0.5 * (x0 + x1), y, st.marker(e.marker_size), e.color);
+    }
+    p.text(e.label, x1 + st.swatch_gap, y, st.legend_font, kTextColor, HAlign::kLeft, VAlign::kCenter);
+    y += z.row;
+  }
+}
+
+}  // namespace rigid::render::detail

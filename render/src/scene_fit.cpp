@@ -1,0 +1,262 @@
+// The camera of a 3D scene: projection, and the fit that frames the scene.
+#include "scene_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <Eigen/Geometry>
+
+#include "scene_shapes.h"
+
+namespace rigid::render::detail {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+View make_view(const Camera& cam, int width, int height, double znear, double zfar) {
+  View v;
+  v.width = width;
+  v.height = height;
+  v.ortho = cam.orthographic;
+  const Vector3d f = (cam.target - cam.eye).normalized();
+  Vector3d up = cam.up;
+  if (std::abs(f.dot(up.normalized())) > 0.999) up = f.unitOrthogonal();
+  const Vector3d s = f.cross(up).normalized();
+  const Vector3d u = s.cross(f);
+  v.view.block<1, 3>(0, 0) = s.transpose();
+  v.view.block<1, 3>(1, 0) = u.transpose();
+  v.view.block<1, 3>(2, 0) = -f.transpose();
+  v.view(0, 3) = -s.dot(cam.eye);
+  v.view(1, 3) = -u.dot(cam.eye);
+  v.view(2, 3) = f.dot(cam.eye);
+  // Perspective depth must stay in front of the eye.
+  if (!cam.orthographic) {
+    zfar = std::max(zfar, 1e-3);
+    znear = std::max(znear, zfar * 1e-4);
+  }
+  const double aspect = double(width) / height;
+  const double tan_half = std::tan(0.5 * cam.fov_y_deg * EIGEN_PI / 180.0);
+  v.proj.setZero();
+  if (cam.orthographic) {
+    const double h = cam.ortho_height > 0 ? cam.ortho_height : 2 * (cam.target - cam.eye).norm() * tan_half;
+    v.proj(0, 0) = 2 / (h * aspect);
+    v.proj(1, 1) = 2 / h;
+    v.proj(2, 2) = -2 / (zfar - znear);
+    v.proj(2, 3) = -(zfar + znear) / (zfar - znear);
+    v.proj(3, 3) = 1;
+    v.focal_px = height / h;
+  } else {
+    v.proj(0, 0) = 1 / (tan_half * aspect);
+    v.proj(1, 1) = 1 / tan_half;
+    v.proj(2, 2) = -(zfar + znear) / (zfar - znear);
+    v.proj(2, 3) = -2 * zfar * znear / (zfar - znear);
+    v.proj(3, 2) = -1;
+    v.focal_px = 0.5 * height / tan_half;
+  }
+  return v;
+}
+
+namespace {
+
+// Points on the surfaces of the unit shapes, finely spaced: the drawn meshes, inscribed in
+// the same surfaces with fewer segments, lie within them.
+const std::vector<Vector3d>& unit_outline(Scene3D::Shape shape, double torus_minor) {
+  constexpr int kSegments = 64;
+  using Key = std::pair<int, int>;
+  static std::map<Key, std::vector<Vector3d>> cache;
+  const int ratio = torus_ratio_key(shape, torus_minor);
+  const Key key{static_cast<int>(shape), ratio};
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  const Mesh m = unit_shape_mesh(shape, kSegments, ratio);
+  std::vector<Vector3d> points;
+  points.reserve(m.positions.size());
+  for (const auto& p : m.positions) points.push_back(p.cast<double>());
+  return cache.emplace(key, std::move(points)).first->second;
+}
+
+}  // namespace
+
+// Everything the image must show: surfaces and thick lines (labels are the caller's).
+std::vector<FitPoint> fit_points(const Scene3D& scene, double geo) {
+  using S = Scene3D::Shape;
+  std::vector<FitPoint> out;
+  for (const Scene3D::Object& o : scene.objects()) {
+    if (o.shape == S::kTube) {
+      for (const Vector3d& p : o.path) out.push_back({p, o.tube_radius});
+    } else if (o.shape == S::kCustom) {
+      for (const auto& p : o.mesh.positions) out.push_back({o.transform * p.cast<double>()});
+    } else {
+      for (const Vector3d& p : unit_outline(o.shape, o.torus_minor)) out.push_back({o.transform * p});
+    }
+  }
+  for (const Scene3D::Polyline& pl : scene.polylines()) {
+    const double hw = 0.5 * std::max(2.0, pl.width * geo);
+    for (const Vector3d& p : pl.points) out.push_back({p, 0, hw, hw, hw, hw});
+  }
+  return out;
+}
+
+namespace {
+
+// A bound on the eye's sideways shift, linear in its distance d from the target plane: c + m d.
+struct Bound {
+  double c = 0, m = 0;
+  double at(double d) const { return c + m * d; }
+};
+
+}  // namespace
+
+// The camera framed on the points: its viewing direction and up kept, the eye moved along
+// the line of sight to the nearest distance d, and sideways by (a, b) along the image's
+// right and up, at which every point with its sphere and screen box lies in the layout's
+// region, and left of or below the legend box (with the margin). The projection stays
+// centred on the line of sight, so the perspective is that of the field of view.
+//
+// In camera coordinates about the target (x right, y up, z forward), a point projects to
+// focal * (x - a) / (z + d) pixels right of the image centre. It stays left of an edge at
+// slope k = pixels / focal, its sphere of radius r included, iff
+//   x - a <= k (z + d) - r sqrt(1 + k^2),
+// a bound linear in a and d; likewise for the other edges and for y and b. So for each d
+// the shifts that fit form a window [a_lo, a_hi] × [b_lo, b_hi] (it grows with d), less
+// the corners a < alpha_i, b < beta_i in which point i would be under the legend; the
+// corner (a_hi, b_hi), the scene moved furthest left and down, is the last to clear it.
+// Bisection finds the least d that fits; orthographic views are the case z = 0, sec = 1,
+// of height 2 d tan(fov / 2).
+Camera fitted(Camera cam, std::vector<FitPoint> points, const ScreenRect& region,
+              const ScreenRect& legend, double margin, int width, int height) {
+  if (!cam.fit || points.empty()) return cam;
+  Vector3d f = cam.target - cam.eye;
+  const double eye_distance = f.norm();
+  if (!(eye_distance > 0)) return cam;
+  f.normalize();
+  Vector3d up = cam.up;
+  if (std::abs(f.dot(up.normalized())) > 0.999) up = f.unitOrthogonal();
+  const Vector3d s = f.cross(up).normalized(), u = s.cross(f);
+  const bool ortho = cam.orthographic;
+  const double tan_half = std::tan(0.5 * cam.fov_y_deg * EIGEN_PI / 180.0);
+  const double focal = 0.5 * height / tan_half;
+  const double cx = 0.5 * width, cy = 0.5 * height;
+  const bool has_legend = !legend.empty();
+  if (region.empty()) return cam;
+
+  // Point left of (below) an edge at slope k: a >= ...; right of (above) it: a <= ... .
+  auto left_of = [&](double x, double z, double r, double k) {
+    return Bound{x + r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+  };
+  auto right_of = [&](double x, double z, double r, double k) {
+    return Bound{x - r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+  };
+  const std::size_t n = points.size();
+  std::vector<Bound> a_min(n), a_max(n), b_min(n), b_max(n), a_legend, b_legend;
+  if (has_legend) {
+    a_legend.resize(n);
+    b_legend.resize(n);
+  }
+  double d_min = 0, extent = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    FitPoint& p = points[i];
+    // A text box wider than the region cannot fit whole: fit what can be.
+    const double wx = p.left + p.right, wy = p.up + p.down;
+    const double max_w = 0.9 * (region.x1 - region.x0), max_h = 0.9 * (region.y1 - region.y0);
+    if (wx > max_w) p.left *= max_w / wx, p.right *= max_w / wx;
+    if (wy > max_h) p.up *= max_h / wy, p.down *= max_h / wy;
+    const Vector3d q = p.p - cam.target;
+    const double x = q.dot(s), y = q.dot(u), z = ortho ? 0.0 : q.dot(f), r = p.radius;
+    a_min[i] = left_of(x, z, r, (region.x1 - cx - p.right) / focal);
+    a_max[i] = right_of(x, z, r, (region.x0 - cx + p.left) / focal);
+    b_min[i] = left_of(y, z, r, (cy - region.y0 - p.up) / focal);
+    b_max[i] = right_of(y, z, r, (cy - region.y1 + p.down) / focal);
+    if (has_legend) {
+      a_legend[i] = left_of(x, z, r, (legend.x0 - margin - cx - p.right) / focal);
+      b_legend[i] = left_of(y, z, r, (cy - legend.y1 - margin - p.up) / focal);
+    }
+    if (!ortho) d_min = std::max(d_min, r - z);
+    extent = std::max(extent, q.norm() + r);
+  }
+  struct Window {
+    double a_lo, a_hi, b_lo, b_hi;
+  };
+  auto window = [&](double d) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    Window w{-kInf, kInf, -kInf, kInf};
+    for (std::size_t i = 0; i < n; ++i) {
+      w.a_lo = std::max(w.a_lo, a_min[i].at(d));
+      w.a_hi = std::min(w.a_hi, a_max[i].at(d));
+      w.b_lo = std::max(w.b_lo, b_min[i].at(d));
+      w.b_hi = std::min(w.b_hi, b_max[i].at(d));
+    }
+    return w;
+  };
+  auto clear_of_legend = [&](double d, double a, double b) {
+    for (std::size_t i = 0; i < a_legend.size(); ++i)
+      if (a < a_legend[i].at(d) && b < b_legend[i].at(d)) return false;
+    return true;
+  };
+  auto fits = [&](double d) {
+    const Window w = window(d);
+    return w.a_lo <= w.a_hi && w.b_lo <= w.b_hi && clear_of_legend(d, w.a_hi, w.b_hi);
+  };
+  // Bracket the least distance that fits, then bisect (fits(hi) holds throughout).
+  double lo = d_min, hi = d_min + std::max(extent, 1e-12);
+  for (int k = 0; k < 200 && !fits(hi); ++k) hi = lo + 2 * (hi - lo);
+  if (!fits(hi)) return cam;
+  for (int k = 0; k < 100 && hi - lo > 1e-12 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (fits(mid) ? hi : lo) = mid;
+  }
+  const double d = hi;
+
+  // The shift nearest the window's centre that clears the legend: the centre itself, or
+  // the centre moved right-of-legend only, below-legend only, or towards (a_hi, b_hi).
+  const Window w = window(d);
+  const double a_c = 0.5 * (w.a_lo + w.a_hi), b_c = 0.5 * (w.b_lo + w.b_hi);
+  double a = a_c, b = b_c;
+  if (!clear_of_legend(d, a_c, b_c)) {
+    double a_only = a_c, b_only = b_c, t = 0;
+    for (std::size_t i = 0; i < a_legend.size(); ++i) {
+      const double alpha = a_legend[i].at(d), beta = b_legend[i].at(d);
+      if (b_c < beta) a_only = std::max(a_only, alpha);
+      if (a_c < alpha) b_only = std::max(b_only, beta);
+      const double ta = w.a_hi > a_c ? (alpha - a_c) / (w.a_hi - a_c) : (alpha <= a_c ? 0.0 : 1.0);
+      const double tb = w.b_hi > b_c ? (beta - b_c) / (w.b_hi - b_c) : (beta <= b_c ? 0.0 : 1.0);
+      t = std::max(t, std::min(ta, tb));
+    }
+    t = std::min(t, 1.0);
+    a = a_c + t * (w.a_hi - a_c);
+    b = b_c + t * (w.b_hi - b_c);
+    double best = std::hypot(a - a_c, b - b_c);
+    if (a_only <= w.a_hi && a_only - a_c < best) a = a_only, b = b_c, best = a_only - a_c;
+    if (b_only <= w.b_hi && b_only - b_c < best) a = a_c, b = b_only;
+  }
+  cam.target += a * s + b * u;
+  if (ortho) {
+    cam.eye = cam.target - eye_distance * f;
+    cam.ortho_height = 2 * d * tan_half;
+  } else {
+    cam.eye = cam.target - d * f;
+  }
+  return cam;
+}
+
+// Depth range of the points seen from a camera, padded a little.
+std::pair<double, double> depth_range(const Camera& cam, const std::vector<FitPoint>& points) {
+  const Vector3d f = (cam.target - cam.eye).normalized();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const FitPoint& p : points) {
+    const double z = (p.p - cam.eye).dot(f);
+    lo = std::min(lo, z - p.radius);
+    hi = std::max(hi, z + p.radius);
+  }
+  if (!(lo <= hi)) {
+    const double z = (cam.target - cam.eye).norm();
+    lo = 0.5 * z;
+    hi = 2 * z + 1e-3;
+  }
+  const double pad = 0.02 * (hi - lo) + 1e-9 * std::max({std::abs(lo), std::abs(hi), 1.0});
+  return {lo - pad, hi + pad};
+}
+
+}  // namespace rigid::render::detail

@@ -1,0 +1,155 @@
+// A 3D scene's overlay, camera fit and label placement at one size.
+#include "scene_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "placement.h"
+#include "scene_shapes.h"
+
+namespace rigid::render::detail {
+
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+namespace {
+
+// The legend rows: surfaces as filled swatches (a translucent one as it looks over
+// white), polylines as lines.
+std::vector<LegendEntry> legend_entries(const Scene3D& scene) {
+  std::vector<LegendEntry> out;
+  for (const Scene3D::Object& o : scene.objects())
+    if (!o.label.empty()) {
+      const float a = o.material.opacity;
+      const Color c = o.material.color;
+      out.push_back({o.label, {c.r * a + (1 - a), c.g * a + (1 - a), c.b * a + (1 - a), 1}, true});
+    }
+  for (const Scene3D::Polyline& pl : scene.polylines())
+    if (!pl.label.empty()) out.push_back({pl.label, pl.color, false, pl.width});
+  return out;
+}
+
+// Unit-shape triangles coarse enough to be cheap, fine enough to show a shape's outline
+// within a grid cell or two.
+const Mesh& coarse_mesh(Scene3D::Shape shape, double torus_minor) {
+  constexpr int kSegments = 24;
+  static std::map<std::pair<int, int>, Mesh> cache;
+  const int ratio = torus_ratio_key(shape, torus_minor);
+  const std::pair<int, int> key{static_cast<int>(shape), ratio};
+  auto it = cache.find(key);
+  if (it == cache.end()) it = cache.emplace(key, unit_shape_mesh(shape, kSegments, ratio)).first;
+  return it->second;
+}
+
+// What the scene covers on screen: opaque surfaces and lines in full weight, translucent
+// surfaces in proportion to their opacity (text over a faint shell is readable).
+Occupancy scene_grid(const Scene3D& scene, const View& view, const Style& st) {
+  Occupancy grid({0, 0, double(view.width), double(view.height)}, std::max(3.0, 4 * st.s));
+  auto screen = [&](const Vector3d& p, Vector2d& out) {
+    const Eigen::Vector4d s = view.project(p);
+    out = {s.x(), s.y()};
+    return s.w() > 0;
+  };
+  auto add_mesh = [&](const Mesh& m, const Eigen::Affine3d& t, float w) {
+    std::vector<Vector2d> q(m.positions.size());
+    std::vector<char> ok(m.positions.size());
+    for (std::size_t i = 0; i < q.size(); ++i) ok[i] = screen(t * m.positions[i].cast<double>(), q[i]);
+    for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
+      const auto a = m.indices[i], b = m.indices[i + 1], c = m.indices[i + 2];
+      if (ok[a] && ok[b] && ok[c]) grid.add_triangle(q[a], q[b], q[c], w);
+    }
+  };
+  auto add_path = [&](const std::vector<Vector3d>& path, double half_width_px, double radius, float w) {
+    Vector2d prev;
+    bool have_prev = false;
+    for (const Vector3d& p : path) {
+      Vector2d cur;
+      const bool ok = screen(p, cur);
+      const double hw = half_width_px + (radius > 0 ? view.pixels(radius, p) : 0.0);
+      if (ok && have_prev) grid.add_segment(prev, cur, hw, w);
+      else if (ok) grid.add_segment(cur, cur, hw, w);
+      prev = cur;
+      have_prev = ok;
+    }
+  };
+  for (const Scene3D::Object& o : scene.objects()) {
+    const float w = o.material.opacity >= 0.99f ? 1.0f : 0.5f * o.material.opacity;
+    if (o.shape == Scene3D::Shape::kTube) add_path(o.path, 1.0, o.tube_radius, w);
+    else if (o.shape == Scene3D::Shape::kCustom) add_mesh(o.mesh, o.transform, w);
+    else add_mesh(coarse_mesh(o.shape, o.torus_minor), o.transform, w);
+  }
+  for (const Scene3D::Polyline& pl : scene.polylines())
+    add_path(pl.points, 0.5 * st.line(pl.width) + 1, 0, 1.0f);
+  return grid;
+}
+
+// Where a label's text may go about its projected point: on it, then beside it (right,
+// left, above, below, diagonally), near and then farther.
+std::vector<ScreenRect> label_candidates(const Vector2d& q, const TextExtent& e, const Style& st) {
+  const double w = e.width, h = e.height();
+  std::vector<ScreenRect> c{{q.x() - 0.5 * w, q.y() - 0.5 * h, q.x() + 0.5 * w, q.y() + 0.5 * h}};
+  for (double d : {0.5 * st.pad, 2.0 * st.pad, 4.0 * st.pad}) {
+    const std::vector<ScreenRect> ring = boxes_around(q.x(), q.y(), w, h, d);
+    c.insert(c.end(), ring.begin(), ring.end());
+  }
+  return c;
+}
+
+}  // namespace
+
+SceneFrame frame_scene(const Scene3D& scene, int width, int height) {
+  SceneFrame fr;
+  fr.st = figure_style(width, height);
+  const Style& st = fr.st;
+  fr.title = layout_title(scene.title, st.title_font, st.margin, width - st.margin, 0.5 * width, st.margin);
+  const double below_title = scene.title.empty() ? 0.0 : fr.title.box.y1;
+  fr.region = {st.margin, below_title + st.margin, width - st.margin, height - st.margin};
+  if (scene.show_legend) fr.entries = legend_entries(scene);
+  if (!fr.entries.empty()) {
+    const LegendSize z = measure_legend(fr.entries, st);
+    const double x1 = width - st.margin, y0 = scene.title.empty() ? st.margin : below_title + st.pad;
+    fr.legend = {x1 - z.width, y0, x1, y0 + z.height};
+  }
+
+  // The fit keeps each label's text, centred on its point and a little around, in view:
+  // the placement below then finds room on or beside the point.
+  std::vector<FitPoint> points = fit_points(scene, st.s);
+  std::vector<TextExtent> extents;
+  for (const Label3D& l : scene.labels()) {
+    extents.push_back(measure_text(l.text, st.label_font));
+    if (l.text.empty()) continue;
+    const double hw = 0.5 * extents.back().width + 0.5 * st.pad;
+    const double hh = 0.5 * extents.back().height() + 0.5 * st.pad;
+    points.push_back({l.position, 0, hw, hw, hh, hh});
+  }
+  fr.camera = fitted(scene.camera, points, fr.region, fr.legend, st.margin, width, height);
+  const auto [znear, zfar] = depth_range(fr.camera, points);
+  fr.view = make_view(fr.camera, width, height, znear, zfar);
+
+  // Labels in order, each clear of the geometry where it can be, never over the title,
+  // the legend or an earlier label, and inside the region the scene was fitted into.
+  const Occupancy grid = scene_grid(scene, fr.view, st);
+  std::vector<ScreenRect> taken;
+  if (!fr.title.box.empty()) taken.push_back(fr.title.box);
+  if (!fr.legend.empty()) taken.push_back(fr.legend.grown(0.5 * st.pad));
+  const ScreenRect& bounds = fr.region;
+  for (std::size_t k = 0; k < scene.labels().size(); ++k) {
+    const Label3D& l = scene.labels()[k];
+    const Eigen::Vector4d s = fr.view.project(l.position);
+    if (s.w() < 0 || l.text.empty()) {
+      fr.labels.push_back({});
+      continue;
+    }
+    const std::vector<ScreenRect> c = label_candidates({s.x(), s.y()}, extents[k], st);
+    const Placement pl = choose_place(c, grid, bounds, taken);
+    // No candidate inside the region (text wider than it): on the point, kept in view.
+    const ScreenRect box = pl.box.empty() ? keep_inside(c.front(), bounds) : pl.box;
+    fr.labels.push_back(box);
+    taken.push_back(box.grown(0.25 * st.pad));
+  }
+  return fr;
+}
+
+}  // namespace rigid::render::detail
