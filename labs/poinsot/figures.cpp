@@ -126,8 +126,7 @@ render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySamp
 
 // Each integrator's error against the exact solution, and its energy error,
 // every method at the lab's tolerance or step (section "every integrator").
-render::Plot2D integrators_plot(const std::vector<double>& times,
-                                const std::vector<MethodErrors>& methods) {
+render::Plot2D integrators_plot(const std::vector<MethodErrors>& methods) {
   render::Plot2D plot(1, 2);
   plot.title = "integrators against the exact solution";
   render::Panel& error = plot.panel(0, 0);
@@ -145,16 +144,19 @@ render::Plot2D integrators_plot(const std::vector<double>& times,
     for (double& x : out) x = std::max(x, 1e-17);
     return out;
   };
+  const auto after_start = [](const std::vector<double>& v) {
+    return std::vector<double>(v.begin() + 1, v.end());
+  };
   const render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed,
                                  render::Dash::kSolid,   render::Dash::kDashDot,
                                  render::Dash::kSolid,   render::Dash::kDotted};
-  const std::vector<double> t(times.begin() + 1, times.end());
   for (std::size_t k = 0; k < methods.size(); ++k) {
     const IntegrateOptions& o = methods[k].options;
     const std::string name =
         std::string(method_name(o.method)) + ", " +
         (is_adaptive(o.method) ? fmt::format("tol {:g}", o.rel_tol)
                                : fmt::format("h = {:.3g} s", o.step));
+    const std::vector<double> t = after_start(methods[k].t);
     auto& a = error.add_line(t, floored(methods[k].omega_error), name);
     auto& b = energy.add_line(t, floored(methods[k].energy_error), name);
     a.color = b.color = render::palette_color(k);
@@ -175,7 +177,7 @@ void draw(FigureSet& set, const Run& run) {
   set.add("omega", "omega(t) of the text's ellipsoid and its phase plot",
           omega_plot(run.omega0, run.samples));
   set.add("integrators", "every integrator against the exact solution",
-          integrators_plot(run.times, run.methods));
+          integrators_plot(run.methods));
 }
 
 }  // namespace rigid::lab::poinsot

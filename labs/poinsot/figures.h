@@ -30,6 +30,7 @@ struct Inputs {
 /// One integrator's run against the exact solution, sample by sample.
 struct MethodErrors {
   IntegrateOptions options;
+  std::vector<double> t;             ///< its sample times (a fixed step's on its grid)
   std::vector<double> omega_error;   ///< |omega - omega_exact| / |omega0|
   std::vector<double> energy_error;  ///< |T - T0| / T0
 };
@@ -39,7 +40,6 @@ struct Run {
   const FreeBodyExact& motion;
   Eigen::Vector3d omega0;
   const std::vector<FreeBodySample>& samples;  ///< the lab's own run (exact or integrated)
-  const std::vector<double>& times;
   const std::vector<MethodErrors>& methods;  ///< every integrator at the lab's settings
 };
 
