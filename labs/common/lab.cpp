@@ -46,8 +46,8 @@ std::string json_key(const std::string& name) {
 
 // ---- Options ----------------------------------------------------------------
 
-Option::Option(Lab& lab, CLI::Option* cli, Kind kind, std::string key, std::string help)
-    : lab_(lab), cli_(cli), kind_(kind), key_(std::move(key)), help_(std::move(help)) {
+Option::Option(Lab& lab, CLI::Option* cli, std::string key, std::string help)
+    : lab_(lab), cli_(cli), key_(std::move(key)), help_(std::move(help)) {
   if (cli_) describe();
 }
 
@@ -151,16 +151,14 @@ Lab::Lab(std::string name, std::string title)
           ""));
 }
 
-Lab::~Lab() = default;
 
-Option& Lab::declare(CLI::Option* cli, Option::Kind kind, const std::string& flag,
-                     const std::string& help) {
-  return options_.emplace_back(Option(*this, cli, kind, json_key(flag), help));
+Option& Lab::declare(CLI::Option* cli, const std::string& flag, const std::string& help) {
+  return options_.emplace_back(Option(*this, cli, json_key(flag), help));
 }
 
 Option& Lab::number(const std::string& flag, double& value, const std::string& help) {
   CLI::Option* cli = app_.add_option(flag, value)->type_name("NUMBER")->capture_default_str();
-  Option& option = declare(cli, Option::Kind::kNumber, flag, help);
+  Option& option = declare(cli, flag, help);
   cli->check(CLI::Validator(
       [&option](std::string& text) -> std::string {
         double parsed = 0.0;
@@ -182,7 +180,7 @@ Option& Lab::angle_deg(const std::string& flag, double& degrees, const std::stri
 
 Option& Lab::vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help) {
   // CLI11 splits X,Y,Z at the commas, insists on three values and checks each.
-  options_.emplace_back(Option(*this, nullptr, Option::Kind::kVector, json_key(flag), help));
+  options_.emplace_back(Option(*this, nullptr, json_key(flag), help));
   Option& option = options_.back();
   CLI::Option* cli = app_.add_option(flag, option.parts_)
                          ->delimiter(',')
@@ -217,13 +215,13 @@ Option& Lab::choice(const std::string& flag, std::string& value,
   for (const auto& choice : choices) names += (names.empty() ? "" : "|") + choice;
   CLI::Option* cli = app_.add_option(flag, value)->type_name("WORD")->capture_default_str();
   cli->check(CLI::IsMember(choices).description(""));
-  Option& option = declare(cli, Option::Kind::kChoice, flag, help + " (" + names + ")");
+  Option& option = declare(cli, flag, help + " (" + names + ")");
   option.record_ = [&option, &value] { option.lab_.inputs_[option.key_] = value; };
   return option;
 }
 
 Option& Lab::flag(const std::string& flag, bool& value, const std::string& help) {
-  Option& option = declare(app_.add_flag(flag, value), Option::Kind::kFlag, flag, help);
+  Option& option = declare(app_.add_flag(flag, value), flag, help);
   option.record_ = [&option, &value] { option.lab_.inputs_[option.key_] = value; };
   return option;
 }

@@ -14,12 +14,10 @@
 #include <Eigen/Core>
 #include <functional>
 #include <list>
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace rigid::lab {
@@ -79,14 +77,12 @@ class Option {
 
  private:
   friend class Lab;
-  enum class Kind { kNumber, kVector, kChoice, kFlag };
-  Option(Lab& lab, CLI::Option* cli, Kind kind, std::string key, std::string help);
+  Option(Lab& lab, CLI::Option* cli, std::string key, std::string help);
   std::string broken_rule(double value, const std::string& text) const;
   void describe();
 
   Lab& lab_;
   CLI::Option* cli_;
-  Kind kind_;
   std::string key_, help_, unit_, symbol_, lab_default_;
   bool physical_ = true, nonzero_ = false;
   double lo_ = -1, hi_ = -1;
@@ -100,7 +96,6 @@ class Lab {
  public:
   /// `name` is the executable and JSON `lab`; `title` heads the table and --help.
   Lab(std::string name, std::string title);
-  ~Lab();
 
   /// A number in SI units; finite, and nonzero values between 1e-60 and 1e60 in
   /// magnitude (every result is a product of at most five inputs, which then
@@ -166,8 +161,7 @@ class Lab {
     std::string label, value, unit, textbook;
     bool heading = false;
   };
-  Option& declare(CLI::Option* cli, Option::Kind kind, const std::string& flag,
-                  const std::string& help);
+  Option& declare(CLI::Option* cli, const std::string& flag, const std::string& help);
   void check_output_paths() const;
   void store(const std::string& key, Json value, bool finite, const std::string& unit,
              const std::optional<std::string>& printed);
