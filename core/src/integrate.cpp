@@ -209,4 +209,38 @@ std::vector<double> energy_errors(const IntegrationResult& run, const FreeBodyEx
   return errors;
 }
 
+std::vector<MethodComparison> compare_methods(const FreeBodyExact& exact,
+                                              const std::vector<double>& times, double period,
+                                              const IntegrateOptions& options,
+                                              std::size_t max_steps) {
+  std::vector<MethodComparison> out;
+  for (const Method m : kAllMethods) {
+    MethodComparison c;
+    c.options = options;
+    c.options.method = m;
+    c.options.project_invariants = false;
+    c.options.max_steps = max_steps;
+    const std::vector<double> each_times =
+        is_adaptive(m) ? times : sample_times(times.back(), period, options.step);
+    IntegrationResult run;
+    try {
+      run = integrate_free_body(exact.moments(), exact.state(0.0), each_times, c.options);
+    } catch (const std::exception&) {
+      out.push_back(std::move(c));  // more steps than allowed: not completed
+      continue;
+    }
+    c.completed = true;
+    for (const FreeBodySample& sample : run.samples) c.t.push_back(sample.t);
+    c.omega_error = omega_errors(run, exact);
+    c.energy_error = energy_errors(run, exact);
+    for (double e : c.omega_error) {
+      // A NaN (a run that blew up) counts as an infinite error.
+      c.max_omega_error = std::isfinite(e) ? std::max(c.max_omega_error, e)
+                                           : std::numeric_limits<double>::infinity();
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 }  // namespace rigid

@@ -126,7 +126,7 @@ render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySamp
 
 // Each integrator's error against the exact solution, and its energy error,
 // every method at the lab's tolerance or step (section "every integrator").
-render::Plot2D integrators_plot(const std::vector<MethodErrors>& methods) {
+render::Plot2D integrators_plot(const std::vector<MethodComparison>& methods) {
   render::Plot2D plot(1, 2);
   plot.title = "integrators against the exact solution";
   render::Panel& error = plot.panel(0, 0);
@@ -151,6 +151,8 @@ render::Plot2D integrators_plot(const std::vector<MethodErrors>& methods) {
                                  render::Dash::kSolid,   render::Dash::kDashDot,
                                  render::Dash::kSolid,   render::Dash::kDotted};
   for (std::size_t k = 0; k < methods.size(); ++k) {
+    // A method that did not run, or blew up, has no curve to show.
+    if (!methods[k].completed || !std::isfinite(methods[k].max_omega_error)) continue;
     const IntegrateOptions& o = methods[k].options;
     const std::string name =
         std::string(method_name(o.method)) + ", " +

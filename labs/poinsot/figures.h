@@ -27,20 +27,12 @@ struct Inputs {
   bool project = false;
 };
 
-/// One integrator's run against the exact solution, sample by sample.
-struct MethodErrors {
-  IntegrateOptions options;
-  std::vector<double> t;             ///< its sample times (a fixed step's on its grid)
-  std::vector<double> omega_error;   ///< |omega - omega_exact| / |omega0|
-  std::vector<double> energy_error;  ///< |T - T0| / T0
-};
-
 /// What the figures show of a run.
 struct Run {
   const FreeBodyExact& motion;
   Eigen::Vector3d omega0;
   const std::vector<FreeBodySample>& samples;  ///< the lab's own run (exact or integrated)
-  const std::vector<MethodErrors>& methods;  ///< every integrator at the lab's settings
+  const std::vector<MethodComparison>& methods;  ///< every integrator at the lab's settings
 };
 
 /// Hands the lab's figures to the set.

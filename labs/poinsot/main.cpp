@@ -24,7 +24,8 @@ namespace {
 
 // A run longer than this many steps is refused rather than left to hang.
 constexpr std::size_t kMaxSteps = 20'000'000;
-// Each method of the comparison with the others gets at most this many.
+// Each method of the comparison with the others gets at most this many steps:
+// the comparison then costs at most a few hundred ms.
 constexpr std::size_t kMaxComparisonSteps = 20'000;
 
 // The motion's time scale: the polhode period, or one turn for a steady spin.
@@ -161,39 +162,21 @@ int main(int argc, char** argv) {
 
     lab.section(fmt::format("every integrator against the exact solution (tolerance {:g}, step {:.4g} s)",
                             in.tolerance, options.step));
-    std::vector<rigid::lab::poinsot::MethodErrors> methods;
-    for (const rigid::Method m : rigid::kAllMethods) {
-      rigid::IntegrateOptions each = options;
-      each.method = m;
-      each.project_invariants = false;
-      // The comparison is an aside: a method that would need more steps than
-      // this is reported as not run, and costs at most some tens of ms.
-      each.max_steps = kMaxComparisonSteps;
-      const std::string key = "max_error_" + rigid::lab::json_key(std::string(rigid::method_name(m)));
-      const std::string label =
-          fmt::format("{:<15} max |omega - omega_exact| / |omega0|", rigid::method_name(m));
-      rigid::IntegrationResult each_run;
-      // A fixed-step method is sampled on its own step grid, as in its own run.
-      const std::vector<double> each_times =
-          rigid::is_adaptive(m) ? times : rigid::sample_times(t_end, scale, options.step);
-      try {
-        each_run = rigid::integrate_free_body(I, exact.state(0.0), each_times, each);
-      } catch (const std::exception&) {
+    // An aside: a method needing more steps than this is reported as not run.
+    const std::vector<rigid::MethodComparison> methods =
+        rigid::compare_methods(exact, times, scale, options, kMaxComparisonSteps);
+    for (const rigid::MethodComparison& c : methods) {
+      const std::string name(rigid::method_name(c.options.method));
+      const std::string key = "max_error_" + rigid::lab::json_key(name);
+      const std::string label = fmt::format("{:<15} max |omega - omega_exact| / |omega0|", name);
+      if (!c.completed) {
         lab.result_none(key, label, "",
                         fmt::format("not run: needs more than {} steps", kMaxComparisonSteps));
-        continue;
-      }
-      rigid::lab::poinsot::MethodErrors errors{each, {}, rigid::omega_errors(each_run, exact),
-                                               rigid::energy_errors(each_run, exact)};
-      for (const auto& sample : each_run.samples) errors.t.push_back(sample.t);
-      const double worst =
-          *std::max_element(errors.omega_error.begin(), errors.omega_error.end());
-      if (!std::isfinite(worst)) {
+      } else if (!std::isfinite(c.max_omega_error)) {
         lab.result_none(key, label, "", "diverged at this step");
-        continue;
+      } else {
+        lab.result(key, label, c.max_omega_error, "");
       }
-      lab.result(key, label, worst, "");
-      methods.push_back(std::move(errors));
     }
 
     lab.section("4 Poinsot's ellipsoids through omega0 (eqs. 79-82)");

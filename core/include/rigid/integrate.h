@@ -89,4 +89,24 @@ std::vector<double> omega_errors(const IntegrationResult& run, const FreeBodyExa
 /// |T - T_exact| / T_exact at each sample of a run (eq. 81).
 std::vector<double> energy_errors(const IntegrationResult& run, const FreeBodyExact& exact);
 
+/// One method's run measured against the exact solution, sample by sample.
+struct MethodComparison {
+  IntegrateOptions options;          ///< the method and the settings it ran with
+  bool completed = false;            ///< false: it would have needed more than max_steps
+  std::vector<double> t;             ///< its sample times (a fixed step's on its own grid)
+  std::vector<double> omega_error;   ///< |omega - omega_exact| / |omega0|
+  std::vector<double> energy_error;  ///< |T - T0| / T0
+  double max_omega_error = 0.0;      ///< the largest omega_error (infinite if it diverged)
+};
+
+/// Every method of kAllMethods at `options` (no projection, at most `max_steps`
+/// steps each) against the exact motion from t = 0 to times.back(): adaptive
+/// methods at `times`, fixed-step ones on their step grid with `period /
+/// per_period` spacing as sample_times makes it, so each run is the one a
+/// caller choosing that method alone would get.
+std::vector<MethodComparison> compare_methods(const FreeBodyExact& exact,
+                                              const std::vector<double>& times, double period,
+                                              const IntegrateOptions& options,
+                                              std::size_t max_steps);
+
 }  // namespace rigid
