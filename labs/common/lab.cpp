@@ -366,6 +366,11 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
       app_.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
       return app_.exit(e);
+    } catch (const CLI::ArgumentMismatch& e) {
+      // Only vectors take a count of values: say it in the student's terms.
+      const std::string what = e.what();
+      throw UsageError(what.substr(0, what.find(':')),
+                       "must be three numbers X,Y,Z (" + what.substr(what.find(':') + 2) + ")");
     } catch (const CLI::ParseError& e) {
       throw std::invalid_argument(e.what());
     }
