@@ -1,0 +1,57 @@
+// The free symmetric top in closed form (symmetric_top.h).
+#include "rigid/symmetric_top.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "rigid/format.h"
+#include "rigid/free_body.h"
+#include "rigid/units.h"
+
+namespace rigid {
+
+std::string to_string(ConeContact contact) {
+  switch (contact) {
+    case ConeContact::kOutside:
+      return "outside";
+    case ConeContact::kInside:
+      return "inside";
+    case ConeContact::kNone:
+      break;
+  }
+  return "none";
+}
+
+void validate_symmetric(double I, double Is) {
+  // The symmetry axis is 3; the triangle inequality I + I >= Is is the one that can fail.
+  validate(PrincipalMoments{I, I, Is});
+}
+
+SymmetricPrecession free_symmetric_precession(double I, double Is, double omega, double alpha) {
+  validate_symmetric(I, Is);
+  if (!std::isfinite(omega) || !(omega > 0.0)) {
+    throw std::invalid_argument("|omega| must be positive and finite, got " + format_number(omega));
+  }
+  if (!(alpha > 0.0 && alpha < kPi / 2)) {
+    throw std::invalid_argument("alpha must lie strictly between 0 and 90 deg, got " +
+                                format_number(rad_to_deg(alpha)) + " deg");
+  }
+  const double s = std::sin(alpha), c = std::cos(alpha);
+  SymmetricPrecession p;
+  p.body_rate = omega * c * ((Is - I) / I);  // eq. 109; exactly omega cos alpha when Is = 2I
+  p.L = omega * std::hypot(I * s, Is * c);                     // eq. 143
+  p.space_rate = p.L / I;                                      // eqs. 146-147
+  p.theta = std::atan2(I * s, Is * c);                         // eq. 144
+  p.spin_rate = -p.body_rate;                                  // omega_3 - phi_dot cos theta
+  p.body_cone = alpha;
+  const double lead = std::atan2((I - Is) * s * c, Is * c * c + I * s * s);  // theta - alpha
+  p.space_cone = std::abs(lead);
+  p.contact = lead > 0 ? ConeContact::kOutside : lead < 0 ? ConeContact::kInside : ConeContact::kNone;
+  p.body_period = p.body_rate == 0.0 ? std::numeric_limits<double>::infinity()
+                                     : 2 * kPi / std::abs(p.body_rate);
+  p.space_period = 2 * kPi / p.space_rate;
+  return p;
+}
+
+}  // namespace rigid
