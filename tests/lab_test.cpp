@@ -443,3 +443,18 @@ TEST_CASE("football: bad input exits 2 with one line naming the option") {
     CHECK(run.out.empty());
   }
 }
+
+TEST_CASE("football: the integrated cross-check agrees with the closed form for every preset") {
+  for (const char* preset : {"football", "frisbee", "earth"}) {
+    INFO(preset);
+    const auto run = run_lab("football", std::string("--json --preset ") + preset);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    const auto& r = j["results"];
+    // dopri5 at tolerance 1e-12 for one period: the global error is far below 1e-9.
+    CHECK(double(r["integrated_rate_error_rel"]) < 1e-9);
+    CHECK(double(r["integrated_axis_return_rad"]) < 1e-9);
+    CHECK(double(r["integrated_L_drift_rel"]) < 1e-9);
+    CHECK(j["units"]["integrated_space_precession_rate_rad_s"] == "rad/s");
+  }
+}

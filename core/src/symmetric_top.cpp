@@ -7,6 +7,8 @@
 
 #include "rigid/format.h"
 #include "rigid/free_body.h"
+#include "rigid/inertia.h"
+#include "rigid/integrate.h"
 #include "rigid/units.h"
 
 namespace rigid {
@@ -52,6 +54,33 @@ SymmetricPrecession free_symmetric_precession(double I, double Is, double omega,
                                      : 2 * kPi / std::abs(p.body_rate);
   p.space_period = 2 * kPi / p.space_rate;
   return p;
+}
+
+PrecessionCheck integrated_precession(double I, double Is, double omega, double alpha,
+                                      double tol) {
+  const SymmetricPrecession p = free_symmetric_precession(I, Is, omega, alpha);
+  const double period = p.space_period * omega;  // dimensionless: time in units of 1/omega
+  const PrincipalMoments moments{1.0, 1.0, Is / I};
+  const FreeBodyState x0 =
+      make_state(Vec3(std::sin(alpha), 0.0, std::cos(alpha)), Eigen::Quaterniond::Identity());
+  IntegrateOptions options;
+  options.abs_tol = options.rel_tol = tol;
+  const IntegrationResult run =
+      integrate_free_body(moments, x0, {0.0, period / 4, period}, options);
+  const Vec3 L = Vec3(std::sin(alpha), 0.0, (Is / I) * std::cos(alpha)).normalized();
+  const Vec3 axis0 = Vec3::UnitZ();
+  const Vec3 quarter = run.samples[1].attitude * Vec3::UnitZ();
+  const Vec3 end = run.samples[2].attitude * Vec3::UnitZ();
+  // The turn of 3 about L between t = 0 and a quarter period (about 90 degrees).
+  const Vec3 u = axis0 - axis0.dot(L) * L, v = quarter - quarter.dot(L) * L;
+  const double turn = std::atan2(u.cross(v).dot(L), u.dot(v));
+  PrecessionCheck check;
+  check.space_rate = turn / (period / 4) * omega;
+  check.axis_return = angle_between(axis0, end);
+  check.L_space_drift_rel = run.L_space_drift_rel;
+  check.energy_drift_rel = run.energy_drift_rel;
+  check.steps = run.steps;
+  return check;
 }
 
 }  // namespace rigid

@@ -132,6 +132,16 @@ int main(int argc, char** argv) {
                  p.space_period / kSolarDay, "d", text("earth", "0.997"));
     }
 
+    lab.section("cross-check: Euler's equations integrated (dopri5, tolerance 1e-12) for 2 pi / phi_dot");
+    const rigid::PrecessionCheck check = rigid::integrated_precession(I, Is, omega, alpha);
+    lab.result("integrated_space_precession_rate_rad_s", "phi_dot, 3's turn about L in a quarter period",
+               check.space_rate, "rad/s");
+    lab.result("integrated_rate_error_rel", "|integrated / closed-form phi_dot - 1|",
+               std::abs(check.space_rate / p.space_rate - 1), "");
+    lab.result("integrated_axis_return_rad", "angle of 3 from its start after 2 pi / phi_dot",
+               check.axis_return, "rad");
+    lab.result("integrated_L_drift_rel", "max |L - L0| / |L0| in space", check.L_space_drift_rel, "");
+
     lab.section("angles and cones (eq. 144, section 6.1)");
     lab.result("theta_deg", "theta, L to 3: tan theta = (I/Is) tan alpha", theta_deg, "deg",
                lab.textbook("> alpha for a prolate body"));
