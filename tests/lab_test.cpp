@@ -344,3 +344,117 @@ TEST_CASE("poinsot: a method the comparison cannot afford is reported as not run
   CHECK(r["max_error_dopri5"].is_null());
   CHECK(r["max_error_rk4"].is_number());
 }
+
+TEST_CASE("football: the default football is prolate, its body cone rolls outside") {
+  const auto run = run_lab("football", "--json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  for (const char* key :
+       {"body_precession_rate_rad_s", "space_precession_rate_rad_s", "theta_deg",
+        "body_cone_half_angle_deg", "space_cone_half_angle_deg", "cones_touch",
+        "body_precession_period_s", "space_precession_period_s"})
+    CHECK(r.contains(key));
+  CHECK(r["cones_touch"] == "outside");
+  CHECK(double(r["body_precession_rate_rad_s"]) < 0);  // prolate: omega turns clockwise about 3
+  CHECK(double(r["theta_deg"]) > double(r["body_cone_half_angle_deg"]));
+  // Independent: theta - alpha from tan theta = (I/Is) tan alpha, formed by subtraction
+  // (fine at 10 deg: cancellation costs ~1 digit of 16).
+  const double I = r["moment_transverse_kg_m2"], Is = r["moment_symmetry_kg_m2"];
+  const double alpha = 10.0 * M_PI / 180;
+  const double theta = std::atan(I / Is * std::tan(alpha));
+  CHECK(double(r["space_cone_half_angle_deg"]) ==
+        Approx((theta - alpha) * 180 / M_PI).epsilon(1e-12));
+  // The NFL-sized spheroid, m (b^2 + c^2)/5 and m (a^2 + c^2)/5.
+  CHECK(Is == Approx(0.42 * 2 * 0.085 * 0.085 / 5).epsilon(1e-15));
+  CHECK(I == Approx(0.42 * (0.14 * 0.14 + 0.085 * 0.085) / 5).epsilon(1e-15));
+  CHECK(double(r["body_precession_period_s"]) ==
+        Approx(2 * M_PI / std::abs(double(r["body_precession_rate_rad_s"]))).epsilon(1e-15));
+}
+
+TEST_CASE("football: the frisbee (Is = 2I) gives eqs. 148-149 and the wobble is twice the spin") {
+  const auto run = run_lab("football", "--json --preset frisbee");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  const double omega = 30.0, alpha = 5.0 * M_PI / 180;
+  CHECK(double(r["moment_symmetry_kg_m2"]) == 2 * double(r["moment_transverse_kg_m2"]));
+  // (Is - I)/I is exactly 1 for Is = 2I, so Omega = omega cos alpha to the last bit.
+  CHECK(double(r["body_precession_rate_rad_s"]) == omega * std::cos(alpha));
+  // phi_dot / omega = sqrt(1 + 3 cos^2 a) = 2 - 3 a^2/4 + O(a^4); a^4 ~ 6e-5 bounds the rest.
+  const double ratio = double(r["space_precession_rate_rad_s"]) / omega;
+  CHECK(ratio == Approx(2 - 0.75 * alpha * alpha).margin(std::pow(alpha, 4)));
+  CHECK(ratio == Approx(std::sqrt(1 + 3 * std::cos(alpha) * std::cos(alpha))).epsilon(1e-15));
+  CHECK(r["cones_touch"] == "inside");
+  CHECK(j["textbook"].contains("body_precession_rate_rad_s"));
+  bool feynman = false;
+  for (const auto& note : j["notes"]) feynman |= note.get<std::string>().find("Feynman") == 0;
+  CHECK(feynman);
+  // Any other physical option takes the text's example away.
+  CHECK(run_lab("football", "--json --preset frisbee --omega 10").json()["textbook"].empty());
+}
+
+TEST_CASE("football: the Earth's periods near the text's 305 and 0.997 days") {
+  const auto run = run_lab("football", "--json --preset earth");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  // Independent: omega = 2 pi per sidereal day, Omega = 0.00327 omega cos a,
+  // phi_dot = omega sqrt(1 + (1.00327^2 - 1) cos^2 a); cos a = 1 - 5e-13.
+  const double day = 86164.0905, a = 0.2 / 3600 * M_PI / 180, c = std::cos(a);
+  const double body_days = day / (0.00327 * c) / 86400;
+  const double space_days = day / std::sqrt(1 + (1.00327 * 1.00327 - 1) * c * c) / 86400;
+  // 1e-9: the moments are 8e37 and 1.00327 times it, so (Is - I)/I carries ~1e-13 of rounding.
+  CHECK(double(r["body_precession_period_days"]) == Approx(body_days).epsilon(1e-9));
+  CHECK(double(r["space_precession_period_days"]) == Approx(space_days).epsilon(1e-12));
+  CHECK(j["units"]["body_precession_period_days"] == "d");
+  // The text's printed values, within the rounding of their last digit and of the day used.
+  CHECK(std::abs(double(r["body_precession_period_days"]) - 305) < 0.5);
+  CHECK(std::abs(double(r["space_precession_period_days"]) - 0.997) < 0.004);
+  CHECK(j["textbook"]["body_precession_period_days"] == "305");
+  CHECK(j["textbook"]["space_precession_period_days"] == "0.997");
+  CHECK(r["cones_touch"] == "inside");
+}
+
+TEST_CASE("football: a sphere has no cones and no body period") {
+  const auto run = run_lab("football", "--json --inertia 1,1 --omega 2 --alpha-deg 30");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  CHECK(r["cones_touch"] == "none");
+  CHECK(r["body_precession_period_s"].is_null());
+  CHECK(double(r["space_precession_rate_rad_s"]) == Approx(2.0).epsilon(1e-15));
+}
+
+TEST_CASE("football: bad input exits 2 with one line naming the option") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--alpha-deg 0", "--alpha-deg"},   {"--alpha-deg 90", "--alpha-deg"},
+      {"--alpha-deg nan", "--alpha-deg"}, {"--inertia 1,3", "--inertia"},
+      {"--inertia -1,1", "--inertia"},    {"--inertia 1", "--inertia"},
+      {"--preset moon", "--preset"},      {"--omega 0", "--omega"},
+      {"--preset earth --inertia 1,1", "--inertia"},
+  };
+  for (const auto& [args, option] : cases) {
+    INFO(args);
+    const auto run = run_lab("football", args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(std::string("football: error: ") + option, 0) == 0);
+    CHECK(run.out.empty());
+  }
+}
+
+TEST_CASE("football: the integrated cross-check agrees with the closed form for every preset") {
+  for (const char* preset : {"football", "frisbee", "earth"}) {
+    INFO(preset);
+    const auto run = run_lab("football", std::string("--json --preset ") + preset);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    const auto& r = j["results"];
+    // dopri5 at tolerance 1e-12 for one period: the global error is far below 1e-9.
+    CHECK(double(r["integrated_rate_error_rel"]) < 1e-9);
+    CHECK(double(r["integrated_axis_return_rad"]) < 1e-9);
+    CHECK(double(r["integrated_L_drift_rel"]) < 1e-9);
+    CHECK(j["units"]["integrated_space_precession_rate_rad_s"] == "rad/s");
+  }
+}

@@ -31,6 +31,10 @@ std::string text_of(const Json& value) {
   if (value.is_array() && value.size() == 3 && value[0].is_number()) {
     return format_vec3({value[0].get<double>(), value[1].get<double>(), value[2].get<double>()});
   }
+  if (value.is_array() && value.size() == 2 && value[0].is_number()) {
+    return fmt::format("({}, {})", format_number(value[0].get<double>(), 5),
+                       format_number(value[1].get<double>(), 5));
+  }
   return value.dump();
 }
 
@@ -179,14 +183,40 @@ Option& Lab::angle_deg(const std::string& flag, double& degrees, const std::stri
 }
 
 Option& Lab::vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help) {
-  // CLI11 splits X,Y,Z at the commas, insists on three values and checks each.
+  Option& option = numbers(flag, 3, "X,Y,Z", fmt::format("{},{},{}", value(0), value(1), value(2)), help);
+  option.store_ = [&option, &value, flag] {
+    if (option.parts_.empty()) return;
+    value = Eigen::Vector3d(option.parts_[0], option.parts_[1], option.parts_[2]);
+    if (option.nonzero_ && value.isZero(0.0)) throw UsageError(flag, "must not be the zero vector");
+  };
+  option.record_ = [&option, &value] {
+    option.lab_.inputs_[option.key_] = Json::array({value(0), value(1), value(2)});
+  };
+  return option;
+}
+
+Option& Lab::pair(const std::string& flag, Eigen::Vector2d& value, const std::string& type_name,
+                  const std::string& help) {
+  Option& option = numbers(flag, 2, type_name, fmt::format("{},{}", value(0), value(1)), help);
+  option.store_ = [&option, &value] {
+    if (!option.parts_.empty()) value = Eigen::Vector2d(option.parts_[0], option.parts_[1]);
+  };
+  option.record_ = [&option, &value] {
+    option.lab_.inputs_[option.key_] = Json::array({value(0), value(1)});
+  };
+  return option;
+}
+
+Option& Lab::numbers(const std::string& flag, int count, const std::string& type_name,
+                     const std::string& default_text, const std::string& help) {
+  // CLI11 splits the value at the commas, insists on `count` values and checks each.
   options_.emplace_back(Option(*this, nullptr, json_key(flag), help));
   Option& option = options_.back();
   CLI::Option* cli = app_.add_option(flag, option.parts_)
                          ->delimiter(',')
-                         ->expected(3)
-                         ->type_name("X,Y,Z")
-                         ->default_str(fmt::format("{},{},{}", value(0), value(1), value(2)));
+                         ->expected(count)
+                         ->type_name(type_name)
+                         ->default_str(default_text);
   option.cli_ = cli;
   option.describe();
   cli->check(CLI::Validator(
@@ -198,14 +228,6 @@ Option& Lab::vector(const std::string& flag, Eigen::Vector3d& value, const std::
         return option.broken_rule(parsed, text);
       },
       ""));
-  option.store_ = [&option, &value, flag] {
-    if (option.parts_.empty()) return;
-    value = Eigen::Vector3d(option.parts_[0], option.parts_[1], option.parts_[2]);
-    if (option.nonzero_ && value.isZero(0.0)) throw UsageError(flag, "must not be the zero vector");
-  };
-  option.record_ = [&option, &value] {
-    option.lab_.inputs_[option.key_] = Json::array({value(0), value(1), value(2)});
-  };
   return option;
 }
 
@@ -314,12 +336,17 @@ std::string Lab::title_inputs() const {
   for (const Option& option : options_) {
     if (option.symbol_.empty() || !inputs_.contains(option.key_)) continue;
     const Json& value = inputs_[option.key_];
-    std::string shown = value.is_number() ? fmt::format("{:g}", value.get<double>() + 0.0)
-                        : value.is_array()
-                            ? fmt::format("({:g}, {:g}, {:g})", value[0].get<double>() + 0.0,
-                                          value[1].get<double>() + 0.0,
-                                          value[2].get<double>() + 0.0)
-                            : text_of(value);
+    std::string shown;
+    if (value.is_number()) {
+      shown = fmt::format("{:g}", value.get<double>() + 0.0);
+    } else if (value.is_array()) {
+      for (const Json& part : value) {
+        shown += fmt::format("{}{:g}", shown.empty() ? "(" : ", ", part.get<double>() + 0.0);
+      }
+      shown += ")";
+    } else {
+      shown = text_of(value);
+    }
     if (option.unit_ == "deg") {
       shown += "\\deg";
     } else if (!option.unit_.empty()) {

@@ -105,6 +105,9 @@ class Lab {
   Option& angle_deg(const std::string& flag, double& degrees, const std::string& help);
   /// Three numbers X,Y,Z, each under the number's rules.
   Option& vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help);
+  /// Two numbers A,B (`type_name` shows them in --help, e.g. "I,IS"), each under the number's rules.
+  Option& pair(const std::string& flag, Eigen::Vector2d& value, const std::string& type_name,
+               const std::string& help);
   /// One word out of `choices`.
   Option& choice(const std::string& flag, std::string& value,
                  const std::vector<std::string>& choices, const std::string& help);
@@ -162,6 +165,9 @@ class Lab {
     bool heading = false;
   };
   Option& declare(CLI::Option* cli, const std::string& flag, const std::string& help);
+  /// A comma-separated list of `count` numbers; the caller sets how it is stored and recorded.
+  Option& numbers(const std::string& flag, int count, const std::string& type_name,
+                  const std::string& default_text, const std::string& help);
   void check_output_paths() const;
   void store(const std::string& key, Json value, bool finite, const std::string& unit,
              const std::optional<std::string>& printed);

@@ -1,0 +1,108 @@
+// football's figures: the body cone rolling on the space cone, with omega along
+// their line of contact, L and the symmetry axis; the rates against alpha.
+#include "figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "rigid/inertia.h"
+#include "rigid/units.h"
+
+namespace rigid::lab::football {
+namespace {
+
+// A circle of `radius` about the z axis at height z.
+std::vector<Vec3> circle_about_z(double radius, double z) {
+  std::vector<Vec3> points;
+  for (int k = 0; k <= 120; ++k) {
+    const double a = 2 * kPi * k / 120;
+    points.emplace_back(radius * std::cos(a), radius * std::sin(a), z);
+  }
+  return points;
+}
+
+// L along z; the symmetry axis 3 and omega in the x-z plane at t = 0. The body
+// cone (half-angle alpha about 3) touches the space cone (half-angle |theta - alpha|
+// about L) along omega. Small angles are magnified by one factor, said in the title.
+render::Scene3D cones_scene(const Inputs& in, const SymmetricPrecession& p) {
+  const double widest = std::max(p.theta, p.body_cone);
+  const double magnify = std::max(1.0, std::min(deg_to_rad(22.0) / p.body_cone,
+                                                deg_to_rad(70.0) / widest));
+  const double theta = magnify * p.theta, alpha = magnify * p.body_cone;
+  const double space = magnify * p.space_cone;
+  const double lead = theta - alpha;  // omega's angle from L, towards 3 when > 0
+  const Vec3 L = Vec3::UnitZ();
+  const Vec3 axis3(std::sin(theta), 0, std::cos(theta));
+  const Vec3 omega(std::sin(lead), 0, std::cos(lead));
+
+  render::Scene3D scene;
+  scene.title = fmt::format("Is/I = {:.6g}, \\alpha = {:.3g}\\deg, body cone rolls {} the space cone",
+                            in.inertia(1) / in.inertia(0), in.alpha_deg,
+                            p.contact == ConeContact::kInside ? "round" : "outside");
+  if (magnify > 1) scene.title += fmt::format("; angles \\times{:.3g}", magnify);
+  scene.camera.eye = Vec3(0.9, -3.6, 1.5);
+  scene.camera.target = Vec3(0.15, 0, 0.55);
+  scene.camera.fov_y_deg = 32;
+
+  const double slant = 1.0;  // both cones end on the circle omega's tip sweeps
+  const char* space_name = "space cone (fixed, about L)";
+  const char* body_name = "body cone (about 3, rolls)";
+  if (space < deg_to_rad(1.0)) {  // too narrow to see: omega all but along L; say so
+    scene.title += fmt::format("; space cone {:.3g}\\deg, not drawn",
+                               rad_to_deg(p.space_cone));
+  } else {
+    scene.add_cone(Vec3::Zero(), slant * std::cos(space) * L, slant * std::sin(space),
+                   {render::kSkyBlue, 0.55f}, space_name);
+  }
+  scene.add_cone(Vec3::Zero(), slant * std::cos(alpha) * axis3, slant * std::sin(alpha),
+                 {render::kOrange, 0.4f}, body_name);
+  const double r = 0.016;
+  scene.add_arrow(Vec3::Zero(), 1.45 * L, r, {render::kBlue}, "L (fixed in space)");
+  scene.add_arrow(Vec3::Zero(), 1.45 * axis3, r, {render::kVermillion}, "symmetry axis 3");
+  scene.add_arrow(Vec3::Zero(), 1.3 * omega, r, {render::kBlack}, "\\omega, the line of contact");
+  scene.add_polyline(circle_about_z(1.45 * std::sin(theta), 1.45 * std::cos(theta)),
+                     render::kReddishPurple, 3.0, "path of 3 about L");
+  scene.add_label(1.5 * L, "L", render::kBlue);
+  scene.add_label(1.5 * axis3, "3", render::kVermillion);
+  scene.add_label(1.35 * omega, "\\omega", render::kBlack);
+  return scene;
+}
+
+// Omega / omega and phi_dot / omega against alpha for this body.
+render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
+  std::vector<double> alpha_deg, body, space;
+  for (int k = 1; k < 180; ++k) {
+    const double a = 0.5 * k;
+    const SymmetricPrecession q =
+        free_symmetric_precession(in.inertia(0), in.inertia(1), 1.0, deg_to_rad(a));
+    alpha_deg.push_back(a);
+    body.push_back(q.body_rate);
+    space.push_back(q.space_rate);
+  }
+  render::Plot2D plot;
+  plot.title = fmt::format("rates against \\alpha, Is/I = {:.4g}", in.inertia(1) / in.inertia(0));
+  render::Panel& panel = plot.panel();
+  panel.x = {"angle \\alpha between \\omega and 3 (\\deg)", render::Scale::kLinear, 0, 90};
+  panel.y = {"rate / \\omega"};
+  panel.add_line(alpha_deg, space, "\\phi-dot / \\omega, 3 about L in space (eq. 147)").color =
+      render::kBlue;
+  panel.add_line(alpha_deg, body, "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
+      .color = render::kVermillion;
+  panel.add_points({in.alpha_deg, in.alpha_deg}, {p.space_rate / in.omega, p.body_rate / in.omega},
+                   fmt::format("this run, \\alpha = {:.3g}\\deg", in.alpha_deg))
+      .color = render::kBlack;
+  return plot;
+}
+
+}  // namespace
+
+void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p) {
+  set.add("cones", "the body cone rolls on the space cone along omega",
+          cones_scene(in, p));
+  set.add("rates", "the precession rates against alpha", rates_plot(in, p));
+}
+
+}  // namespace rigid::lab::football
