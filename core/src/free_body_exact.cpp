@@ -15,6 +15,20 @@
 
 namespace rigid {
 
+std::string to_string(FreeMotionRegime regime) {
+  switch (regime) {
+    case FreeMotionRegime::kPolhodeAboutLargest:
+      return "polhode about the largest axis";
+    case FreeMotionRegime::kPolhodeAboutSmallest:
+      return "polhode about the smallest axis";
+    case FreeMotionRegime::kSeparatrix:
+      return "separatrix";
+    case FreeMotionRegime::kSteady:
+      break;
+  }
+  return "steady rotation";
+}
+
 namespace {
 
 // Double stays double inside Boost.Math: no silent long-double promotion.

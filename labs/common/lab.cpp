@@ -18,6 +18,10 @@ namespace {
 // this range of magnitudes no such product overflows or underflows a double.
 constexpr double kSmallest = 1e-60, kLargest = 1e60;
 
+std::string format_vec2(const Eigen::Vector2d& v) {
+  return fmt::format("({}, {})", format_number(v(0), 5), format_number(v(1), 5));
+}
+
 std::string format_vec3(const Eigen::Vector3d& v) {
   return fmt::format("({}, {}, {})", format_number(v(0), 5), format_number(v(1), 5),
                      format_number(v(2), 5));
@@ -32,8 +36,7 @@ std::string text_of(const Json& value) {
     return format_vec3({value[0].get<double>(), value[1].get<double>(), value[2].get<double>()});
   }
   if (value.is_array() && value.size() == 2 && value[0].is_number()) {
-    return fmt::format("({}, {})", format_number(value[0].get<double>(), 5),
-                       format_number(value[1].get<double>(), 5));
+    return format_vec2({value[0].get<double>(), value[1].get<double>()});
   }
   return value.dump();
 }
@@ -292,6 +295,12 @@ void Lab::result(const std::string& key, const std::string& label, double value,
   // Adding +0.0 turns a negative zero into 0.
   store(key, value + 0.0, std::isfinite(value), unit, printed);
   rows_.push_back({label, format_number(value, 6), unit, printed.value_or("")});
+}
+
+void Lab::result(const std::string& key, const std::string& label, const Eigen::Vector2d& value,
+                 const std::string& unit, std::optional<std::string> printed) {
+  store(key, Json::array({value(0) + 0.0, value(1) + 0.0}), value.allFinite(), unit, printed);
+  rows_.push_back({label, format_vec2(value), unit, printed.value_or("")});
 }
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,

@@ -133,6 +133,9 @@ class Lab {
   /// A scalar result with its unit ("" for a pure number); `printed` is the text's value.
   void result(const std::string& key, const std::string& label, double value,
               const std::string& unit, std::optional<std::string> printed = std::nullopt);
+  /// A pair of numbers (JSON: an array of two).
+  void result(const std::string& key, const std::string& label, const Eigen::Vector2d& value,
+              const std::string& unit, std::optional<std::string> printed = std::nullopt);
   /// A vector result.
   void result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
               const std::string& unit, std::optional<std::string> printed = std::nullopt);

@@ -8,18 +8,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/free_body_scenes.h"
 #include "rigid/poinsot.h"
 
 namespace rigid::lab::poinsot {
 using Eigen::Vector3d;
 namespace {
-
-// A camera that looks at the ellipsoids from between the axes.
-void frame_camera(render::Scene3D& scene, double size) {
-  scene.camera.eye = size * Vector3d(3.2, 2.3, 2.0);
-  scene.camera.target = Vector3d(0, 0, 0.2 * size);
-  scene.camera.fov_y_deg = 27;
-}
 
 // The energy and momentum ellipsoids and the polhode where they meet (section 4).
 render::Scene3D ellipsoids_scene(const FreeBodyExact& motion, const Vector3d& omega0,
@@ -40,60 +34,6 @@ render::Scene3D ellipsoids_scene(const FreeBodyExact& motion, const Vector3d& om
   }
   scene.add_sphere(omega0, 0.03 * size, {render::kBlack}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
-                 {"\\omega_1", "\\omega_2", "\\omega_3"});
-  return scene;
-}
-
-// Polhodes on one energy ellipsoid, about the largest and the smallest axis,
-// split by the separatrix through the intermediate axis (section 4.1).
-render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omega0,
-                               const std::vector<std::vector<Vector3d>>& polhode) {
-  const PrincipalMoments& I = motion.moments();
-  const double T = motion.energy();
-  const Vector3d moments = I.vector();
-  const double I_min = moments.minCoeff(), I_max = moments.maxCoeff();
-  const Vector3d semi = (2.0 * T * moments.cwiseInverse()).cwiseSqrt();
-  const double size = semi.maxCoeff();
-  render::Scene3D scene;
-  scene.title = "polhodes on the energy ellipsoid";
-  frame_camera(scene, size);
-  scene.add_ellipsoid(Vector3d::Zero(), semi, Eigen::Matrix3d::Identity(),
-                      {render::kLightGray, 1.0f, 0.15f}, "energy ellipsoid");
-  // Slightly outside the surface so the curves are not buried in it.
-  const auto lift = [](std::vector<Vector3d> curve) {
-    for (auto& p : curve) p *= 1.004;
-    return curve;
-  };
-  const double I_mid = moments.sum() - I_min - I_max;
-  const int family = 7;
-  for (int k = 1; k <= family; ++k) {
-    for (const bool about_largest : {true, false}) {
-      // L^2 evenly between 2T I_mid and the end of each family.
-      const double end = about_largest ? I_max : I_min;
-      const double L2 = 2.0 * T * (I_mid + (end - I_mid) * k / (family + 1.0));
-      const Vector3d w = omega_on_energy_ellipsoid(I, T, L2);
-      for (const double sign : {1.0, -1.0}) {
-        for (const auto& curve : rigid::polhode(I, sign * w, 240)) {
-          scene.add_tube(lift(curve), 0.006 * size,
-                         {about_largest ? render::kBlue : render::kBluishGreen},
-                         k == 1 && sign > 0 ? (about_largest ? "polhodes about the largest axis"
-                                                             : "polhodes about the smallest axis")
-                                            : "");
-        }
-      }
-    }
-  }
-  bool first = true;
-  for (const auto& curve : separatrices(I, T, 400)) {
-    scene.add_tube(lift(curve), 0.009 * size, {render::kVermillion}, first ? "separatrix" : "");
-    first = false;
-  }
-  for (std::size_t k = 0; k < polhode.size(); ++k) {
-    scene.add_tube(lift(polhode[k]), 0.011 * size, {render::kBlack},
-                   k == 0 ? "this body's polhode" : "");
-  }
-  scene.add_sphere(omega0 * 1.004, 0.02 * size, {render::kBlack}, "\\omega_0");
-  scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.3 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
   return scene;
 }

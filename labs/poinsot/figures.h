@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/figures.h"
+#include "common/free_body_run.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/integrate.h"
 #include "rigid/units.h"
@@ -21,10 +22,7 @@ struct Inputs {
   double mass = kPi;
   Eigen::Vector3d omega0{1, 1, 1};
   double t_end = 0.0;  ///< 0: three polhode periods
-  std::string method = "exact";
-  double tolerance = 1e-10;
-  double step = 0.0;  ///< 0: period / 2000
-  bool project = false;
+  IntegrationInputs integration;  ///< "exact" by default; step 0: period / 2000
 };
 
 /// What the figures show of a run.

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/free_body_run.h"
 #include "common/lab.h"
 #include "figures.h"
 #include "rigid/inertia.h"
@@ -54,21 +55,8 @@ int main(int argc, char** argv) {
       .symbol("\\omega_0");
   lab.number("--t-end", in.t_end, "end time").unit("s").positive().numerical().lab_default(
       "three polhode periods");
-  lab.choice("--method", in.method,
-             {"exact", "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"},
-             "how omega(t) is computed")
-      .numerical();
-  lab.number("--tolerance", in.tolerance, "relative and absolute tolerance of adaptive methods")
-      .open_range(0.0, 1.0)
-      .numerical();
-  lab.number("--step", in.step, "step of fixed-step methods")
-      .unit("s")
-      .positive()
-      .numerical()
-      .lab_default("polhode period / 2000");
-  lab.flag("--project", in.project,
-           "rk4, rkf78: project omega back onto T and |L| after each step")
-      .numerical();
+  rigid::lab::declare_integration_options(lab, in.integration, "how omega(t) is computed",
+                                          "polhode period / 2000");
   lab.enable_csv();
 
   return lab.run(argc, argv, [&](Lab& lab) {
@@ -97,9 +85,7 @@ int main(int argc, char** argv) {
     lab.result("energy", "kinetic energy T (eq. 81)", exact.energy(), "J");
     lab.result("angular_momentum_magnitude", "|L| (eq. 79)", exact.angular_momentum_magnitude(),
                "kg m^2/s");
-    const char* regimes[] = {"steady rotation", "polhode about the largest axis",
-                             "polhode about the smallest axis", "separatrix"};
-    const std::string regime = regimes[static_cast<int>(exact.regime())];
+    const std::string regime = rigid::to_string(exact.regime());
     if (std::isfinite(exact.period())) {
       lab.result("polhode_period_s", "polhode period", exact.period(), "s");
     } else {
@@ -110,58 +96,24 @@ int main(int argc, char** argv) {
 
     const double scale = time_scale(exact, in.omega0);
     const double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
-    // Past 1e9 periods the phase lambda t keeps fewer than 7 of its 16 digits.
-    if (t_end > 1e9 * scale) {
-      throw UsageError("--t-end", fmt::format("at most 1e9 periods ({:g} s) for these inputs: "
-                                              "beyond, the phase of the motion loses its digits",
-                                              1e9 * scale));
-    }
-    rigid::IntegrateOptions options;
-    options.abs_tol = options.rel_tol = in.tolerance;
-    options.step = lab.given("--step") ? in.step : scale / 2000.0;
-    options.max_steps = kMaxSteps;
-    options.method =
-        in.method == "exact" ? rigid::Method::kDopri5 : rigid::method_from_name(in.method);
+    rigid::lab::check_phase_digits(t_end, scale);
+    const rigid::IntegrateOptions options =
+        rigid::lab::integration_options(lab, in.integration, scale / 2000.0, kMaxSteps);
     // Two hundred samples a period; a fixed-step method is sampled on its own step grid.
-    const bool fixed = in.method != "exact" && !rigid::is_adaptive(options.method);
+    const bool fixed = rigid::lab::fixed_step(in.integration);
     const std::vector<double> times = rigid::sample_times(t_end, scale, fixed ? options.step : 0.0);
-    const char* integration_option = fixed ? "--step" : "--tolerance";
 
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));
-    lab.result_text("method", "method", in.method);
+    lab.result_text("method", "method", in.integration.method);
     lab.result("t_end_s", "end time t_end", t_end, "s");
     if (fixed) lab.result("step_s", "step h", options.step, "s");
-    rigid::IntegrationResult run;
-    if (in.method == "exact") {
-      run = rigid::sample_exact(exact, times);
-    } else {
-      options.project_invariants = in.project;
-      if (in.project && !rigid::can_project(options.method)) {
-        throw UsageError("--project", "works with --method rk4 or rkf78 only");
-      }
-      try {
-        run = rigid::integrate_free_body(I, exact.state(0.0), times, options);
-      } catch (const std::exception& e) {
-        throw UsageError(integration_option, e.what());
-      }
-      const std::vector<double> errors = rigid::omega_errors(run, exact);
-      // A step beyond the method's stability region blows omega up.
-      if (!std::all_of(errors.begin(), errors.end(), [](double e) { return std::isfinite(e); })) {
-        throw UsageError(integration_option,
-                         "the integration diverged (omega overflowed); shorten the step");
-      }
-      lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
-                 *std::max_element(errors.begin(), errors.end()), "");
-      lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
-    }
+    const rigid::IntegrationResult run =
+        rigid::lab::run_free_body(lab, exact, in.integration, options, times);
     lab.result("omega_end", "omega at t_end", run.samples.back().omega_body, "rad/s");
-    // Drift over the run, relative to the start (roundoff for "exact").
-    lab.result("energy_drift_rel", "max |T - T0| / T0", run.energy_drift_rel, "");
-    lab.result("momentum_drift_rel", "max ||L| - |L0|| / |L0|", run.momentum_drift_rel, "");
-    lab.result("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel, "");
+    rigid::lab::report_drifts(lab, run);
 
     lab.section(fmt::format("every integrator against the exact solution (tolerance {:g}, step {:.4g} s)",
-                            in.tolerance, options.step));
+                            in.integration.tolerance, options.step));
     // An aside: a method needing more steps than this is reported as not run.
     const std::vector<rigid::MethodComparison> methods =
         rigid::compare_methods(exact, times, scale, options, kMaxComparisonSteps);

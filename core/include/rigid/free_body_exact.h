@@ -23,6 +23,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <string>
 
 #include "rigid/free_body.h"
 
@@ -35,6 +36,10 @@ enum class FreeMotionRegime {
   kPolhodeAboutSmallest,  ///< polhode circles the axis of the smallest moment (L^2 < 2 T I_mid)
   kSeparatrix,            ///< L^2 = 2 T I_mid, not at rest on the intermediate axis
 };
+
+/// "steady rotation", "polhode about the largest axis", "polhode about the smallest
+/// axis" or "separatrix".
+std::string to_string(FreeMotionRegime regime);
 
 /// Sine, cosine and delta amplitude sn, cn, dn of u for the complementary
 /// parameter kp2 = k'^2 = 1 - k^2 in [0, 1] (kp2 = 0 gives tanh, sech, sech).

@@ -1,0 +1,82 @@
+#include "common/free_body_run.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigid::lab {
+
+void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
+                                 const std::string& step_default) {
+  std::vector<std::string> methods{"exact"};
+  for (const Method m : kAllMethods) methods.emplace_back(method_name(m));
+  lab.choice("--method", in.method, methods, method_help).numerical();
+  lab.number("--tolerance", in.tolerance, "relative and absolute tolerance of adaptive methods")
+      .open_range(0.0, 1.0)
+      .numerical();
+  lab.number("--step", in.step, "step of fixed-step methods")
+      .unit("s")
+      .positive()
+      .numerical()
+      .lab_default(step_default);
+  lab.flag("--project", in.project,
+           "rk4, rkf78: project omega back onto T and |L| after each step")
+      .numerical();
+}
+
+bool fixed_step(const IntegrationInputs& in) {
+  return in.method != "exact" && !is_adaptive(method_from_name(in.method));
+}
+
+IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in,
+                                     double default_step, std::size_t max_steps) {
+  IntegrateOptions options;
+  options.abs_tol = options.rel_tol = in.tolerance;
+  options.step = lab.given("--step") ? in.step : default_step;
+  options.max_steps = max_steps;
+  options.method = in.method == "exact" ? Method::kDopri5 : method_from_name(in.method);
+  options.project_invariants = in.project;
+  return options;
+}
+
+IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const IntegrationInputs& in,
+                                const IntegrateOptions& options, const std::vector<double>& times) {
+  if (in.method == "exact") return sample_exact(exact, times);
+  if (in.project && !can_project(options.method)) {
+    throw UsageError("--project", "works with --method rk4 or rkf78 only");
+  }
+  const char* option = fixed_step(in) ? "--step" : "--tolerance";
+  IntegrationResult run;
+  try {
+    run = integrate_free_body(exact.moments(), exact.state(0.0), times, options);
+  } catch (const std::exception& e) {
+    throw UsageError(option, e.what());
+  }
+  const std::vector<double> errors = omega_errors(run, exact);
+  // A step beyond the method's stability region blows omega up.
+  if (!std::all_of(errors.begin(), errors.end(), [](double e) { return std::isfinite(e); })) {
+    throw UsageError(option, "the integration diverged (omega overflowed); shorten the step");
+  }
+  lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
+             *std::max_element(errors.begin(), errors.end()), "");
+  lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
+  return run;
+}
+
+void check_phase_digits(double t_end, double scale) {
+  if (t_end > 1e9 * scale) {
+    throw UsageError("--t-end", fmt::format("at most 1e9 periods ({:g} s) for these inputs: "
+                                            "beyond, the phase of the motion loses its digits",
+                                            1e9 * scale));
+  }
+}
+
+void report_drifts(Lab& lab, const IntegrationResult& run) {
+  // Relative to the start; roundoff for the exact motion.
+  lab.result("energy_drift_rel", "max |T - T0| / T0", run.energy_drift_rel, "");
+  lab.result("momentum_drift_rel", "max ||L| - |L0|| / |L0|", run.momentum_drift_rel, "");
+  lab.result("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel, "");
+}
+
+}  // namespace rigid::lab

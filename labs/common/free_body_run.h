@@ -1,0 +1,52 @@
+// What every lab that integrates the free body shares (poinsot, tennis_racquet):
+// its numerical options --method, --tolerance, --step and --project, and the
+// run of the chosen method from the exact motion's start, measured against the
+// exact motion and reported with the drifts of its invariants.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/lab.h"
+#include "rigid/free_body_exact.h"
+#include "rigid/integrate.h"
+
+namespace rigid::lab {
+
+/// The numerical inputs; `method` is "exact" (no integration) or an integrator's name.
+struct IntegrationInputs {
+  std::string method = "exact";
+  double tolerance = 1e-10;
+  double step = 0.0;  ///< 0: the lab's default step
+  bool project = false;
+};
+
+/// Declares --method (its default is in.method), --tolerance, --step (whose default
+/// the lab derives, described by `step_default`) and --project.
+void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
+                                 const std::string& step_default);
+
+/// True when the chosen method takes a fixed step (so its samples lie on its grid).
+bool fixed_step(const IntegrationInputs& in);
+
+/// The options of the chosen method: the tolerance, the step (`default_step` unless
+/// --step was given) and at most `max_steps` steps.
+IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in,
+                                     double default_step, std::size_t max_steps);
+
+/// Runs the chosen method from exact.state(0) through `times` (the exact motion
+/// sampled, for "exact"), and reports its error against the exact motion
+/// (max_error_vs_exact) and its steps. Bad settings and a run that diverges are
+/// UsageErrors naming --step, --tolerance or --project.
+IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const IntegrationInputs& in,
+                                const IntegrateOptions& options, const std::vector<double>& times);
+
+/// Refuses (a UsageError naming --t-end) a run longer than 1e9 times the motion's
+/// time scale: beyond, the phase of the exact motion keeps fewer than 7 of its 16 digits.
+void check_phase_digits(double t_end, double scale);
+
+/// Reports the run's drift of T, |L| and L in space, relative to the start
+/// (energy_drift_rel, momentum_drift_rel, L_space_drift_rel).
+void report_drifts(Lab& lab, const IntegrationResult& run);
+
+}  // namespace rigid::lab

@@ -1,0 +1,46 @@
+// tennis_racquet's inputs and figures: omega against t for a spin about each
+// principal axis, the growth of the disturbance on a log scale, the racquet
+// turning over during one flip, and its polhodes with the separatrix.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "common/figures.h"
+#include "common/free_body_run.h"
+#include "rigid/free_body_exact.h"
+#include "rigid/racquet.h"
+
+namespace rigid::lab::tennis_racquet {
+
+/// The lab's inputs, with the text's model racquet (section 4.1, Figure 5).
+struct Inputs {
+  double head_mass = 0.15;      ///< m_a, kg
+  double head_radius = 0.13;    ///< a, m
+  double handle_mass = 0.18;    ///< m_l, kg
+  double handle_length = 0.38;  ///< l, m
+  std::string spin_axis = "2";  ///< the axis the run spins about
+  double omega = 10.0;          ///< the spin, rad/s
+  double perturbation = 0.01;   ///< transverse share of omega at launch
+  double t_end = 0.0;           ///< 0: one polhode period of the spin about axis 2 (two flips)
+  IntegrationInputs integration{"dopri5"};  ///< the cross-check
+};
+
+/// What the figures show.
+struct Figures {
+  const Racquet& racquet;
+  /// The exact motion launched about axes 1, 2 and 3 with the same disturbance.
+  const std::array<FreeBodyExact, 3>& launches;
+  std::array<SpinStability, 3> predicted;  ///< the linear prediction for each axis (eqs. 86-88)
+  double textbook_rate = 0.0;              ///< eq. 92's rate for every axis: the spin
+  const GrowthFit& growth;                 ///< the growth measured about axis 2
+  double t_end = 0.0;                      ///< the span of the omega panels, s
+  int spin_axis = 1;                       ///< the run's axis (0, 1, 2): its polhode is drawn
+};
+
+/// Hands the lab's figures to the set.
+void draw(FigureSet& set, const Figures& f);
+
+}  // namespace rigid::lab::tennis_racquet
