@@ -458,3 +458,167 @@ TEST_CASE("football: the integrated cross-check agrees with the closed form for 
     CHECK(j["units"]["integrated_space_precession_rate_rad_s"] == "rad/s");
   }
 }
+
+namespace {
+// The text's racquet, written out from eqs. 83-85 (independent of core's primitives).
+struct TextRacquet {
+  double ma = 0.15, a = 0.13, ml = 0.18, l = 0.38;
+  double R = ml * (a + l / 2) / (ma + ml);
+  double I1 = ma * a * a / 2;
+  double I2 = ma * a * a / 2 + ma * R * R + ml * l * l / 12 + ml * (a + l / 2 - R) * (a + l / 2 - R);
+  double I3 = I1 + I2;
+};
+}  // namespace
+
+TEST_CASE("tennis_racquet: defaults reproduce eqs. 83-85 and the flip about axis 2") {
+  const auto run = run_lab("tennis_racquet", "--json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  const TextRacquet t;
+  // The printed 0.175 m, 1.27, 11.81 and 13.08 x 10^-3 kg m^2, to their last digit.
+  CHECK(prints_as(r["cm_offset_m"], 0.175, 3));
+  CHECK(prints_as(double(r["principal_moments"][0]) * 1e3, 1.27, 2));
+  CHECK(prints_as(double(r["principal_moments"][1]) * 1e3, 11.81, 2));
+  CHECK(prints_as(double(r["principal_moments"][2]) * 1e3, 13.08, 2));
+  // And to roundoff against the formulas written out.
+  CHECK(double(r["cm_offset_m"]) == Approx(t.R).epsilon(1e-14));
+  CHECK(double(r["principal_moments"][1]) == Approx(t.I2).epsilon(1e-14));
+  CHECK(j["textbook"]["cm_offset_m"] == "0.175");
+  // Linear rates: axis 2 grows at omega sqrt((I3 - I2)(I2 - I1)/(I1 I3)); eq. 92 says omega.
+  const double omega = 10;
+  const double growth = omega * std::sqrt((t.I3 - t.I2) * (t.I2 - t.I1) / (t.I1 * t.I3));
+  CHECK(double(r["growth_rate_per_s"]) == Approx(growth).epsilon(1e-13));
+  CHECK(double(r["growth_rate_textbook_per_s"]) == omega);
+  CHECK(double(r["wobble_frequencies_rad_s"][0]) ==
+        Approx(omega * std::sqrt((t.I3 - t.I1) * (t.I2 - t.I1) / (t.I2 * t.I3))).epsilon(1e-13));
+  CHECK(double(r["wobble_frequencies_rad_s"][1]) == Approx(omega).epsilon(1e-13));
+  CHECK(j["units"]["growth_rate_per_s"] == "1/s");
+  CHECK(j["units"]["cm_offset_m"] == "m");
+  // Measured on the exact motion up to a share of 0.1: below the linear rate by less
+  // than 0.1^2 / 2 of it (the nonlinear terms, racquet.h).
+  const double measured = r["growth_rate_measured_per_s"];
+  CHECK(measured < growth);
+  CHECK(measured > growth * (1 - 0.005));
+  CHECK(double(r["growth_fit_shares"][1]) == Approx(0.1).epsilon(1e-9));
+  // Wobbles measured from the exact polhode periods: O(p^2) = 1e-4 from the linear ones.
+  CHECK(double(r["wobble_frequencies_measured_rad_s"][0]) ==
+        Approx(double(r["wobble_frequencies_rad_s"][0])).epsilon(1e-4));
+  CHECK(double(r["wobble_frequencies_measured_rad_s"][1]) ==
+        Approx(double(r["wobble_frequencies_rad_s"][1])).epsilon(1e-4));
+  // Flips every half-period of omega_2; the first a quarter-period after launch (omega_2 at its peak).
+  const double period = r["polhode_period_s"];
+  CHECK(double(r["flip_interval_s"]) == Approx(period / 2).epsilon(1e-15));
+  CHECK(double(r["first_flip_s"]) == Approx(period / 4).epsilon(1e-9));
+  // The handle tilts out of the plane across L by at most asin(L1/|L|) at L_2 = 0:
+  // L1^2 = I1 (2T I3 - L^2)/(I3 - I1), with omega0 = 10 (0, sqrt(1 - p^2), p).
+  const double p = 0.01, w2 = omega * std::sqrt(1 - p * p), w3 = omega * p;
+  const double T2 = t.I2 * w2 * w2 + t.I3 * w3 * w3;
+  const double L2 = t.I2 * t.I2 * w2 * w2 + t.I3 * t.I3 * w3 * w3;
+  const double excursion = std::asin(std::sqrt(t.I1 * (T2 * t.I3 - L2) / ((t.I3 - t.I1) * L2)));
+  CHECK(double(r["handle_excursion_max_deg"]) == Approx(excursion * 180 / M_PI).epsilon(1e-9));
+  // The cross-check: dopri5 at 1e-10 over one period stays within 1e-7 of the exact omega.
+  CHECK(double(r["max_error_vs_exact"]) < 1e-7);
+  CHECK(double(r["t_end_s"]) == period);
+  bool errata = false;
+  for (const auto& note : j["notes"]) errata |= note.get<std::string>().rfind("errata: eq. 92", 0) == 0;
+  CHECK(errata);
+}
+
+TEST_CASE("tennis_racquet: spins about axes 1 and 3 are stable and do not flip") {
+  for (const char* axis : {"1", "3"}) {
+    INFO("axis " << axis);
+    const auto run = run_lab("tennis_racquet", std::string("--json --spin-axis ") + axis);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    const auto& r = j["results"];
+    CHECK(r["flip_interval_s"].is_null());
+    CHECK(r["first_flip_s"].is_null());
+    CHECK(r["stability"] == "stable: a wobble");
+    // The launch (omega_1 = 0 about 3, omega_3 = 0 about 1) is where the handle is
+    // furthest: about 1, from L by atan(I2 p / (I1 sqrt(1 - p^2))) (5.3 deg, as I2 >> I1);
+    // about 3, out of the plane across L by atan(I1 p / (I3 sqrt(1 - p^2))).
+    const TextRacquet t;
+    const double p = 0.01, c = std::sqrt(1 - p * p);
+    const double expected = axis[0] == '1' ? std::atan(t.I2 * p / (t.I1 * c))
+                                           : std::atan(t.I1 * p / (t.I3 * c));
+    CHECK(double(r["handle_excursion_max_deg"]) == Approx(expected * 180 / M_PI).epsilon(1e-9));
+    // The run spins about the axis asked: the polhode period is 2 pi over the measured wobble.
+    const int k = axis[0] == '1' ? 0 : 1;
+    CHECK(double(r["polhode_period_s"]) ==
+          Approx(2 * M_PI / double(r["wobble_frequencies_measured_rad_s"][k])).epsilon(1e-14));
+    // --spin-axis is physical: no textbook column.
+    CHECK(j["textbook"].empty());
+  }
+}
+
+TEST_CASE("tennis_racquet: --csv holds the exact motion and the integrator's omega beside it") {
+  const std::string path = "/tmp/rigid_racquet_test_" + std::to_string(::getpid()) + ".csv";
+  std::remove(path.c_str());
+  const auto run = run_lab("tennis_racquet", "--json --method rkf78 --tolerance 1e-12 --csv " + path);
+  REQUIRE(run.status == 0);
+  const double t_end = run.json()["results"]["t_end_s"];
+  std::ifstream csv(path);
+  std::string line;
+  std::getline(csv, line);
+  CHECK(line == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,omega1_integrated,omega2_integrated,"
+                "omega3_integrated");
+  std::size_t rows = 0;
+  double last_t = -1, worst = 0, worst_norm = 0;
+  while (std::getline(csv, line)) {
+    std::vector<double> v;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    REQUIRE(v.size() == 11);
+    ++rows;
+    last_t = v[0];
+    // |omega| of a free racquet is not constant, but T and |L| are; the unit quaternion is unit.
+    worst_norm = std::max(worst_norm, std::abs(std::hypot(std::hypot(v[4], v[5]), std::hypot(v[6], v[7])) - 1));
+    for (int i = 1; i <= 3; ++i) worst = std::max(worst, std::abs(v[i] - v[i + 7]));
+  }
+  CHECK(rows > 100);
+  CHECK(last_t == t_end);
+  CHECK(worst_norm < 1e-14);
+  // rkf78 at 1e-12 over one period: the integrated omega within 1e-8 rad/s of the exact.
+  CHECK(worst < 1e-8);
+  std::remove(path.c_str());
+}
+
+TEST_CASE("tennis_racquet: bad input exits 2 with one line naming the option") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--spin-axis 4", "--spin-axis"},        {"--spin-axis 0", "--spin-axis"},
+      {"--perturbation 0", "--perturbation"},  {"--perturbation 0.5", "--perturbation"},
+      {"--perturbation nan", "--perturbation"}, {"--perturbation -0.1", "--perturbation"},
+      {"--head-mass -1", "--head-mass"},       {"--head-radius 0", "--head-radius"},
+      {"--handle-mass inf", "--handle-mass"},  {"--handle-length x", "--handle-length"},
+      {"--omega 0", "--omega"},                {"--t-end -1", "--t-end"},
+      {"--method dopri5 --project", "--project"},
+      {"--method rk4 --step 1e-9", "--step"},
+  };
+  for (const auto& [args, option] : cases) {
+    INFO(args);
+    const auto run = run_lab("tennis_racquet", args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(std::string("tennis_racquet: error: ") + option, 0) == 0);
+    CHECK(run.out.empty());
+  }
+}
+
+TEST_CASE("tennis_racquet: every integrator cross-checks the exact motion within its tolerance") {
+  const std::pair<const char*, double> methods[] = {
+      // Adaptive at 1e-10 over one period; fixed steps at period/2000: rk4's error
+      // (h lambda)^4 ~ 1e-10 per unit time, the splitting's (h lambda)^2 ~ 1e-5.
+      {"dopri5", 1e-7}, {"rkf78", 1e-7}, {"bulirsch-stoer", 1e-6},
+      {"rk4", 1e-7},    {"splitting", 1e-3}, {"splitting4", 1e-7},
+  };
+  for (const auto& [method, bound] : methods) {
+    INFO(method);
+    const auto run = run_lab("tennis_racquet", std::string("--json --method ") + method);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    const auto& r = j["results"];
+    CHECK(double(r["max_error_vs_exact"]) < bound);
+    CHECK(double(r["energy_drift_rel"]) < bound);
+  }
+}

@@ -74,7 +74,7 @@ render::Plot2D growth_plot(const Figures& f) {
   plot.title = "the disturbance of a spin about 2 grows exponentially";
   render::Panel& panel = plot.panel();
   panel.x = {"t (s)", render::Scale::kLinear, 0, flip};
-  panel.y = {"transverse share of \\omega, \\surd(\\omega_1^2 + \\omega_3^2) / |\\omega|",
+  panel.y = {"transverse share |\\omega_\\perp| / |\\omega| = \\sqrt(\\omega_1^2 + \\omega_3^2) / |\\omega|",
              render::Scale::kLog10, 0.3 * std::min(share.front(), slope_line(f.textbook_rate).second.front()), top};
   panel.add_span(f.growth.t_begin, f.growth.t_end, true, "fitted interval").color = render::kGray;
   panel.add_line(t, share, "exact motion").color = render::kBlack;
@@ -117,7 +117,7 @@ render::Scene3D flip_scene(const Figures& f) {
   const double spacing_x = 1.15 * length, spacing_z = 1.35 * a * 2 + 0.6 * length;
 
   render::Scene3D scene;
-  scene.title = "one flip, seen turning with the handle about the fixed L";
+  scene.title = "one flip: axis 2 turns from L to -L (seen turning with the handle about L)";
   const int columns = 3, instants = 6;
   for (int k = 0; k < instants; ++k) {
     // The instant where axis 2 makes the k-th of six angles with L.
@@ -136,7 +136,7 @@ render::Scene3D flip_scene(const Figures& f) {
     const Vector3d c((k % columns) * spacing_x, 0, -(k / columns) * spacing_z);
     const Vector3d head = c + R * r.head_centre, n3 = R.col(2);
     const bool first = k == 0;
-    scene.add_torus(head, n3, a, 0.07, {render::kGray}, first ? "the head, a ring" : "");
+    scene.add_torus(head, n3, a, 0.06 * a, {render::kGray}, first ? "the head, a ring" : "");
     scene.add_disk(head + 0.004 * a * n3, n3, 0.96 * a, {render::kSkyBlue},
                    first ? "face toward +3" : "");
     scene.add_disk(head - 0.004 * a * n3, -n3, 0.96 * a, {render::kOrange},
@@ -147,8 +147,9 @@ render::Scene3D flip_scene(const Figures& f) {
                     first ? "L, fixed in space" : "");
     scene.add_arrow(c, c + 0.4 * length * R.col(1), 0.03 * a, {render::kVermillion},
                     first ? "body axis 2" : "");
-    scene.add_label(c - 0.5 * length * Vector3d::UnitZ(),
-                    fmt::format("t = {:.3f} s, 2 at {:.0f}\\deg to L", t, rad_to_deg(angle2(t))));
+    scene.add_label(c - 0.45 * length * Vector3d::UnitZ(), fmt::format("t = {:.3f} s", t));
+    scene.add_label(c + 0.45 * length * R.col(1), fmt::format("{:.0f}\\deg", rad_to_deg(angle2(t))),
+                    render::kVermillion);
   }
   scene.camera.eye = Vector3d(0.9 * spacing_x, -4.0 * length * 3, 0.8 * length * 3);
   scene.camera.target = Vector3d(spacing_x, 0, -0.5 * spacing_z);
