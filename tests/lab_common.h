@@ -4,6 +4,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -50,6 +52,20 @@ inline Run run_lab(const std::string& lab, const std::string& args, const std::s
   run.err = text.str();
   std::remove(err_file.c_str());
   return run;
+}
+
+/// Bad input: each (arguments, option) case exits 2 with one line on stderr,
+/// "<lab>: error: <option>...", and prints nothing on stdout.
+template <class Cases>
+void check_bad_inputs(const std::string& lab, const Cases& cases) {
+  for (const auto& [args, option] : cases) {
+    INFO(args);
+    const Run run = run_lab(lab, args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(lab + ": error: " + option, 0) == 0);
+    CHECK(run.out.empty());
+  }
 }
 
 }  // namespace rigid::test

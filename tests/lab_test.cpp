@@ -220,14 +220,7 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
       {"--omega 1e200,1,1", "--omega"},
       {"--method rk4 --step 10", "--step"},
   };
-  for (const auto& [args, option] : cases) {
-    INFO(args);
-    const auto run = run_lab("poinsot", args);
-    CHECK(run.status == 2);
-    CHECK(run.one_error_line());
-    CHECK(run.err.rfind(std::string("poinsot: error: ") + option, 0) == 0);
-    CHECK(run.out.empty());
-  }
+  rigid::test::check_bad_inputs("poinsot", cases);
 }
 
 TEST_CASE("poinsot: steady rotation and the separatrix have no polhode period") {
@@ -434,14 +427,7 @@ TEST_CASE("football: bad input exits 2 with one line naming the option") {
       {"--preset moon", "--preset"},      {"--omega 0", "--omega"},
       {"--preset earth --inertia 1,1", "--inertia"},
   };
-  for (const auto& [args, option] : cases) {
-    INFO(args);
-    const auto run = run_lab("football", args);
-    CHECK(run.status == 2);
-    CHECK(run.one_error_line());
-    CHECK(run.err.rfind(std::string("football: error: ") + option, 0) == 0);
-    CHECK(run.out.empty());
-  }
+  rigid::test::check_bad_inputs("football", cases);
 }
 
 TEST_CASE("football: the integrated cross-check agrees with the closed form for every preset") {
@@ -595,14 +581,7 @@ TEST_CASE("tennis_racquet: bad input exits 2 with one line naming the option") {
       {"--method dopri5 --project", "--project"},
       {"--method rk4 --step 1e-9", "--step"},
   };
-  for (const auto& [args, option] : cases) {
-    INFO(args);
-    const auto run = run_lab("tennis_racquet", args);
-    CHECK(run.status == 2);
-    CHECK(run.one_error_line());
-    CHECK(run.err.rfind(std::string("tennis_racquet: error: ") + option, 0) == 0);
-    CHECK(run.out.empty());
-  }
+  rigid::test::check_bad_inputs("tennis_racquet", cases);
 }
 
 TEST_CASE("tennis_racquet: every integrator cross-checks the exact motion within its tolerance") {

@@ -14,13 +14,6 @@
 namespace rigid {
 namespace {
 
-void require_positive(double value, const char* what) {
-  if (!std::isfinite(value) || !(value > 0.0)) {
-    throw std::invalid_argument(std::string(what) + " must be positive and finite, got " +
-                                format_number(value));
-  }
-}
-
 // A body axis's direction cosine with L at time t: L_axis / |L|.
 double cosine_with_L(const FreeBodyExact& motion, int axis, double t) {
   const PrincipalMoments& I = motion.moments();
@@ -42,10 +35,7 @@ double bisect(double lo, double hi, Above above) {
 }  // namespace
 
 Racquet make_racquet(const RacquetModel& model) {
-  require_positive(model.head_mass, "the head's mass");
-  require_positive(model.head_radius, "the head's radius");
-  require_positive(model.handle_mass, "the handle's mass");
-  require_positive(model.handle_length, "the handle's length");
+  // thin_ring and thin_rod refuse a mass or size that is not positive and finite.
   const double a = model.head_radius, l = model.handle_length;
   // The head in the 1-2 plane about the origin; the handle along 1 from the rim.
   const Body head = thin_ring(model.head_mass, a);
