@@ -111,6 +111,25 @@ void jacobi_sn_cn_dn(double u, double kp2, double& sn, double& cn, double& dn) {
   gauss_sn_cn_dn(g.levels, g.a, g.b, g.scale, u, sn, cn, dn);
 }
 
+JacobiElliptic::JacobiElliptic(double kp2) {
+  if (!(kp2 >= 0.0 && kp2 <= 1.0)) {
+    bad_input("JacobiElliptic: complementary parameter k'^2 must lie in [0, 1], got " +
+              format_number(kp2));
+  }
+  separatrix_ = kp2 < std::numeric_limits<double>::min();
+  if (separatrix_) return;
+  const GaussTable g = make_gauss_table(kp2);
+  levels_ = g.levels;
+  std::copy(g.a, g.a + g.levels, a_);
+  std::copy(g.b, g.b + g.levels, b_);
+  scale_ = g.scale;
+}
+
+void JacobiElliptic::operator()(double u, double& sn, double& cn, double& dn) const {
+  if (separatrix_) return separatrix_sn_cn_dn(u, sn, cn, dn);
+  gauss_sn_cn_dn(levels_, a_, b_, scale_, u, sn, cn, dn);
+}
+
 FreeBodyExact::FreeBodyExact(const PrincipalMoments& I, const Eigen::Vector3d& omega0_body,
                              const Eigen::Quaterniond& q0, MomentsRule rule)
     : I_(I) {

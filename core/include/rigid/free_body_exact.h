@@ -46,6 +46,22 @@ std::string to_string(FreeMotionRegime regime);
 /// Accurate for k'^2 -> 0, unlike an interface that takes k.
 void jacobi_sn_cn_dn(double u, double kp2, double& sn, double& cn, double& dn);
 
+/// sn, cn, dn for one complementary parameter k'^2 in [0, 1], the Gauss
+/// transformation's table made once, so each evaluation costs one sin, one cos
+/// and a short loop (what jacobi_sn_cn_dn does per call).
+class JacobiElliptic {
+ public:
+  explicit JacobiElliptic(double kp2);
+  void operator()(double u, double& sn, double& cn, double& dn) const;
+
+ private:
+  static constexpr int kMax = 32;
+  bool separatrix_ = false;
+  int levels_ = 0;
+  double a_[kMax] = {}, b_[kMax] = {};
+  double scale_ = 1.0;
+};
+
 /// Exact torque-free motion from omega_body and the attitude at t = 0.
 /// Everything independent of t is computed in the constructor; a sample costs
 /// one sn/cn/dn evaluation (plus one Carlson R_J for the attitude).

@@ -1,0 +1,162 @@
+// The heavy symmetric top on a fixed pivot (sections 8, 8.1 and 9, eqs. 167-195;
+// Goldstein, Classical Mechanics, section 5.7).
+//
+// Conventions. I is the moment about any transverse axis through the pivot, Is
+// the moment about the symmetry axis 3, and mgl = m g l with l the distance from
+// the pivot to the centre of mass along 3. Euler angles are Goldstein's z-x-z:
+// the body-to-space rotation is Rz(phi) Rx(theta) Rz(psi), theta is the tilt
+// of 3 from the upward vertical z, phi its azimuth (precession) and psi the turn
+// about 3; omega_body = (phi_dot sin(theta) sin(psi) + theta_dot cos(psi),
+// phi_dot sin(theta) cos(psi) - theta_dot sin(psi), phi_dot cos(theta) + psi_dot).
+// The spin S = omega_3 = phi_dot cos(theta) + psi_dot (eq. 170); p_psi = Is S and
+// p_phi = I phi_dot sin^2(theta) + Is S cos(theta) (eqs. 176-177) are conserved,
+// with E' = I (theta_dot^2 + phi_dot^2 sin^2 theta) / 2 + mgl cos(theta) (eq. 193).
+//
+// The exact motion. With u = cos(theta), a = p_psi / I, b = p_phi / I and
+// beta = 2 mgl / I, the energy equation is u_dot^2 = f(u) = (2E'/I - beta u)(1 - u^2)
+// - (b - a u)^2, a cubic with roots u1 <= u2 <= 1 <= u3; the axis nods between
+// theta_max = acos(u1) and theta_min = acos(u2) as
+//   u(t) = u1 + (u2 - u1) sn^2(lambda t + v0, k),  k^2 = (u2 - u1)/(u3 - u1),
+//   lambda = sqrt(beta (u3 - u1)) / 2,  nutation period 2 K(k) / lambda,
+// and phi(t), psi(t) follow from phi_dot = (b - a u)/(1 - u^2) and
+// psi_dot = S - u phi_dot by partial fractions in 1 - u and 1 + u, each an
+// elliptic integral of the third kind (Carlson's R_J, as the free body uses).
+// The cubic is formed about u0 = cos(theta0), in w = u - u0, so its
+// coefficients carry no cancellation: f(0) = theta_dot0^2 sin^2 theta0 exactly.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+
+#include "rigid/free_body_exact.h"
+
+namespace rigid {
+
+/// A symmetric top on a fixed pivot: moments about the pivot and the gravity torque scale.
+struct HeavyTop {
+  double I = 1.0;    ///< about a transverse axis through the pivot, kg m^2
+  double Is = 1.0;   ///< about the symmetry axis, kg m^2
+  double mgl = 1.0;  ///< m g l, N m (l: pivot to centre of mass)
+};
+
+/// Throws std::invalid_argument unless I, Is and mgl are positive and finite.
+void validate(const HeavyTop& top);
+
+/// Throws std::invalid_argument unless a body of mass m with its centre of mass
+/// at `arm` from the pivot can have the pivot moments I, Is: about the centre of
+/// mass the transverse moment I - m arm^2 must be at least Is/2 (the triangle
+/// inequality of a symmetric body; a thin disk sits on the bound and passes).
+void validate_top_body(double I, double Is, double m, double arm);
+
+/// The smallest spin of a sleeping top, S = sqrt(4 mgl I) / Is, rad/s (eqs. 188-189).
+double sleeping_min_spin(const HeavyTop& top);
+
+/// The precession rate of a horizontal top, mgl / (Is S), rad/s (eq. 185).
+double horizontal_precession_rate(const HeavyTop& top, double spin);
+
+/// The two steady precession rates at tilt theta (eq. 187, from eq. 184 with
+/// theta_ddot = 0: mgl = Is S phi_dot - I phi_dot^2 cos(theta)).
+struct SteadyPrecession {
+  bool exists = false;  ///< false when Is^2 S^2 < 4 mgl I cos(theta) (eq. 188)
+  double slow = 0.0;    ///< (Is S - sqrt(D)) / (2 I cos theta), formed as 2 mgl / (Is S + sqrt(D))
+  double fast = 0.0;    ///< (Is S + sqrt(D)) / (2 I cos theta); +inf at theta = 90 deg
+};
+SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, double theta);
+
+/// The start of a motion: Euler angles and rates at t = 0.
+struct TopStart {
+  double theta = 0.0;      ///< rad, in [0, pi)
+  double theta_dot = 0.0;  ///< rad/s
+  double phi_dot = 0.0;    ///< rad/s
+  double spin = 0.0;       ///< S = omega_3, rad/s
+  double phi = 0.0;        ///< rad
+  double psi = 0.0;        ///< rad
+};
+
+/// The figure the symmetry axis traces on the unit sphere.
+enum class TopRegime {
+  kSleeping,  ///< upright and not nodding: theta = 0 for all t
+  kSteady,    ///< u1 = u2: steady precession at one tilt
+  kWavy,      ///< phi_dot keeps one sign at both turning circles
+  kLooping,   ///< phi_dot changes sign: the axis loops back
+  kCusped,    ///< phi_dot = 0 at a turning circle (a top released with phi_dot = theta_dot = 0)
+};
+/// "sleeping", "steady", "wavy", "looping" or "cusped".
+std::string to_string(TopRegime regime);
+
+/// Euler angles and their rates at one time.
+struct TopAngles {
+  double theta = 0.0, phi = 0.0, psi = 0.0;
+  double theta_dot = 0.0, phi_dot = 0.0, psi_dot = 0.0;
+};
+
+/// The body-to-space rotation Rz(phi) Rx(theta) Rz(psi).
+Eigen::Quaterniond euler_attitude(double phi, double theta, double psi);
+/// omega in body axes from the Euler angles and rates (header comment).
+Eigen::Vector3d euler_omega_body(const TopAngles& a);
+
+/// The exact motion of the heavy symmetric top from a start.
+class HeavyTopExact {
+ public:
+  /// Throws std::invalid_argument for an invalid top, a non-finite start, theta
+  /// outside [0, pi), or a top at rest upright (theta = 0, no spin, no theta_dot).
+  HeavyTopExact(const HeavyTop& top, const TopStart& start);
+
+  /// The Euler angles and rates at time t.
+  TopAngles angles(double t) const;
+  /// theta(t) alone, rad (one sn evaluation).
+  double theta(double t) const;
+  /// The body-to-space attitude at time t.
+  Eigen::Quaterniond attitude(double t) const;
+
+  /// The roots of f(u): u1 <= u2 bound the motion, u3 >= 1.
+  double u1() const { return u0_ + w1_; }
+  double u2() const { return u0_ + w2_; }
+  double u3() const { return u0_ + w3_; }
+  /// The turning angles acos(u2) and acos(u1), rad.
+  double theta_min() const;
+  double theta_max() const;
+  /// The nutation period 2 K(k) / lambda, s (pi / lambda in the steady limit; +inf for a
+  /// top on the separatrix, u2 = u3, which takes forever to leave the vertical).
+  double nutation_period() const { return period_; }
+  /// The mean of phi_dot over a nutation period, rad/s.
+  double mean_precession_rate() const { return mean_phi_dot_; }
+  /// The regime of the symmetry axis's path.
+  TopRegime regime() const { return regime_; }
+  /// phi_dot at the turning circles theta_max (u1) and theta_min (u2), rad/s.
+  double phi_dot_at_u1() const { return phi_dot_u1_; }
+  double phi_dot_at_u2() const { return phi_dot_u2_; }
+
+  /// Conserved: the total energy E = E' + Is S^2 / 2 (J), p_phi = L_z and p_psi = Is S (kg m^2/s).
+  double energy() const { return energy_; }
+  double p_phi() const { return p_phi_; }
+  double p_psi() const { return p_psi_; }
+  const HeavyTop& top() const { return top_; }
+  const TopStart& start() const { return start_; }
+
+ private:
+  struct Phase {
+    double sn, cn, dn;
+    double v;  ///< lambda t + v0
+  };
+  Phase phase(double t) const;
+  double theta_from(const Phase& p) const;
+  // The integral of 1/(1 - n sn^2) from 0 to v (v reduced by 2K inside).
+  double third_kind(double v, double n, double complete) const;
+
+  HeavyTop top_;
+  TopStart start_;
+  TopRegime regime_ = TopRegime::kSteady;
+  double u0_ = 1.0, one_minus_u0_ = 0.0;
+  double a_ = 0.0, beta_ = 0.0, d0_ = 0.0;  // p_psi/I, 2 mgl/I, phi_dot0 sin^2(theta0)
+  double w1_ = 0.0, w2_ = 0.0, w3_ = 0.0;   // the roots, u_i - u0
+  double lambda_ = 0.0, v0_ = 0.0, kp2_ = 1.0, k2_ = 0.0, K_ = 0.0, period_ = 0.0;
+  double n_plus_ = 0.0, n_minus_ = 0.0, pi_plus_ = 0.0, pi_minus_ = 0.0;
+  double b_minus_a_ = 0.0, b_plus_a_ = 0.0;
+  double G_plus_0_ = 0.0, G_minus_0_ = 0.0;
+  double mean_phi_dot_ = 0.0, phi_dot_u1_ = 0.0, phi_dot_u2_ = 0.0;
+  double energy_ = 0.0, p_phi_ = 0.0, p_psi_ = 0.0;
+  JacobiElliptic jacobi_{1.0};
+};
+
+}  // namespace rigid

@@ -1,0 +1,325 @@
+// The heavy symmetric top: steady motions and the exact motion (heavy_top.h).
+#include "rigid/heavy_top.h"
+
+#include <algorithm>
+#include <boost/math/special_functions/ellint_rf.hpp>
+#include <boost/math/special_functions/ellint_rj.hpp>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "rigid/format.h"
+#include "rigid/free_body_exact.h"
+#include "rigid/units.h"
+
+namespace rigid {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+void require_positive(double value, const char* what) {
+  if (!std::isfinite(value) || !(value > 0.0)) {
+    throw std::invalid_argument(std::string(what) + " must be positive and finite, got " +
+                                format_number(value));
+  }
+}
+
+double rf(double x, double y, double z) { return boost::math::ellint_rf(x, y, z); }
+double rj(double x, double y, double z, double p) { return boost::math::ellint_rj(x, y, z, p); }
+
+}  // namespace
+
+void validate(const HeavyTop& top) {
+  require_positive(top.I, "the transverse moment I");
+  require_positive(top.Is, "the moment Is about the symmetry axis");
+  require_positive(top.mgl, "m g l");
+}
+
+void validate_top_body(double I, double Is, double m, double arm) {
+  require_positive(I, "the transverse moment I");
+  require_positive(Is, "the moment Is about the symmetry axis");
+  require_positive(m, "the mass");
+  require_positive(arm, "the arm");
+  // About the centre of mass: I_cm = I - m arm^2 >= Is / 2, to a few ulps of I so
+  // that a thin disk (I_cm = Is / 2 exactly, up to rounding) passes.
+  const double I_cm = I - m * arm * arm;
+  if (I_cm < 0.5 * Is - 8 * kEps * I) {
+    throw std::invalid_argument(
+        "no body has these moments: about the centre of mass I - m arm^2 = " +
+        format_number(I_cm) + " kg m^2 must be at least Is/2 = " + format_number(0.5 * Is));
+  }
+}
+
+double sleeping_min_spin(const HeavyTop& top) {
+  validate(top);
+  return std::sqrt(4.0 * top.mgl * top.I) / top.Is;  // eq. 189
+}
+
+double horizontal_precession_rate(const HeavyTop& top, double spin) {
+  validate(top);
+  return top.mgl / (top.Is * spin);  // eq. 185
+}
+
+SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, double theta) {
+  validate(top);
+  const double c = std::cos(theta), L3 = top.Is * spin;
+  const double D = L3 * L3 - 4.0 * top.mgl * top.I * c;  // eq. 188
+  SteadyPrecession p;
+  if (!(D >= 0.0)) return p;
+  p.exists = true;
+  const double root = std::sqrt(D);
+  // I c phi_dot^2 - Is S phi_dot + mgl = 0; the root without cancellation first.
+  const double big = L3 >= 0 ? L3 + root : L3 - root;
+  p.slow = 2.0 * top.mgl / big;
+  p.fast = c == 0.0 ? std::copysign(std::numeric_limits<double>::infinity(), big)
+                    : big / (2.0 * top.I * c);
+  return p;
+}
+
+std::string to_string(TopRegime regime) {
+  switch (regime) {
+    case TopRegime::kSleeping:
+      return "sleeping";
+    case TopRegime::kWavy:
+      return "wavy";
+    case TopRegime::kLooping:
+      return "looping";
+    case TopRegime::kCusped:
+      return "cusped";
+    case TopRegime::kSteady:
+      break;
+  }
+  return "steady";
+}
+
+Eigen::Quaterniond euler_attitude(double phi, double theta, double psi) {
+  return Eigen::AngleAxisd(phi, Eigen::Vector3d::UnitZ()) *
+         Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitX()) *
+         Eigen::AngleAxisd(psi, Eigen::Vector3d::UnitZ());
+}
+
+Eigen::Vector3d euler_omega_body(const TopAngles& a) {
+  const double st = std::sin(a.theta), ct = std::cos(a.theta);
+  const double sp = std::sin(a.psi), cp = std::cos(a.psi);
+  return {a.phi_dot * st * sp + a.theta_dot * cp, a.phi_dot * st * cp - a.theta_dot * sp,
+          a.phi_dot * ct + a.psi_dot};
+}
+
+HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
+    : top_(top), start_(start) {
+  validate(top);
+  const TopStart& s = start;
+  if (!std::isfinite(s.theta) || !std::isfinite(s.theta_dot) || !std::isfinite(s.phi_dot) ||
+      !std::isfinite(s.spin) || !std::isfinite(s.phi) || !std::isfinite(s.psi)) {
+    throw std::invalid_argument("the start (angles and rates) must be finite");
+  }
+  if (!(s.theta >= 0.0 && s.theta < kPi)) {
+    throw std::invalid_argument("theta0 must lie in [0, 180) deg, got " +
+                                format_number(rad_to_deg(s.theta)) + " deg");
+  }
+  if (s.theta == 0.0 && s.theta_dot == 0.0 && s.spin == 0.0) {
+    throw std::invalid_argument(
+        "a top upright at rest (theta0 = 0, no spin, no theta_dot) does not move");
+  }
+  const double I = top.I, Is = top.Is;
+  const double st = std::sin(s.theta), s2 = st * st;
+  u0_ = std::cos(s.theta);
+  one_minus_u0_ = 2.0 * std::pow(std::sin(0.5 * s.theta), 2);  // 1 - cos, without cancellation
+  a_ = Is * s.spin / I;
+  beta_ = 2.0 * top.mgl / I;
+  d0_ = s.phi_dot * s2;
+  p_psi_ = Is * s.spin;                                                  // eq. 176
+  p_phi_ = I * s.phi_dot * s2 + p_psi_ * u0_;                            // eq. 177
+  const double c0 = s.theta_dot * s.theta_dot + s.phi_dot * s.phi_dot * s2;
+  energy_ = 0.5 * I * c0 + top.mgl * u0_ + 0.5 * Is * s.spin * s.spin;  // eqs. 191-193
+
+  // An upright top with no theta_dot stays upright: it sleeps (stably or not).
+  if (s.theta == 0.0 && s.theta_dot == 0.0) {
+    regime_ = TopRegime::kSleeping;
+    period_ = std::numeric_limits<double>::infinity();
+    mean_phi_dot_ = 0.0;
+    return;
+  }
+
+  // f(u0 + w) = beta w^3 + A w^2 + B w + C (header comment).
+  const double A = -c0 + 2.0 * beta_ * u0_ - a_ * a_;
+  const double B = -2.0 * c0 * u0_ - beta_ * s2 + 2.0 * a_ * d0_;
+  const double C = s.theta_dot * s.theta_dot * s2;
+  const auto f = [&](double w) { return ((beta_ * w + A) * w + B) * w + C; };
+  const auto df = [&](double w) { return (3.0 * beta_ * w + 2.0 * A) * w + B; };
+  // The largest root lies right of the cubic's inflection point, where f is convex:
+  // Newton's method from an upper bound (Cauchy's) falls to it monotonically.
+  double w = 1.0 + std::max({std::abs(A), std::abs(B), std::abs(C)}) / beta_;
+  w = std::max(w, one_minus_u0_);
+  for (int it = 0; it < 500; ++it) {
+    const double step = f(w) / df(w);
+    const double next = w - step;
+    if (!(next < w) || !std::isfinite(next)) break;
+    w = next;
+  }
+  w3_ = std::max(w, one_minus_u0_);  // u3 >= 1: f(1) = -(b - a)^2 <= 0
+  // Deflate: f = beta (w - w3)(w^2 + p w + q), q = -C / (beta w3) <= 0, so the
+  // other two roots are real with w1 <= 0 <= w2 (f(0) = C >= 0).
+  const double p = A / beta_ + w3_;
+  const double q = w3_ > 0.0 ? -C / (beta_ * w3_) : 0.0;
+  const double disc = std::max(p * p - 4.0 * q, 0.0);
+  const double r = -0.5 * (p + std::copysign(std::sqrt(disc), p));
+  const double other = r != 0.0 ? q / r : 0.0;
+  w1_ = std::min(std::min(r, other), 0.0);
+  w2_ = std::max(std::max(r, other), 0.0);
+  w1_ = std::max(w1_, -1.0 - u0_);
+  w2_ = std::min(w2_, one_minus_u0_);
+  if (w2_ > w3_) std::swap(w2_, w3_);
+
+  // sn^2 of the phase, its modulus and rate.
+  const double span = w3_ - w1_;  // u3 - u1 > 0
+  k2_ = (w2_ - w1_) / span;
+  kp2_ = (w3_ - w2_) / span;
+  lambda_ = 0.5 * std::sqrt(beta_ * span);
+  jacobi_ = JacobiElliptic(kp2_);
+  K_ = rf(0.0, kp2_, 1.0);
+  period_ = kp2_ > 0.0 ? 2.0 * K_ / lambda_ : std::numeric_limits<double>::infinity();
+  // The phase at t = 0: sn^2(v0) = (u0 - u1)/(u2 - u1), v0 = F(asin(sqrt(r)), k) by
+  // Carlson's R_F with 1 - r = w2/(w2 - w1) and 1 - k^2 r = w3/(w3 - w1) formed exactly;
+  // v0 < 0 while u falls (theta_dot0 > 0).
+  if (w2_ > w1_) {
+    const double ratio = -w1_ / (w2_ - w1_);
+    v0_ = std::sqrt(ratio) * rf(w2_ / (w2_ - w1_), w3_ / span, 1.0);
+    if (s.theta_dot > 0.0) v0_ = -v0_;
+  }
+  const double amplitude = w2_ - w1_;
+  regime_ = amplitude <= 64 * kEps ? TopRegime::kSteady : TopRegime::kWavy;
+
+  // phi_dot = (b - a u)/(1 - u^2) = [(b - a)/(1 - u) + (b + a)/(1 + u)] / 2, and
+  // 1 - u = (1 - u1)(1 - n+ sn^2), 1 + u = (1 + u1)(1 + n- sn^2).
+  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
+  b_minus_a_ = d0_ - a_ * one_minus_u0_;        // b - a u at u = 1
+  b_plus_a_ = d0_ + a_ * (1.0 + u0_);           // b - a u at u = -1
+  n_plus_ = one_minus_u1 > 0.0 ? amplitude / one_minus_u1 : 0.0;
+  n_minus_ = -amplitude / one_plus_u1;
+  // Complete integrals of 1/(1 - n sn^2) over a half period: Pi(n, k) = K + n/3 R_J(0, k'^2, 1, 1 - n).
+  const auto complete = [&](double n) {
+    return n == 0.0 ? K_ : K_ + n / 3.0 * rj(0.0, kp2_, 1.0, 1.0 - n);
+  };
+  pi_plus_ = b_minus_a_ != 0.0 && n_plus_ < 1.0 ? complete(n_plus_) : 0.0;
+  pi_minus_ = complete(n_minus_);
+  G_plus_0_ = b_minus_a_ != 0.0 ? third_kind(v0_, n_plus_, pi_plus_) : 0.0;
+  G_minus_0_ = third_kind(v0_, n_minus_, pi_minus_);
+  mean_phi_dot_ = (b_minus_a_ / one_minus_u1 * pi_plus_ + b_plus_a_ / one_plus_u1 * pi_minus_) /
+                  (2.0 * K_);
+  if (b_minus_a_ == 0.0) mean_phi_dot_ = b_plus_a_ / one_plus_u1 * pi_minus_ / (2.0 * K_);
+
+  // phi_dot at the turning circles: its numerator b - a u = d0 - a w, exact at w = 0.
+  const auto phi_dot_at = [&](double wi) {
+    const double omu = one_minus_u0_ - wi, opu = (1.0 + u0_) + wi;
+    return omu > 0.0 ? (d0_ - a_ * wi) / (omu * opu) : 0.5 * b_plus_a_ / opu;
+  };
+  phi_dot_u1_ = phi_dot_at(w1_);
+  phi_dot_u2_ = phi_dot_at(w2_);
+  if (regime_ == TopRegime::kWavy) {
+    // A numerator within roundoff of zero is a cusp (released with phi_dot = theta_dot = 0).
+    const auto numerator = [&](double wi) {
+      const double n = d0_ - a_ * wi;
+      return std::abs(n) <= 16 * kEps * (std::abs(d0_) + std::abs(a_ * wi)) ? 0.0 : n;
+    };
+    const double n1 = numerator(w1_), n2 = numerator(w2_);
+    if (n1 == 0.0 || n2 == 0.0) {
+      regime_ = TopRegime::kCusped;
+    } else if ((n1 > 0) != (n2 > 0)) {
+      regime_ = TopRegime::kLooping;
+    }
+  }
+}
+
+HeavyTopExact::Phase HeavyTopExact::phase(double t) const {
+  Phase p;
+  p.v = lambda_ * t + v0_;
+  if (kp2_ == 1.0 || k2_ == 0.0) {  // k = 0: sn = sin
+    p.sn = std::sin(p.v);
+    p.cn = std::cos(p.v);
+    p.dn = 1.0;
+  } else {
+    jacobi_(p.v, p.sn, p.cn, p.dn);
+  }
+  return p;
+}
+
+double HeavyTopExact::third_kind(double v, double n, double complete) const {
+  // Reduce v to [-K, K] by whole half-periods 2K: each adds 2 Pi(n, k).
+  if (!(K_ > 0.0) || !std::isfinite(K_)) return v;
+  const double m = std::round(v / (2.0 * K_));
+  const double vr = v - 2.0 * K_ * m;
+  double sn, cn, dn;
+  if (k2_ == 0.0) {
+    sn = std::sin(vr);
+    cn = std::cos(vr);
+    dn = 1.0;
+  } else {
+    jacobi_(vr, sn, cn, dn);
+  }
+  // Pi(n; am v, k) = v + n/3 sn^3 R_J(cn^2, dn^2, 1, 1 - n sn^2) for |v| <= K.
+  const double part = n == 0.0 ? vr : vr + n / 3.0 * sn * sn * sn *
+                                             rj(cn * cn, dn * dn, 1.0, 1.0 - n * sn * sn);
+  return part + 2.0 * m * complete;
+}
+
+double HeavyTopExact::theta_from(const Phase& p) const {
+  const double w = w1_ + (w2_ - w1_) * p.sn * p.sn;
+  const double omu = one_minus_u0_ - w, opu = (1.0 + u0_) + w;
+  return std::atan2(std::sqrt(std::max(omu, 0.0) * std::max(opu, 0.0)), u0_ + w);
+}
+
+double HeavyTopExact::theta(double t) const {
+  if (regime_ == TopRegime::kSleeping) return 0.0;
+  return theta_from(phase(t));
+}
+
+TopAngles HeavyTopExact::angles(double t) const {
+  TopAngles out;
+  const double S = start_.spin;
+  if (regime_ == TopRegime::kSleeping) {
+    out.phi = start_.phi;
+    out.psi = start_.psi + S * t;
+    out.psi_dot = S;
+    return out;
+  }
+  const Phase p = phase(t);
+  const double w = w1_ + (w2_ - w1_) * p.sn * p.sn;
+  const double omu = one_minus_u0_ - w, opu = (1.0 + u0_) + w;
+  out.theta = std::atan2(std::sqrt(std::max(omu, 0.0) * std::max(opu, 0.0)), u0_ + w);
+  const double sin_theta = std::sin(out.theta);
+  const double u_dot = 2.0 * (w2_ - w1_) * lambda_ * p.sn * p.cn * p.dn;
+  out.theta_dot = sin_theta > 0.0 ? -u_dot / sin_theta : 0.0;
+  out.phi_dot = omu > 0.0 ? (d0_ - a_ * w) / (omu * opu) : 0.5 * b_plus_a_ / opu;
+  out.psi_dot = S - (u0_ + w) * out.phi_dot;
+  // J+ = int dt/(1 - u), J- = int dt/(1 + u), each an integral of the third kind.
+  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
+  const double J_plus = b_minus_a_ != 0.0
+                            ? (third_kind(p.v, n_plus_, pi_plus_) - G_plus_0_) /
+                                  (one_minus_u1 * lambda_)
+                            : 0.0;
+  const double J_minus =
+      (third_kind(p.v, n_minus_, pi_minus_) - G_minus_0_) / (one_plus_u1 * lambda_);
+  out.phi = start_.phi + 0.5 * (b_minus_a_ * J_plus + b_plus_a_ * J_minus);
+  out.psi = start_.psi + (S - a_) * t - 0.5 * (b_minus_a_ * J_plus - b_plus_a_ * J_minus);
+  return out;
+}
+
+Eigen::Quaterniond HeavyTopExact::attitude(double t) const {
+  const TopAngles a = angles(t);
+  return euler_attitude(a.phi, a.theta, a.psi);
+}
+
+double HeavyTopExact::theta_min() const {
+  if (regime_ == TopRegime::kSleeping) return 0.0;
+  const double omu = one_minus_u0_ - w2_, opu = (1.0 + u0_) + w2_;
+  return std::atan2(std::sqrt(std::max(omu, 0.0) * opu), u0_ + w2_);
+}
+
+double HeavyTopExact::theta_max() const {
+  if (regime_ == TopRegime::kSleeping) return 0.0;
+  const double omu = one_minus_u0_ - w1_, opu = (1.0 + u0_) + w1_;
+  return std::atan2(std::sqrt(omu * std::max(opu, 0.0)), u0_ + w1_);
+}
+
+}  // namespace rigid
