@@ -8,10 +8,6 @@ namespace rigid {
 
 namespace {
 
-// Suzuki's fourth-order composition S2(p h) S2(p h) S2((1 - 4p) h) S2(p h) S2(p h),
-// p = 1 / (4 - 4^(1/3)).
-constexpr double kSuzukiP = 0.41449077179437573714;
-
 // The exact flow of H_i = L_i^2 / (2 I_i) over tau: L_body turns by -w_i tau
 // about axis i, the attitude by +w_i tau about body axis i (w_i = L_i / I_i).
 inline void axis_flow(int i, double tau, const double* inv_I, double* L, double* q) {

@@ -18,6 +18,10 @@
 
 namespace rigid {
 
+/// Suzuki's fourth-order composition of a symmetric second-order step S2:
+/// S2(p h) S2(p h) S2((1 - 4p) h) S2(p h) S2(p h), p = 1 / (4 - 4^(1/3)).
+inline constexpr double kSuzukiP = 0.41449077179437573714;
+
 /// One step of the second- or fourth-order Lie-Poisson splitting.
 class LiePoissonSplitting {
  public:

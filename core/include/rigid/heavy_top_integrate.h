@@ -1,0 +1,61 @@
+// The heavy symmetric top integrated (the cross-check of heavy_top.h's exact
+// motion, and the path for starts it does not cover): omega in body axes and
+// the attitude quaternion, never Euler angles, so an upright top (theta = 0)
+// is an ordinary point. Euler's equations about the pivot with the moments
+// (I, I, Is) and the gravity torque N_body = -mgl e3 x (R^T z).
+//
+//  - rk4, dopri5, rkf78, bulirsch-stoer: Boost.Odeint through ode.h's one
+//    integration layer on the fixed-size FreeBodyState (w, q).
+//  - splitting, splitting4: the exact flow of the free symmetric top composed
+//    with gravity kicks (Strang, and Suzuki's fourth-order composition). Each
+//    piece is a rotation of L or of the attitude, and a kick changes L by a
+//    torque normal to both z and 3: p_phi = L_z and p_psi = L_3 are kept to
+//    roundoff, the energy without drift (the method is symplectic).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "rigid/free_body.h"
+#include "rigid/heavy_top.h"
+#include "rigid/ode.h"
+
+namespace rigid {
+
+/// Right-hand side of the heavy top: Euler's equations with the gravity torque
+/// and the quaternion kinematics; an odeint system functor on FreeBodyState.
+struct HeavyTopRhs {
+  HeavyTop top;
+  void operator()(const FreeBodyState& x, FreeBodyState& dxdt, double t) const;
+};
+
+/// The state (omega_body, attitude) of Euler angles and rates.
+FreeBodyState heavy_top_state(const TopAngles& angles);
+
+/// theta, the tilt of the symmetry axis from z, of an attitude (exact at theta = 0).
+double tilt_of(const Eigen::Quaterniond& q);
+
+/// One sample of an integrated run.
+struct TopSample {
+  double t = 0.0;
+  double theta = 0.0;  ///< rad
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  ///< unit
+};
+
+/// The samples of one run and the drift of its invariants.
+struct TopRun {
+  Method method = Method::kDopri5;
+  std::vector<TopSample> samples;
+  double energy_drift_rel = 0.0;  ///< max |E - E0| / (T0 + mgl)
+  double p_phi_drift_rel = 0.0;   ///< max |p_phi - p_phi0| / |L0|
+  double p_psi_drift_rel = 0.0;   ///< max |p_psi - p_psi0| / |L0|
+  std::size_t steps = 0;
+};
+
+/// Integrates from x0 at times.front(), sampling at `times`. Throws like
+/// integrate_sampled (ode.h) for bad options, and std::invalid_argument for a bad top.
+TopRun integrate_heavy_top(const HeavyTop& top, const FreeBodyState& x0,
+                           const std::vector<double>& times, const OdeOptions& options);
+
+}  // namespace rigid
