@@ -158,13 +158,15 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     w = next;
   }
   w3_ = std::max(w, one_minus_u0_);  // u3 >= 1: f(1) = -(b - a)^2 <= 0
-  // Deflate: f = beta (w - w3)(w^2 + p w + q), q = -C / (beta w3) <= 0, so the
-  // other two roots are real with w1 <= 0 <= w2 (f(0) = C >= 0).
-  const double p = A / beta_ + w3_;
-  const double q = w3_ > 0.0 ? -C / (beta_ * w3_) : 0.0;
-  const double disc = std::max(p * p - 4.0 * q, 0.0);
-  const double r = -0.5 * (p + std::copysign(std::sqrt(disc), p));
-  const double other = r != 0.0 ? q / r : 0.0;
+  // The other two roots from Vieta's relations with w3: w1 w2 = -C / (beta w3) <= 0,
+  // so they are real with w1 <= 0 <= w2 (f(0) = C >= 0), and w1 + w2 = (B/beta -
+  // w1 w2) / w3, which (unlike -A/beta - w3) has no cancellation when w3 >> |w1|,
+  // |w2|: a fast top's nutation is a tiny difference of roots of size 1.
+  const double product = w3_ > 0.0 ? -C / (beta_ * w3_) : 0.0;
+  const double sum = w3_ > 0.0 ? (B / beta_ - product) / w3_ : -A / beta_;
+  const double disc = std::max(sum * sum - 4.0 * product, 0.0);
+  const double r = 0.5 * (sum + std::copysign(std::sqrt(disc), sum));
+  const double other = r != 0.0 ? product / r : 0.0;
   w1_ = std::min(std::min(r, other), 0.0);
   w2_ = std::max(std::max(r, other), 0.0);
   w1_ = std::max(w1_, -1.0 - u0_);

@@ -1,0 +1,245 @@
+// The heavy symmetric top (heavy_top.h, heavy_top_integrate.h): the exact
+// motion against mpmath's 30-digit integration of the Euler-angle equations
+// (make_reference.py, which knows nothing of the cubic or the elliptic
+// functions), its conserved quantities, turning points, regimes and limits,
+// the steady rates of section 8.1, and the integrators' orders and invariants.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+
+#include "reference_heavy_top.inc"
+#include "rigid/heavy_top.h"
+#include "rigid/heavy_top_integrate.h"
+#include "rigid/integrate.h"
+
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+// The text's top (section 8.1): a 2.00 kg disk of radius 0.05 m, 0.04 m above the tip.
+const rigid::HeavyTop kText{0.25 * 2.0 * 0.05 * 0.05 + 2.0 * 0.04 * 0.04, 0.5 * 2.0 * 0.05 * 0.05,
+                            2.0 * 9.8 * 0.04};
+const double kS500 = 500.0 * 2 * M_PI / 60.0;
+const double k30 = M_PI / 6;
+
+rigid::HeavyTopExact exact_of(const TopReference& r) {
+  return rigid::HeavyTopExact({r.I, r.Is, r.mgl}, {r.theta0, r.theta_dot0, r.phi_dot0, r.spin});
+}
+
+// The conserved quantities of eqs. 176, 177 and 191 from a sample's angles and rates.
+struct Invariants {
+  double E, p_phi, p_psi;
+};
+Invariants invariants(const rigid::HeavyTop& top, const rigid::TopAngles& a) {
+  const double s = std::sin(a.theta), c = std::cos(a.theta);
+  const double S = a.phi_dot * c + a.psi_dot;
+  return {0.5 * top.I * (a.phi_dot * a.phi_dot * s * s + a.theta_dot * a.theta_dot) +
+              0.5 * top.Is * S * S + top.mgl * c,
+          top.I * a.phi_dot * s * s + top.Is * S * c, top.Is * S};
+}
+
+}  // namespace
+
+TEST_CASE("heavy top: the exact theta, phi, psi match mpmath's 30-digit integration") {
+  for (const TopReference& r : kTopReference) {
+    INFO(r.name);
+    const rigid::HeavyTopExact exact = exact_of(r);
+    for (const auto& row : r.rows) {
+      const rigid::TopAngles a = exact.angles(row[0]);
+      // The closed form carries eps relative error in its phase lambda t (lambda t
+      // up to ~30 here) and in the roots; phi and psi grow to ~70 rad. 1e-11 rad
+      // absolute and 1e-12 relative leave a margin of ~10 over what is seen.
+      CHECK_THAT(a.theta, WithinAbs(row[1], 1e-11));
+      CHECK_THAT(a.phi, WithinAbs(row[2], 1e-11 + 1e-12 * std::abs(row[2])));
+      CHECK_THAT(a.psi, WithinAbs(row[3], 1e-11 + 1e-12 * std::abs(row[3])));
+    }
+  }
+}
+
+TEST_CASE("heavy top: theta stays between the turning angles and E, p_phi, p_psi are constant") {
+  for (const TopReference& r : kTopReference) {
+    INFO(r.name);
+    const rigid::HeavyTopExact exact = exact_of(r);
+    const rigid::HeavyTop top{r.I, r.Is, r.mgl};
+    const Invariants start = invariants(top, exact.angles(0.0));
+    CHECK_THAT(start.p_psi, WithinRel(exact.p_psi(), 1e-15));
+    CHECK_THAT(start.E, WithinRel(exact.energy(), 1e-14));
+    const double L = std::hypot(start.p_phi, start.p_psi) + top.I * std::abs(r.theta_dot0);
+    double lowest = M_PI, highest = 0;
+    for (int n = 0; n <= 2000; ++n) {
+      const double t = 3.0 * exact.nutation_period() * n / 2000;
+      const rigid::TopAngles a = exact.angles(t);
+      // Turning angles from the cubic's roots; theta from sn^2 between them: a few ulps.
+      CHECK(a.theta >= exact.theta_min() - 1e-13);
+      CHECK(a.theta <= exact.theta_max() + 1e-13);
+      lowest = std::min(lowest, a.theta);
+      highest = std::max(highest, a.theta);
+      const Invariants now = invariants(top, a);
+      // Rates from the closed form carry ~eps / sin(theta) of rounding: 1e-11 relative.
+      CHECK_THAT(now.E, WithinAbs(start.E, 1e-11 * (std::abs(start.E) + top.mgl)));
+      CHECK_THAT(now.p_phi, WithinAbs(start.p_phi, 1e-11 * L));
+      CHECK_THAT(now.p_psi, WithinAbs(start.p_psi, 1e-11 * L));
+    }
+    // Three nutation periods sampled 2000 times reach both turning circles (to the
+    // sampling's second order: (pi / 667)^2 of the amplitude).
+    const double amplitude = exact.theta_max() - exact.theta_min();
+    CHECK(lowest - exact.theta_min() <= 3e-5 * amplitude + 1e-15);
+    CHECK(exact.theta_max() - highest <= 3e-5 * amplitude + 1e-15);
+  }
+}
+
+TEST_CASE("heavy top: the regime follows phi_dot at the turning circles") {
+  const double slow = rigid::steady_precession_rates(kText, kS500, k30).slow;
+  const struct {
+    double theta_dot, phi_dot;
+    rigid::TopRegime regime;
+  } cases[] = {
+      {0.0, 0.0, rigid::TopRegime::kCusped},    // released: phi_dot = 0 at the top circle
+      {0.0, -4.0, rigid::TopRegime::kLooping},  // pushed back: phi_dot changes sign
+      {0.0, 20.0, rigid::TopRegime::kWavy},     // pushed forward beyond the steady rate
+      {0.5, 3.0, rigid::TopRegime::kWavy},
+      {0.0, slow, rigid::TopRegime::kSteady},   // the slow steady rate of eq. 187
+  };
+  for (const auto& c : cases) {
+    INFO("theta_dot0 " << c.theta_dot << ", phi_dot0 " << c.phi_dot);
+    const rigid::HeavyTopExact exact(kText, {k30, c.theta_dot, c.phi_dot, kS500});
+    CHECK(exact.regime() == c.regime);
+    const double a = exact.phi_dot_at_u1(), b = exact.phi_dot_at_u2();
+    if (c.regime == rigid::TopRegime::kLooping) CHECK(a * b < 0);
+    if (c.regime == rigid::TopRegime::kWavy) CHECK(a * b > 0);
+  }
+  // At steady precession both roots coincide at theta0 to roundoff.
+  const rigid::HeavyTopExact steady(kText, {k30, 0.0, slow, kS500});
+  CHECK(steady.theta_max() - steady.theta_min() < 1e-7);
+  CHECK_THAT(steady.mean_precession_rate(), WithinRel(slow, 1e-7));
+}
+
+TEST_CASE("heavy top: eq. 187's steady rates solve eq. 184 with theta_ddot = 0") {
+  for (const double theta : {0.1, k30, 1.2, M_PI / 2, 2.0}) {
+    INFO("theta " << theta);
+    const rigid::SteadyPrecession p = rigid::steady_precession_rates(kText, kS500, theta);
+    REQUIRE(p.exists);
+    const auto residual = [&](double phi_dot) {  // mgl - Is S phi_dot + I phi_dot^2 cos theta
+      return kText.mgl - kText.Is * kS500 * phi_dot +
+             kText.I * phi_dot * phi_dot * std::cos(theta);
+    };
+    // Each term is at most ~mgl (or Is S phi_dot); their sum vanishes to a few ulps of it.
+    CHECK(std::abs(residual(p.slow)) <= 1e-14 * (kText.mgl + kText.Is * kS500 * std::abs(p.slow)));
+    if (std::isfinite(p.fast)) {
+      CHECK(std::abs(residual(p.fast)) <=
+            1e-13 * (kText.mgl + kText.Is * kS500 * std::abs(p.fast)));
+    }
+    // Started at either rate with theta_dot = 0, the exact motion does not nod.
+    for (const double rate : {p.slow, p.fast}) {
+      if (!std::isfinite(rate)) continue;
+      const rigid::HeavyTopExact exact(kText, {theta, 0.0, rate, kS500});
+      CHECK(exact.theta_max() - exact.theta_min() < 1e-6);
+    }
+  }
+  // Horizontal: the slow rate is eq. 185's and the fast one is infinite.
+  const rigid::SteadyPrecession h = rigid::steady_precession_rates(kText, kS500, M_PI / 2);
+  CHECK_THAT(h.slow, WithinRel(rigid::horizontal_precession_rate(kText, kS500), 1e-15));
+  // Below the minimum spin (eq. 188) there is no steady precession near upright.
+  const double S_min = rigid::sleeping_min_spin(kText);
+  CHECK(rigid::steady_precession_rates(kText, 0.99 * S_min, 1e-3).exists == false);
+  CHECK(rigid::steady_precession_rates(kText, 1.01 * S_min, 1e-3).exists);
+}
+
+TEST_CASE("heavy top: a sleeping top nods a little above the minimum spin and falls below it") {
+  const double S_min = rigid::sleeping_min_spin(kText);
+  const double hair = 1e-4;
+  const rigid::HeavyTopExact above(kText, {hair, 0.0, 0.0, 1.05 * S_min});
+  const rigid::HeavyTopExact below(kText, {hair, 0.0, 0.0, 0.95 * S_min});
+  // Above: the axis stays within a few times its start; below it falls far.
+  CHECK(above.theta_max() < 10 * hair);
+  CHECK(below.theta_max() > 0.3);
+  // Exactly upright with no theta_dot it sleeps, whatever the spin.
+  const rigid::HeavyTopExact upright(kText, {0.0, 0.0, 0.0, 0.5 * S_min});
+  CHECK(upright.regime() == rigid::TopRegime::kSleeping);
+  CHECK(upright.theta(1.0) == 0.0);
+  CHECK_THROWS_AS(rigid::HeavyTopExact(kText, {0.0, 0.0, 0.0, 0.0}), std::invalid_argument);
+  CHECK_THROWS_AS(rigid::HeavyTopExact(kText, {M_PI, 0.0, 0.0, 1.0}), std::invalid_argument);
+  CHECK_THROWS_AS(rigid::HeavyTopExact(kText, {-0.1, 0.0, 0.0, 1.0}), std::invalid_argument);
+}
+
+TEST_CASE("heavy top: a fast top nods at Is S / I with amplitude 2 mgl I sin(theta0)/(Is S)^2") {
+  // Released from rest (Goldstein 5.7): frequency -> a = Is S / I and amplitude in
+  // theta -> beta sin(theta0)/a^2, each with relative error O(beta / a^2): tenfold
+  // spin, a hundredfold smaller error.
+  const rigid::HeavyTop top{5.0, 1.0, 20.0};
+  double previous_f = 0, previous_a = 0;
+  for (const double S : {500.0, 5000.0, 50000.0}) {
+    const rigid::HeavyTopExact exact(top, {0.05, 0.0, 0.0, S});
+    const double a = top.Is * S / top.I;
+    const double f_err = std::abs(2 * M_PI / exact.nutation_period() / a - 1);
+    const double amp = exact.theta_max() - exact.theta_min();
+    const double a_err = std::abs(amp / (2 * top.mgl * top.I * std::sin(0.05) / std::pow(top.Is * S, 2)) - 1);
+    if (previous_f > 0) {
+      CHECK(f_err / previous_f == Approx(0.01).epsilon(0.2));
+      CHECK(a_err / previous_a == Approx(0.01).epsilon(0.2));
+    }
+    previous_f = f_err;
+    previous_a = a_err;
+  }
+}
+
+TEST_CASE("heavy top: integrators agree with the exact theta; splittings keep p_phi, p_psi") {
+  const rigid::HeavyTopExact exact(kText, {k30, 0.5, 3.0, kS500});
+  const rigid::FreeBodyState x0 = rigid::heavy_top_state(exact.angles(0.0));
+  const std::vector<double> times = rigid::uniform_times(0.0, 3 * exact.nutation_period(), 301);
+  const auto error = [&](const rigid::TopRun& run) {
+    double e = 0;
+    for (const auto& s : run.samples) e = std::max(e, std::abs(s.theta - exact.theta(s.t)));
+    return e;
+  };
+  for (const rigid::Method m : rigid::kAllMethods) {
+    INFO(rigid::method_name(m));
+    rigid::OdeOptions o;
+    o.method = m;
+    o.abs_tol = o.rel_tol = 1e-10;
+    o.step = 1e-3;
+    const rigid::TopRun run = rigid::integrate_heavy_top(kText, x0, times, o);
+    // Tolerance 1e-10 over ~3 nutation periods; the fixed steps at 1e-3 s
+    // (lambda h ~ 0.02): rk4 ~ (lambda h)^4, the splitting ~ (lambda h)^2.
+    const double bound = m == rigid::Method::kSplitting ? 1e-4 : 1e-7;
+    CHECK(error(run) < bound);
+    CHECK(run.energy_drift_rel < bound);
+    if (m == rigid::Method::kSplitting || m == rigid::Method::kSplitting4) {
+      // Every sub-step is a rotation or a torque normal to z and 3: roundoff only.
+      CHECK(run.p_phi_drift_rel < 1e-13);
+      CHECK(run.p_psi_drift_rel < 1e-13);
+    }
+  }
+}
+
+TEST_CASE("heavy top: the splittings' observed orders are 2 and 4 by step halving") {
+  const rigid::HeavyTopExact exact(kText, {k30, 0.5, 3.0, kS500});
+  const rigid::FreeBodyState x0 = rigid::heavy_top_state(exact.angles(0.0));
+  // Samples on a grid every step divides, so each run takes whole steps only;
+  // steps from lambda h ~ 0.08 down, where every method is in its asymptotic range.
+  const double T = 0.512;
+  const std::vector<double> times = rigid::uniform_times(0.0, T, 9);
+  for (const auto& [m, order] : {std::pair{rigid::Method::kSplitting, 2},
+                                 std::pair{rigid::Method::kSplitting4, 4},
+                                 std::pair{rigid::Method::kRk4, 4}}) {
+    INFO(rigid::method_name(m));
+    double previous = 0;
+    for (const double h : {4e-3, 2e-3, 1e-3}) {
+      rigid::OdeOptions o;
+      o.method = m;
+      o.step = h;
+      const rigid::TopRun run = rigid::integrate_heavy_top(kText, x0, times, o);
+      double e = 0;  // the largest angle between the run's attitude and the exact one
+      for (const auto& s : run.samples) {
+        const Eigen::Quaterniond d = s.attitude.conjugate() * exact.attitude(s.t);
+        e = std::max(e, 2 * std::atan2(d.vec().norm(), std::abs(d.w())));
+      }
+      if (previous > 0) {
+        const double observed = std::log2(previous / e);
+        CHECK(observed == Approx(order).margin(0.3));
+      }
+      previous = e;
+    }
+  }
+}
