@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "rigid/integrate.h"
 #include "rigid/splitting.h"
 
 namespace rigid {
@@ -99,11 +101,12 @@ class TopRecorder {
   void record(double t, const Eigen::Vector3d& w, const Eigen::Quaterniond& q) {
     double E, p_phi, p_psi;
     measure(w, q, E, p_phi, p_psi);
-    out_.energy_drift_rel = std::max(out_.energy_drift_rel, std::abs(E - E0_) / scale_E_);
+    const double energy_error = std::abs(E - E0_) / scale_E_;
+    out_.energy_drift_rel = std::max(out_.energy_drift_rel, energy_error);
     out_.p_phi_drift_rel = std::max(out_.p_phi_drift_rel, std::abs(p_phi - p_phi0_) * inv_L0_);
     out_.p_psi_drift_rel = std::max(out_.p_psi_drift_rel, std::abs(p_psi - p_psi0_) * inv_L0_);
     const Eigen::Quaterniond unit = q.normalized();
-    out_.samples.push_back({t, tilt_of(unit), w, unit});
+    out_.samples.push_back({t, tilt_of(unit), energy_error, w, unit});
   }
   HeavyTop top_;
   TopRun& out_;
@@ -149,6 +152,48 @@ TopRun integrate_heavy_top(const HeavyTop& top, const FreeBodyState& x0,
     stats = integrate_sampled(HeavyTopRhs{top}, x0, times, o, rec);
   }
   out.steps = stats.steps;
+  return out;
+}
+
+TopRun sample_exact(const HeavyTopExact& exact, const std::vector<double>& times) {
+  TopRun out;
+  const FreeBodyState x0 = heavy_top_state(exact.angles(0.0));
+  TopRecorder rec(exact.top(), x0, out, times.size());
+  for (const double t : times) rec(heavy_top_state(exact.angles(t)), t);
+  return out;
+}
+
+std::vector<TopComparison> compare_top_methods(const HeavyTopExact& exact,
+                                               const std::vector<double>& times, double period,
+                                               const OdeOptions& options, std::size_t max_steps) {
+  const FreeBodyState x0 = heavy_top_state(exact.angles(0.0));
+  std::vector<TopComparison> out;
+  for (const Method m : kAllMethods) {
+    TopComparison c;
+    c.options = options;
+    c.options.method = m;
+    c.options.max_steps = max_steps;
+    const std::vector<double> each_times =
+        is_adaptive(m) ? times : sample_times(times.back(), period, options.step);
+    TopRun run;
+    try {
+      run = integrate_heavy_top(exact.top(), x0, each_times, c.options);
+    } catch (const std::exception&) {
+      out.push_back(std::move(c));  // more steps than allowed: not completed
+      continue;
+    }
+    c.completed = true;
+    for (const TopSample& s : run.samples) {
+      c.t.push_back(s.t);
+      const double e = std::abs(s.theta - exact.theta(s.t));
+      c.theta_error.push_back(e);
+      c.energy_error.push_back(s.energy_error);
+      // A NaN (a run that blew up) counts as an infinite error.
+      c.max_theta_error = std::isfinite(e) ? std::max(c.max_theta_error, e)
+                                           : std::numeric_limits<double>::infinity();
+    }
+    out.push_back(std::move(c));
+  }
   return out;
 }
 

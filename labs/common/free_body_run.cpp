@@ -8,7 +8,7 @@
 namespace rigid::lab {
 
 void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
-                                 const std::string& step_default) {
+                                 const std::string& step_default, bool offer_project) {
   std::vector<std::string> methods{"exact"};
   for (const Method m : kAllMethods) methods.emplace_back(method_name(m));
   lab.choice("--method", in.method, methods, method_help).numerical();
@@ -20,6 +20,7 @@ void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::str
       .positive()
       .numerical()
       .lab_default(step_default);
+  if (!offer_project) return;
   lab.flag("--project", in.project,
            "rk4, rkf78: project omega back onto T and |L| after each step")
       .numerical();

@@ -1,4 +1,5 @@
-// What every lab that integrates the free body shares (poinsot, tennis_racquet):
+// What every lab that integrates a rigid body shares (poinsot, tennis_racquet,
+// top_nutation):
 // its numerical options --method, --tolerance, --step and --project, and the
 // run of the chosen method from the exact motion's start, measured against the
 // exact motion and reported with the drifts of its invariants.
@@ -22,9 +23,9 @@ struct IntegrationInputs {
 };
 
 /// Declares --method (its default is in.method), --tolerance, --step (whose default
-/// the lab derives, described by `step_default`) and --project.
+/// the lab derives, described by `step_default`) and, if `offer_project`, --project.
 void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
-                                 const std::string& step_default);
+                                 const std::string& step_default, bool offer_project = true);
 
 /// True when the chosen method takes a fixed step (so its samples lie on its grid).
 bool fixed_step(const IntegrationInputs& in);

@@ -39,6 +39,7 @@ double tilt_of(const Eigen::Quaterniond& q);
 struct TopSample {
   double t = 0.0;
   double theta = 0.0;  ///< rad
+  double energy_error = 0.0;  ///< |E - E0| / (T0 + mgl)
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  ///< unit
 };
@@ -57,5 +58,26 @@ struct TopRun {
 /// integrate_sampled (ode.h) for bad options, and std::invalid_argument for a bad top.
 TopRun integrate_heavy_top(const HeavyTop& top, const FreeBodyState& x0,
                            const std::vector<double>& times, const OdeOptions& options);
+
+/// The exact motion sampled at `times` as a run of its own (no steps), its
+/// invariants measured as an integrator's are: roundoff only.
+TopRun sample_exact(const HeavyTopExact& exact, const std::vector<double>& times);
+
+/// One method's run measured against the exact motion, sample by sample.
+struct TopComparison {
+  OdeOptions options;                ///< the method and the settings it ran with
+  bool completed = false;            ///< false: it would have needed more than max_steps
+  std::vector<double> t;             ///< its sample times (a fixed step's on its own grid)
+  std::vector<double> theta_error;   ///< |theta - theta_exact|, rad
+  std::vector<double> energy_error;  ///< |E - E0| / (T0 + mgl)
+  double max_theta_error = 0.0;      ///< rad; infinite if the run blew up
+};
+
+/// Every method of kAllMethods at `options` with at most `max_steps` steps against the
+/// exact motion from 0 to times.back(): adaptive methods at `times`, fixed-step ones on
+/// their step grid, `period` / 200 apart (sample_times), as each would run alone.
+std::vector<TopComparison> compare_top_methods(const HeavyTopExact& exact,
+                                               const std::vector<double>& times, double period,
+                                               const OdeOptions& options, std::size_t max_steps);
 
 }  // namespace rigid
