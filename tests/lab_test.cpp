@@ -601,3 +601,109 @@ TEST_CASE("tennis_racquet: every integrator cross-checks the exact motion within
     CHECK(double(r["energy_drift_rel"]) < bound);
   }
 }
+
+TEST_CASE("top_nutation: defaults reproduce section 8.1's numbers, exactly, with the errata") {
+  const auto run = run_lab("top_nutation", "--json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  // The disk written out: Is = m r^2/2, I = m r^2/4 + m l^2, m g l with g = 9.8.
+  const double m = 2.0, rad = 0.05, l = 0.04, g = 9.8;
+  const double Is = m * rad * rad / 2, I = m * rad * rad / 4 + m * l * l, mgl = m * g * l;
+  CHECK(double(r["moment_symmetry_kg_m2"]) == Approx(Is).epsilon(1e-15));
+  CHECK(double(r["moment_transverse_kg_m2"]) == Approx(I).epsilon(1e-15));
+  // (a) S_min = sqrt(4 m g l I) / Is: the text's 47.3 rad/s, 7.52 rev/s, 451 rpm.
+  const double S_min = std::sqrt(4 * mgl * I) / Is;
+  CHECK(double(r["min_spin_rad_s"]) == Approx(S_min).epsilon(1e-15));
+  CHECK(prints_as(r["min_spin_rad_s"], 47.3, 1));
+  CHECK(prints_as(r["min_spin_rev_per_s"], 7.52, 2));
+  CHECK(prints_as(r["min_spin_rpm"], 451, 0));
+  // Its period 2 pi / S_min is 0.13297 s: the text's 0.132 is an erratum.
+  CHECK(prints_as(r["min_spin_period_s"], 0.133, 3));
+  // (b) 500 rpm: phi_dot = m g l / (Is S) = 5.989 rad/s (the text: 5.98, from S = 52.4).
+  const double S = 500 * 2 * M_PI / 60;
+  CHECK(double(r["horizontal_precession_rate_rad_s"]) == Approx(mgl / (Is * S)).epsilon(1e-15));
+  CHECK(prints_as(r["horizontal_precession_rate_rad_s"], 5.99, 2));
+  CHECK(prints_as(r["horizontal_precession_period_s"], 1.05, 2));
+  // (c) at 30 deg: the roots of I cos(30) x^2 - Is S x + m g l = 0, by the quadratic formula
+  // written out (no cancellation worth a digit here): 7.764 and 26.20 rad/s.
+  const double c = std::cos(M_PI / 6), D = Is * Is * S * S - 4 * mgl * I * c;
+  const double slow = (Is * S - std::sqrt(D)) / (2 * I * c), fast = (Is * S + std::sqrt(D)) / (2 * I * c);
+  CHECK(double(r["steady_precession_rates_rad_s"][0]) == Approx(slow).epsilon(1e-12));
+  CHECK(double(r["steady_precession_rates_rad_s"][1]) == Approx(fast).epsilon(1e-14));
+  CHECK(prints_as(r["steady_precession_rates_rad_s"][1], 26.2, 1));
+  CHECK(prints_as(r["steady_precession_periods_s"][0], 0.81, 2));
+  CHECK(prints_as(r["steady_precession_periods_s"][1], 0.24, 2));
+  CHECK(j["textbook"]["min_spin_rad_s"] == "47.3");
+  int errata = 0;
+  for (const auto& note : j["notes"]) errata += note.get<std::string>().rfind("errata:", 0) == 0;
+  CHECK(errata == 3);
+  // Released from rest at 30 deg: theta_min is the start, phi_dot = 0 there (cusps).
+  CHECK(r["regime"] == "cusped");
+  CHECK(double(r["theta_min_deg"]) == Approx(30).epsilon(1e-14));
+  CHECK(double(r["phi_dot_turning_rad_s"][1]) == 0.0);
+  // The exact sampling keeps E, p_phi, p_psi to roundoff.
+  CHECK(double(r["energy_drift_rel"]) < 1e-14);
+  CHECK(double(r["p_phi_drift_rel"]) < 1e-14);
+  // Every integrator agrees with the exact theta within its tolerance's reach.
+  for (const char* key : {"max_theta_error_dopri5_deg", "max_theta_error_rkf78_deg",
+                          "max_theta_error_rk4_deg", "max_theta_error_splitting4_deg"}) {
+    INFO(key);
+    CHECK(double(r[key]) < 1e-5);
+  }
+  CHECK(j["units"]["min_spin_rev_per_s"] == "1/s");
+}
+
+TEST_CASE("top_nutation: integrated runs report their theta error and keep the invariants") {
+  for (const char* method : {"splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"}) {
+    INFO(method);
+    const auto run = run_lab("top_nutation", std::string("--json --phidot0 3 --thetadot0 0.5 --method ") + method);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    const auto& r = j["results"];
+    // Tolerance 1e-10 or step period/2000 over three nutation periods: far below 1e-4 deg.
+    CHECK(double(r["max_theta_error_deg"]) < 1e-4);
+    CHECK(double(r["energy_drift_rel"]) < 1e-6);
+    if (std::string(method).rfind("splitting", 0) == 0) {
+      // A rotation or a torque normal to z and 3 at every sub-step: roundoff only, a
+      // random walk of ~eps sqrt(30 n) = 1e-13 over n = 6000 steps of 15 sub-steps.
+      CHECK(double(r["p_phi_drift_rel"]) < 1e-12);
+      CHECK(double(r["p_psi_drift_rel"]) < 1e-12);
+    }
+  }
+}
+
+TEST_CASE("top_nutation: the sleeping top is stable above S_min and upright starts sleep") {
+  const auto above = run_lab("top_nutation", "--json --theta0-deg 0 --spin-rpm 460");
+  REQUIRE(above.status == 0);
+  const auto j = above.json();
+  CHECK(j["results"]["regime"] == "sleeping");
+  CHECK(j["results"]["sleeping_stability"] == "stable (S >= S_min)");
+  const auto below = run_lab("top_nutation", "--json --theta0-deg 0 --spin-rpm 440").json();
+  CHECK(below["results"]["sleeping_stability"] == "unstable (S < S_min): a hair topples it");
+  // From a hair off upright: a small nod above S_min, a fall below.
+  const auto& check = j["results"]["sleeping_check_theta_max_deg"];
+  CHECK(double(check[0]) < 1.0);
+  CHECK(double(check[1]) > 10.0);
+}
+
+TEST_CASE("top_nutation: bad input exits 2 with one line naming the option") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--mass 0", "--mass"},
+      {"--arm -1", "--arm"},
+      {"--disk-radius nan", "--disk-radius"},
+      {"--g inf", "--g"},
+      {"--inertia 1,-1", "--inertia"},
+      {"--inertia 0.00445,0.01", "--inertia"},  // I - m l^2 < Is/2: no body has these
+      {"--inertia 0.00445,0.0025 --disk-radius 0.05", "--inertia"},
+      {"--spin 50 --spin-rpm 500", "--spin"},
+      {"--theta0-deg 180", "--theta0-deg"},
+      {"--theta0-deg -1", "--theta0-deg"},
+      {"--theta0-deg 0 --spin 0", "--theta0-deg"},
+      {"--method rk4 --step 1e-12", "--step"},
+      {"--method euler", "--method"},
+  };
+  rigid::test::check_bad_inputs("top_nutation", cases);
+  // The text's thin disk sits exactly on I - m l^2 = Is / 2 and is accepted.
+  CHECK(run_lab("top_nutation", "--json --inertia 0.00445,0.0025").status == 0);
+}

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "common/free_body_scenes.h"
+#include "common/integrator_plot.h"
 #include "rigid/poinsot.h"
 
 namespace rigid::lab::poinsot {
@@ -64,50 +65,6 @@ render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySamp
   return plot;
 }
 
-// Each integrator's error against the exact solution, and its energy error,
-// every method at the lab's tolerance or step (section "every integrator").
-render::Plot2D integrators_plot(const std::vector<MethodComparison>& methods) {
-  render::Plot2D plot(1, 2);
-  plot.title = "integrators against the exact solution";
-  render::Panel& error = plot.panel(0, 0);
-  error.title = "error in \\omega";
-  error.x.label = "t (s)";
-  error.y = {"|\\omega - \\omega_{exact}| / |\\omega_0|", render::Scale::kLog10, 1e-17};
-  render::Panel& energy = plot.panel(0, 1);
-  energy.title = "energy error";
-  energy.x.label = "t (s)";
-  energy.y = {"|T - T_0| / T_0", render::Scale::kLog10, 1e-17};
-  // Zero errors have no logarithm: show them at a floor below double roundoff.
-  // The first sample (t = 0) has no error to show on a log axis.
-  const auto floored = [](const std::vector<double>& v) {
-    std::vector<double> out(v.begin() + 1, v.end());
-    for (double& x : out) x = std::max(x, 1e-17);
-    return out;
-  };
-  const auto after_start = [](const std::vector<double>& v) {
-    return std::vector<double>(v.begin() + 1, v.end());
-  };
-  const render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed,
-                                 render::Dash::kSolid,   render::Dash::kDashDot,
-                                 render::Dash::kSolid,   render::Dash::kDotted};
-  for (std::size_t k = 0; k < methods.size(); ++k) {
-    // A method that did not run, or blew up, has no curve to show.
-    if (!methods[k].completed || !std::isfinite(methods[k].max_omega_error)) continue;
-    const IntegrateOptions& o = methods[k].options;
-    const std::string name =
-        std::string(method_name(o.method)) + ", " +
-        (is_adaptive(o.method) ? fmt::format("tol {:g}", o.rel_tol)
-                               : fmt::format("h = {:.3g} s", o.step));
-    const std::vector<double> t = after_start(methods[k].t);
-    auto& a = error.add_line(t, floored(methods[k].omega_error), name);
-    auto& b = energy.add_line(t, floored(methods[k].energy_error), name);
-    a.color = b.color = render::palette_color(k);
-    a.dash = b.dash = dashes[k % 6];
-  }
-  energy.legend = render::LegendPlace::kNone;
-  return plot;
-}
-
 }  // namespace
 
 void draw(FigureSet& set, const Run& run) {
@@ -118,8 +75,14 @@ void draw(FigureSet& set, const Run& run) {
           polhodes_scene(run.motion, run.omega0, curve));
   set.add("omega", "omega(t) of the text's ellipsoid and its phase plot",
           omega_plot(run.omega0, run.samples));
+  std::vector<MethodCurve> curves;
+  for (const MethodComparison& m : run.methods) {
+    curves.push_back({method_label(m.options), m.completed && std::isfinite(m.max_omega_error), m.t, m.omega_error,
+                      m.energy_error});
+  }
   set.add("integrators", "every integrator against the exact solution",
-          integrators_plot(run.methods));
+          integrators_plot(curves, "error in \\omega", "|\\omega - \\omega_{exact}| / |\\omega_0|",
+                           "|T - T_0| / T_0"));
 }
 
 }  // namespace rigid::lab::poinsot

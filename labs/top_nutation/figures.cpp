@@ -1,8 +1,230 @@
-// top_nutation's figures (figures.h).
+// top_nutation's figures: the effective potential with E' and the turning
+// points, the axis's path on the unit sphere in three regimes, theta(t) and
+// phi_dot(t) exact beside integrated, the top in 3D, and every integrator.
 #include "figures.h"
 
-namespace rigid::lab::top_nutation {
+#include <fmt/format.h>
 
-void draw(FigureSet& /*set*/, const Figures& /*f*/) {}
+#include <algorithm>
+#include <boost/math/tools/minima.hpp>
+#include <cmath>
+#include <limits>
+
+#include "common/integrator_plot.h"
+#include "rigid/units.h"
+
+namespace rigid::lab::top_nutation {
+using Eigen::Vector3d;
+namespace {
+
+// The symmetry axis in space, R e3, from Euler angles.
+Vector3d axis_of(double theta, double phi) {
+  return {std::sin(theta) * std::sin(phi), -std::sin(theta) * std::cos(phi), std::cos(theta)};
+}
+
+// A circle of colatitude theta on the sphere of `radius` about centre c.
+std::vector<Vector3d> circle(double theta, const Vector3d& c, double radius) {
+  std::vector<Vector3d> points;
+  for (int k = 0; k <= 180; ++k) points.push_back(c + radius * axis_of(theta, 2 * kPi * k / 180));
+  return points;
+}
+
+// V(theta) of eq. 195 for the motion's p_phi and p_psi.
+double effective_potential(const HeavyTopExact& m, double theta) {
+  const HeavyTop& top = m.top();
+  const double s = std::sin(theta), num = m.p_phi() - m.p_psi() * std::cos(theta);
+  return num * num / (2 * top.I * s * s) + top.mgl * std::cos(theta);
+}
+
+// V(theta) with E' = E - Is S^2 / 2, the turning points where they meet, and the
+// minimum: steady precession (the text's Figure 9.8.2, for this top).
+render::Plot2D potential_plot(const HeavyTopExact& m) {
+  const HeavyTop& top = m.top();
+  const double S = m.start().spin;
+  const double E_prime = m.energy() - 0.5 * top.Is * S * S;
+  const double lo = m.theta_min(), hi = m.theta_max();
+  const double span = std::max(hi - lo, deg_to_rad(6.0));
+  const double a = std::max(lo - 0.8 * span, deg_to_rad(0.2));
+  const double b = std::min(hi + 0.8 * span, deg_to_rad(179.8));
+  // The minimum of V: steady precession at that tilt.
+  const auto [theta_steady, V_min] = boost::math::tools::brent_find_minima(
+      [&](double th) { return effective_potential(m, th); }, a, b, 40);
+  const double depth = std::max(E_prime - V_min, 1e-12 * (std::abs(E_prime) + top.mgl));
+  const double y_top = E_prime + 1.2 * depth, y_bottom = V_min - 0.25 * depth;
+  std::vector<double> x, y;
+  for (int k = 0; k <= 600; ++k) {
+    const double th = a + (b - a) * k / 600;
+    const double v = effective_potential(m, th);
+    if (v > y_top) continue;  // V climbs steeply off the drawn range
+    x.push_back(rad_to_deg(th));
+    y.push_back(v);
+  }
+  render::Plot2D plot;
+  plot.title = "the effective potential V(\\theta) (eq. 195)";
+  render::Panel& panel = plot.panel();
+  panel.x = {"\\theta (\\deg)", render::Scale::kLinear, rad_to_deg(a), rad_to_deg(b)};
+  panel.y = {"V(\\theta) and E' (J)", render::Scale::kLinear, y_bottom, y_top};
+  panel.add_line(x, y, "V(\\theta)").color = render::kBlue;
+  panel.add_ref_line(E_prime, false, fmt::format("E' = {:.5g} J", E_prime)).color = render::kVermillion;
+  panel.add_points({rad_to_deg(lo), rad_to_deg(hi)}, {E_prime, E_prime},
+                   fmt::format("turning points {:.4g}\\deg, {:.4g}\\deg", rad_to_deg(lo), rad_to_deg(hi)))
+      .marker_size = 18;
+  panel.series.back().color = render::kVermillion;
+  panel.add_points({rad_to_deg(theta_steady)}, {V_min},
+                   fmt::format("minimum: steady precession at {:.4g}\\deg", rad_to_deg(theta_steady)),
+                   render::Marker::kSquare)
+      .marker_size = 18;
+  panel.series.back().color = render::kBlack;
+  return plot;
+}
+
+// The axis's path on the unit sphere for three starts of the same top that differ
+// only in phi_dot0, each labelled with the regime the exact motion reports.
+render::Scene3D paths_scene(const HeavyTopExact& m) {
+  const HeavyTop& top = m.top();
+  const TopStart& s0 = m.start();
+  const SteadyPrecession steady = steady_precession_rates(top, s0.spin, s0.theta);
+  const double reference = steady.exists && std::isfinite(steady.slow) && steady.slow != 0
+                               ? std::abs(steady.slow)
+                               : (s0.spin > 0 ? top.mgl / (top.Is * s0.spin) : 1.0);
+  render::Scene3D scene;
+  scene.title = fmt::format("the symmetry axis on the unit sphere for \\phi-dot_0 = {:.3g}, 0, {:.3g} rad/s",
+                            0.5 * reference, -0.5 * reference);
+  const double gap = 2.6;
+  int index = 0;
+  for (const double phi_dot0 : {0.5 * reference, 0.0, -0.5 * reference}) {
+    TopStart start = s0;
+    start.theta_dot = 0.0;
+    start.phi_dot = phi_dot0;
+    if (start.theta == 0.0) start.theta = 1e-3;  // upright: a hair off, so there is a path
+    const HeavyTopExact motion(top, start);
+    const Vector3d c(gap * index, 0, 0);
+    const double period = std::isfinite(motion.nutation_period()) ? motion.nutation_period() : 1.0;
+    std::vector<Vector3d> path;
+    for (int k = 0; k <= 900; ++k) {
+      const TopAngles a = motion.angles(3 * period * k / 900);
+      path.push_back(c + 1.02 * axis_of(a.theta, a.phi));
+    }
+    const bool first = index == 0;
+    scene.add_sphere(c, 1.0, {render::kLightGray, 0.35f, 0.1f}, first ? "unit sphere" : "");
+    scene.add_tube(path, 0.016, {render::kVermillion}, first ? "path of the symmetry axis" : "");
+    // Paths and circles just outside the translucent sphere, so it does not veil them.
+    scene.add_polyline(circle(motion.theta_min(), c, 1.02), render::kBlue, 2.5,
+                       first ? "turning circles \\theta_{min}, \\theta_{max}" : "");
+    scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlue, 2.5);
+    scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {render::kGray}, first ? "vertical z" : "");
+    scene.add_label(c + Vector3d(0, -1.3, 0), to_string(motion.regime()));
+    ++index;
+  }
+  // From above, a little to the front: the caps the axes sweep face the camera.
+  scene.camera.eye = Vector3d(gap, -3.5, 10.0);
+  scene.camera.target = Vector3d(gap, 0, 0.5);
+  scene.camera.fov_y_deg = 30;
+  return scene;
+}
+
+// phi_dot from a state: omega_z = phi_dot + psi_dot cos(theta), omega_3 = phi_dot cos(theta) + psi_dot.
+double phi_dot_of(const TopSample& s) {
+  const Vector3d axis = s.attitude * Vector3d::UnitZ();
+  const double omega_z = (s.attitude * s.omega_body).z(), c = axis.z();
+  const double sin2 = axis.x() * axis.x() + axis.y() * axis.y();
+  return sin2 > 0 ? (omega_z - s.omega_body.z() * c) / sin2 : 0.0;
+}
+
+// theta(t) and phi_dot(t): the exact motion beside an integrated run.
+render::Plot2D theta_plot(const Figures& f) {
+  std::vector<double> t, theta, phi_dot, ti, thetai, phi_doti;
+  for (int k = 0; k <= 1200; ++k) {
+    t.push_back(f.t_end * k / 1200);
+    const TopAngles a = f.motion.angles(t.back());
+    theta.push_back(rad_to_deg(a.theta));
+    phi_dot.push_back(a.phi_dot);
+  }
+  const std::size_t stride = std::max<std::size_t>(1, f.integrated.samples.size() / 60);
+  for (std::size_t i = 0; i < f.integrated.samples.size(); i += stride) {
+    const TopSample& s = f.integrated.samples[i];
+    ti.push_back(s.t);
+    thetai.push_back(rad_to_deg(s.theta));
+    phi_doti.push_back(phi_dot_of(s));
+  }
+  const std::string integrated = method_name(f.integrated.method).data();
+  render::Plot2D plot(2, 1);
+  plot.title = "nutation and precession";
+  render::Panel& top = plot.panel(0, 0);
+  top.y.label = "\\theta (\\deg)";
+  top.add_line(t, theta, "exact").color = render::kBlue;
+  top.add_points(ti, thetai, integrated).color = render::kVermillion;
+  top.add_ref_line(rad_to_deg(f.motion.theta_min()), false, "\\theta_{min}");
+  top.add_ref_line(rad_to_deg(f.motion.theta_max()), false, "\\theta_{max}");
+  render::Panel& bottom = plot.panel(1, 0);
+  bottom.x.label = "t (s)";
+  bottom.y.label = "\\phi-dot (rad/s)";
+  bottom.add_line(t, phi_dot, "exact").color = render::kBlue;
+  bottom.add_points(ti, phi_doti, integrated).color = render::kVermillion;
+  bottom.add_ref_line(f.motion.mean_precession_rate(), false,
+                      fmt::format("mean {:.4g} rad/s", f.motion.mean_precession_rate()));
+  bottom.legend = render::LegendPlace::kNone;
+  return plot;
+}
+
+// The top at t = 0: tip, spindle and disk, with L, the gravity torque and the
+// circle its centre of mass sweeps as it precesses.
+render::Scene3D top_scene(const Figures& f) {
+  const HeavyTopExact& m = f.motion;
+  const Eigen::Quaterniond q = m.attitude(0.0);
+  const Vector3d e3 = q * Vector3d::UnitZ();
+  const double l = f.arm, r = f.disk_radius, size = std::max(l + r, 2 * r);
+  const TopAngles a0 = m.angles(0.0);
+  const Vector3d omega = q * euler_omega_body(a0);
+  const HeavyTop& top = m.top();
+  const Vector3d L_body = Vector3d(top.I, top.I, top.Is).cwiseProduct(euler_omega_body(a0));
+  const Vector3d L = q * L_body;
+  const Vector3d torque = -top.mgl * e3.cross(Vector3d::UnitZ());
+  render::Scene3D scene;
+  scene.title = "the top at t = 0; arrows show directions";
+  scene.add_sphere(Vector3d::Zero(), 0.04 * size, {render::kBlack}, "tip (pivot)");
+  scene.add_cylinder(Vector3d::Zero(), (l + 0.5 * r) * e3, 0.03 * size, {render::kGray});
+  // The disk translucent, so the tip, the spindle and the circle below stay in view.
+  scene.add_cylinder(l * e3 - 0.05 * r * e3, l * e3 + 0.05 * r * e3, r, {render::kOrange, 0.5f},
+                     "disk");
+  const double arrow = 1.6 * size;
+  if (L.norm() > 0) {
+    scene.add_arrow(Vector3d::Zero(), arrow * L.normalized(), 0.025 * size, {render::kBlue}, "L");
+  }
+  if (torque.norm() > 0) {
+    scene.add_arrow(l * e3, l * e3 + 0.8 * arrow * torque.normalized(), 0.025 * size,
+                    {render::kVermillion}, "gravity torque");
+  }
+  if (omega.norm() > 0) {
+    scene.add_arrow(Vector3d::Zero(), 1.2 * arrow * omega.normalized(), 0.018 * size,
+                    {render::kBluishGreen}, "\\omega");
+  }
+  scene.add_polyline(circle(std::acos(std::clamp(e3.z(), -1.0, 1.0)), Vector3d::Zero(), l),
+                     render::kReddishPurple, 3.0, "centre of mass's precession circle");
+  scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.4 * size, {"x", "y", "z"});
+  scene.camera.eye = size * Vector3d(4.0, -6.5, 1.2);
+  scene.camera.target = Vector3d(0, 0, 0.4 * size);
+  return scene;
+}
+
+}  // namespace
+
+void draw(FigureSet& set, const Figures& f) {
+  set.add("potential", "the effective potential, E' and the turning points",
+          potential_plot(f.motion));
+  set.add("paths", "the axis's path on the sphere: wavy, cusped, looping", paths_scene(f.motion));
+  set.add("theta", "theta(t) and phi_dot(t), exact beside integrated", theta_plot(f));
+  set.add("top", "the top, L, the gravity torque and the precession circle", top_scene(f));
+  std::vector<MethodCurve> curves;
+  for (const TopComparison& c : f.methods) {
+    std::vector<double> deg;
+    for (const double e : c.theta_error) deg.push_back(rad_to_deg(e));
+    curves.push_back({method_label(c.options), c.completed && std::isfinite(c.max_theta_error),
+                      c.t, deg, c.energy_error});
+  }
+  set.add("integrators", "every integrator against the exact theta",
+          integrators_plot(curves, "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)",
+                           "|E - E_0| / (T_0 + mgl)"));
+}
 
 }  // namespace rigid::lab::top_nutation

@@ -234,7 +234,7 @@ int main(int argc, char** argv) {
                             in.integration.tolerance, options.step));
     for (const rigid::TopComparison& c : methods) {
       const std::string name(rigid::method_name(c.options.method));
-      const std::string key = "max_theta_error_deg_" + rigid::lab::json_key(name);
+      const std::string key = "max_theta_error_" + rigid::lab::json_key(name) + "_deg";
       const std::string label = fmt::format("{:<15} max |theta - theta_exact|", name);
       if (!c.completed) {
         lab.result_none(key, label, "deg", fmt::format("not run: needs more than {} steps",

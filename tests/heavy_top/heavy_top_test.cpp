@@ -206,9 +206,10 @@ TEST_CASE("heavy top: integrators agree with the exact theta; splittings keep p_
     CHECK(error(run) < bound);
     CHECK(run.energy_drift_rel < bound);
     if (m == rigid::Method::kSplitting || m == rigid::Method::kSplitting4) {
-      // Every sub-step is a rotation or a torque normal to z and 3: roundoff only.
-      CHECK(run.p_phi_drift_rel < 1e-13);
-      CHECK(run.p_psi_drift_rel < 1e-13);
+      // Every sub-step is a rotation or a torque normal to z and 3: roundoff only, a
+      // random walk of ~eps sqrt(30 n) ~ 4e-14 over n ~ 1300 steps.
+      CHECK(run.p_phi_drift_rel < 1e-12);
+      CHECK(run.p_psi_drift_rel < 1e-12);
     }
   }
 }
