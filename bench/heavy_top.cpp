@@ -1,0 +1,308 @@
+// bench_heavy_top: run time against error for the heavy symmetric top (issue 9),
+// in one run, on two problems:
+//  - "top_text": section 8.1's top (a 2.00 kg disk of radius 5 cm, 4 cm above the
+//    tip, g = 9.8) at 500 rpm released from rest at 30 deg;
+//  - "top_fast": Simo & Wong's fast top (I = 5, Is = 1 about the pivot, m g l =
+//    20, S = 50, theta0 = 0.05 rad, released from rest);
+// each to t_end = 20 nutation periods, the error |theta(t_end) - theta_exact|
+// against rigid::HeavyTopExact. Every rigidlab method (integrate_heavy_top) beside
+// Boost.Odeint with std::vector state and GSL gsl_odeiv2_driver on the same
+// seven equations (omega_body with the gravity torque, the attitude quaternion);
+// and the cost of one exact theta sample beside one gsl_sf_elljac_e call.
+// Writes OUT_DIR/heavy_top.json (entries for the report) and
+// OUT_DIR/heavy_top_reference.json (for scipy_heavy_top.py).
+//
+// Usage: bench_heavy_top [OUT_DIR] [--quick]
+#include <algorithm>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "rigid/heavy_top.h"
+#include "rigid/heavy_top_integrate.h"
+#include "timing.h"
+
+#ifdef RIGID_BENCH_HAVE_GSL
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_sf_elljac.h>
+#endif
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+namespace odeint = boost::numeric::odeint;
+constexpr double kMaxRunSeconds = 1.0;
+
+struct TopProblem {
+  std::string name, title;
+  rigid::HeavyTop top;
+  rigid::TopStart start;
+  double t_end = 0.0;  // set from the nutation period
+};
+
+std::vector<TopProblem> problems() {
+  const double I = 0.25 * 2.0 * 0.05 * 0.05 + 2.0 * 0.04 * 0.04, Is = 0.5 * 2.0 * 0.05 * 0.05;
+  return {
+      {"top_text", "section 8.1's top: 500 rpm, released at 30\\deg, 20 nutation periods",
+       {I, Is, 2.0 * 9.8 * 0.04}, {M_PI / 6, 0.0, 0.0, 500.0 * 2 * M_PI / 60}},
+      {"top_fast", "Simo-Wong fast top: I = 5, I_s = 1, mgl = 20, S = 50, \\theta_0 = 0.05, "
+                   "20 nutation periods",
+       {5.0, 1.0, 20.0}, {0.05, 0.0, 0.0, 50.0}},
+  };
+}
+
+struct RunResult {
+  rigid::FreeBodyState x{};
+  long long steps = 0;
+};
+
+// The heavy top written the way a user writes it for odeint: std::vector state.
+struct VectorTopRhs {
+  double I, Is, mgl;
+  void operator()(const std::vector<double>& x, std::vector<double>& dxdt, double /*t*/) const {
+    const double w1 = x[0], w2 = x[1], w3 = x[2], qw = x[3], qx = x[4], qy = x[5], qz = x[6];
+    const double n2 = qw * qw + qx * qx + qy * qy + qz * qz;
+    const double ux = 2 * (qx * qz - qw * qy) / n2, uy = 2 * (qy * qz + qw * qx) / n2;
+    dxdt[0] = (mgl * uy - w2 * w3 * (Is - I)) / I;
+    dxdt[1] = (-mgl * ux - w3 * w1 * (I - Is)) / I;
+    dxdt[2] = 0.0;
+    dxdt[3] = 0.5 * (-qx * w1 - qy * w2 - qz * w3);
+    dxdt[4] = 0.5 * (qw * w1 + qy * w3 - qz * w2);
+    dxdt[5] = 0.5 * (qw * w2 + qz * w1 - qx * w3);
+    dxdt[6] = 0.5 * (qw * w3 + qx * w2 - qy * w1);
+  }
+};
+
+template <class Stepper>
+RunResult odeint_run(const TopProblem& p, double tol) {
+  const rigid::FreeBodyState x0 = rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
+  std::vector<double> x(x0.begin(), x0.end());
+  const auto steps = odeint::integrate_adaptive(odeint::make_controlled<Stepper>(tol, tol),
+                                                VectorTopRhs{p.top.I, p.top.Is, p.top.mgl}, x,
+                                                0.0, p.t_end, 1e-3);
+  RunResult r;
+  std::copy(x.begin(), x.end(), r.x.begin());
+  r.steps = static_cast<long long>(steps);
+  return r;
+}
+
+#ifdef RIGID_BENCH_HAVE_GSL
+int gsl_rhs(double t, const double y[], double f[], void* params) {
+  const VectorTopRhs& rhs = *static_cast<const VectorTopRhs*>(params);
+  std::vector<double> x(y, y + 7), dx(7);
+  rhs(x, dx, t);
+  std::copy(dx.begin(), dx.end(), f);
+  return GSL_SUCCESS;
+}
+
+RunResult gsl_run(const TopProblem& p, double tol, const gsl_odeiv2_step_type* type) {
+  VectorTopRhs rhs{p.top.I, p.top.Is, p.top.mgl};
+  gsl_odeiv2_system sys{gsl_rhs, nullptr, 7, &rhs};
+  gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, type, 1e-3, tol, tol);
+  const rigid::FreeBodyState x0 = rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
+  RunResult r;
+  r.x = x0;
+  double t = 0.0;
+  const int status = gsl_odeiv2_driver_apply(d, &t, p.t_end, r.x.data());
+  r.steps = static_cast<long long>(d->n);
+  gsl_odeiv2_driver_free(d);
+  if (status != GSL_SUCCESS) throw std::runtime_error("gsl_odeiv2_driver_apply failed");
+  return r;
+}
+#endif
+
+RunResult rigidlab_run(const TopProblem& p, rigid::Method m, double param) {
+  rigid::OdeOptions o;
+  o.method = m;
+  if (rigid::is_adaptive(m)) {
+    o.abs_tol = o.rel_tol = param;
+  } else {
+    o.step = param;
+  }
+  const rigid::HeavyTopExact exact(p.top, p.start);
+  const rigid::TopRun run =
+      rigid::integrate_heavy_top(p.top, rigid::heavy_top_state(exact.angles(0)), {0.0, p.t_end}, o);
+  const rigid::TopSample& s = run.samples.back();
+  return {rigid::make_state(s.omega_body, s.attitude), static_cast<long long>(run.steps)};
+}
+
+struct Solver {
+  std::string name;
+  bool peer = false, adaptive = true;
+  int order = 0;
+  std::function<RunResult(const TopProblem&, double)> run;
+};
+
+std::vector<Solver> solvers() {
+  std::vector<Solver> s;
+  for (const rigid::Method m : rigid::kAllMethods) {
+    s.push_back({"rigidlab:" + std::string(rigid::method_name(m)), false, rigid::is_adaptive(m),
+                 rigid::fixed_step_order(m),
+                 [m](const TopProblem& p, double param) { return rigidlab_run(p, m, param); }});
+  }
+  s.push_back({"odeint:dopri5", true, true, 0, odeint_run<odeint::runge_kutta_dopri5<std::vector<double>>>});
+  s.push_back({"odeint:rkf78", true, true, 0, odeint_run<odeint::runge_kutta_fehlberg78<std::vector<double>>>});
+#ifdef RIGID_BENCH_HAVE_GSL
+  s.push_back({"gsl:rk8pd", true, true, 0,
+               [](const TopProblem& p, double tol) { return gsl_run(p, tol, gsl_odeiv2_step_rk8pd); }});
+  s.push_back({"gsl:rkf45", true, true, 0,
+               [](const TopProblem& p, double tol) { return gsl_run(p, tol, gsl_odeiv2_step_rkf45); }});
+#endif
+  return s;
+}
+
+struct Measurement {
+  const Solver* solver = nullptr;
+  double param = 0.0, seconds = 0.0, error = 0.0;
+  long long steps = 0;
+};
+
+constexpr bench::TimingPolicy kRoundPolicy{0.02, 3, 0.3};
+
+bool measure(const TopProblem& p, const Solver& s, double param, double theta_exact,
+             Measurement& m) {
+  m.solver = &s;
+  m.param = param;
+  RunResult r;
+  try {
+    m.seconds = bench::best_seconds([&] { r = s.run(p, param); }, kRoundPolicy);
+  } catch (const std::exception& e) {
+    std::printf("  %-24s %.3g: failed (%s)\n", s.name.c_str(), param, e.what());
+    return false;
+  }
+  m.steps = r.steps;
+  m.error = std::abs(rigid::tilt_of(rigid::attitude(r.x).normalized()) - theta_exact);
+  return std::isfinite(m.error);
+}
+
+void sweep(const TopProblem& p, const Solver& s, double theta_exact, double omega, bool quick,
+           std::vector<Measurement>& out) {
+  Measurement m;
+  if (s.adaptive) {
+    for (int k = 3; k <= (quick ? 9 : 13); ++k) {
+      if (!measure(p, s, std::pow(10.0, -k), theta_exact, m)) break;
+      out.push_back(m);
+      if (m.seconds * 1.6 > kMaxRunSeconds) break;
+    }
+    return;
+  }
+  const double ratio = std::pow(10.0, -1.0 / s.order);
+  double h = (s.order == 2 ? 0.1 : 0.5) / omega;
+  double previous = INFINITY;
+  int stalls = 0;
+  for (int k = 0; k < (quick ? 6 : 16); ++k, h *= ratio) {
+    if (!measure(p, s, h, theta_exact, m)) break;
+    out.push_back(m);
+    if (m.error < 1e-13 || m.seconds / ratio > kMaxRunSeconds) break;
+    stalls = m.error > 0.5 * previous ? stalls + 1 : 0;
+    if (stalls >= 2) break;
+    previous = m.error;
+  }
+}
+
+void write_json(const std::filesystem::path& path, const Json& j) {
+  const auto tmp = path.string() + ".tmp";
+  std::ofstream(tmp) << j.dump(1) << "\n";
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::filesystem::path dir = ".";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--quick") quick = true;
+    else dir = a;
+  }
+  Json entries = Json::array(), ref;
+  ref["problems"] = Json::array();
+  for (TopProblem p : problems()) {
+    const rigid::HeavyTopExact exact(p.top, p.start);
+    p.t_end = 20 * exact.nutation_period();
+    const double theta_exact = exact.theta(p.t_end);
+    const rigid::FreeBodyState x0 = rigid::heavy_top_state(exact.angles(0));
+    const double omega = rigid::omega_body(x0).norm();
+    std::printf("heavy top work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
+    entries.push_back({{"group", "problem"}, {"problem", p.name}, {"title", p.title}});
+    ref["problems"].push_back({{"name", p.name}, {"I", p.top.I}, {"Is", p.top.Is},
+                               {"mgl", p.top.mgl}, {"x0", x0}, {"t_end", p.t_end},
+                               {"theta_end", theta_exact}});
+    std::vector<Measurement> ms;
+    const std::vector<Solver> all = solvers();
+    for (const Solver& s : all) sweep(p, s, theta_exact, omega, quick, ms);
+    for (int round = 1; round < (quick ? 1 : 3); ++round) {
+      for (Measurement& m : ms) {
+        Measurement again;
+        if (measure(p, *m.solver, m.param, theta_exact, again)) m.seconds = std::min(m.seconds, again.seconds);
+      }
+    }
+    for (const Measurement& m : ms) {
+      std::printf("  %-24s %s %-9.3g theta error %-9.2e %9.3f ms %9lld steps\n", m.solver->name.c_str(),
+                  m.solver->adaptive ? "tol" : "h  ", m.param, m.error, m.seconds * 1e3, m.steps);
+      Json e;
+      e["group"] = "work_precision";
+      e["problem"] = p.name;
+      e["solver"] = m.solver->name;
+      e["peer"] = m.solver->peer;
+      e[m.solver->adaptive ? "tolerance" : "step"] = m.param;
+      e["error"] = m.error;
+      e["seconds"] = m.seconds;
+      e["steps"] = m.steps;
+      entries.push_back(e);
+    }
+
+    // One exact theta sample against one gsl_sf_elljac_e call at the same k^2.
+    constexpr int kSamples = 1 << 14;
+    const double dt = p.t_end / kSamples;
+    const bench::TimingPolicy policy{0.05, 5, 0.5};
+    const auto add = [&](const char* tool, const char* what, double seconds) {
+      Json e;
+      e["group"] = "elliptic";
+      e["problem"] = p.name;
+      e["tool"] = tool;
+      e["what"] = what;
+      e["ns_per_sample"] = seconds / kSamples * 1e9;
+      std::printf("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
+      entries.push_back(e);
+    };
+    add("rigidlab", "theta", bench::best_seconds([&] {
+          double sum = 0;
+          for (int i = 0; i < kSamples; ++i) sum += exact.theta(i * dt);
+          bench::do_not_optimize(sum);
+        }, policy));
+    add("rigidlab", "theta+phi+psi", bench::best_seconds([&] {
+          double sum = 0;
+          for (int i = 0; i < kSamples; ++i) {
+            const rigid::TopAngles a = exact.angles(i * dt);
+            sum += a.theta + a.phi + a.psi;
+          }
+          bench::do_not_optimize(sum);
+        }, policy));
+#ifdef RIGID_BENCH_HAVE_GSL
+    const double m2 = (exact.u2() - exact.u1()) / (exact.u3() - exact.u1());
+    const double du = 2 * M_PI / kSamples * 20;  // about as many periods as the samples cover
+    add("gsl", "elljac", bench::best_seconds([&] {
+          double sum = 0;
+          for (int i = 0; i < kSamples; ++i) {
+            double s, c, d;
+            gsl_sf_elljac_e(i * du, m2, &s, &c, &d);
+            sum += s + c + d;
+          }
+          bench::do_not_optimize(sum);
+        }, policy));
+#endif
+    std::fflush(stdout);
+  }
+  write_json(dir / "heavy_top.json", entries);
+  write_json(dir / "heavy_top_reference.json", ref);
+  return 0;
+}
