@@ -115,11 +115,6 @@ class TopRecorder {
 
 }  // namespace
 
-void HeavyTopRhs::operator()(const FreeBodyState& x, FreeBodyState& dxdt, double t) const {
-  const Eigen::Vector3d N = gravity_torque(top.mgl, up_in_body(x[3], x[4], x[5], x[6]));
-  EulerRhs{{top.I, top.I, top.Is}, N}(x, dxdt, t);
-}
-
 FreeBodyState heavy_top_state(const TopAngles& a) {
   return make_state(euler_omega_body(a), euler_attitude(a.phi, a.theta, a.psi));
 }
@@ -149,7 +144,7 @@ TopRun integrate_heavy_top(const HeavyTop& top, const FreeBodyState& x0,
     TopSplitting stepper = split;
     stats = integrate_on_grid(stepper, split, x, times, o, rec);
   } else {
-    stats = integrate_sampled(HeavyTopRhs{top}, x0, times, o, rec);
+    stats = integrate_sampled(HeavyTopRhs(top), x0, times, o, rec);
   }
   out.steps = stats.steps;
   return out;

@@ -147,7 +147,7 @@ render::Plot2D theta_plot(const Figures& f) {
     thetai.push_back(rad_to_deg(s.theta));
     phi_doti.push_back(phi_dot_of(s));
   }
-  const std::string integrated = method_name(f.integrated.method).data();
+  const std::string integrated = std::string(method_name(f.integrated.method)) + ", integrated";
   render::Plot2D plot(2, 1);
   plot.title = "nutation and precession";
   render::Panel& top = plot.panel(0, 0);

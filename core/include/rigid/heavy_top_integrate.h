@@ -24,9 +24,30 @@ namespace rigid {
 
 /// Right-hand side of the heavy top: Euler's equations with the gravity torque
 /// and the quaternion kinematics; an odeint system functor on FreeBodyState.
-struct HeavyTopRhs {
-  HeavyTop top;
-  void operator()(const FreeBodyState& x, FreeBodyState& dxdt, double t) const;
+/// The coefficients are formed once, so an evaluation costs one division.
+class HeavyTopRhs {
+ public:
+  explicit HeavyTopRhs(const HeavyTop& top)
+      : mgl_over_I_(top.mgl / top.I), spin_coupling_((top.Is - top.I) / top.I) {}
+  void operator()(const FreeBodyState& x, FreeBodyState& dxdt, double /*t*/) const {
+    const double w1 = x[0], w2 = x[1], w3 = x[2];
+    const double qw = x[3], qx = x[4], qy = x[5], qz = x[6];
+    // R^T z for the (not renormalised) quaternion: z in body axes, times 1/|q|^2.
+    const double inv_n2 = 1.0 / (qw * qw + qx * qx + qy * qy + qz * qz);
+    const double ux = 2.0 * (qx * qz - qw * qy) * inv_n2, uy = 2.0 * (qy * qz + qw * qx) * inv_n2;
+    // I w_dot = N - w x (I w), N = -mgl e3 x (R^T z) = mgl (uy, -ux, 0); Is w3_dot = 0
+    dxdt[0] = mgl_over_I_ * uy - spin_coupling_ * w2 * w3;
+    dxdt[1] = -mgl_over_I_ * ux + spin_coupling_ * w3 * w1;
+    dxdt[2] = 0.0;
+    // q_dot = 1/2 q (x) (0, omega_body)
+    dxdt[3] = 0.5 * (-qx * w1 - qy * w2 - qz * w3);
+    dxdt[4] = 0.5 * (qw * w1 + qy * w3 - qz * w2);
+    dxdt[5] = 0.5 * (qw * w2 + qz * w1 - qx * w3);
+    dxdt[6] = 0.5 * (qw * w3 + qx * w2 - qy * w1);
+  }
+
+ private:
+  double mgl_over_I_, spin_coupling_;
 };
 
 /// The state (omega_body, attitude) of Euler angles and rates.
