@@ -172,6 +172,19 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   w1_ = std::max(w1_, -1.0 - u0_);
   w2_ = std::min(w2_, one_minus_u0_);
   if (w2_ > w3_) std::swap(w2_, w3_);
+  // b - a u at the poles. Where it is exactly zero, f(+-1) = 0: the pole is a
+  // root, so the axis goes through it (a start upright with theta_dot, or no spin
+  // and no p_phi); set that root exactly, not to within roundoff.
+  b_minus_a_ = d0_ - a_ * one_minus_u0_;  // at u = 1
+  b_plus_a_ = d0_ + a_ * (1.0 + u0_);     // at u = -1
+  // u = -1 can only be u1; u = +1 is u2 (the axis reaches upright) or u3 (it does
+  // not): whichever computed root lies nearer.
+  through_south_ = b_plus_a_ == 0.0;
+  if (through_south_) w1_ = -1.0 - u0_;
+  if (b_minus_a_ == 0.0) {
+    through_north_ = std::abs(w2_ - one_minus_u0_) < std::abs(w3_ - one_minus_u0_);
+    (through_north_ ? w2_ : w3_) = one_minus_u0_;
+  }
 
   // sn^2 of the phase, its modulus and rate.
   const double span = w3_ - w1_;  // u3 - u1 > 0
@@ -189,42 +202,48 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     v0_ = std::sqrt(ratio) * rf(w2_ / (w2_ - w1_), w3_ / span, 1.0);
     if (s.theta_dot > 0.0) v0_ = -v0_;
   }
+  // Started upright (the turning circle u2 = 1 itself): exactly at v0 = -K, leaving.
+  if (s.theta == 0.0) v0_ = -K_;
   const double amplitude = w2_ - w1_;
-  regime_ = amplitude <= 64 * kEps ? TopRegime::kSteady : TopRegime::kWavy;
+  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
+  const double one_plus_u2 = (1.0 + u0_) + w2_;
+  // Steady: no nodding beyond roundoff, measured against the distance of the
+  // circles from the poles (near upright, u moves by theta^2 only).
+  regime_ = amplitude <= 64 * kEps * std::min(one_minus_u1, one_plus_u2) ? TopRegime::kSteady
+                                                                          : TopRegime::kWavy;
 
   // phi_dot = (b - a u)/(1 - u^2) = [(b - a)/(1 - u) + (b + a)/(1 + u)] / 2, and
-  // 1 - u = (1 - u1)(1 - n+ sn^2), 1 + u = (1 + u1)(1 + n- sn^2).
-  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
-  b_minus_a_ = d0_ - a_ * one_minus_u0_;        // b - a u at u = 1
-  b_plus_a_ = d0_ + a_ * (1.0 + u0_);           // b - a u at u = -1
-  n_plus_ = one_minus_u1 > 0.0 ? amplitude / one_minus_u1 : 0.0;
-  n_minus_ = -amplitude / one_plus_u1;
+  // 1 - u = (1 - u1)(1 - n+ sn^2), 1 + u = (1 + u1)(1 + n- sn^2). A term whose
+  // coefficient is zero is left out (its n may be infinite: the pole is a root).
+  n_plus_ = !through_north_ && one_minus_u1 > 0.0 ? amplitude / one_minus_u1 : 0.0;
+  n_minus_ = !through_south_ ? -amplitude / one_plus_u1 : 0.0;
   // Complete integrals of 1/(1 - n sn^2) over a half period: Pi(n, k) = K + n/3 R_J(0, k'^2, 1, 1 - n).
   const auto complete = [&](double n) {
     return n == 0.0 ? K_ : K_ + n / 3.0 * rj(0.0, kp2_, 1.0, 1.0 - n);
   };
-  pi_plus_ = b_minus_a_ != 0.0 && n_plus_ < 1.0 ? complete(n_plus_) : 0.0;
-  pi_minus_ = complete(n_minus_);
-  G_plus_0_ = b_minus_a_ != 0.0 ? third_kind(v0_, n_plus_, pi_plus_) : 0.0;
-  G_minus_0_ = third_kind(v0_, n_minus_, pi_minus_);
-  mean_phi_dot_ = (b_minus_a_ / one_minus_u1 * pi_plus_ + b_plus_a_ / one_plus_u1 * pi_minus_) /
-                  (2.0 * K_);
-  if (b_minus_a_ == 0.0) mean_phi_dot_ = b_plus_a_ / one_plus_u1 * pi_minus_ / (2.0 * K_);
+  pi_plus_ = through_north_ ? 0.0 : complete(n_plus_);
+  pi_minus_ = through_south_ ? 0.0 : complete(n_minus_);
+  G_plus_0_ = through_north_ ? 0.0 : third_kind(v0_, n_plus_, pi_plus_);
+  G_minus_0_ = through_south_ ? 0.0 : third_kind(v0_, n_minus_, pi_minus_);
+  // Over a nutation period (2K in v, 2K / lambda in t): the two integrals, and pi for
+  // each pole the axis goes through (phi jumps by pi there, the Euler angles' way
+  // of crossing it).
+  mean_phi_dot_ = 0.0;
+  if (!through_north_) mean_phi_dot_ += b_minus_a_ / one_minus_u1 * pi_plus_ / (2.0 * K_);
+  if (!through_south_) mean_phi_dot_ += b_plus_a_ / one_plus_u1 * pi_minus_ / (2.0 * K_);
+  if (std::isfinite(period_)) mean_phi_dot_ += (through_north_ + through_south_) * kPi / period_;
 
-  // phi_dot at the turning circles: its numerator b - a u = d0 - a w, exact at w = 0.
-  const auto phi_dot_at = [&](double wi) {
-    const double omu = one_minus_u0_ - wi, opu = (1.0 + u0_) + wi;
-    return omu > 0.0 ? (d0_ - a_ * wi) / (omu * opu) : 0.5 * b_plus_a_ / opu;
-  };
-  phi_dot_u1_ = phi_dot_at(w1_);
-  phi_dot_u2_ = phi_dot_at(w2_);
+  // phi_dot at the turning circles.
+  phi_dot_u1_ = at(0.0, 1.0).phi_dot;
+  phi_dot_u2_ = at(1.0, 0.0).phi_dot;
   if (regime_ == TopRegime::kWavy) {
-    // A numerator within roundoff of zero is a cusp (released with phi_dot = theta_dot = 0).
-    const auto numerator = [&](double wi) {
+    // A numerator within roundoff of zero is a cusp (released with phi_dot = theta_dot
+    // = 0); through a pole counts as a cusp too: the axis stops turning there.
+    const auto numerator = [&](double wi, bool pole) {
       const double n = d0_ - a_ * wi;
-      return std::abs(n) <= 16 * kEps * (std::abs(d0_) + std::abs(a_ * wi)) ? 0.0 : n;
+      return pole || std::abs(n) <= 16 * kEps * (std::abs(d0_) + std::abs(a_ * wi)) ? 0.0 : n;
     };
-    const double n1 = numerator(w1_), n2 = numerator(w2_);
+    const double n1 = numerator(w1_, through_south_), n2 = numerator(w2_, through_north_);
     if (n1 == 0.0 || n2 == 0.0) {
       regime_ = TopRegime::kCusped;
     } else if ((n1 > 0) != (n2 > 0)) {
@@ -265,10 +284,39 @@ double HeavyTopExact::third_kind(double v, double n, double complete) const {
   return part + 2.0 * m * complete;
 }
 
+HeavyTopExact::Where HeavyTopExact::at(double sn2, double cn2) const {
+  // u = u1 + (u2 - u1) sn^2 = u2 - (u2 - u1) cn^2: each form from the nearer turning
+  // circle, so 1 - u, 1 + u and b - a u keep their digits there (near a pole too).
+  const double delta = w2_ - w1_;
+  Where x;
+  if (sn2 <= 0.5) {
+    x.w = w1_ + delta * sn2;
+    x.omu = (one_minus_u0_ - w1_) - delta * sn2;
+    x.opu = ((1.0 + u0_) + w1_) + delta * sn2;
+    x.numerator = (d0_ - a_ * w1_) - a_ * delta * sn2;
+  } else {
+    x.w = w2_ - delta * cn2;
+    x.omu = (one_minus_u0_ - w2_) + delta * cn2;
+    x.opu = ((1.0 + u0_) + w2_) - delta * cn2;
+    x.numerator = (d0_ - a_ * w2_) + a_ * delta * cn2;
+  }
+  x.omu = std::max(x.omu, 0.0);
+  x.opu = std::max(x.opu, 0.0);
+  x.theta = std::atan2(std::sqrt(x.omu * x.opu), u0_ + x.w);
+  // phi_dot = (b - a u)/((1 - u)(1 + u)); at a pole the axis goes through, its limit
+  // [(b - a)/(1 - u) + (b + a)/(1 + u)]/2 keeps only the other pole's term.
+  if (x.omu * x.opu > 0.0) {
+    x.phi_dot = x.numerator / (x.omu * x.opu);
+  } else if (x.omu == 0.0) {
+    x.phi_dot = x.opu > 0.0 ? 0.5 * b_plus_a_ / x.opu : 0.0;
+  } else {
+    x.phi_dot = 0.5 * b_minus_a_ / x.omu;
+  }
+  return x;
+}
+
 double HeavyTopExact::theta_from(const Phase& p) const {
-  const double w = w1_ + (w2_ - w1_) * p.sn * p.sn;
-  const double omu = one_minus_u0_ - w, opu = (1.0 + u0_) + w;
-  return std::atan2(std::sqrt(std::max(omu, 0.0) * std::max(opu, 0.0)), u0_ + w);
+  return at(p.sn * p.sn, p.cn * p.cn).theta;
 }
 
 double HeavyTopExact::theta(double t) const {
@@ -286,24 +334,50 @@ TopAngles HeavyTopExact::angles(double t) const {
     return out;
   }
   const Phase p = phase(t);
-  const double w = w1_ + (w2_ - w1_) * p.sn * p.sn;
-  const double omu = one_minus_u0_ - w, opu = (1.0 + u0_) + w;
-  out.theta = std::atan2(std::sqrt(std::max(omu, 0.0) * std::max(opu, 0.0)), u0_ + w);
-  const double sin_theta = std::sin(out.theta);
-  const double u_dot = 2.0 * (w2_ - w1_) * lambda_ * p.sn * p.cn * p.dn;
-  out.theta_dot = sin_theta > 0.0 ? -u_dot / sin_theta : 0.0;
-  out.phi_dot = omu > 0.0 ? (d0_ - a_ * w) / (omu * opu) : 0.5 * b_plus_a_ / opu;
-  out.psi_dot = S - (u0_ + w) * out.phi_dot;
+  const Where x = at(p.sn * p.sn, p.cn * p.cn);
+  out.theta = x.theta;
+  // theta_dot = -u_dot / sin(theta), u_dot = 2 (u2 - u1) lambda sn cn dn. Where a pole
+  // is a turning circle, 1 - u = (u2 - u1) cn^2 (north) or 1 + u = (u2 - u1) sn^2
+  // (south) exactly, and that factor cancels: the axis goes through the pole at
+  // its full speed instead of 0/0 (leaving it, at the instant itself).
+  const double delta = w2_ - w1_;
+  const double cn_part = through_north_ ? 1.0 : p.cn;
+  const double sn_part = through_south_ ? 1.0 : p.sn;
+  const double rest = (through_north_ ? delta : x.omu) * (through_south_ ? delta : x.opu);
+  out.theta_dot = rest > 0.0 ? -2.0 * delta * lambda_ * sn_part * cn_part * p.dn / std::sqrt(rest)
+                             : 0.0;
+  if (through_north_ || through_south_) {
+    // The sign of the cancelled factor is roundoff at the pole itself: take it from
+    // where v is in the period instead. theta grows for half a period after the axis
+    // leaves the north pole (v = K + 2Kj), and falls after it leaves the south pole.
+    const double from = through_north_ ? p.v - K_ : p.v;
+    const double r = from - 2 * K_ * std::floor(from / (2 * K_));  // in [0, 2K)
+    const bool after_pass = r < K_;
+    out.theta_dot = std::abs(out.theta_dot) * ((after_pass == through_north_) ? 1.0 : -1.0);
+  }
+  out.phi_dot = x.phi_dot;
+  out.psi_dot = S - (u0_ + x.w) * out.phi_dot;
   // J+ = int dt/(1 - u), J- = int dt/(1 + u), each an integral of the third kind.
   const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
-  const double J_plus = b_minus_a_ != 0.0
-                            ? (third_kind(p.v, n_plus_, pi_plus_) - G_plus_0_) /
-                                  (one_minus_u1 * lambda_)
-                            : 0.0;
-  const double J_minus =
-      (third_kind(p.v, n_minus_, pi_minus_) - G_minus_0_) / (one_plus_u1 * lambda_);
-  out.phi = start_.phi + 0.5 * (b_minus_a_ * J_plus + b_plus_a_ * J_minus);
-  out.psi = start_.psi + (S - a_) * t - 0.5 * (b_minus_a_ * J_plus - b_plus_a_ * J_minus);
+  const double J_plus = through_north_ ? 0.0
+                                       : (third_kind(p.v, n_plus_, pi_plus_) - G_plus_0_) /
+                                             (one_minus_u1 * lambda_);
+  const double J_minus = through_south_ ? 0.0
+                                        : (third_kind(p.v, n_minus_, pi_minus_) - G_minus_0_) /
+                                              (one_plus_u1 * lambda_);
+  // Through a pole, phi turns by pi at once and psi by -pi (north: phi + psi is the
+  // turn about z there) or +pi (south: phi - psi is); passages at v = K + 2Kj (north,
+  // sn^2 = 1) and v = 2Kj (south, sn = 0) after v0.
+  double north = 0.0, south = 0.0;
+  if (through_north_) {
+    north = kPi * (std::floor((p.v - K_) / (2 * K_)) - std::floor((v0_ - K_) / (2 * K_)));
+  }
+  if (through_south_) {
+    south = kPi * (std::floor(p.v / (2 * K_)) - std::floor(v0_ / (2 * K_)));
+  }
+  out.phi = start_.phi + 0.5 * (b_minus_a_ * J_plus + b_plus_a_ * J_minus) + north + south;
+  out.psi = start_.psi + (S - a_) * t - 0.5 * (b_minus_a_ * J_plus - b_plus_a_ * J_minus) -
+            north + south;
   return out;
 }
 
@@ -313,15 +387,11 @@ Eigen::Quaterniond HeavyTopExact::attitude(double t) const {
 }
 
 double HeavyTopExact::theta_min() const {
-  if (regime_ == TopRegime::kSleeping) return 0.0;
-  const double omu = one_minus_u0_ - w2_, opu = (1.0 + u0_) + w2_;
-  return std::atan2(std::sqrt(std::max(omu, 0.0) * opu), u0_ + w2_);
+  return regime_ == TopRegime::kSleeping ? 0.0 : at(1.0, 0.0).theta;
 }
 
 double HeavyTopExact::theta_max() const {
-  if (regime_ == TopRegime::kSleeping) return 0.0;
-  const double omu = one_minus_u0_ - w1_, opu = (1.0 + u0_) + w1_;
-  return std::atan2(std::sqrt(omu * std::max(opu, 0.0)), u0_ + w1_);
+  return regime_ == TopRegime::kSleeping ? 0.0 : at(0.0, 1.0).theta;
 }
 
 }  // namespace rigid

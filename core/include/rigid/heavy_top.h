@@ -140,6 +140,11 @@ class HeavyTopExact {
     double v;  ///< lambda t + v0
   };
   Phase phase(double t) const;
+  // Where the axis is at sn^2, cn^2 of the phase: u - u0, 1 - u, 1 + u, b - a u, theta, phi_dot.
+  struct Where {
+    double w, omu, opu, numerator, theta, phi_dot;
+  };
+  Where at(double sn2, double cn2) const;
   double theta_from(const Phase& p) const;
   // The integral of 1/(1 - n sn^2) from 0 to v (v reduced by 2K inside).
   double third_kind(double v, double n, double complete) const;
@@ -153,6 +158,7 @@ class HeavyTopExact {
   double lambda_ = 0.0, v0_ = 0.0, kp2_ = 1.0, k2_ = 0.0, K_ = 0.0, period_ = 0.0;
   double n_plus_ = 0.0, n_minus_ = 0.0, pi_plus_ = 0.0, pi_minus_ = 0.0;
   double b_minus_a_ = 0.0, b_plus_a_ = 0.0;
+  bool through_north_ = false, through_south_ = false;  // a pole is a turning circle
   double G_plus_0_ = 0.0, G_minus_0_ = 0.0;
   double mean_phi_dot_ = 0.0, phi_dot_u1_ = 0.0, phi_dot_u2_ = 0.0;
   double energy_ = 0.0, p_phi_ = 0.0, p_psi_ = 0.0;
