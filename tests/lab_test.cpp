@@ -742,3 +742,38 @@ TEST_CASE("top_nutation: --csv holds theta beside the exact theta, and a unit qu
   CHECK(highest > 0.9);
   std::remove(path.c_str());
 }
+
+TEST_CASE("labs: extreme but legal inputs end with finite numbers or one line, never a crash") {
+  // Each was a crash or a message naming no option: odeint's dense-output steppers
+  // failed for runs shorter than 1e-14 s (now run in scaled time), and the heavy
+  // top's turning circles within roundoff of a pole (no spin, huge g) overflowed.
+  const std::pair<const char*, const char*> cases[] = {
+      {"poinsot", "--t-end 1e-60"},
+      {"poinsot", "--t-end 1e-20 --method dopri5"},
+      {"poinsot", "--t-end 1e-20 --method bulirsch-stoer"},
+      {"poinsot", "--inertia 1,2,3 --omega 1e20,1e20,1e20"},
+      {"tennis_racquet", "--t-end 1e-60"},
+      {"tennis_racquet", "--omega 1e30"},
+      {"top_nutation", "--g 1e60"},
+      {"top_nutation", "--spin 0"},
+      {"top_nutation", "--spin 1e-60"},
+      {"top_nutation", "--spin 1e60"},
+      {"top_nutation", "--thetadot0 1e60"},
+      {"top_nutation", "--t-end 1e-60"},
+      {"top_nutation", "--spin 0 --theta0-deg 1e-10"},
+      {"top_nutation", "--theta0-deg 0 --thetadot0 1"},
+      {"top_nutation", "--theta0-deg 179.9999999"},
+  };
+  for (const auto& [lab, args] : cases) {
+    INFO(lab << " " << args);
+    const auto run = run_lab(lab, std::string("--json ") + args);
+    CHECK((run.status == 0 || run.status == 2));
+    if (run.status == 2) {
+      CHECK(run.one_error_line());
+      CHECK(run.err.find(": error: --") != std::string::npos);
+    } else {
+      CHECK(run.out.find("NaN") == std::string::npos);
+      CHECK(run.json()["results"].is_object());
+    }
+  }
+}

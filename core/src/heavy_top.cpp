@@ -185,6 +185,19 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     through_north_ = std::abs(w2_ - one_minus_u0_) < std::abs(w3_ - one_minus_u0_);
     (through_north_ ? w2_ : w3_) = one_minus_u0_;
   }
+  // A turning circle within roundoff of a pole (a top that barely spins, or a huge g)
+  // is the pole: the passage, a turn of phi by pi within a vanishing time, is then
+  // exact to roundoff, where the integral of the spike would overflow.
+  const double pole_roundoff = 16 * kEps;
+  if (!through_south_ && (1.0 + u0_) + w1_ <= pole_roundoff * (1.0 + u0_)) {
+    through_south_ = true;
+    w1_ = -1.0 - u0_;
+  }
+  if (!through_north_ && one_minus_u0_ - w2_ <= pole_roundoff &&
+      w3_ - one_minus_u0_ > pole_roundoff) {
+    through_north_ = true;
+    w2_ = one_minus_u0_;
+  }
 
   // sn^2 of the phase, its modulus and rate.
   const double span = w3_ - w1_;  // u3 - u1 > 0
@@ -192,7 +205,8 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   kp2_ = (w3_ - w2_) / span;
   lambda_ = 0.5 * std::sqrt(beta_ * span);
   jacobi_ = JacobiElliptic(kp2_);
-  K_ = rf(0.0, kp2_, 1.0);
+  // K(k) = R_F(0, k'^2, 1); infinite on the separatrix (k' = 0).
+  K_ = kp2_ > 0.0 ? rf(0.0, kp2_, 1.0) : std::numeric_limits<double>::infinity();
   period_ = kp2_ > 0.0 ? 2.0 * K_ / lambda_ : std::numeric_limits<double>::infinity();
   // The phase at t = 0: sn^2(v0) = (u0 - u1)/(u2 - u1), v0 = F(asin(sqrt(r)), k) by
   // Carlson's R_F with 1 - r = w2/(w2 - w1) and 1 - k^2 r = w3/(w3 - w1) formed exactly;
@@ -221,17 +235,23 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   const auto complete = [&](double n) {
     return n == 0.0 ? K_ : K_ + n / 3.0 * rj(0.0, kp2_, 1.0, 1.0 - n);
   };
-  pi_plus_ = through_north_ ? 0.0 : complete(n_plus_);
-  pi_minus_ = through_south_ ? 0.0 : complete(n_minus_);
-  G_plus_0_ = through_north_ ? 0.0 : third_kind(v0_, n_plus_, pi_plus_);
-  G_minus_0_ = through_south_ ? 0.0 : third_kind(v0_, n_minus_, pi_minus_);
+  // A term with a zero coefficient is left out, whatever its n.
+  use_plus_ = !through_north_ && b_minus_a_ != 0.0;
+  use_minus_ = !through_south_ && b_plus_a_ != 0.0;
+  pi_plus_ = use_plus_ ? complete(n_plus_) : 0.0;
+  pi_minus_ = use_minus_ ? complete(n_minus_) : 0.0;
+  G_plus_0_ = use_plus_ ? third_kind(v0_, n_plus_, pi_plus_) : 0.0;
+  G_minus_0_ = use_minus_ ? third_kind(v0_, n_minus_, pi_minus_) : 0.0;
   // Over a nutation period (2K in v, 2K / lambda in t): the two integrals, and pi for
   // each pole the axis goes through (phi jumps by pi there, the Euler angles' way
   // of crossing it).
   mean_phi_dot_ = 0.0;
-  if (!through_north_) mean_phi_dot_ += b_minus_a_ / one_minus_u1 * pi_plus_ / (2.0 * K_);
-  if (!through_south_) mean_phi_dot_ += b_plus_a_ / one_plus_u1 * pi_minus_ / (2.0 * K_);
-  if (std::isfinite(period_)) mean_phi_dot_ += (through_north_ + through_south_) * kPi / period_;
+  if (use_plus_) mean_phi_dot_ += b_minus_a_ / one_minus_u1 * pi_plus_ / (2.0 * K_);
+  if (use_minus_) mean_phi_dot_ += b_plus_a_ / one_plus_u1 * pi_minus_ / (2.0 * K_);
+  if (std::isfinite(period_)) {
+    if (through_north_) mean_phi_dot_ += std::copysign(kPi, b_minus_a_) / period_;
+    if (through_south_) mean_phi_dot_ += std::copysign(kPi, b_plus_a_) / period_;
+  }
 
   // phi_dot at the turning circles.
   phi_dot_u1_ = at(0.0, 1.0).phi_dot;
@@ -267,9 +287,9 @@ HeavyTopExact::Phase HeavyTopExact::phase(double t) const {
 
 double HeavyTopExact::third_kind(double v, double n, double complete) const {
   // Reduce v to [-K, K] by whole half-periods 2K: each adds 2 Pi(n, k).
-  if (!(K_ > 0.0) || !std::isfinite(K_)) return v;
-  const double m = std::round(v / (2.0 * K_));
-  const double vr = v - 2.0 * K_ * m;
+  if (!(K_ > 0.0)) return v;
+  const double m = std::isfinite(K_) ? std::round(v / (2.0 * K_)) : 0.0;
+  const double vr = m == 0.0 ? v : v - 2.0 * K_ * m;
   double sn, cn, dn;
   if (k2_ == 0.0) {
     sn = std::sin(vr);
@@ -281,7 +301,7 @@ double HeavyTopExact::third_kind(double v, double n, double complete) const {
   // Pi(n; am v, k) = v + n/3 sn^3 R_J(cn^2, dn^2, 1, 1 - n sn^2) for |v| <= K.
   const double part = n == 0.0 ? vr : vr + n / 3.0 * sn * sn * sn *
                                              rj(cn * cn, dn * dn, 1.0, 1.0 - n * sn * sn);
-  return part + 2.0 * m * complete;
+  return m == 0.0 ? part : part + 2.0 * m * complete;
 }
 
 HeavyTopExact::Where HeavyTopExact::at(double sn2, double cn2) const {
@@ -359,10 +379,10 @@ TopAngles HeavyTopExact::angles(double t) const {
   out.psi_dot = S - (u0_ + x.w) * out.phi_dot;
   // J+ = int dt/(1 - u), J- = int dt/(1 + u), each an integral of the third kind.
   const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
-  const double J_plus = through_north_ ? 0.0
+  const double J_plus = !use_plus_ ? 0.0
                                        : (third_kind(p.v, n_plus_, pi_plus_) - G_plus_0_) /
                                              (one_minus_u1 * lambda_);
-  const double J_minus = through_south_ ? 0.0
+  const double J_minus = !use_minus_ ? 0.0
                                         : (third_kind(p.v, n_minus_, pi_minus_) - G_minus_0_) /
                                               (one_plus_u1 * lambda_);
   // Through a pole, phi turns by pi at once and psi by -pi (north: phi + psi is the
@@ -370,10 +390,12 @@ TopAngles HeavyTopExact::angles(double t) const {
   // sn^2 = 1) and v = 2Kj (south, sn = 0) after v0.
   double north = 0.0, south = 0.0;
   if (through_north_) {
-    north = kPi * (std::floor((p.v - K_) / (2 * K_)) - std::floor((v0_ - K_) / (2 * K_)));
+    north = std::copysign(kPi, b_minus_a_) *
+            (std::floor((p.v - K_) / (2 * K_)) - std::floor((v0_ - K_) / (2 * K_)));
   }
   if (through_south_) {
-    south = kPi * (std::floor(p.v / (2 * K_)) - std::floor(v0_ / (2 * K_)));
+    south = std::copysign(kPi, b_plus_a_) *
+            (std::floor(p.v / (2 * K_)) - std::floor(v0_ / (2 * K_)));
   }
   out.phi = start_.phi + 0.5 * (b_minus_a_ * J_plus + b_plus_a_ * J_minus) + north + south;
   out.psi = start_.psi + (S - a_) * t - 0.5 * (b_minus_a_ * J_plus - b_plus_a_ * J_minus) -

@@ -221,11 +221,37 @@ double starting_step(const System& system, const State& x0, double t0, double sp
 template <class Stepper, class System, class State, class Observer>
 std::size_t integrate_times_capped(Stepper& stepper, const System& system, State& x,
                                    const std::vector<double>& times, double dt0,
-                                   const OdeOptions& o, Observer& observe) {
-  TotalStepCap cap(o.method, o.max_steps, times.back());
+                                   const OdeOptions& o, Observer& observe, double t_end) {
+  TotalStepCap cap(o.method, o.max_steps, t_end);  // t_end in the caller's time, for its message
   return boost::numeric::odeint::integrate_times(std::ref(stepper), system, x, times.begin(),
                                                  times.end(), dt0, std::ref(observe),
                                                  std::ref(cap));
+}
+
+// A dense-output stepper (order `order`) through the sample times. odeint's
+// dense-output steppers break down for steps below ~1e-15 in absolute time
+// (dopri5 returns NaN, Bulirsch-Stoer's interpolation reads out of bounds: seen
+// for runs shorter than 1e-14 s), so a short run goes in tau = (t - t0) / span,
+// the whole run one unit of time: dx/dtau = span f(x, t). The control acts on the
+// state; only the starting step's rule is not scale-free, so runs of a
+// millisecond or more keep their own time and their results.
+template <class Stepper, class System, class State, class Observer>
+std::size_t integrate_dense(Stepper& stepper, int order, const System& system, State& x,
+                            const std::vector<double>& times, const OdeOptions& options,
+                            Observer& observe) {
+  const double t0 = times.front(), span = times.back() - t0;
+  const double scale = span > 0.0 && span < 1e-3 ? span : 1.0;
+  const auto scaled = [&system, t0, scale](const State& xs, State& dxdtau, double tau) {
+    system(xs, dxdtau, t0 + tau * scale);
+    for (auto& v : dxdtau) v *= scale;
+  };
+  std::vector<double> tau(times.size());
+  for (std::size_t i = 0; i < times.size(); ++i) tau[i] = (times[i] - t0) / scale;
+  tau.back() = span / scale;
+  std::size_t next = 0;  // the observer sees the times asked for, not tau
+  auto observe_t = [&](const State& xs, double) { observe(xs, times[next++]); };
+  const double dt0 = starting_step(scaled, x, 0.0, span / scale, order, options);
+  return integrate_times_capped(stepper, scaled, x, tau, dt0, options, observe_t, times.back());
 }
 
 }  // namespace detail
@@ -289,7 +315,8 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
           std::move(after_step));
       const double dt0 = detail::starting_step(system, x0, times.front(), span, 8, options);
       const std::size_t steps =
-          detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe);
+          detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe,
+                                         times.back());
       return {steps, stepper.rejected_steps()};
     }
     // the dense-output methods take no hook (validate_run has thrown if given one)
@@ -297,17 +324,13 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
       if constexpr (!kHasHook) {
         auto stepper = odeint::make_dense_output(options.abs_tol, options.rel_tol,
                                                  odeint::runge_kutta_dopri5<State>());
-        const double dt0 = detail::starting_step(system, x0, times.front(), span, 5, options);
-        return {detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe),
-                0};
+        return {detail::integrate_dense(stepper, 5, system, x, times, options, observe), 0};
       }
       break;
     case Method::kBulirschStoer:
       if constexpr (!kHasHook) {
         odeint::bulirsch_stoer_dense_out<State> stepper(options.abs_tol, options.rel_tol);
-        const double dt0 = detail::starting_step(system, x0, times.front(), span, 8, options);
-        return {detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe),
-                0};
+        return {detail::integrate_dense(stepper, 8, system, x, times, options, observe), 0};
       }
       break;
     case Method::kSplitting:
