@@ -754,6 +754,10 @@ TEST_CASE("labs: extreme but legal inputs end with finite numbers or one line, n
       {"poinsot", "--inertia 1,2,3 --omega 1e20,1e20,1e20"},
       {"tennis_racquet", "--t-end 1e-60"},
       {"tennis_racquet", "--omega 1e30"},
+      // moments equal to double precision: no flip, no growth to measure
+      {"tennis_racquet", "--head-mass 1e-60"},
+      {"tennis_racquet", "--handle-length 1e60"},
+      {"tennis_racquet", "--head-mass 1e60 --handle-mass 1e-60"},
       {"top_nutation", "--g 1e60"},
       {"top_nutation", "--spin 0"},
       {"top_nutation", "--spin 1e-60"},

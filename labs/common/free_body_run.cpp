@@ -1,5 +1,7 @@
 #include "common/free_body_run.h"
 
+#include "rigid/units.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -63,6 +65,11 @@ IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const Inte
              *std::max_element(errors.begin(), errors.end()), "");
   lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
   return run;
+}
+
+double time_scale(const FreeBodyExact& motion) {
+  return std::isfinite(motion.period()) ? motion.period()
+                                        : 2.0 * kPi / motion.omega_body(0.0).norm();
 }
 
 void check_phase_digits(double t_end, double scale) {

@@ -42,6 +42,10 @@ IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in
 IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const IntegrationInputs& in,
                                 const IntegrateOptions& options, const std::vector<double>& times);
 
+/// The motion's time scale: its polhode period, or one turn for a steady rotation
+/// (no polhode to go round).
+double time_scale(const FreeBodyExact& motion);
+
 /// Refuses (a UsageError naming --t-end) a run longer than 1e9 times the motion's
 /// time scale: beyond, the phase of the exact motion keeps fewer than 7 of its 16 digits.
 void check_phase_digits(double t_end, double scale);

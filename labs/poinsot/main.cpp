@@ -29,11 +29,6 @@ constexpr std::size_t kMaxSteps = 20'000'000;
 // the comparison then costs at most a few hundred ms.
 constexpr std::size_t kMaxComparisonSteps = 20'000;
 
-// The motion's time scale: the polhode period, or one turn for a steady spin.
-double time_scale(const rigid::FreeBodyExact& motion, const Vector3d& omega0) {
-  return std::isfinite(motion.period()) ? motion.period() : 2.0 * rigid::kPi / omega0.norm();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -94,7 +89,7 @@ int main(int argc, char** argv) {
     }
     lab.result_text("regime", "motion", regime);
 
-    const double scale = time_scale(exact, in.omega0);
+    const double scale = rigid::lab::time_scale(exact);
     const double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
     rigid::lab::check_phase_digits(t_end, scale);
     const rigid::IntegrateOptions options =

@@ -63,7 +63,7 @@ render::Plot2D growth_plot(const Figures& f) {
   const auto slope_line = [&](double rate) {
     std::vector<double> x, y;
     for (double ti : t) {
-      const double v = f.growth.share_end * std::exp(rate * (ti - f.growth.t_end));
+      const double v = f.growth->share_end * std::exp(rate * (ti - f.growth->t_end));
       if (v > top) break;
       x.push_back(ti);
       y.push_back(v);
@@ -76,15 +76,15 @@ render::Plot2D growth_plot(const Figures& f) {
   panel.x = {"t (s)", render::Scale::kLinear, 0, flip};
   panel.y = {"transverse share |\\omega_\\perp| / |\\omega| = \\sqrt(\\omega_1^2 + \\omega_3^2) / |\\omega|",
              render::Scale::kLog10, 0.3 * std::min(share.front(), slope_line(f.textbook_rate).second.front()), top};
-  panel.add_span(f.growth.t_begin, f.growth.t_end, true, "fitted interval").color = render::kGray;
+  panel.add_span(f.growth->t_begin, f.growth->t_end, true, "fitted interval").color = render::kGray;
   panel.add_line(t, share, "exact motion").color = render::kBlack;
   const auto [xp, yp] = slope_line(f.predicted[1].rate);
   auto& predicted = panel.add_line(xp, yp, fmt::format("predicted, eqs. 86-88: {:.4g}/s",
                                                        f.predicted[1].rate));
   predicted.color = render::kBlue;
   predicted.dash = render::Dash::kDashed;
-  const auto [xm, ym] = slope_line(f.growth.rate);
-  auto& measured = panel.add_line(xm, ym, fmt::format("measured: {:.4g}/s", f.growth.rate));
+  const auto [xm, ym] = slope_line(f.growth->rate);
+  auto& measured = panel.add_line(xm, ym, fmt::format("measured: {:.4g}/s", f.growth->rate));
   measured.color = render::kVermillion;
   measured.dash = render::Dash::kDotted;
   measured.width = 5;
@@ -161,8 +161,11 @@ render::Scene3D flip_scene(const Figures& f) {
 
 void draw(FigureSet& set, const Figures& f) {
   set.add("omega", "omega(t) for a spin about each axis: only axis 2 flips", omega_plot(f));
-  set.add("growth", "the disturbance grows at the predicted rate until the flip", growth_plot(f));
-  set.add("flip", "the racquet turns over about its handle", flip_scene(f));
+  // A racquet that does not flip (moments equal to double precision) has neither.
+  if (f.growth) {
+    set.add("growth", "the disturbance grows at the predicted rate until the flip", growth_plot(f));
+    set.add("flip", "the racquet turns over about its handle", flip_scene(f));
+  }
   const FreeBodyExact& motion = f.launches[f.spin_axis];
   const Vector3d omega0 = motion.omega_body(0.0);
   set.add("polhodes", "this racquet's polhode beside the separatrix",

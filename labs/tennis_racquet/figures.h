@@ -35,7 +35,7 @@ struct Figures {
   const std::array<FreeBodyExact, 3>& launches;
   std::array<SpinStability, 3> predicted;  ///< the linear prediction for each axis (eqs. 86-88)
   double textbook_rate = 0.0;              ///< eq. 92's rate for every axis: the spin
-  const GrowthFit& growth;                 ///< the growth measured about axis 2
+  const GrowthFit* growth;                 ///< the growth measured about axis 2; null: no flip
   double t_end = 0.0;                      ///< the span of the omega panels, s
   int spin_axis = 1;                       ///< the run's axis (0, 1, 2): its polhode is drawn
 };
