@@ -27,7 +27,8 @@ std::vector<Vec3> circle_about_z(double radius, double z) {
 // L along z; the symmetry axis 3 and omega in the x-z plane at t = 0. The body
 // cone (half-angle alpha about 3) touches the space cone (half-angle |theta - alpha|
 // about L) along omega. Small angles are magnified by one factor, said in the title.
-render::Scene3D cones_scene(const Inputs& in, const SymmetricPrecession& p) {
+render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrecession& p,
+                            const std::string& prefix) {
   const double widest = std::max(p.theta, p.body_cone);
   const double magnify = std::max(1.0, std::min(deg_to_rad(22.0) / p.body_cone,
                                                 deg_to_rad(70.0) / widest));
@@ -39,8 +40,8 @@ render::Scene3D cones_scene(const Inputs& in, const SymmetricPrecession& p) {
   const Vec3 omega(std::sin(lead), 0, std::cos(lead));
 
   render::Scene3D scene;
-  scene.title = fmt::format("Is/I = {:.6g}, \\alpha = {:.3g}\\deg, body cone rolls {} the space cone",
-                            in.inertia(1) / in.inertia(0), in.alpha_deg,
+  scene.title = prefix + fmt::format("Is/I = {:.6g}, \\alpha = {:.3g}\\deg, body cone rolls {} the space cone",
+                            ratio, alpha_deg,
                             p.contact == ConeContact::kInside ? "round" : "outside");
   if (magnify > 1) scene.title += fmt::format("; angles \\times{:.3g}", magnify);
   scene.camera.eye = Vec3(0.9, -3.6, 1.5);
@@ -65,6 +66,9 @@ render::Scene3D cones_scene(const Inputs& in, const SymmetricPrecession& p) {
   scene.add_arrow(Vec3::Zero(), 1.3 * omega, r, {render::kBlack}, "\\omega, the line of contact");
   scene.add_polyline(circle_about_z(1.45 * std::sin(theta), 1.45 * std::cos(theta)),
                      render::kReddishPurple, 3.0, "path of 3 about L");
+  // omega's tip goes round L on the space cone's rim, once per precession period.
+  scene.add_polyline(circle_about_z(1.3 * std::sin(std::abs(lead)), 1.3 * std::cos(lead)),
+                     render::kBluishGreen, 3.0, "path of \\omega about L");
   scene.add_label(1.5 * L, "L", render::kBlue);
   scene.add_label(1.5 * axis3, "3", render::kVermillion);
   scene.add_label(1.35 * omega, "\\omega", render::kBlack);
@@ -99,9 +103,11 @@ render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
 
 }  // namespace
 
-void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p) {
+void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p, const Contrast& other) {
   set.add("cones", "the body cone rolls on the space cone along omega",
-          cones_scene(in, p));
+          cones_scene(in.inertia(1) / in.inertia(0), in.alpha_deg, p, ""));
+  set.add("cones_contrast", other.caption,
+          cones_scene(other.ratio, in.alpha_deg, other.precession, other.title + ": "));
   set.add("rates", "the precession rates against alpha", rates_plot(in, p));
 }
 

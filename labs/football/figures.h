@@ -18,7 +18,15 @@ struct Inputs {
   double alpha_deg = 0.0;             ///< angle between omega and the symmetry axis
 };
 
+/// The other shape for contrast (oblate beside a prolate run, prolate beside an
+/// oblate one), at the run's omega and alpha.
+struct Contrast {
+  double ratio = 1.0;  ///< its Is / I
+  SymmetricPrecession precession;
+  std::string title, caption;
+};
+
 /// Hands the lab's figures to the set; `p` is the closed-form precession of `in`.
-void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p);
+void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p, const Contrast& other);
 
 }  // namespace rigid::lab::football

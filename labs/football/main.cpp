@@ -198,6 +198,17 @@ int main(int argc, char** argv) {
                "yield to the wobble), which lengthens the rigid-body period.");
     }
 
-    lab.figures([&](rigid::lab::FigureSet& set) { rigid::lab::football::draw(set, in, p); });
+    // Beside the run, the other kind of body at the same omega and alpha: the frisbee's
+    // thin disk (oblate) for a prolate run, the football's spheroid for an oblate one.
+    const bool prolate = p.contact == rigid::ConeContact::kOutside;
+    const Preset other = preset_of(prolate ? "frisbee" : "football");
+    const rigid::lab::football::Contrast contrast{
+        other.Is / other.I, rigid::free_symmetric_precession(other.I, other.Is, omega, alpha),
+        prolate ? "for contrast, an oblate thin disk" : "for contrast, a prolate football",
+        prolate ? "for contrast, an oblate body: its body cone surrounds the space cone"
+                : "for contrast, a prolate body: its body cone rolls outside the space cone"};
+    lab.figures([&](rigid::lab::FigureSet& set) {
+      rigid::lab::football::draw(set, in, p, contrast);
+    });
   });
 }
