@@ -20,6 +20,8 @@ import time
 
 from scipy.integrate import solve_ivp
 
+from scipy_work_precision import best_time  # the same timing as the free body's peers
+
 MAX_SOLVE_SECONDS = 4.0
 ATOL_FACTOR = 1e-3
 
@@ -48,17 +50,6 @@ def tilt(x):
     ex, ey = 2 * (qx * qz + qw * qy) / n2, 2 * (qy * qz - qw * qx) / n2
     ez = (qw * qw - qx * qx - qy * qy + qz * qz) / n2
     return math.atan2(math.hypot(ex, ey), ez)
-
-
-def best_time(solve):
-    best, total, reps, result = math.inf, 0.0, 0, None
-    while True:
-        t0 = time.perf_counter()
-        result = solve()
-        s = time.perf_counter() - t0
-        best, total, reps = min(best, s), total + s, reps + 1
-        if total >= 0.6 or (reps >= 3 and total >= 0.05):
-            return best, result
 
 
 def main():

@@ -54,6 +54,24 @@ inline Run run_lab(const std::string& lab, const std::string& args, const std::s
   return run;
 }
 
+/// A CSV file a lab wrote: its header line and its rows of numbers.
+struct Csv {
+  std::string header;
+  std::vector<std::vector<double>> rows;
+};
+inline Csv read_csv(const std::string& path) {
+  Csv csv;
+  std::ifstream in(path);
+  std::getline(in, csv.header);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    csv.rows.push_back(std::move(row));
+  }
+  return csv;
+}
+
 /// Bad input: each (arguments, option) case exits 2 with one line on stderr,
 /// "<lab>: error: <option>...", and prints nothing on stdout.
 template <class Cases>

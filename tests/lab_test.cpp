@@ -544,17 +544,12 @@ TEST_CASE("tennis_racquet: --csv holds the exact motion and the integrator's ome
   const auto run = run_lab("tennis_racquet", "--json --method rkf78 --tolerance 1e-12 --csv " + path);
   REQUIRE(run.status == 0);
   const double t_end = run.json()["results"]["t_end_s"];
-  std::ifstream csv(path);
-  std::string line;
-  std::getline(csv, line);
-  CHECK(line == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,omega1_integrated,omega2_integrated,"
-                "omega3_integrated");
+  const rigid::test::Csv csv = rigid::test::read_csv(path);
+  CHECK(csv.header == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,omega1_integrated,omega2_integrated,"
+                      "omega3_integrated");
   std::size_t rows = 0;
   double last_t = -1, worst = 0, worst_norm = 0;
-  while (std::getline(csv, line)) {
-    std::vector<double> v;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+  for (const std::vector<double>& v : csv.rows) {
     REQUIRE(v.size() == 11);
     ++rows;
     last_t = v[0];
@@ -714,16 +709,11 @@ TEST_CASE("top_nutation: --csv holds theta beside the exact theta, and a unit qu
   const auto run = run_lab("top_nutation", "--json --method rkf78 --tolerance 1e-12 --csv " + path);
   REQUIRE(run.status == 0);
   const double t_end = run.json()["results"]["t_end_s"];
-  std::ifstream csv(path);
-  std::string line;
-  std::getline(csv, line);
-  CHECK(line == "t_s,theta_rad,theta_exact_rad,omega1,omega2,omega3,qw,qx,qy,qz,energy_error_rel");
+  const rigid::test::Csv csv = rigid::test::read_csv(path);
+  CHECK(csv.header == "t_s,theta_rad,theta_exact_rad,omega1,omega2,omega3,qw,qx,qy,qz,energy_error_rel");
   std::size_t rows = 0;
   double last_t = -1, worst = 0, worst_norm = 0, lowest = 10, highest = -10;
-  while (std::getline(csv, line)) {
-    std::vector<double> v;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+  for (const std::vector<double>& v : csv.rows) {
     REQUIRE(v.size() == 11);
     ++rows;
     last_t = v[0];

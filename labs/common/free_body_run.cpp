@@ -80,6 +80,22 @@ void check_phase_digits(double t_end, double scale) {
   }
 }
 
+RunPlan plan_run(const Lab& lab, const IntegrationInputs& in, double t_end, double scale,
+                 std::size_t max_steps) {
+  check_phase_digits(t_end, scale);
+  RunPlan plan;
+  plan.options = integration_options(lab, in, scale / 2000.0, max_steps);
+  plan.fixed = fixed_step(in);
+  plan.times = sample_times(t_end, scale, plan.fixed ? plan.options.step : 0.0);
+  plan.t_end = t_end;
+  return plan;
+}
+
+void report_plan(Lab& lab, const RunPlan& plan) {
+  lab.result("t_end_s", "end time t_end", plan.t_end, "s");
+  if (plan.fixed) lab.result("step_s", "step h", plan.options.step, "s");
+}
+
 void report_drifts(Lab& lab, const IntegrationResult& run) {
   // Relative to the start; roundoff for the exact motion.
   lab.result("energy_drift_rel", "max |T - T0| / T0", run.energy_drift_rel, "");

@@ -42,6 +42,20 @@ IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in
 IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const IntegrationInputs& in,
                                 const IntegrateOptions& options, const std::vector<double>& times);
 
+/// What a run samples and how: the method's options (its step `scale` / 2000 unless
+/// --step was given), 200 samples a `scale` up to t_end (a fixed step's on its own
+/// grid), after refusing a t_end beyond check_phase_digits.
+struct RunPlan {
+  IntegrateOptions options;
+  std::vector<double> times;
+  bool fixed = false;
+  double t_end = 0.0;
+};
+RunPlan plan_run(const Lab& lab, const IntegrationInputs& in, double t_end, double scale,
+                 std::size_t max_steps);
+/// Reports the plan's end time (t_end_s) and, for a fixed step, the step (step_s).
+void report_plan(Lab& lab, const RunPlan& plan);
+
 /// The motion's time scale: its polhode period, or one turn for a steady rotation
 /// (no polhode to go round).
 double time_scale(const FreeBodyExact& motion);

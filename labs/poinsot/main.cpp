@@ -91,17 +91,15 @@ int main(int argc, char** argv) {
 
     const double scale = rigid::lab::time_scale(exact);
     const double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
-    rigid::lab::check_phase_digits(t_end, scale);
-    const rigid::IntegrateOptions options =
-        rigid::lab::integration_options(lab, in.integration, scale / 2000.0, kMaxSteps);
     // Two hundred samples a period; a fixed-step method is sampled on its own step grid.
-    const bool fixed = rigid::lab::fixed_step(in.integration);
-    const std::vector<double> times = rigid::sample_times(t_end, scale, fixed ? options.step : 0.0);
+    const rigid::lab::RunPlan plan =
+        rigid::lab::plan_run(lab, in.integration, t_end, scale, kMaxSteps);
+    const rigid::IntegrateOptions& options = plan.options;
+    const std::vector<double>& times = plan.times;
 
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));
     lab.result_text("method", "method", in.integration.method);
-    lab.result("t_end_s", "end time t_end", t_end, "s");
-    if (fixed) lab.result("step_s", "step h", options.step, "s");
+    rigid::lab::report_plan(lab, plan);
     const rigid::IntegrationResult run =
         rigid::lab::run_free_body(lab, exact, in.integration, options, times);
     lab.result("omega_end", "omega at t_end", run.samples.back().omega_body, "rad/s");

@@ -170,16 +170,12 @@ int main(int argc, char** argv) {
     const double t_end =
         lab.given("--t-end") ? in.t_end : rigid::lab::time_scale(launches[1]);
     const double scale = rigid::lab::time_scale(motion);
-    rigid::lab::check_phase_digits(t_end, scale);
-    const rigid::IntegrateOptions options =
-        rigid::lab::integration_options(lab, in.integration, scale / 2000.0, kMaxSteps);
-    const bool fixed = rigid::lab::fixed_step(in.integration);
-    const std::vector<double> times = rigid::sample_times(t_end, scale, fixed ? options.step : 0.0);
+    const rigid::lab::RunPlan plan =
+        rigid::lab::plan_run(lab, in.integration, t_end, scale, kMaxSteps);
     lab.section(fmt::format("cross-check: {} to t_end = {:g} s", in.integration.method, t_end));
-    lab.result("t_end_s", "end time t_end", t_end, "s");
-    if (fixed) lab.result("step_s", "step h", options.step, "s");
+    rigid::lab::report_plan(lab, plan);
     const rigid::IntegrationResult run =
-        rigid::lab::run_free_body(lab, motion, in.integration, options, times);
+        rigid::lab::run_free_body(lab, motion, in.integration, plan.options, plan.times);
     rigid::lab::report_drifts(lab, run);
 
     if (predicted[1].rate != simplified[1].rate) {

@@ -193,14 +193,13 @@ int main(int argc, char** argv) {
                              ? 2 * rigid::kPi / std::max(std::abs(S), 1e-300)
                              : motion.nutation_period();
     const double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
-    rigid::lab::check_phase_digits(t_end, scale);
-    const rigid::IntegrateOptions options =
-        rigid::lab::integration_options(lab, in.integration, scale / 2000.0, kMaxSteps);
-    const bool fixed = rigid::lab::fixed_step(in.integration);
-    const std::vector<double> times = rigid::sample_times(t_end, scale, fixed ? options.step : 0.0);
+    const rigid::lab::RunPlan plan =
+        rigid::lab::plan_run(lab, in.integration, t_end, scale, kMaxSteps);
+    const rigid::IntegrateOptions& options = plan.options;
+    const std::vector<double>& times = plan.times;
+    const bool fixed = plan.fixed;
     lab.section(fmt::format("{} to t_end = {:g} s", in.integration.method, t_end));
-    lab.result("t_end_s", "end time t_end", t_end, "s");
-    if (fixed) lab.result("step_s", "step h", options.step, "s");
+    rigid::lab::report_plan(lab, plan);
     rigid::TopRun run;
     if (in.integration.method == "exact") {
       run = rigid::sample_exact(motion, times);
