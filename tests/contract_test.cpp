@@ -3,6 +3,11 @@
 // line naming the option for input no lab accepts.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 #include "lab_common.h"
 
 using rigid::test::all_labs;
@@ -93,5 +98,77 @@ TEST_CASE("contract: input no lab accepts exits 2 with one line naming the optio
       CHECK(run.err.rfind(lab + ": error: " + option, 0) == 0);
       CHECK(run.out.empty());
     }
+  }
+}
+
+TEST_CASE("contract: output that never arrives is an error, not a silent exit 0") {
+  for (const std::string& lab : all_labs()) {
+    INFO(lab);
+    // A full disk (/dev/full) and a closed stdout: exit 1 and one line on stderr.
+    for (const char* redirect : {"> /dev/full", ">&-"}) {
+      INFO(redirect);
+      const auto run = run_lab(lab, std::string("--json ") + redirect);
+      CHECK(run.status == 1);
+      CHECK(run.one_error_line());
+      CHECK(run.err.rfind(lab + ": error: stdout: ", 0) == 0);
+    }
+  }
+}
+
+TEST_CASE("contract: --csv writes regular files only and never follows or replaces a link") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_csv_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path target = dir / "target.csv", link = dir / "link.csv";
+  std::ofstream(target) << "keep\n";
+  fs::create_symlink(target, link);
+  const std::pair<std::string, std::string> refused[] = {
+      {link.string(), "symbolic link"},
+      {"/dev/null", "not a regular file"},
+      {dir.string(), "directory"},
+      {(dir / (std::string(230, 'x') + ".csv")).string(), "longer than"},
+  };
+  for (const auto& [path, rule] : refused) {
+    INFO(path);
+    const auto run = run_lab("poinsot", "--json --csv '" + path + "'");
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind("poinsot: error: --csv: ", 0) == 0);
+    CHECK(run.err.find(rule) != std::string::npos);
+  }
+  // The link and its target are untouched; a long name that fits is written.
+  CHECK(fs::is_symlink(link));
+  std::ifstream kept(target);
+  std::string line;
+  std::getline(kept, line);
+  CHECK(line == "keep");
+  const fs::path long_name = dir / (std::string(200, 'y') + ".csv");
+  CHECK(run_lab("poinsot", "--quiet --csv '" + long_name.string() + "'").status == 0);
+  CHECK(fs::is_regular_file(long_name));
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("contract: error lines show user input escaped, never a second forged line") {
+  // A newline in the input would print a second "error:" line; an escape sequence
+  // would colour the terminal. Both are shown escaped, on one line.
+  const auto run = run_lab("poinsot", "--mass \"$(printf '1\\nerror: forged')\" --json");
+  CHECK(run.status == 2);
+  CHECK(run.one_error_line());
+  CHECK(run.err.find("\\n") != std::string::npos);
+  const auto esc = run_lab("football", "--preset \"$(printf 'x\\033[31m')\"");
+  CHECK(esc.status == 2);
+  CHECK(esc.one_error_line());
+  CHECK(esc.err.find('\x1b') == std::string::npos);
+}
+
+TEST_CASE("contract: a tolerance below double precision is refused, not a crash") {
+  for (const char* lab : {"poinsot", "tennis_racquet", "top_nutation"}) {
+    INFO(lab);
+    const auto run = run_lab(lab, "--json --tolerance 1e-183");
+    CHECK(run.status == 2);
+    CHECK(run.err.rfind(std::string(lab) + ": error: --tolerance: ", 0) == 0);
   }
 }

@@ -193,8 +193,7 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     through_south_ = true;
     w1_ = -1.0 - u0_;
   }
-  if (!through_north_ && one_minus_u0_ - w2_ <= pole_roundoff &&
-      w3_ - one_minus_u0_ > pole_roundoff) {
+  if (!through_north_ && one_minus_u0_ - w2_ <= pole_roundoff) {
     through_north_ = true;
     w2_ = one_minus_u0_;
   }
@@ -389,11 +388,11 @@ TopAngles HeavyTopExact::angles(double t) const {
   // turn about z there) or +pi (south: phi - psi is); passages at v = K + 2Kj (north,
   // sn^2 = 1) and v = 2Kj (south, sn = 0) after v0.
   double north = 0.0, south = 0.0;
-  if (through_north_) {
+  if (through_north_ && std::isfinite(K_)) {  // on the separatrix it never arrives
     north = std::copysign(kPi, b_minus_a_) *
             (std::floor((p.v - K_) / (2 * K_)) - std::floor((v0_ - K_) / (2 * K_)));
   }
-  if (through_south_) {
+  if (through_south_ && std::isfinite(K_)) {
     south = std::copysign(kPi, b_plus_a_) *
             (std::floor(p.v / (2 * K_)) - std::floor(v0_ / (2 * K_)));
   }

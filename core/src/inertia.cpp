@@ -208,6 +208,14 @@ void validate_inertia_tensor(const Mat3& I) {
   }
   Eigen::SelfAdjointEigenSolver<Mat3> solver(I, Eigen::EigenvaluesOnly);
   const Vec3 moments = solver.eigenvalues();
+  // The eigen-solver resolves moments to ~eps times the largest: a smaller one (a
+  // plate 1e-9 as thick as it is wide) has no sign to trust, even when it is positive.
+  if (std::abs(moments(0)) <= 64 * 2.2e-16 * moments(2)) {
+    throw std::invalid_argument(
+        "the body is too thin for double precision: its smallest principal moment (" +
+        format_number(moments(0)) + ") is below the roundoff of the largest (" +
+        format_number(moments(2)) + ")");
+  }
   if (!(moments(0) > 0.0)) {
     throw std::invalid_argument("inertia tensor must be positive definite (smallest moment " +
                                 format_number(moments(0)) + ")");

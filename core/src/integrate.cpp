@@ -166,16 +166,18 @@ std::vector<double> sample_times(double t_end, double period, double step, doubl
     const double intervals = std::max(1.0, std::round(t_end / spacing));
     return uniform_times(0.0, t_end, static_cast<std::size_t>(intervals) + 1);
   }
-  // every k-th step, and k large enough that the grid samples and t_end fit max_samples
-  const auto k = static_cast<std::size_t>(
-      std::max({1.0, std::round(spacing / step),
-                std::ceil(t_end / (step * static_cast<double>(max_samples - 1)))}));
-  // grid samples n * step (the product integrate_on_grid steps to) short of t_end by
-  // more than roundoff, then t_end itself
+  // every k-th step, and k large enough that the grid samples and t_end fit max_samples;
+  // k is kept in a double (a step of 1e-24 s makes it 1e22, past any integer type) and
+  // is a whole number, so n * step is still the product integrate_on_grid steps to
+  const double k = std::max({1.0, std::round(spacing / step),
+                             std::ceil(t_end / (step * static_cast<double>(max_samples - 1)))});
+  // grid samples n * step short of t_end by more than roundoff, then t_end itself
   const double last = t_end * (1.0 - 8.0 * std::numeric_limits<double>::epsilon());
   std::vector<double> times;
-  for (std::size_t n = 0; static_cast<double>(n) * step < last; n += k) {
-    times.push_back(static_cast<double>(n) * step);
+  for (std::size_t i = 0; i < max_samples; ++i) {
+    const double t = static_cast<double>(i) * k * step;
+    if (!(t < last)) break;
+    times.push_back(t);
   }
   times.push_back(t_end);
   return times;

@@ -165,6 +165,7 @@ CosineRange direction_cosine_range(const FreeBodyExact& motion, int axis, double
   const double c0 = cosine_with_L(motion, axis, 0.0);
   CosineRange range{c0, c0};
   if (motion.regime() == FreeMotionRegime::kSteady || !(t_span > 0.0)) return range;
+  if (!std::isfinite(t_span)) throw std::invalid_argument("direction_cosine_range: t_span must be finite");
   // 2048 samples resolve every extremum of a period to within one cell; Brent's
   // method then finds it to ~sqrt(eps) in t, which is eps in the value.
   const int cells = 2048;

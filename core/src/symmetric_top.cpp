@@ -57,7 +57,7 @@ SymmetricPrecession free_symmetric_precession(double I, double Is, double omega,
 }
 
 PrecessionCheck integrated_precession(double I, double Is, double omega, double alpha,
-                                      double tol) {
+                                      double tol, std::size_t max_steps) {
   const SymmetricPrecession p = free_symmetric_precession(I, Is, omega, alpha);
   const double period = p.space_period * omega;  // dimensionless: time in units of 1/omega
   const PrincipalMoments moments{1.0, 1.0, Is / I};
@@ -65,6 +65,7 @@ PrecessionCheck integrated_precession(double I, double Is, double omega, double 
       make_state(Vec3(std::sin(alpha), 0.0, std::cos(alpha)), Eigen::Quaterniond::Identity());
   IntegrateOptions options;
   options.abs_tol = options.rel_tol = tol;
+  options.max_steps = max_steps;
   const IntegrationResult run =
       integrate_free_body(moments, x0, {0.0, period / 4, period}, options);
   const Vec3 L = Vec3(std::sin(alpha), 0.0, (Is / I) * std::cos(alpha)).normalized();

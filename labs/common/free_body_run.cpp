@@ -34,6 +34,12 @@ bool fixed_step(const IntegrationInputs& in) {
 
 IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in,
                                      double default_step, std::size_t max_steps) {
+  // Below double precision no step meets a tolerance, and odeint's step control
+  // then collapses (tolerances under 1e-150 crashed it).
+  if (in.tolerance < 1e-16) {
+    throw UsageError("--tolerance", fmt::format("must be at least 1e-16, double precision's "
+                                                "reach (got {:g})", in.tolerance));
+  }
   IntegrateOptions options;
   options.abs_tol = options.rel_tol = in.tolerance;
   options.step = lab.given("--step") ? in.step : default_step;

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
@@ -17,6 +20,26 @@ namespace {
 // Every result is a product of at most five inputs (m a^2 omega^2, say); inside
 // this range of magnitudes no such product overflows or underflows a double.
 constexpr double kSmallest = 1e-60, kLargest = 1e60;
+
+// A message as one printable line: user input may carry a line break or an escape
+// sequence, which would forge a second error line or colour the terminal.
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (u < 0x20 || u == 0x7f) {
+      out += fmt::format("\\x{:02x}", u);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// The longest file name written, leaving room for the temporary's suffix (NAME_MAX 255).
+constexpr std::size_t kMaxFileName = 224;
 
 std::string format_vec2(const Eigen::Vector2d& v) {
   return fmt::format("({}, {})", format_number(v(0), 5), format_number(v(1), 5));
@@ -261,6 +284,16 @@ bool Lab::given(const std::string& flag) const {
   return app_.count(flag) > 0;
 }
 
+std::string Lab::blamed_option() const {
+  for (const Option& o : options_) {
+    if (o.physical_ && o.cli_->count() > 0) return o.cli_->get_name();
+  }
+  for (const Option& o : options_) {  // then a numerical one
+    if (o.cli_->count() > 0) return o.cli_->get_name();
+  }
+  return "--inputs";
+}
+
 bool Lab::textbook_inputs() const {
   for (const Option& option : options_) {
     if (option.physical_ && option.cli_->count() > 0) return false;
@@ -283,7 +316,11 @@ void Lab::section(const std::string& heading) {
 void Lab::store(const std::string& key, Json value, bool finite, const std::string& unit,
                 const std::optional<std::string>& printed) {
   // A NaN or an overflow must never reach the output: JSON would print null.
-  if (!finite) throw std::domain_error("result '" + key + "' is not finite for these inputs");
+  if (!finite) {
+    // The inputs overflow it: the defaults never do.
+    throw UsageError(blamed_option(), "the result '" + key +
+                                 "' overflows or is undefined for these inputs (out of range)");
+  }
   results_[key] = std::move(value);
   // A pure number has the unit "1", as SI writes it.
   units_[key] = unit.empty() ? "1" : unit;
@@ -369,33 +406,52 @@ std::string Lab::title_inputs() const {
 // ---- Running ----------------------------------------------------------------
 
 void Lab::check_output_paths() const {
+  std::error_code ec;  // every filesystem question is asked without throwing
   if (app_.count("--figures") > 0 && figures_dir_.empty()) {
     throw UsageError("--figures", "needs a directory name");
   }
   if (!figures_dir_.empty()) {
     // Nothing is created before the lab has computed its results: find the
     // nearest existing ancestor and check that it can be written.
-    fs::path dir = fs::absolute(figures_dir_);
-    while (!fs::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) {
+    fs::path dir = fs::absolute(figures_dir_, ec);
+    while (!ec && !fs::exists(dir, ec) && dir.has_parent_path() && dir != dir.parent_path()) {
       dir = dir.parent_path();
     }
-    if (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK | X_OK) != 0) {
+    if (ec || !fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK | X_OK) != 0) {
       throw UsageError("--figures", "cannot create or write directory '" + figures_dir_ + "'");
     }
   }
   if (csv_enabled_ && app_.count("--csv") > 0) {
     if (csv_path_.empty()) throw UsageError("--csv", "needs a file name");
-    if (fs::is_directory(csv_path_)) {
-      throw UsageError("--csv", "'" + csv_path_ + "' is a directory, not a file");
+    const fs::path path = fs::absolute(csv_path_, ec);
+    if (ec || path.filename().string().size() > kMaxFileName) {
+      throw UsageError("--csv", fmt::format("file name longer than {} characters", kMaxFileName));
     }
-    const fs::path parent = fs::absolute(csv_path_).parent_path();
-    if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0) {
+    // Only a regular file is written (by rename, so a link would be replaced, not
+    // followed, and a device or pipe replaced by a file): refuse anything else.
+    const fs::file_status status = fs::symlink_status(path, ec);
+    if (!ec && fs::exists(status)) {
+      if (fs::is_symlink(status)) {
+        throw UsageError("--csv", "'" + csv_path_ + "' is a symbolic link; give the file itself");
+      }
+      if (fs::is_directory(status)) {
+        throw UsageError("--csv", "'" + csv_path_ + "' is a directory, not a file");
+      }
+      if (!fs::is_regular_file(status)) {
+        throw UsageError("--csv", "'" + csv_path_ + "' is not a regular file (a device, pipe or "
+                                  "socket); give a file name");
+      }
+    }
+    const fs::path parent = path.parent_path();
+    if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0) {
       throw UsageError("--csv", "cannot write into directory '" + parent.string() + "'");
     }
   }
 }
 
 int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
+  // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
   try {
     try {
       app_.allow_extras();
@@ -403,12 +459,26 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
     } catch (const CLI::CallForHelp& e) {
       return app_.exit(e);
     } catch (const CLI::ArgumentMismatch& e) {
-      // Only vectors take a count of values: say it in the student's terms.
+      // A wrong count of values: say it in the student's terms.
       const std::string what = e.what();
-      throw UsageError(what.substr(0, what.find(':')),
-                       "must be three numbers X,Y,Z (" + what.substr(what.find(':') + 2) + ")");
+      const std::string name = what.substr(0, what.find(':'));
+      const CLI::Option* option = app_.get_option_no_throw(name);
+      const int count = option != nullptr ? option->get_items_expected_max() : 1;
+      const std::string rule = count == 3   ? "must be three numbers X,Y,Z"
+                               : count == 2 ? "must be two numbers"
+                                            : "needs a value";
+      throw UsageError(name, rule + " (" + what.substr(what.find(':') + 2) + ")");
     } catch (const CLI::ParseError& e) {
-      throw std::invalid_argument(e.what());
+      // The option's own rules speak as "--option: rule"; anything else (CLI11's
+      // wording) is said as it is, under the option it names first.
+      const std::string what = e.what();
+      const std::size_t colon = what.find(": ");
+      if (what.rfind("--", 0) == 0 && colon != std::string::npos) {
+        throw UsageError(what.substr(0, colon), what.substr(colon + 2));
+      }
+      const std::size_t dash = what.find("--");
+      const std::size_t end = what.find_first_of(" ,:=", dash);
+      throw UsageError(dash == std::string::npos ? "--inputs" : what.substr(dash, end - dash), what);
     }
     // The first word CLI11 could not place names the mistake.
     if (const auto extras = app_.remaining(); !extras.empty()) {
@@ -424,14 +494,26 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
     check_output_paths();
     body(*this);
     if (!csv_path_.empty()) write_csv();
+  } catch (const UsageError& e) {
+    std::cerr << name_ << ": error: " << escaped(e.what()) << '\n';
+    return 2;
   } catch (const std::exception& e) {
-    std::cerr << name_ << ": error: " << e.what() << '\n';
+    // A rule of core's broken where the lab named no option (or a failure it did
+    // not foresee): the inputs given are to blame, the first physical one named.
+    std::cerr << name_ << ": error: " << escaped(blamed_option() + ": " + e.what()) << '\n';
     return 2;
   }
   if (json_) {
     emit_json();
   } else if (!quiet_) {
     emit_table();
+  }
+  // Output that never arrived (stdout closed, a full disk, a closed pipe) is an error.
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << name_ << ": error: stdout: the output could not be written (" << std::strerror(errno)
+              << ")\n";
+    return 1;
   }
   return figures_failed_ ? 1 : 0;
 }

@@ -172,6 +172,9 @@ class Lab {
   Option& numbers(const std::string& flag, int count, const std::string& type_name,
                   const std::string& default_text, const std::string& help);
   void check_output_paths() const;
+  /// The option a failure with no option of its own is blamed on: the first physical
+  /// option given, else the first given at all.
+  std::string blamed_option() const;
   void store(const std::string& key, Json value, bool finite, const std::string& unit,
              const std::optional<std::string>& printed);
   std::string title_inputs() const;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "common/lab.h"
 #include "figures.h"
@@ -133,14 +134,31 @@ int main(int argc, char** argv) {
     }
 
     lab.section("cross-check: Euler's equations integrated (dopri5, tolerance 1e-12) for 2 pi / phi_dot");
-    const rigid::PrecessionCheck check = rigid::integrated_precession(I, Is, omega, alpha);
-    lab.result("integrated_space_precession_rate_rad_s", "phi_dot, 3's turn about L in a quarter period",
-               check.space_rate, "rad/s");
-    lab.result("integrated_rate_error_rel", "|integrated / closed-form phi_dot - 1|",
-               std::abs(check.space_rate / p.space_rate - 1), "");
-    lab.result("integrated_axis_return_rad", "angle of 3 from its start after 2 pi / phi_dot",
-               check.axis_return, "rad");
-    lab.result("integrated_L_drift_rel", "max |L - L0| / |L0| in space", check.L_space_drift_rel, "");
+    // Within a step budget (a body whose precession is many orders slower than its
+    // spin would need years of steps): beyond it the cross-check is not run.
+    constexpr std::size_t kCheckSteps = 2'000'000;
+    std::optional<rigid::PrecessionCheck> check;
+    try {
+      check = rigid::integrated_precession(I, Is, omega, alpha, 1e-12, kCheckSteps);
+    } catch (const std::runtime_error&) {
+    }
+    const std::string skipped = fmt::format("not run: needs more than {} steps", kCheckSteps);
+    const char* labels[] = {"phi_dot, 3's turn about L in a quarter period",
+                            "|integrated / closed-form phi_dot - 1|",
+                            "angle of 3 from its start after 2 pi / phi_dot",
+                            "max |L - L0| / |L0| in space"};
+    if (check) {
+      lab.result("integrated_space_precession_rate_rad_s", labels[0], check->space_rate, "rad/s");
+      lab.result("integrated_rate_error_rel", labels[1],
+                 std::abs(check->space_rate / p.space_rate - 1), "");
+      lab.result("integrated_axis_return_rad", labels[2], check->axis_return, "rad");
+      lab.result("integrated_L_drift_rel", labels[3], check->L_space_drift_rel, "");
+    } else {
+      lab.result_none("integrated_space_precession_rate_rad_s", labels[0], "rad/s", skipped);
+      lab.result_none("integrated_rate_error_rel", labels[1], "", skipped);
+      lab.result_none("integrated_axis_return_rad", labels[2], "rad", skipped);
+      lab.result_none("integrated_L_drift_rel", labels[3], "", skipped);
+    }
 
     lab.section("angles and cones (eq. 144, section 6.1)");
     lab.result("theta_deg", "theta, L to 3: tan theta = (I/Is) tan alpha", theta_deg, "deg",

@@ -155,7 +155,11 @@ int main(int argc, char** argv) {
       lab.result_none("flip_interval_s", "time between flips", "s", "stable: it does not flip");
     }
     // The handle stays near the plane across L (spins about 2 and 3) or near L (about 1).
-    const rigid::CosineRange handle = rigid::direction_cosine_range(motion, 0, motion.period());
+    // Over a polhode period, or over the run where there is none (the separatrix).
+    const double t_end =
+        lab.given("--t-end") ? in.t_end : rigid::lab::time_scale(launches[1]);
+    const rigid::CosineRange handle = rigid::direction_cosine_range(
+        motion, 0, std::isfinite(motion.period()) ? motion.period() : t_end);
     const double handle_max = std::max(std::abs(handle.min), std::abs(handle.max));
     const double handle_min = handle.min <= 0 && handle.max >= 0
                                   ? 0.0 : std::min(std::abs(handle.min), std::abs(handle.max));
@@ -167,8 +171,6 @@ int main(int argc, char** argv) {
                rigid::rad_to_deg(excursion), "deg");
 
     // Two flips: one polhode period of the spin about 2 (its time scale, if it does not flip).
-    const double t_end =
-        lab.given("--t-end") ? in.t_end : rigid::lab::time_scale(launches[1]);
     const double scale = rigid::lab::time_scale(motion);
     const rigid::lab::RunPlan plan =
         rigid::lab::plan_run(lab, in.integration, t_end, scale, kMaxSteps);

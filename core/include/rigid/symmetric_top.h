@@ -66,7 +66,9 @@ struct PrecessionCheck {
 /// absolute tolerance `tol`. The run is in units of the moments I and of time 1/|omega|,
 /// so that one tolerance fits every body (the Earth's omega is 7e-5 rad/s); the rate
 /// is scaled back by omega. Throws like free_symmetric_precession.
+/// At most `max_steps` steps: a run needing more (a body whose precession is slower
+/// than its spin by many orders) throws std::runtime_error.
 PrecessionCheck integrated_precession(double I, double Is, double omega, double alpha,
-                                      double tol = 1e-12);
+                                      double tol = 1e-12, std::size_t max_steps = 2'000'000);
 
 }  // namespace rigid
