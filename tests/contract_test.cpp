@@ -172,3 +172,24 @@ TEST_CASE("contract: a tolerance below double precision is refused, not a crash"
     CHECK(run.err.rfind(std::string(lab) + ": error: --tolerance: ", 0) == 0);
   }
 }
+
+TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries are cleared") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_sig_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // Killed by SIGTERM (or SIGINT) mid-figure: the figures are held as temporaries
+  // until the run ends, and the handler removes them; nothing lands.
+  for (const char* sig : {"TERM", "INT"}) {
+    INFO(sig);
+    run_lab("poinsot", std::string("--json --figure-size 8192x8192 --figures '") + dir.string() +
+                           "'", std::string("timeout -s ") + sig + " 1");
+    CHECK(fs::is_empty(dir));
+  }
+  // A temporary a killed run left (its pid gone) is removed by the next writer.
+  const fs::path stale = dir / "out.csv.tmp-999999999-0";
+  std::ofstream(stale) << "partial\n";
+  REQUIRE(run_lab("poinsot", "--quiet --csv '" + (dir / "out.csv").string() + "'").status == 0);
+  CHECK_FALSE(fs::exists(stale));
+  CHECK(fs::is_regular_file(dir / "out.csv"));
+  fs::remove_all(dir);
+}

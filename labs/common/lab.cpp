@@ -492,8 +492,15 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
       if (option.lab_default_.empty() || option.cli_->count() > 0) option.record_();
     }
     check_output_paths();
+    // The run's files (figures, CSV) land together or not at all.
+    render::FileTransaction files;
     body(*this);
     if (!csv_path_.empty()) write_csv();
+    try {
+      files.commit();
+    } catch (const std::runtime_error& e) {
+      throw UsageError(csv_path_.empty() ? "--figures" : "--csv", e.what());
+    }
   } catch (const UsageError& e) {
     std::cerr << name_ << ": error: " << escaped(e.what()) << '\n';
     return 2;

@@ -1,14 +1,22 @@
 // Atomic file writing: temporary in the same directory, checked, renamed.
 #include "rigid/render/atomic_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace rigid::render {
 
@@ -26,27 +34,111 @@ std::string one_line(std::string s) {
   throw std::runtime_error("cannot write '" + one_line(path) + "': " + one_line(reason));
 }
 
+// The temporaries this process holds, in fixed storage a signal handler may read:
+// SIGINT and SIGTERM unlink them (unlink is async-signal-safe) and die as asked.
+constexpr int kMaxHeld = 64;
+char g_held[kMaxHeld][PATH_MAX];
+volatile std::sig_atomic_t g_used[kMaxHeld] = {};
+
+extern "C" void remove_held_and_die(int sig) {
+  for (int i = 0; i < kMaxHeld; ++i) {
+    if (g_used[i]) ::unlink(g_held[i]);
+  }
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void install_handlers_once() {
+  static const bool installed = [] {
+    for (const int sig : {SIGINT, SIGTERM}) {
+      struct sigaction action {};
+      action.sa_handler = remove_held_and_die;
+      sigemptyset(&action.sa_mask);
+      ::sigaction(sig, &action, nullptr);
+    }
+    return true;
+  }();
+  (void)installed;
+}
+
+int hold(const std::string& tmp) {
+  install_handlers_once();
+  for (int i = 0; i < kMaxHeld; ++i) {
+    if (!g_used[i] && tmp.size() < PATH_MAX) {
+      std::memcpy(g_held[i], tmp.c_str(), tmp.size() + 1);
+      g_used[i] = 1;
+      return i;
+    }
+  }
+  return -1;  // more than kMaxHeld at once: still removed on failure, not on a signal
+}
+
+void release(int slot) {
+  if (slot >= 0) g_used[slot] = 0;
+}
+
+// The pending renames of the live transaction (temporary, target, slot).
+struct Pending {
+  std::string tmp, path;
+  int slot;
+};
+std::vector<Pending>* g_transaction = nullptr;
+
 // A name no other writer in this process or another can be using: pid and a
 // per-process counter (threads), in the target's directory so rename() is atomic.
+// A target whose name leaves no room for the suffix (NAME_MAX) gets a short
+// hidden temporary in the same directory instead.
 std::string temporary_name(const std::string& path) {
   static std::atomic<unsigned> counter{0};
-  return path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  const std::string suffix = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  const std::size_t slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (base.size() + suffix.size() <= NAME_MAX) return path + suffix;
+  return dir + ".rigid" + suffix;
+}
+
+// Removes NAME.tmp-PID-N beside `path` whose PID is no longer running: what a
+// killed run (SIGKILL, a power cut) left behind.
+void remove_stale(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  DIR* d = ::opendir(dir.c_str());
+  if (d == nullptr) return;
+  const std::string prefix = base + ".tmp-";
+  while (const dirent* e = ::readdir(d)) {
+    const std::string name = e->d_name;
+    if (name.rfind(prefix, 0) != 0) continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+      ::unlink((slash == std::string::npos ? name : dir + name).c_str());
+    }
+  }
+  ::closedir(d);
 }
 
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::FILE*)>& write) {
   if (path.empty()) fail(path, "empty file name");
+  remove_stale(path);
   const std::string tmp = temporary_name(path);
   // O_EXCL: never write through a file (or link) that is already there; 0666
   // less the umask gives an ordinary file's permissions.
+  const int slot = hold(tmp);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail(path, std::strerror(errno));
+  if (fd < 0) {
+    const int e = errno;
+    release(slot);
+    fail(path, std::strerror(e));
+  }
   std::FILE* f = ::fdopen(fd, "wb");
   if (f == nullptr) {
     const int e = errno;
     ::close(fd);
     std::remove(tmp.c_str());
+    release(slot);
     fail(path, std::strerror(e));
   }
   std::string error;
@@ -62,11 +154,45 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   if (error.empty() && std::ferror(f)) error = "write error";
   if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
   if (std::fclose(f) != 0 && error.empty()) error = std::strerror(errno);
-  if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = std::strerror(errno);
-  if (!error.empty()) {
-    std::remove(tmp.c_str());
-    fail(path, error);
+  if (error.empty() && g_transaction != nullptr) {
+    g_transaction->push_back({tmp, path, slot});  // renamed at commit()
+    return;
   }
+  if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = std::strerror(errno);
+  if (!error.empty()) std::remove(tmp.c_str());
+  release(slot);
+  if (!error.empty()) fail(path, error);
+}
+
+FileTransaction::FileTransaction() {
+  if (g_transaction != nullptr) throw std::logic_error("FileTransaction: one at a time");
+  g_transaction = new std::vector<Pending>();
+}
+
+FileTransaction::~FileTransaction() {
+  if (g_transaction == nullptr) return;
+  for (const Pending& p : *g_transaction) {
+    std::remove(p.tmp.c_str());
+    release(p.slot);
+  }
+  delete g_transaction;
+  g_transaction = nullptr;
+}
+
+void FileTransaction::commit() {
+  std::vector<Pending> pending = std::move(*g_transaction);
+  delete g_transaction;
+  g_transaction = nullptr;
+  std::string error, failed;
+  for (const Pending& p : pending) {
+    if (error.empty() && std::rename(p.tmp.c_str(), p.path.c_str()) != 0) {
+      error = std::strerror(errno);
+      failed = p.path;
+    }
+    if (!error.empty()) std::remove(p.tmp.c_str());
+    release(p.slot);
+  }
+  if (!error.empty()) fail(failed, error);
 }
 
 }  // namespace rigid::render
