@@ -193,3 +193,13 @@ TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries ar
   CHECK(fs::is_regular_file(dir / "out.csv"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("contract: a run too long for the budget is refused naming the option, not left to run") {
+  // Bulirsch-Stoer over 1e7 s once ran ten minutes before its step cap refused it:
+  // the wall-clock budget of a lab's run (4 s) refuses it instead.
+  const auto run = run_lab("poinsot", "--json --method bulirsch-stoer --t-end 1e7");
+  CHECK(run.status == 2);
+  CHECK(run.one_error_line());
+  CHECK(run.err.rfind("poinsot: error: --tolerance: ", 0) == 0);
+  CHECK(run.err.find("would take more than") != std::string::npos);
+}

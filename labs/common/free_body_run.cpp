@@ -9,6 +9,11 @@
 
 namespace rigid::lab {
 
+namespace {
+// The wall-clock budget of a lab's own run; the comparisons are capped in steps.
+constexpr double kMaxRunSeconds = 4.0;
+}  // namespace
+
 void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
                                  const std::string& step_default, bool offer_project) {
   std::vector<std::string> methods{"exact"};
@@ -44,6 +49,8 @@ IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in
   options.abs_tol = options.rel_tol = in.tolerance;
   options.step = lab.given("--step") ? in.step : default_step;
   options.max_steps = max_steps;
+  // Every lab finishes or refuses within seconds, whatever the step count (issue 10).
+  options.max_seconds = kMaxRunSeconds;
   options.method = in.method == "exact" ? Method::kDopri5 : method_from_name(in.method);
   options.project_invariants = in.project;
   return options;

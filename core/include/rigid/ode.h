@@ -25,9 +25,11 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -81,6 +83,10 @@ struct OdeOptions {
   double rel_tol = 1e-10;  ///< adaptive methods: relative tolerance
   double step = 1e-2;      ///< fixed-step methods: the step, s
   std::size_t max_steps = 50'000'000;  ///< accepted steps; a run needing more throws
+  /// Wall-clock budget of a run in seconds, checked every 256 steps; a run past it
+  /// throws std::runtime_error (0: none). A step count alone does not bound the
+  /// work: a Bulirsch-Stoer step may cost hundreds of right-hand sides.
+  double max_seconds = 0.0;
 };
 
 /// What a run cost.
@@ -149,9 +155,8 @@ class AfterStepStepper {
 /// calls reset() at every observation, which leaves the total alone.
 class TotalStepCap {
  public:
-  /// A cap of max_steps for a run of method m to t_end (both named in the error).
-  TotalStepCap(Method m, std::size_t max_steps, double t_end)
-      : method_(m), max_steps_(max_steps), t_end_(t_end) {}
+  /// A cap of max_steps (and max_seconds, if > 0) for a run of method m to t_end.
+  TotalStepCap(Method m, std::size_t max_steps, double t_end, double max_seconds = 0.0);
   /// Counts one step; throws std::runtime_error naming the method, the cap and t_end past the cap.
   void operator()();
   /// Called by odeint at each observation: a cap per run, not per sample, so nothing to do.
@@ -162,6 +167,8 @@ class TotalStepCap {
   std::size_t max_steps_;
   double t_end_;
   std::size_t steps_ = 0;
+  double max_seconds_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 namespace detail {
@@ -222,7 +229,8 @@ template <class Stepper, class System, class State, class Observer>
 std::size_t integrate_times_capped(Stepper& stepper, const System& system, State& x,
                                    const std::vector<double>& times, double dt0,
                                    const OdeOptions& o, Observer& observe, double t_end) {
-  TotalStepCap cap(o.method, o.max_steps, t_end);  // t_end in the caller's time, for its message
+  // t_end in the caller's time, for its message
+  TotalStepCap cap(o.method, o.max_steps, t_end, o.max_seconds);
   return boost::numeric::odeint::integrate_times(std::ref(stepper), system, x, times.begin(),
                                                  times.end(), dt0, std::ref(observe),
                                                  std::ref(cap));
@@ -268,10 +276,13 @@ OdeStats integrate_on_grid(Stepper& stepper, const System& system, State& x,
   OdeStats stats;
   std::size_t n = 0;  // the last grid point reached or passed
   double t = t0;      // the time of x
+  TotalStepCap cap(options.method, std::numeric_limits<std::size_t>::max(), times.back(),
+                   options.max_seconds);  // the step count was checked by plan_grid
   const auto advance = [&](double t_next) {
     stepper.do_step(system, x, t, t_next - t);
     t = t_next;
     ++stats.steps;
+    cap();
   };
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double ts = times[i];
