@@ -203,3 +203,29 @@ TEST_CASE("contract: a run too long for the budget is refused naming the option,
   CHECK(run.err.rfind("poinsot: error: --tolerance: ", 0) == 0);
   CHECK(run.err.find("would take more than") != std::string::npos);
 }
+
+TEST_CASE("contract: tiny and huge legal inputs give true norms and angles, or are refused") {
+  // |L| of a 1e-60 m plate turning at 1e-60 rad/s is 1.2e-241 kg m^2/s: its square
+  // underflows, so an unscaled norm printed 0 and the angle 0; at 1e60 it overflowed.
+  for (const char* scale : {"1e-60", "1e60"}) {
+    INFO(scale);
+    const std::string s = scale;
+    const auto run =
+        run_lab("lamina_tensor", "--json --mass " + s + " --a " + s + " --b " + s + " --omega " + s);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    const auto& r = j["results"];
+    const double Lx = r["angular_momentum"][0], Ly = r["angular_momentum"][1];
+    const double m = std::max(std::abs(Lx), std::abs(Ly));
+    CHECK(double(r["angular_momentum_magnitude"]) ==
+          Approx(m * std::hypot(Lx / m, Ly / m)).epsilon(1e-15));
+    // A square plate about (0.8, 0.6, 0): L lies along x, so L makes acos(0.8) with omega.
+    CHECK(double(r["angle_L_omega_deg"]) == Approx(std::acos(0.8) * 180 / M_PI).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("contract: a run that ran away is refused, not printed") {
+  const auto run = run_lab("top_nutation", "--json --method rk4 --step 0.05");
+  CHECK(run.status == 2);
+  CHECK(run.err.rfind("top_nutation: error: --step: the run ran away", 0) == 0);
+}

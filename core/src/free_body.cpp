@@ -50,7 +50,7 @@ double kinetic_energy(const PrincipalMoments& I, const Eigen::Vector3d& w) {
 }
 
 double angular_momentum_magnitude(const PrincipalMoments& I, const Eigen::Vector3d& w) {
-  return L_body(I, w).norm();
+  return L_body(I, w).stableNorm();  // scaled: neither underflows nor overflows
 }
 
 }  // namespace rigid

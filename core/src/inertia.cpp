@@ -135,7 +135,7 @@ Mat3 inertia_about(const Body& body, const Vec3& origin) {
 }
 
 double moment_about_axis(const Mat3& I, const Vec3& n) {
-  const double length = n.norm();
+  const double length = n.stableNorm();  // scaled: no underflow for an axis of 1e-200
   if (!std::isfinite(length) || length == 0.0) {
     throw std::invalid_argument("axis must be a finite non-zero vector");
   }
@@ -152,8 +152,13 @@ double kinetic_energy(const Mat3& I, const Vec3& omega) {
 }
 
 double angle_between(const Vec3& a, const Vec3& b) {
-  // atan2(|a x b|, a . b) keeps full precision at small and near-straight angles.
-  return std::atan2(a.cross(b).norm(), a.dot(b));
+  // atan2(|a x b|, a . b) keeps full precision at small and near-straight angles;
+  // each vector scaled to unit size first, so tiny or huge ones neither underflow
+  // nor overflow in the products (the angle does not depend on their lengths).
+  const double sa = a.cwiseAbs().maxCoeff(), sb = b.cwiseAbs().maxCoeff();
+  if (!(sa > 0.0) || !(sb > 0.0)) return 0.0;
+  const Vec3 ua = a / sa, ub = b / sb;
+  return std::atan2(ua.cross(ub).norm(), ua.dot(ub));
 }
 
 PrincipalAxes principal_axes(const Mat3& I) {

@@ -12,6 +12,8 @@ namespace rigid::lab {
 namespace {
 // The wall-clock budget of a lab's own run; the comparisons are capped in steps.
 constexpr double kMaxRunSeconds = 4.0;
+// A run whose invariants drift by more than this share of themselves is refused.
+constexpr double kMaxDrift = 1.0;
 }  // namespace
 
 void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
@@ -74,6 +76,8 @@ IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const Inte
   if (!std::all_of(errors.begin(), errors.end(), [](double e) { return std::isfinite(e); })) {
     throw UsageError(option, "the integration diverged (omega overflowed); shorten the step");
   }
+  // A run whose energy or |L| moved by more than itself has no digit left to print.
+  refuse_runaway(option, std::max(run.energy_drift_rel, run.momentum_drift_rel));
   lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
              *std::max_element(errors.begin(), errors.end()), "");
   lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
@@ -107,6 +111,15 @@ RunPlan plan_run(const Lab& lab, const IntegrationInputs& in, double t_end, doub
 void report_plan(Lab& lab, const RunPlan& plan) {
   lab.result("t_end_s", "end time t_end", plan.t_end, "s");
   if (plan.fixed) lab.result("step_s", "step h", plan.options.step, "s");
+}
+
+void refuse_runaway(const std::string& option, double drift) {
+  if (!(drift <= kMaxDrift)) {
+    throw UsageError(option, fmt::format("the run ran away: its conserved quantities drifted by "
+                                         "{:.3g} of themselves (more than {:g}); shorten the step "
+                                         "or tighten the tolerance",
+                                         drift, kMaxDrift));
+  }
 }
 
 void report_drifts(Lab& lab, const IntegrationResult& run) {

@@ -64,6 +64,11 @@ double time_scale(const FreeBodyExact& motion);
 /// time scale: beyond, the phase of the exact motion keeps fewer than 7 of its 16 digits.
 void check_phase_digits(double t_end, double scale);
 
+/// Refuses (a UsageError naming `option`) a run whose conserved quantities drifted by
+/// more than themselves (relative drift > 1): a step far too long, whose numbers
+/// would mean nothing.
+void refuse_runaway(const std::string& option, double drift);
+
 /// Reports the run's drift of T, |L| and L in space, relative to the start
 /// (energy_drift_rel, momentum_drift_rel, L_space_drift_rel).
 void report_drifts(Lab& lab, const IntegrationResult& run);

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     const Vec3 L = rigid::angular_momentum(I, omega);
     lab.result("angular_momentum", "L = I omega", L, "kg m^2/s",
                lab.textbook("(0.767, -0.20, 0) ma^2 omega"));
-    lab.result("angular_momentum_magnitude", "|L|", L.norm(), "kg m^2/s",
+    lab.result("angular_momentum_magnitude", "|L|", L.stableNorm(), "kg m^2/s",
                lab.textbook("0.793 ma^2 omega"));
     lab.result("angle_L_omega_deg", "angle between L and omega",
                rigid::rad_to_deg(rigid::angle_between(L, omega)), "deg", lab.textbook("51"));
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
       lab.note(fmt::format(
           "errata: |L| = {:.4f} ma^2 omega exactly; the text's 0.793 comes from rounding L_x "
           "to 0.767 before taking the norm",
-          L.norm() / (ma2 * in.omega)));
+          L.stableNorm() / (ma2 * in.omega)));
     }
 
     lab.section("1.2 kinetic energy (eqs. 33-34)");

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     lab.result("angle_L_axle_deg", "angle between L and the axle",
                rigid::rad_to_deg(rigid::angle_between(L0, axle)), "deg");
     lab.result("torque_unbalanced_nm", "bearing torque |omega x I omega|",
-               rigid::bearing_torque(wheel, 0.0, omega).norm(), "N m");
+               rigid::bearing_torque(wheel, 0.0, omega).stableNorm(), "N m");
 
     lab.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
     const double m0 = rigid::lab::for_option("--tilt-deg", [&] {
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     lab.result("residual_tilt_small_angle_deg", "principal axis to axle, small-angle m0",
                rigid::rad_to_deg(rigid::principal_axis_misalignment(wheel, m0_small)), "deg");
     lab.result("torque_balanced_nm", "bearing torque after balancing",
-               rigid::bearing_torque(wheel, m0, omega).norm(), "N m");
+               rigid::bearing_torque(wheel, m0, omega).stableNorm(), "N m");
     if (lab.textbook_inputs()) {
       lab.note(fmt::format(
           "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "

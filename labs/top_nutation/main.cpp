@@ -219,6 +219,8 @@ int main(int argc, char** argv) {
         }
         worst = std::max(worst, e);
       }
+      rigid::lab::refuse_runaway(option, std::max({run.energy_drift_rel, run.p_phi_drift_rel,
+                                                   run.p_psi_drift_rel}));
       lab.result("max_theta_error_deg", "max |theta - theta_exact|", rigid::rad_to_deg(worst), "deg");
       lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
     }
