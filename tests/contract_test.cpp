@@ -229,3 +229,12 @@ TEST_CASE("contract: a run that ran away is refused, not printed") {
   CHECK(run.status == 2);
   CHECK(run.err.rfind("top_nutation: error: --step: the run ran away", 0) == 0);
 }
+
+TEST_CASE("contract: a step asked for that is longer than the run is refused, not cut short") {
+  for (const char* lab : {"poinsot", "tennis_racquet", "top_nutation"}) {
+    INFO(lab);
+    const auto run = run_lab(lab, "--json --method rk4 --step 100 --t-end 1");
+    CHECK(run.status == 2);
+    CHECK(run.err.rfind(std::string(lab) + ": error: --step: 100 s is longer than the run", 0) == 0);
+  }
+}

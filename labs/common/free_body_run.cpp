@@ -103,6 +103,11 @@ RunPlan plan_run(const Lab& lab, const IntegrationInputs& in, double t_end, doub
   RunPlan plan;
   plan.options = integration_options(lab, in, scale / 2000.0, max_steps);
   plan.fixed = fixed_step(in);
+  // A step asked for that is longer than the whole run would be silently cut to it.
+  if (plan.fixed && lab.given("--step") && plan.options.step > t_end) {
+    throw UsageError("--step", fmt::format("{:g} s is longer than the run itself (t_end = {:g} s)",
+                                           plan.options.step, t_end));
+  }
   plan.times = sample_times(t_end, scale, plan.fixed ? plan.options.step : 0.0);
   plan.t_end = t_end;
   return plan;
