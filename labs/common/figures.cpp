@@ -1,5 +1,7 @@
 #include "common/figures.h"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -40,6 +42,13 @@ void FigureSet::save(const std::string& name, const std::string& caption, const 
   lab_.figures_.push_back(file);
   lab_.captions_[file] = caption;
   lab_.figure_seconds_[file] = elapsed.count();
+  // A figure the user made very large (past 4x the default's pixels) takes seconds
+  // each: say so as each is drawn, rather than sit silent (issue 10).
+  if (static_cast<double>(lab_.figure_width_) * lab_.figure_height_ > 4.0 * 1600 * 1200) {
+    std::cerr << lab_.name_ << ": drew " << file << " (" << lab_.figure_width_ << "x"
+              << lab_.figure_height_ << ") in " << fmt::format("{:.1f}", elapsed.count())
+              << " s\n";
+  }
 }
 
 void FigureSet::add(const std::string& name, const std::string& caption, render::Plot2D plot) {
