@@ -238,3 +238,17 @@ TEST_CASE("contract: a step asked for that is longer than the run is refused, no
     CHECK(run.err.rfind(std::string(lab) + ": error: --step: 100 s is longer than the run", 0) == 0);
   }
 }
+
+TEST_CASE("contract: a --csv that fails after the figures were drawn leaves no figure behind") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_txn_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // /proc passes the up-front check (a directory; root may write anywhere) but takes
+  // no new file: the CSV fails at the end, after both figures were drawn.
+  const auto run = run_lab("tire_balancing",
+                           "--quiet --figures '" + dir.string() + "' --csv /proc/rigid_test.csv");
+  CHECK(run.status == 2);
+  CHECK(run.err.rfind("tire_balancing: error: --csv: ", 0) == 0);
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
