@@ -252,3 +252,14 @@ TEST_CASE("contract: a --csv that fails after the figures were drawn leaves no f
   CHECK(fs::is_empty(dir));
   fs::remove_all(dir);
 }
+
+TEST_CASE("contract: a missing value is said as such, not as a vector's count") {
+  // "--mass" alone once read "--mass: must be three numbers X,Y,Z": a rule for another option.
+  const auto scalar = run_lab("poinsot", "--mass");
+  CHECK(scalar.status == 2);
+  CHECK(scalar.err.rfind("poinsot: error: --mass: needs a value", 0) == 0);
+  const auto pair = run_lab("football", "--inertia 1");
+  CHECK(pair.err.rfind("football: error: --inertia: must be two numbers", 0) == 0);
+  const auto vector = run_lab("poinsot", "--omega 1,2");
+  CHECK(vector.err.rfind("poinsot: error: --omega: must be three numbers X,Y,Z", 0) == 0);
+}
