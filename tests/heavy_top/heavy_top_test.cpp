@@ -57,6 +57,17 @@ TEST_CASE("heavy top: the exact theta, phi, psi match mpmath's 30-digit integrat
   }
 }
 
+TEST_CASE("heavy top: the nutation period and mean precession match mpmath's quadrature") {
+  for (const TopReference& r : kTopReference) {
+    INFO(r.name);
+    const rigid::HeavyTopExact exact = exact_of(r);
+    // K and Pi by Carlson's R_F and R_J carry a few ulps; the mean is a sum of two
+    // such terms that may nearly cancel (a top close to a pole): 1e-12 relative.
+    CHECK_THAT(exact.nutation_period(), WithinRel(r.period, 1e-13));
+    CHECK_THAT(exact.mean_precession_rate(), WithinRel(r.mean_phi_dot, 1e-12));
+  }
+}
+
 TEST_CASE("heavy top: theta stays between the turning angles and E, p_phi, p_psi are constant") {
   for (const TopReference& r : kTopReference) {
     INFO(r.name);
