@@ -771,3 +771,22 @@ TEST_CASE("labs: extreme but legal inputs end with finite numbers or one line, n
     }
   }
 }
+
+TEST_CASE("lamina_tensor: the paddle and the block at other inputs, against eqs. 40-43 typed here") {
+  const auto run = run_lab("lamina_tensor", "--json --mass 3 --a 0.4 --b 0.9 --c 0.25");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  const double m = 3, a = 0.4, b = 0.9, c = 0.25;
+  // The model paddle (section 2.1): (1/8, 31/24, 17/12) m a^2 about its centre of mass.
+  const double paddle[] = {m * a * a / 8, 31.0 / 24 * m * a * a, 17.0 / 12 * m * a * a};
+  // The block a x b x c (eq. 40): m (b^2 + c^2)/12, m (a^2 + c^2)/12, m (a^2 + b^2)/12.
+  const double block[] = {m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12};
+  for (int i = 0; i < 3; ++i) {
+    CHECK(double(r["paddle_principal_moments"][i]) == Approx(paddle[i]).epsilon(1e-14));
+    CHECK(double(r["block_principal_moments"][i]) == Approx(block[i]).epsilon(1e-14));
+  }
+  // The cube of side a: m a^2 / 6 about any axis through its centre (the diagonal too).
+  CHECK(double(r["cube_moment_about_axis"]) == Approx(m * a * a / 6).epsilon(1e-14));
+  CHECK(double(r["cube_moment_about_diagonal"]) == Approx(m * a * a / 6).epsilon(1e-14));
+}
