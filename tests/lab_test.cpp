@@ -790,3 +790,55 @@ TEST_CASE("lamina_tensor: the paddle and the block at other inputs, against eqs.
   CHECK(double(r["cube_moment_about_axis"]) == Approx(m * a * a / 6).epsilon(1e-14));
   CHECK(double(r["cube_moment_about_diagonal"]) == Approx(m * a * a / 6).epsilon(1e-14));
 }
+
+TEST_CASE("tire_balancing: every CSV row's torque is dL/dt, normal to L, of the reported size") {
+  const std::string path = "/tmp/rigid_tire_test_" + std::to_string(::getpid()) + ".csv";
+  const auto run = run_lab("tire_balancing", "--json --csv " + path);
+  REQUIRE(run.status == 0);
+  const double torque = run.json()["results"]["torque_unbalanced_nm"];
+  const rigid::test::Csv csv = rigid::test::read_csv(path);
+  CHECK(csv.header == "t_s,Lx,Ly,Lz,Nx,Ny,Nz");
+  REQUIRE(csv.rows.size() > 100);
+  const double L0 = std::hypot(csv.rows[0][1], csv.rows[0][2], csv.rows[0][3]);
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    const auto& v = csv.rows[i];
+    const double L = std::hypot(v[1], v[2], v[3]), N = std::hypot(v[4], v[5], v[6]);
+    CHECK(L == Approx(L0).epsilon(1e-14));                      // L turns, keeps its size
+    CHECK(N == Approx(torque).epsilon(1e-14));                  // the reported torque, every row
+    CHECK(std::abs(v[1] * v[4] + v[2] * v[5] + v[3] * v[6]) <= 1e-12 * L * N);  // N normal to L
+    if (i > 0 && i + 1 < csv.rows.size()) {
+      // N = dL/dt by central differences: error (dt^2 / 6) |d^3 L / dt^3| = (w dt)^2 / 6 of N.
+      const auto& p = csv.rows[i - 1];
+      const auto& q = csv.rows[i + 1];
+      const double dt = q[0] - p[0];
+      for (int k = 1; k <= 3; ++k) {
+        CHECK((q[k] - p[k]) / dt == Approx(v[k + 3]).margin(1e-3 * torque));
+      }
+    }
+  }
+  std::remove(path.c_str());
+}
+
+TEST_CASE("poinsot: the CSV's rows agree with the reported end state and drifts") {
+  const std::string path = "/tmp/rigid_poinsot_rows_" + std::to_string(::getpid()) + ".csv";
+  const auto run = run_lab("poinsot", "--json --method rk4 --csv " + path);
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  const rigid::test::Csv csv = rigid::test::read_csv(path);
+  REQUIRE(csv.rows.size() > 10);
+  const auto& last = csv.rows.back();
+  CHECK(last[0] == double(r["t_end_s"]));
+  for (int i = 0; i < 3; ++i) CHECK(last[1 + i] == double(r["omega_end"][i]));
+  double dE = 0, dL = 0;
+  const double E0 = csv.rows[0][8], L0 = csv.rows[0][9];
+  for (const auto& v : csv.rows) {
+    CHECK(std::hypot(std::hypot(v[4], v[5]), std::hypot(v[6], v[7])) == Approx(1).epsilon(1e-15));
+    dE = std::max(dE, std::abs(v[8] - E0) / E0);
+    dL = std::max(dL, std::abs(v[9] - L0) / L0);
+  }
+  // The same maxima the run reported (the CSV prints 17 digits: equal to roundoff).
+  CHECK(dE == Approx(double(r["energy_drift_rel"])).epsilon(1e-6).margin(1e-15));
+  CHECK(dL == Approx(double(r["momentum_drift_rel"])).epsilon(1e-6).margin(1e-15));
+  std::remove(path.c_str());
+}
