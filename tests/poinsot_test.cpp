@@ -9,6 +9,7 @@
 using namespace rigid;
 using Eigen::Vector3d;
 using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
 
 namespace {
 // Sum (w_i / a_i)^2: 1 on the ellipsoid of semi-axes a.
@@ -88,4 +89,15 @@ TEST_CASE("poinsot: section 4.1 axis ratios for I1 : I2 : I3 = 5 : 4 : 3") {
   for (int j = 0; j < 3; ++j) CHECK_THAT(momentum_ratios_touching(I, j)(j), WithinAbs(e(j), 1e-15));
   CHECK_THAT(momentum_ratios_touching(I, 2)(0), WithinAbs(0.35, 0.005));
   CHECK_THAT(momentum_ratios_touching(I, 2)(1), WithinAbs(0.43, 0.005));
+  // Exactly: (1/5, 1/4, 1/3) and (1/sqrt5, 1/2, 1/sqrt3); touching on axis k scales the
+  // first by sqrt(I_k): on 3, (sqrt3/5, sqrt3/4, 1/sqrt3); on 1, (1/sqrt5, sqrt5/4, sqrt5/3).
+  const double s3 = std::sqrt(3.0), s5 = std::sqrt(5.0);
+  CHECK_THAT(m(0), WithinRel(0.2, 1e-15));
+  CHECK_THAT(e(0), WithinRel(1 / s5, 1e-15));
+  CHECK_THAT(e(2), WithinRel(1 / s3, 1e-15));
+  const Vector3d t3 = momentum_ratios_touching(I, 2), t1 = momentum_ratios_touching(I, 0);
+  CHECK_THAT(t3(0), WithinRel(s3 / 5, 1e-15));
+  CHECK_THAT(t3(1), WithinRel(s3 / 4, 1e-15));
+  CHECK_THAT(t1(1), WithinRel(s5 / 4, 1e-15));
+  CHECK_THAT(t1(2), WithinRel(s5 / 3, 1e-15));
 }

@@ -1,6 +1,10 @@
 // Tests of 3D scenes by their pixels.
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
+#include <map>
+
 #include "rigid/render/mesh.h"
 #include "rigid/render/palette.h"
 #include "rigid/render/scene3d.h"
@@ -62,6 +66,30 @@ TEST_CASE("scene3d: nested translucent shells show both colours", "[render][scen
 TEST_CASE("mesh: unit shapes are closed and sized by on-screen radius", "[render][mesh]") {
   const Mesh s = make_sphere(32);
   CHECK(s.indices.size() % 3 == 0);
+  // Closed: every edge is shared by exactly two triangles, in opposite directions
+  // (a hole leaves an edge used once; a flipped triangle, one used twice the same way).
+  std::map<std::pair<unsigned, unsigned>, int> edges;
+  for (std::size_t i = 0; i + 2 < s.indices.size(); i += 3) {
+    for (int k = 0; k < 3; ++k) {
+      const unsigned from = s.indices[i + k], to = s.indices[i + (k + 1) % 3];
+      ++edges[{from, to}];
+    }
+  }
+  // Seam vertices may be duplicated at equal positions: compare edges by position.
+  std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> by_position;
+  const auto key = [&](unsigned v) {
+    const auto& p = s.positions[v];
+    return std::array<float, 3>{std::round(p.x() * 1e5f), std::round(p.y() * 1e5f), std::round(p.z() * 1e5f)};
+  };
+  for (const auto& [e, n] : edges) {
+    if (key(e.first) == key(e.second)) continue;  // degenerate at a pole
+    by_position[{key(e.first), key(e.second)}] += n;
+  }
+  for (const auto& [e, n] : by_position) {
+    CHECK(n == 1);
+    const auto back = by_position.find({e.second, e.first});
+    CHECK((back != by_position.end() && back->second == 1));
+  }
   for (const auto& p : s.positions) CHECK(p.norm() == Approx(1.0f).margin(1e-5));
   CHECK(segments_for_radius(1) == 12);
   CHECK(segments_for_radius(1000) == 160);
