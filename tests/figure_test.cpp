@@ -5,6 +5,7 @@
 // and difference PNGs are written to build/figure-diff/. To accept new goldens:
 // `cmake --build build --target figures` and commit figures/ and README.md.
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -47,7 +48,11 @@ std::set<std::string> goldens_of(const std::string& lab) {
 }
 
 void check_lab_figures(const std::string& lab) {
-  const fs::path actual_dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / lab;
+  // Each backend (RIGID_GL_BACKEND, set by ctest for the EGL run) draws into its own
+  // directory, so the two runs of a lab may go side by side.
+  const char* backend = std::getenv("RIGID_GL_BACKEND");
+  const fs::path actual_dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" /
+                              (lab + (backend != nullptr ? std::string("-") + backend : ""));
   fs::remove_all(actual_dir);
   const auto run = run_lab(lab, "--json --figures " + actual_dir.string());
   REQUIRE(run.status == 0);
