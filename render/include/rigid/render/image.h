@@ -26,6 +26,12 @@ struct ImageDiff {
   long differing_pixels = 0;  ///< pixels with some channel differing by more than the threshold
   double differing_fraction = 0;
   int max_channel_diff = 0;
+  /// The largest 8-connected cluster of differing pixels: a changed glyph, marker or
+  /// swatch is tens of pixels, where antialiasing jitter is isolated pixels.
+  long largest_cluster = 0;
+  /// The mean over pixels of the largest channel difference: a background turned a
+  /// faint grey moves every pixel a little.
+  double mean_diff = 0;
 };
 
 /// Compares a and b; throws std::invalid_argument if their sizes differ.
