@@ -48,5 +48,7 @@ std::string self_path();
 
 /// Runs this executable as a child with extra environment settings, drawing reference_plot() to a PNG; returns it.
 Image render_in_child(const std::string& env, const std::string& png_path);
+/// The context a child process makes with `env`: "backend samples GL_VERSION".
+std::string context_in_child(const std::string& env, const std::string& path);
 
 }  // namespace rigid::render::test

@@ -1,6 +1,8 @@
 // Catch2 runner for render_test. Run as `render_test --render-child FILE` it
-// instead draws the reference plot to FILE and exits: the GL context is one
-// per process, so tests that need another backend or thread count use a child.
+// instead draws the reference plot to FILE and exits, and as `render_test
+// --context-child FILE` it writes the facts of its context to FILE: the GL
+// context is one per process, so tests that need another backend, sample count
+// or thread count use a child.
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
@@ -8,6 +10,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <stdexcept>
 
@@ -32,6 +35,16 @@ Image render_in_child(const std::string& env, const std::string& png_path) {
   return read_png(png_path);
 }
 
+std::string context_in_child(const std::string& env, const std::string& path) {
+  const std::string cmd = env + " '" + self_path() + "' --context-child '" + path + "'";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) throw std::runtime_error("child failed (" + std::to_string(rc) + "): " + cmd);
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
 }  // namespace rigid::render::test
 
 int main(int argc, char** argv) {
@@ -41,6 +54,17 @@ int main(int argc, char** argv) {
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "render child: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  if (argc == 3 && std::strcmp(argv[1], "--context-child") == 0) {
+    try {
+      const rigid::render::ContextInfo& info = rigid::render::context();
+      std::ofstream(argv[2]) << rigid::render::backend_name(info.backend) << ' ' << info.samples
+                             << ' ' << info.gl_version << '\n';
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "context child: " << e.what() << "\n";
       return 1;
     }
   }
