@@ -842,3 +842,151 @@ TEST_CASE("poinsot: the CSV's rows agree with the reported end state and drifts"
   CHECK(dL == Approx(double(r["momentum_drift_rel"])).epsilon(1e-6).margin(1e-15));
   std::remove(path.c_str());
 }
+
+// Issue 13, item 3: every lab at inputs none of its defaults share, against the
+// chapter's formulas typed here (or a quadrature / another library's elliptic
+// integral), never against the lab's own output. Tolerances: the formulas are a
+// few operations each, so a few ulps; 1e-13 relative leaves room for libm.
+namespace {
+constexpr double kDeg = M_PI / 180;
+double value(const nlohmann::json& r, const char* key) { return r.at(key).get<double>(); }
+}  // namespace
+
+TEST_CASE("tire_balancing: another wheel against eqs. 55-61 typed here") {
+  const double m = 12, a = 0.3, b = 0.08, theta = 3 * kDeg, omega = 50;
+  const auto run = run_lab("tire_balancing",
+                           "--json --mass 12 --radius 0.3 --offset 0.08 --tilt-deg 3 --omega 50");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  // The disk's symmetry axis is x, the axle (cos, sin, 0): L = omega (m a^2/2 cos, m a^2/4 sin, 0).
+  const double Lx = m * a * a / 2 * std::cos(theta), Ly = m * a * a / 4 * std::sin(theta);
+  CHECK(value(r, "angle_L_axle_deg") ==
+        Approx(theta / kDeg - std::atan2(Ly, Lx) / kDeg).epsilon(1e-13));
+  // |omega x L| = omega^2 m a^2 sin(2 theta) / 8.
+  CHECK(value(r, "torque_unbalanced_nm") ==
+        Approx(omega * omega * m * a * a * std::sin(2 * theta) / 8).epsilon(1e-13));
+  // Eq. 60 solved for m0: tan 2theta (m a^2/4 + 2 m0 (a^2 - b^2)) = 4 a b m0.
+  const double t = std::tan(2 * theta);
+  CHECK(value(r, "balance_mass_kg") ==
+        Approx(t * m * a * a / 4 / (4 * a * b - 2 * t * (a * a - b * b))).epsilon(1e-13));
+  // Eq. 61: theta = 8 b m0 / (a m).
+  CHECK(value(r, "balance_mass_small_angle_kg") == Approx(theta * a * m / (8 * b)).epsilon(1e-14));
+  // Balanced exactly: the principal axis on the axle and no torque, to roundoff.
+  CHECK(value(r, "residual_tilt_exact_deg") < 1e-12);
+  CHECK(value(r, "torque_balanced_nm") <= 1e-13 * value(r, "torque_unbalanced_nm"));
+  CHECK(value(r, "residual_tilt_small_angle_deg") > 1e-3);
+}
+
+TEST_CASE("poinsot: another body's period against Landau's formula and std::comp_ellint_1") {
+  const double I[3] = {2, 3, 5}, w[3] = {1.2, -0.4, 0.3};
+  const auto run = run_lab("poinsot", "--json --inertia 2,3,5 --omega 1.2,-0.4,0.3");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  double E2 = 0, L2 = 0;  // 2T and L^2
+  for (int i = 0; i < 3; ++i) E2 += I[i] * w[i] * w[i], L2 += I[i] * I[i] * w[i] * w[i];
+  CHECK(value(r, "energy") == Approx(E2 / 2).epsilon(1e-15));
+  CHECK(value(r, "angular_momentum_magnitude") == Approx(std::sqrt(L2)).epsilon(1e-15));
+  // Landau & Lifshitz, Mechanics, section 37: for L^2 < 2 E I2 (here 9.45 < 11.43) the
+  // polhode circles the smallest axis: their formulas with I1 and I3 exchanged
+  // (the racquet's test below takes the other family).
+  REQUIRE(L2 < E2 * I[1]);
+  CHECK(r["regime"] == "polhode about the smallest axis");
+  const double I1 = I[2], I2 = I[1], I3 = I[0];
+  const double rate = std::sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3));
+  const double k2 = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1));
+  // libstdc++'s K(k) (Carlson's R_F of its own), a second implementation beside Boost's.
+  CHECK(value(r, "polhode_period_s") == Approx(4 * std::comp_ellint_1(std::sqrt(k2)) / rate).epsilon(1e-13));
+  for (int i = 0; i < 3; ++i) {
+    CHECK(double(r["energy_ellipsoid_semi_axes"][i]) == Approx(std::sqrt(E2 / I[i])).epsilon(1e-15));
+    CHECK(double(r["momentum_ellipsoid_semi_axes"][i]) == Approx(std::sqrt(L2) / I[i]).epsilon(1e-15));
+  }
+  // Three periods later (the default t_end) omega is back where it started.
+  for (int i = 0; i < 3; ++i) CHECK(double(r["omega_end"][i]) == Approx(w[i]).margin(1e-13));
+}
+
+TEST_CASE("football: an oblate body at another spin and angle against eqs. 109 and 143-147") {
+  const double I = 0.3, Is = 0.5, omega = 7, alpha = 25 * kDeg;
+  const auto run = run_lab("football", "--json --inertia 0.3,0.5 --omega 7 --alpha-deg 25");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  const double s = std::sin(alpha), c = std::cos(alpha);
+  CHECK(value(r, "body_precession_rate_rad_s") == Approx(omega * c * (Is - I) / I).epsilon(1e-14));
+  const double L = omega * std::sqrt(I * I * s * s + Is * Is * c * c);  // eq. 143
+  CHECK(value(r, "space_precession_rate_rad_s") == Approx(L / I).epsilon(1e-14));
+  const double theta = std::atan(I / Is * std::tan(alpha));  // eq. 144
+  CHECK(value(r, "theta_deg") == Approx(theta / kDeg).epsilon(1e-14));
+  CHECK(value(r, "space_cone_half_angle_deg") == Approx((alpha - theta) / kDeg).epsilon(1e-12));
+  CHECK(r["cones_touch"] == "inside");  // oblate: theta < alpha
+  CHECK(value(r, "body_precession_period_s") == Approx(2 * M_PI * I / (omega * c * (Is - I))).epsilon(1e-14));
+}
+
+TEST_CASE("tennis_racquet: another racquet against eqs. 83-85 and 94-101 typed here") {
+  const double ma = 0.2, a = 0.15, ml = 0.1, l = 0.3, omega = 7;
+  const auto run = run_lab("tennis_racquet", "--json --head-mass 0.2 --head-radius 0.15 "
+                                             "--handle-mass 0.1 --handle-length 0.3 --omega 7");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  const double R = ml * (a + l / 2) / (ma + ml);  // eq. 83: the centre of mass from the head's
+  CHECK(value(r, "cm_offset_m") == Approx(R).epsilon(1e-15));
+  const double I1 = ma * a * a / 2;                                                  // eq. 84
+  const double I2 = ma * a * a / 2 + ma * R * R + ml * l * l / 12 + ml * (a + l / 2 - R) * (a + l / 2 - R);  // eq. 85
+  const double I3 = I1 + I2;
+  CHECK(double(r["principal_moments"][0]) == Approx(I1).epsilon(1e-14));
+  CHECK(double(r["principal_moments"][1]) == Approx(I2).epsilon(1e-14));
+  CHECK(double(r["principal_moments"][2]) == Approx(I3).epsilon(1e-14));
+  // Linearised Euler equations about each axis (eqs. 94-101 without eq. 92's rounding).
+  CHECK(value(r, "growth_rate_per_s") == Approx(omega * std::sqrt((I2 - I1) * (I3 - I2) / (I1 * I3))).epsilon(1e-13));
+  CHECK(double(r["wobble_frequencies_rad_s"][0]) == Approx(omega * std::sqrt((I2 - I1) * (I3 - I1) / (I2 * I3))).epsilon(1e-13));
+  CHECK(double(r["wobble_frequencies_rad_s"][1]) == Approx(omega * std::sqrt((I3 - I1) * (I3 - I2) / (I1 * I2))).epsilon(1e-13));
+  // The launch: omega = 7 (0, sqrt(1 - p^2), p), p = 0.01 along axis 3; its period by Landau.
+  const double p = 0.01, w[3] = {0, omega * std::sqrt(1 - p * p), omega * p}, Is[3] = {I1, I2, I3};
+  double E2 = 0, L2 = 0;
+  for (int i = 0; i < 3; ++i) E2 += Is[i] * w[i] * w[i], L2 += Is[i] * Is[i] * w[i] * w[i];
+  REQUIRE(L2 > E2 * I2);  // about the largest axis
+  const double rate = std::sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3));
+  const double k2 = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1));
+  // Near the separatrix (k'^2 ~ p^2) K is conditioned by ~1/k'^2 ~ 1e4: 1e-11.
+  CHECK(value(r, "polhode_period_s") == Approx(4 * std::comp_ellint_1(std::sqrt(k2)) / rate).epsilon(1e-11));
+  // The spin flips every half period, the first a quarter period in (launched at sn = 0).
+  CHECK(value(r, "flip_interval_s") == Approx(value(r, "polhode_period_s") / 2).epsilon(1e-12));
+}
+
+TEST_CASE("top_nutation: another top against eqs. 185-189 and a quadrature of the period") {
+  const double m = 1.5, l = 0.06, rd = 0.04, g = 9.8, S = 1500 * 2 * M_PI / 60, theta0 = 50 * kDeg;
+  const auto run = run_lab("top_nutation", "--json --mass 1.5 --arm 0.06 --disk-radius 0.04 "
+                                           "--spin-rpm 1500 --theta0-deg 50");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  const double Is = m * rd * rd / 2, I = m * rd * rd / 4 + m * l * l, mgl = m * g * l;
+  CHECK(value(r, "moment_symmetry_kg_m2") == Approx(Is).epsilon(1e-15));
+  CHECK(value(r, "moment_transverse_kg_m2") == Approx(I).epsilon(1e-15));
+  CHECK(value(r, "min_spin_rad_s") == Approx(std::sqrt(4 * mgl * I) / Is).epsilon(1e-14));  // eq. 189
+  CHECK(value(r, "horizontal_precession_rate_rad_s") == Approx(mgl / (Is * S)).epsilon(1e-14));  // eq. 185
+  // Eq. 187: I cos(theta) phi_dot^2 - Is S phi_dot + m g l = 0, the two roots.
+  const double c = std::cos(theta0), D = std::sqrt(Is * Is * S * S - 4 * mgl * I * c);
+  CHECK(double(r["steady_precession_rates_rad_s"][0]) == Approx((Is * S - D) / (2 * I * c)).epsilon(1e-12));
+  CHECK(double(r["steady_precession_rates_rad_s"][1]) == Approx((Is * S + D) / (2 * I * c)).epsilon(1e-13));
+  // Released at rest in theta and phi (a cusp): theta_min = theta0, and the period is
+  // 2 int_{u1}^{u2} du / sqrt(f(u)), f = beta (u - u1)(u2 - u)(u3 - u), beta = 2 m g l / I;
+  // with u = u1 + (u2 - u1) sin^2(x) it is 4 int_0^{pi/2} dx / sqrt(beta (u3 - u)), an
+  // analytic periodic integrand for which the midpoint rule converges geometrically.
+  CHECK(value(r, "theta_min_deg") == Approx(50).epsilon(1e-13));
+  const double u1 = r["cubic_roots"][0], u2 = r["cubic_roots"][1], u3 = r["cubic_roots"][2];
+  const double a = Is * S / I, b = a * c, beta = 2 * mgl / I, alpha = beta * c;  // eqs. 194-197
+  for (double u : {u1, u2, u3}) {  // each a root of f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2
+    CHECK(std::abs((1 - u * u) * (alpha - beta * u) - (b - a * u) * (b - a * u)) <
+          1e-13 * (a * a + beta));
+  }
+  const int n = 400;
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const double x = (k + 0.5) * (M_PI / 2) / n, sx = std::sin(x);
+    sum += 1 / std::sqrt(beta * (u3 - (u1 + (u2 - u1) * sx * sx)));
+  }
+  CHECK(value(r, "nutation_period_s") == Approx(4 * sum * (M_PI / 2) / n).epsilon(1e-12));
+}
