@@ -40,6 +40,21 @@ TEST_CASE("lamina_tensor: defaults reproduce sections 1-2.4") {
   CHECK(j["figures"].empty());
 }
 
+TEST_CASE("lamina_tensor: an axis of any length is normalised: --axis 3,4,0 is (0.6, 0.8, 0)") {
+  const auto run = run_lab("lamina_tensor", "--axis 3,4,0 --omega 2 --json");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  // The corner tensor of a 1 x 2 plate of mass 1 (eq. 20): (4/3, -1/2; -1/2, 1/3), Izz 5/3.
+  const double n[2] = {0.6, 0.8}, w = 2;
+  const double Lx = w * (4.0 / 3 * n[0] - 0.5 * n[1]), Ly = w * (-0.5 * n[0] + 1.0 / 3 * n[1]);
+  CHECK(double(r["angular_momentum"][0]) == Approx(Lx).epsilon(1e-14));
+  CHECK(double(r["angular_momentum"][1]) == Approx(Ly).epsilon(1e-14));
+  CHECK(double(r["scalar_moment"]) ==
+        Approx(4.0 / 3 * n[0] * n[0] - n[0] * n[1] + 1.0 / 3 * n[1] * n[1]).epsilon(1e-14));
+  CHECK(double(r["kinetic_energy"]) == Approx(0.5 * w * (Lx * n[0] + Ly * n[1])).epsilon(1e-14));
+}
+
 TEST_CASE("lamina_tensor: --axis 1,0,0 needs the section 3.1 torque 0.500 ma^2 omega^2") {
   const auto run = run_lab("lamina_tensor", "--axis 1,0,0 --json");
   REQUIRE(run.status == 0);
@@ -219,6 +234,11 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
       {"--t-end 1e59", "--t-end"},
       {"--omega 1e200,1,1", "--omega"},
       {"--method rk4 --step 10", "--step"},
+      // below double precision's reach no step meets a tolerance
+      {"--method dopri5 --tolerance 1e-17", "--tolerance"},
+      {"--tolerance 1e-300", "--tolerance"},
+      {"--periods 2 --t-end 3", "--periods"},
+      {"--periods 0", "--periods"},
   };
   rigid::test::check_bad_inputs("poinsot", cases);
 }

@@ -101,12 +101,13 @@ class TopRecorder {
   void record(double t, const Eigen::Vector3d& w, const Eigen::Quaterniond& q) {
     double E, p_phi, p_psi;
     measure(w, q, E, p_phi, p_psi);
-    const double energy_error = std::abs(E - E0_) / scale_E_;
-    out_.energy_drift_rel = std::max(out_.energy_drift_rel, energy_error);
-    out_.p_phi_drift_rel = std::max(out_.p_phi_drift_rel, std::abs(p_phi - p_phi0_) * inv_L0_);
-    out_.p_psi_drift_rel = std::max(out_.p_psi_drift_rel, std::abs(p_psi - p_psi0_) * inv_L0_);
+    const Eigen::Vector3d errors((E - E0_) / scale_E_, (p_phi - p_phi0_) * inv_L0_,
+                                 (p_psi - p_psi0_) * inv_L0_);
+    out_.energy_drift_rel = std::max(out_.energy_drift_rel, std::abs(errors(0)));
+    out_.p_phi_drift_rel = std::max(out_.p_phi_drift_rel, std::abs(errors(1)));
+    out_.p_psi_drift_rel = std::max(out_.p_psi_drift_rel, std::abs(errors(2)));
     const Eigen::Quaterniond unit = q.normalized();
-    out_.samples.push_back({t, tilt_of(unit), energy_error, w, unit});
+    out_.samples.push_back({t, tilt_of(unit), std::abs(errors(0)), w, unit, errors});
   }
   HeavyTop top_;
   TopRun& out_;
@@ -143,10 +144,12 @@ TopRun integrate_heavy_top(const HeavyTop& top, const FreeBodyState& x0,
     SplitState x{{top.I * w0.x(), top.I * w0.y(), top.Is * w0.z()}, attitude(x0).normalized()};
     TopSplitting stepper = split;
     stats = integrate_on_grid(stepper, split, x, times, o, rec);
+    stats.evaluations = stats.steps * static_cast<std::size_t>(evaluations_per_step(o.method));
   } else {
     stats = integrate_sampled(HeavyTopRhs(top), x0, times, o, rec);
   }
   out.steps = stats.steps;
+  out.evaluations = stats.evaluations;
   return out;
 }
 
@@ -158,34 +161,89 @@ TopRun sample_exact(const HeavyTopExact& exact, const std::vector<double>& times
   return out;
 }
 
+namespace {
+
+// A completed run measured against the exact motion (as measure() in integrate.cpp).
+void measure(TopComparison& c, const TopRun& run, const HeavyTopExact& exact, double period) {
+  c.completed = true;
+  c.evaluations = run.evaluations;
+  std::vector<double> dE;
+  for (const TopSample& s : run.samples) {
+    c.t.push_back(s.t);
+    const double e = std::abs(s.theta - exact.theta(s.t));
+    c.theta_error.push_back(e);
+    c.energy_error.push_back(s.energy_error);
+    dE.push_back(s.invariant_errors(0));
+    // A NaN (a run that blew up) counts as an infinite error.
+    c.max_theta_error = std::isfinite(e) ? std::max(c.max_theta_error, e)
+                                         : std::numeric_limits<double>::infinity();
+  }
+  c.energy = invariant_error(c.t, dE, period);
+}
+
+// The comparison with only its settings: a run that could not finish.
+TopComparison not_completed(const OdeOptions& options) {
+  TopComparison c;
+  c.options = options;
+  return c;
+}
+
+}  // namespace
+
 std::vector<TopComparison> compare_top_methods(const HeavyTopExact& exact,
                                                const std::vector<double>& times, double period,
                                                const OdeOptions& options, std::size_t max_steps) {
   const FreeBodyState x0 = heavy_top_state(exact.angles(0.0));
   std::vector<TopComparison> out;
   for (const Method m : kAllMethods) {
-    TopComparison c;
-    c.options = options;
-    c.options.method = m;
-    c.options.max_steps = max_steps;
+    OdeOptions o = options;
+    o.method = m;
+    o.max_steps = max_steps;
     const std::vector<double> each_times =
         is_adaptive(m) ? times : sample_times(times.back(), period, options.step);
-    TopRun run;
+    TopComparison c;
+    c.options = o;
     try {
-      run = integrate_heavy_top(exact.top(), x0, each_times, c.options);
+      measure(c, integrate_heavy_top(exact.top(), x0, each_times, o), exact, period);
     } catch (const std::exception&) {
-      out.push_back(std::move(c));  // more steps than allowed: not completed
-      continue;
+      c = not_completed(o);  // more steps than allowed
     }
-    c.completed = true;
-    for (const TopSample& s : run.samples) {
-      c.t.push_back(s.t);
-      const double e = std::abs(s.theta - exact.theta(s.t));
-      c.theta_error.push_back(e);
-      c.energy_error.push_back(s.energy_error);
-      // A NaN (a run that blew up) counts as an infinite error.
-      c.max_theta_error = std::isfinite(e) ? std::max(c.max_theta_error, e)
-                                           : std::numeric_limits<double>::infinity();
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<TopComparison> compare_top_methods_at_cost(const HeavyTopExact& exact, double period,
+                                                       double periods,
+                                                       double evaluations_per_period,
+                                                       double samples_per_period) {
+  const FreeBodyState x0 = heavy_top_state(exact.angles(0.0));
+  const double t_end = periods * period;
+  const auto max_samples = static_cast<std::size_t>(std::ceil(periods * samples_per_period)) + 1;
+  std::vector<TopComparison> out;
+  for (const Method m : kAllMethods) {
+    OdeOptions o;
+    o.method = m;
+    // A run dearer than 4x the budget is not a candidate (each step costs >= 1).
+    o.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
+    const auto run_with = [&](const OdeOptions& settings) {
+      const std::vector<double> times = sample_times(
+          t_end, period, is_adaptive(m) ? 0.0 : settings.step, samples_per_period, max_samples);
+      return integrate_heavy_top(exact.top(), x0, times, settings);
+    };
+    o = options_at_cost(o, period, evaluations_per_period, [&](const OdeOptions& settings) {
+      try {
+        return static_cast<double>(run_with(settings).evaluations) / periods;
+      } catch (const std::exception&) {
+        return std::numeric_limits<double>::infinity();
+      }
+    });
+    TopComparison c;
+    c.options = o;
+    try {
+      measure(c, run_with(o), exact, period);
+    } catch (const std::exception&) {
+      c = not_completed(o);
     }
     out.push_back(std::move(c));
   }

@@ -37,15 +37,15 @@ class Recorder {
     const double qn = q.norm();
     out_.quaternion_norm_drift = std::max(out_.quaternion_norm_drift, std::abs(qn - 1.0));
     const double T = kinetic_energy(I_, w), L = angular_momentum_magnitude(I_, w);
-    if (T0_ > 0.0) out_.energy_drift_rel = std::max(out_.energy_drift_rel, std::abs(T - T0_) / T0_);
-    if (L0_ > 0.0)
-      out_.momentum_drift_rel = std::max(out_.momentum_drift_rel, std::abs(L - L0_) / L0_);
+    const double dT = T0_ > 0.0 ? (T - T0_) / T0_ : 0.0, dL = L0_ > 0.0 ? (L - L0_) / L0_ : 0.0;
+    out_.energy_drift_rel = std::max(out_.energy_drift_rel, std::abs(dT));
+    out_.momentum_drift_rel = std::max(out_.momentum_drift_rel, std::abs(dL));
     if (L0_ > 0.0) {
       // No torque: L is fixed in space, so this measures the attitude's error too.
       const Eigen::Vector3d L_space = (q.normalized() * L_body(I_, w)) - L_space0_;
       out_.L_space_drift_rel = std::max(out_.L_space_drift_rel, L_space.norm() / L0_);
     }
-    out_.samples.push_back({t, w, Eigen::Quaterniond(q.coeffs() / qn)});
+    out_.samples.push_back({t, w, Eigen::Quaterniond(q.coeffs() / qn), dT, dL});
   }
 
  private:
@@ -148,6 +148,7 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
     LiePoissonState x{L_body(I, omega_body(x0)), attitude(x0)};
     LiePoissonStepper stepper(x.L_body);
     stats = integrate_on_grid(stepper, split, x, times, o, rec);
+    stats.evaluations = stats.steps * static_cast<std::size_t>(evaluations_per_step(o.method));
   } else if (o.project_invariants) {
     stats = integrate_sampled(EulerRhs{I}, x0, times, o, rec, InvariantProjection(I, x0));
   } else {
@@ -155,6 +156,7 @@ IntegrationResult integrate_free_body(const PrincipalMoments& I, const FreeBodyS
   }
   out.steps = stats.steps;
   out.rejected_steps = stats.rejected_steps;
+  out.evaluations = stats.evaluations;
   return out;
 }
 
@@ -211,6 +213,40 @@ std::vector<double> energy_errors(const IntegrationResult& run, const FreeBodyEx
   return errors;
 }
 
+namespace {
+
+// A completed run measured against the exact motion: its errors sample by sample,
+// its cost, and its invariants' largest error and drift per period.
+void measure(MethodComparison& c, const IntegrationResult& run, const FreeBodyExact& exact,
+             double period) {
+  c.completed = true;
+  c.evaluations = run.evaluations;
+  std::vector<double> dT, dL;
+  for (const FreeBodySample& sample : run.samples) {
+    c.t.push_back(sample.t);
+    dT.push_back(sample.energy_error);
+    dL.push_back(sample.momentum_error);
+  }
+  c.omega_error = omega_errors(run, exact);
+  c.energy_error = energy_errors(run, exact);
+  for (double e : c.omega_error) {
+    // A NaN (a run that blew up) counts as an infinite error.
+    c.max_omega_error = std::isfinite(e) ? std::max(c.max_omega_error, e)
+                                         : std::numeric_limits<double>::infinity();
+  }
+  c.energy = invariant_error(c.t, dT, period);
+  c.momentum = invariant_error(c.t, dL, period);
+}
+
+// The comparison with only its settings: a run that could not finish.
+MethodComparison not_completed(const IntegrateOptions& options) {
+  MethodComparison c;
+  c.options = options;
+  return c;
+}
+
+}  // namespace
+
 std::vector<MethodComparison> compare_methods(const FreeBodyExact& exact,
                                               const std::vector<double>& times, double period,
                                               const IntegrateOptions& options,
@@ -224,21 +260,50 @@ std::vector<MethodComparison> compare_methods(const FreeBodyExact& exact,
     c.options.max_steps = max_steps;
     const std::vector<double> each_times =
         is_adaptive(m) ? times : sample_times(times.back(), period, options.step);
-    IntegrationResult run;
     try {
-      run = integrate_free_body(exact.moments(), exact.state(0.0), each_times, c.options);
+      const IntegrationResult run =
+          integrate_free_body(exact.moments(), exact.state(0.0), each_times, c.options);
+      measure(c, run, exact, period);
     } catch (const std::exception&) {
-      out.push_back(std::move(c));  // more steps than allowed: not completed
-      continue;
+      c = not_completed(c.options);  // more steps than allowed
     }
-    c.completed = true;
-    for (const FreeBodySample& sample : run.samples) c.t.push_back(sample.t);
-    c.omega_error = omega_errors(run, exact);
-    c.energy_error = energy_errors(run, exact);
-    for (double e : c.omega_error) {
-      // A NaN (a run that blew up) counts as an infinite error.
-      c.max_omega_error = std::isfinite(e) ? std::max(c.max_omega_error, e)
-                                           : std::numeric_limits<double>::infinity();
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<MethodComparison> compare_methods_at_cost(const FreeBodyExact& exact, double period,
+                                                      double periods,
+                                                      double evaluations_per_period,
+                                                      double samples_per_period) {
+  const double t_end = periods * period;
+  const auto max_samples = static_cast<std::size_t>(std::ceil(periods * samples_per_period)) + 1;
+  std::vector<MethodComparison> out;
+  for (const Method m : kAllMethods) {
+    MethodComparison c;
+    c.options.method = m;
+    // A run dearer than 4x the budget is not a candidate (each step costs >= 1).
+    c.options.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
+    const auto run_with = [&](const IntegrateOptions& o) {
+      const std::vector<double> times =
+          sample_times(t_end, period, is_adaptive(m) ? 0.0 : o.step, samples_per_period, max_samples);
+      return integrate_free_body(exact.moments(), exact.state(0.0), times, o);
+    };
+    const OdeOptions found = options_at_cost(c.options, period, evaluations_per_period,
+                                             [&](const OdeOptions& o) {
+      IntegrateOptions io = c.options;
+      static_cast<OdeOptions&>(io) = o;
+      try {
+        return static_cast<double>(run_with(io).evaluations) / periods;
+      } catch (const std::exception&) {
+        return std::numeric_limits<double>::infinity();
+      }
+    });
+    static_cast<OdeOptions&>(c.options) = found;
+    try {
+      measure(c, run_with(c.options), exact, period);
+    } catch (const std::exception&) {
+      c = not_completed(c.options);
     }
     out.push_back(std::move(c));
   }

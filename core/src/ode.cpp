@@ -61,6 +61,37 @@ int fixed_step_order(Method m) {
   }
 }
 
+std::string_view method_kind(Method m) {
+  switch (m) {
+    case Method::kSplitting:
+      return "symplectic splitting, order 2";
+    case Method::kSplitting4:
+      return "symplectic splitting, order 4";
+    case Method::kRk4:
+      return "fixed-step Runge-Kutta, order 4";
+    case Method::kDopri5:
+      return "adaptive Runge-Kutta, order 5(4)";
+    case Method::kRkf78:
+      return "adaptive Runge-Kutta-Fehlberg, order 7(8)";
+    case Method::kBulirschStoer:
+      return "adaptive extrapolation (Bulirsch-Stoer)";
+  }
+  return "";
+}
+
+int evaluations_per_step(Method m) {
+  switch (m) {
+    case Method::kSplitting:
+      return 1;
+    case Method::kSplitting4:
+      return 5;
+    case Method::kRk4:
+      return 4;
+    default:
+      return 0;
+  }
+}
+
 void validate_run(const OdeOptions& o, const std::vector<double>& times, bool after_step) {
   if (times.empty()) throw std::invalid_argument("sample times must not be empty");
   for (std::size_t i = 0; i < times.size(); ++i) {

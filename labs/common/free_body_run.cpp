@@ -20,7 +20,9 @@ void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::str
                                  const std::string& step_default, bool offer_project) {
   std::vector<std::string> methods{"exact"};
   for (const Method m : kAllMethods) methods.emplace_back(method_name(m));
-  lab.choice("--method", in.method, methods, method_help).numerical();
+  lab.choice("--method", in.method, methods, method_help + " (exact: the closed form; " +
+                                                  method_help_list() + ")")
+      .numerical();
   lab.number("--tolerance", in.tolerance, "relative and absolute tolerance of adaptive methods")
       .open_range(0.0, 1.0)
       .numerical();
@@ -127,11 +129,93 @@ void refuse_runaway(const std::string& option, double drift) {
   }
 }
 
-void report_drifts(Lab& lab, const IntegrationResult& run) {
+void report_invariant(Lab& lab, const std::string& key, const std::string& error_label,
+                      const std::vector<double>& t, const std::vector<double>& e, double period) {
+  const InvariantError error = invariant_error(t, e, period);
+  lab.result(key + "_error_max_rel", error_label, error.max_rel, "");
+  lab.result(key + "_drift_per_period_rel", "  its drift: the fitted trend a period",
+             error.drift_per_period_rel, "");
+  lab.alias(key + "_drift_rel", key + "_error_max_rel");  // the maximum's old name
+}
+
+void report_drifts(Lab& lab, const IntegrationResult& run, double period) {
   // Relative to the start; roundoff for the exact motion.
-  lab.result("energy_drift_rel", "max |T - T0| / T0", run.energy_drift_rel, "");
-  lab.result("momentum_drift_rel", "max ||L| - |L0|| / |L0|", run.momentum_drift_rel, "");
+  std::vector<double> t, dT, dL;
+  for (const FreeBodySample& s : run.samples) {
+    t.push_back(s.t);
+    dT.push_back(s.energy_error);
+    dL.push_back(s.momentum_error);
+  }
+  report_invariant(lab, "energy", "max |T - T0| / T0", t, dT, period);
+  report_invariant(lab, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period);
   lab.result("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel, "");
+}
+
+void declare_end_time(Lab& lab, double& t_end, double& periods, const std::string& period_name,
+                      const std::string& default_text) {
+  lab.number("--t-end", t_end, "end time").unit("s").positive().numerical().lab_default(
+      default_text);
+  lab.number("--periods", periods, "end time as a number of " + period_name + "s (instead of --t-end)")
+      .positive()
+      .numerical()
+      .lab_default("--t-end's");
+}
+
+double end_time(const Lab& lab, double t_end, double periods, double scale, double default_t_end) {
+  if (lab.given("--periods") && lab.given("--t-end")) {
+    throw UsageError("--periods", "give --t-end or --periods, not both");
+  }
+  if (lab.given("--t-end")) return t_end;
+  if (lab.given("--periods")) return periods * scale;
+  return default_t_end;
+}
+
+void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
+                       double evaluations_per_period, double periods) {
+  lab.section(fmt::format("which method drifts: every method at {:g} evaluations a period, "
+                          "{:g} periods (a symplectic method's energy error stays in a band)",
+                          evaluations_per_period, periods));
+  lab.result("equal_cost_evaluations_per_period", "right-hand-side evaluations a period (a "
+             "splitting's Strang step counts one)", evaluations_per_period, "");
+  lab.result("equal_cost_periods", "periods run", periods, "");
+  const EqualCostRow* least = nullptr;
+  for (const EqualCostRow& row : rows) {
+    const std::string name(method_name(row.options.method));
+    const std::string key = json_key(name);
+    const std::string setting =
+        is_adaptive(row.options.method) ? fmt::format("tol {:.2g}", row.options.rel_tol)
+                                        : fmt::format("h = {:.3g} s", row.options.step);
+    const std::string label = fmt::format("{:<15} {:<15} energy drift a period", name, setting);
+    if (!row.completed) {
+      lab.result_none("equal_cost_energy_drift_per_period_rel_" + key, label, "",
+                      "could not finish at this cost");
+      lab.result_none("equal_cost_energy_error_max_rel_" + key, "  max |T - T0| / T0", "",
+                      "could not finish at this cost");
+      continue;
+    }
+    lab.result("equal_cost_energy_drift_per_period_rel_" + key, label,
+               row.energy.drift_per_period_rel, "");
+    lab.result("equal_cost_energy_error_max_rel_" + key, "  largest energy error",
+               row.energy.max_rel, "");
+    if (least == nullptr || std::abs(row.energy.drift_per_period_rel) <
+                                std::abs(least->energy.drift_per_period_rel)) {
+      least = &row;
+    }
+  }
+  if (least != nullptr) {
+    const Method m = least->options.method;
+    lab.result_text("least_energy_drift", "least energy drift at equal cost",
+                    std::string(method_name(m)));
+    lab.result_text("least_energy_drift_kind", "  its kind", std::string(method_kind(m)));
+  }
+}
+
+std::string method_help_list() {
+  std::string text;
+  for (const Method m : kAllMethods) {
+    text += fmt::format("{}{}: {}", text.empty() ? "" : "; ", method_name(m), method_kind(m));
+  }
+  return text;
 }
 
 }  // namespace rigid::lab

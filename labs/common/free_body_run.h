@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/lab.h"
+#include "rigid/drift.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/integrate.h"
 
@@ -69,8 +70,41 @@ void check_phase_digits(double t_end, double scale);
 /// would mean nothing.
 void refuse_runaway(const std::string& option, double drift);
 
-/// Reports the run's drift of T, |L| and L in space, relative to the start
-/// (energy_drift_rel, momentum_drift_rel, L_space_drift_rel).
-void report_drifts(Lab& lab, const IntegrationResult& run);
+/// Reports one invariant's signed relative errors `e` at times `t`: its largest
+/// (<key>_error_max_rel, labelled `error_label`) and its drift per `period`
+/// (<key>_drift_per_period_rel), and <key>_drift_rel, the maximum's old name, in JSON.
+void report_invariant(Lab& lab, const std::string& key, const std::string& error_label,
+                      const std::vector<double>& t, const std::vector<double>& e, double period);
+
+/// Reports how the run kept T and |L| (report_invariant): for each, its largest relative error
+/// (energy_error_max_rel, momentum_error_max_rel) and its secular drift, the fitted
+/// trend per `period` (energy_drift_per_period_rel, momentum_drift_per_period_rel);
+/// and L's largest error in space (L_space_drift_rel). energy_drift_rel and
+/// momentum_drift_rel stay one release as JSON aliases of the maxima.
+void report_drifts(Lab& lab, const IntegrationResult& run, double period);
+
+/// Declares --t-end (s) and --periods N, the end time as N times the lab's `period_name`
+/// ("polhode period"); `default_text` says what the lab does when neither is given.
+void declare_end_time(Lab& lab, double& t_end, double& periods, const std::string& period_name,
+                      const std::string& default_text);
+/// The end time asked for: --t-end, or --periods times `scale`; neither: `default_t_end`.
+/// Both given is a UsageError naming --periods.
+double end_time(const Lab& lab, double t_end, double periods, double scale, double default_t_end);
+
+/// One method of a comparison at equal cost, as the table reports it.
+struct EqualCostRow {
+  OdeOptions options;            ///< the method and the step or tolerance that cost the budget
+  bool completed = false;
+  std::size_t evaluations = 0;   ///< of the whole run
+  InvariantError energy;         ///< the energy's largest error and drift per period
+};
+/// The section that answers "which method drifts": every method at the same
+/// `evaluations_per_period` over `periods` periods, its energy drift per period and
+/// largest energy error (equal_cost_energy_drift_per_period_rel_<method>,
+/// equal_cost_energy_error_max_rel_<method>), and the method that drifts least.
+void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
+                       double evaluations_per_period, double periods);
+/// A method and its kind for --help: "splitting (symplectic splitting, order 2)".
+std::string method_help_list();
 
 }  // namespace rigid::lab

@@ -8,32 +8,32 @@ namespace rigid::lab {
 
 std::string method_label(const OdeOptions& o) {
   return std::string(method_name(o.method)) + ", " +
-         (is_adaptive(o.method) ? fmt::format("tol {:g}", o.rel_tol)
+         (is_adaptive(o.method) ? fmt::format("tol {:.2g}", o.rel_tol)
                                 : fmt::format("h = {:.3g} s", o.step));
 }
 
-render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods,
-                                const std::string& error_title, const std::string& error_label,
-                                const std::string& energy_label) {
+render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
+                                const TimeAxis& time, const std::string& error_title,
+                                const std::string& error_label, const std::string& energy_label) {
+  const bool in_periods = time.period > 0.0;
+  const std::string t_label = in_periods ? "t (" + time.name + ")" : "t (s)";
   render::Plot2D plot(1, 2);
-  plot.title = "integrators against the exact solution";
+  plot.title = title;
   render::Panel& error = plot.panel(0, 0);
-  error.title = error_title;
-  error.x.label = "t (s)";
-  error.y = {error_label, render::Scale::kLog10, 1e-17};
+  error.title = error_title + ", largest so far";
+  error.x.label = t_label;
+  error.y = {error_label, render::Scale::kLog10};
   render::Panel& energy = plot.panel(0, 1);
-  energy.title = "energy error";
-  energy.x.label = "t (s)";
-  energy.y = {energy_label, render::Scale::kLog10, 1e-17};
-  // Zero errors have no logarithm: show them at a floor below double roundoff.
-  // The first sample (t = 0) has no error to show on a log axis.
-  const auto floored = [](const std::vector<double>& v) {
-    std::vector<double> out(v.begin() + 1, v.end());
-    for (double& x : out) x = std::max(x, 1e-17);
+  energy.title = "energy error, largest so far";
+  energy.x.label = t_label;
+  energy.y = {energy_label, render::Scale::kLog10};
+  // The first sample (t = 0) has no error to show on a log axis; a zero error has
+  // no logarithm either and sits at a floor below double roundoff.
+  const auto running_max = [](const std::vector<double>& v) {
+    std::vector<double> out;
+    double most = 1e-17;
+    for (auto it = v.begin() + 1; it != v.end(); ++it) out.push_back(most = std::max(most, *it));
     return out;
-  };
-  const auto after_start = [](const std::vector<double>& v) {
-    return std::vector<double>(v.begin() + 1, v.end());
   };
   const render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed,
                                  render::Dash::kSolid,   render::Dash::kDashDot,
@@ -41,9 +41,12 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods,
   for (std::size_t k = 0; k < methods.size(); ++k) {
     // A method that did not run, or blew up, has no curve to show.
     if (!methods[k].drawn || methods[k].t.size() < 2) continue;
-    const std::vector<double> t = after_start(methods[k].t);
-    auto& a = error.add_line(t, floored(methods[k].error), methods[k].name);
-    auto& b = energy.add_line(t, floored(methods[k].energy_error), methods[k].name);
+    std::vector<double> t(methods[k].t.begin() + 1, methods[k].t.end());
+    if (in_periods) {
+      for (double& x : t) x /= time.period;
+    }
+    auto& a = error.add_line(t, running_max(methods[k].error), methods[k].name);
+    auto& b = energy.add_line(t, running_max(methods[k].energy_error), methods[k].name);
     a.color = b.color = render::palette_color(k);
     a.dash = b.dash = dashes[k % 6];
   }

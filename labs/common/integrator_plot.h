@@ -17,13 +17,23 @@ struct MethodCurve {
   std::vector<double> t, error, energy_error;
 };
 
-/// A method and its setting as a legend names it: "dopri5, tol 1e-10" or "rk4, h = 0.001 s".
+/// A method and its setting as a legend names it: "dopri5, tol 4.3e-06" or "rk4, h = 0.001 s".
 std::string method_label(const OdeOptions& options);
 
-/// Two panels: `error_label` (a log axis) and |E - E0| against t; the first sample
-/// (t = 0, no error) is left out and zeros sit at a floor below double roundoff.
-render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods,
-                                const std::string& error_title, const std::string& error_label,
-                                const std::string& energy_label);
+/// The time axis of the plot: in periods of the motion (`period` > 0, named by
+/// `name`, e.g. "polhode periods"), or in seconds (period 0).
+struct TimeAxis {
+  double period = 0.0;
+  std::string name;
+};
+
+/// Two panels under `title`: `error_label` and |E - E0| (`energy_label`), each
+/// the largest so far at each t, on log axes: what a run has lost by then, its
+/// trend plain where the error itself oscillates sample to sample (a symplectic
+/// method's band shows as a level line, a steady drift as a rising one). The
+/// first sample (t = 0, no error) is left out; zeros sit at a floor below roundoff.
+render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
+                                const TimeAxis& time, const std::string& error_title,
+                                const std::string& error_label, const std::string& energy_label);
 
 }  // namespace rigid::lab

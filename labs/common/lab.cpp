@@ -372,6 +372,11 @@ void Lab::result_text(const std::string& key, const std::string& label, const st
   rows_.push_back({label, value, "", ""});
 }
 
+void Lab::alias(const std::string& old_key, const std::string& key) {
+  results_[old_key] = results_.at(key);
+  units_[old_key] = units_.at(key);
+}
+
 void Lab::note(const std::string& text) {
   notes_.push_back(text);
 }

@@ -147,6 +147,9 @@ class Lab {
                    const std::string& why);
   /// A text result (e.g. a method name).
   void result_text(const std::string& key, const std::string& label, const std::string& value);
+  /// A JSON-only second name for a result already reported (a key renamed, kept one
+  /// release under its old name; the schema marks it deprecated). Not in the table.
+  void alias(const std::string& old_key, const std::string& key);
   /// A note under the table and in JSON "notes"; errata start with "errata:".
   void note(const std::string& text);
 

@@ -77,12 +77,18 @@ void draw(FigureSet& set, const Run& run) {
           omega_plot(run.omega0, run.samples));
   std::vector<MethodCurve> curves;
   for (const MethodComparison& m : run.methods) {
-    curves.push_back({method_label(m.options), m.completed && std::isfinite(m.max_omega_error), m.t, m.omega_error,
-                      m.energy_error});
+    curves.push_back({method_label(m.options), m.completed && std::isfinite(m.max_omega_error),
+                      m.t, m.omega_error, m.energy_error});
   }
-  set.add("integrators", "every integrator against the exact solution",
-          integrators_plot(curves, "error in \\omega", "|\\omega - \\omega_{exact}| / |\\omega_0|",
-                           "|T - T_0| / T_0"));
+  set.add("integrators",
+          fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
+                      "{} against the exact solution",
+                      run.evaluations_per_period, run.periods, run.period_name),
+          integrators_plot(curves,
+                           fmt::format("at equal cost: {:g} evaluations a period",
+                                       run.evaluations_per_period),
+                           {run.period, run.period_name}, "error in \\omega",
+                           "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0"));
 }
 
 }  // namespace rigid::lab::poinsot

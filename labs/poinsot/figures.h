@@ -21,7 +21,8 @@ struct Inputs {
   Eigen::Vector3d ellipsoid{3, 2, 1};  ///< semi-axes A, B, C
   double mass = kPi;
   Eigen::Vector3d omega0{1, 1, 1};
-  double t_end = 0.0;  ///< 0: three polhode periods
+  double t_end = 0.0;    ///< 0: three polhode periods
+  double periods = 0.0;  ///< --periods: t_end as a number of polhode periods
   IntegrationInputs integration;  ///< "exact" by default; step 0: period / 2000
 };
 
@@ -30,7 +31,11 @@ struct Run {
   const FreeBodyExact& motion;
   Eigen::Vector3d omega0;
   const std::vector<FreeBodySample>& samples;  ///< the lab's own run (exact or integrated)
-  const std::vector<MethodComparison>& methods;  ///< every integrator at the lab's settings
+  const std::vector<MethodComparison>& methods;  ///< every integrator at the same cost
+  double evaluations_per_period = 0.0;            ///< that cost
+  double periods = 0.0;                           ///< over this many periods
+  double period = 0.0;                            ///< of this length: the time scale, s
+  std::string period_name;                        ///< "polhode periods"
 };
 
 /// Hands the lab's figures to the set.

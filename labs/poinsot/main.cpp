@@ -28,6 +28,11 @@ constexpr std::size_t kMaxSteps = 20'000'000;
 // Each method of the comparison with the others gets at most this many steps:
 // the comparison then costs at most a few hundred ms.
 constexpr std::size_t kMaxComparisonSteps = 20'000;
+// The comparison at equal cost: this many right-hand-side evaluations a polhode
+// period over this many periods (a few tens of ms), enough for rk4's steady energy
+// drift to leave the splittings' bounded band behind.
+constexpr double kEqualCostEvaluations = 200.0;
+constexpr double kEqualCostPeriods = 100.0;
 
 }  // namespace
 
@@ -48,8 +53,8 @@ int main(int argc, char** argv) {
       .unit("rad/s")
       .nonzero()
       .symbol("\\omega_0");
-  lab.number("--t-end", in.t_end, "end time").unit("s").positive().numerical().lab_default(
-      "three polhode periods");
+  rigid::lab::declare_end_time(lab, in.t_end, in.periods, "polhode period",
+                               "three polhode periods");
   rigid::lab::declare_integration_options(lab, in.integration, "how omega(t) is computed",
                                           "polhode period / 2000");
   lab.enable_csv();
@@ -90,7 +95,7 @@ int main(int argc, char** argv) {
     lab.result_text("regime", "motion", regime);
 
     const double scale = rigid::lab::time_scale(exact);
-    const double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
+    const double t_end = rigid::lab::end_time(lab, in.t_end, in.periods, scale, 3.0 * scale);
     // Two hundred samples a period; a fixed-step method is sampled on its own step grid.
     const rigid::lab::RunPlan plan =
         rigid::lab::plan_run(lab, in.integration, t_end, scale, kMaxSteps);
@@ -99,11 +104,15 @@ int main(int argc, char** argv) {
 
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));
     lab.result_text("method", "method", in.integration.method);
+    if (in.integration.method != "exact") {
+      lab.result_text("method_kind", "  its kind",
+                      std::string(rigid::method_kind(options.method)));
+    }
     rigid::lab::report_plan(lab, plan);
     const rigid::IntegrationResult run =
         rigid::lab::run_free_body(lab, exact, in.integration, options, times);
     lab.result("omega_end", "omega at t_end", run.samples.back().omega_body, "rad/s");
-    rigid::lab::report_drifts(lab, run);
+    rigid::lab::report_drifts(lab, run, scale);
 
     lab.section(fmt::format("every integrator against the exact solution (tolerance {:g}, step {:.4g} s)",
                             in.integration.tolerance, options.step));
@@ -123,6 +132,17 @@ int main(int argc, char** argv) {
         lab.result(key, label, c.max_omega_error, "");
       }
     }
+
+    // "Which method drifts" answered at equal cost, over enough periods for a
+    // symplectic method's bounded band to tell from a steady drift.
+    const std::vector<rigid::MethodComparison> at_cost = rigid::compare_methods_at_cost(
+        exact, scale, kEqualCostPeriods, kEqualCostEvaluations);
+    std::vector<rigid::lab::EqualCostRow> cost_rows;
+    for (const rigid::MethodComparison& c : at_cost) {
+      cost_rows.push_back({c.options, c.completed && std::isfinite(c.max_omega_error),
+                           c.evaluations, c.energy});
+    }
+    rigid::lab::report_equal_cost(lab, cost_rows, kEqualCostEvaluations, kEqualCostPeriods);
 
     lab.section("4 Poinsot's ellipsoids through omega0 (eqs. 79-82)");
     const rigid::PoinsotEllipsoids ellipsoids = rigid::poinsot_ellipsoids(I, in.omega0);
@@ -166,7 +186,9 @@ int main(int argc, char** argv) {
     lab.series(std::move(series));
 
     lab.figures([&](rigid::lab::FigureSet& set) {
-      rigid::lab::poinsot::draw(set, {exact, in.omega0, run.samples, methods});
+      rigid::lab::poinsot::draw(
+          set, {exact, in.omega0, run.samples, at_cost, kEqualCostEvaluations, kEqualCostPeriods,
+                scale, std::isfinite(exact.period()) ? "polhode periods" : "turns"});
     });
   });
 }

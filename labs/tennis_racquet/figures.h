@@ -25,6 +25,7 @@ struct Inputs {
   double omega = 10.0;          ///< the spin, rad/s
   double perturbation = 0.01;   ///< transverse share of omega at launch
   double t_end = 0.0;           ///< 0: one polhode period of the spin about axis 2 (two flips)
+  double periods = 0.0;         ///< --periods: t_end as a number of polhode periods
   IntegrationInputs integration{"dopri5"};  ///< the cross-check
 };
 

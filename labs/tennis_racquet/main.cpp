@@ -52,8 +52,8 @@ int main(int argc, char** argv) {
              "transverse share of omega at launch, along the next axis (1->2, 2->3, 3->1)")
       .open_range(0.0, 0.5)
       .symbol("\\epsilon");
-  lab.number("--t-end", in.t_end, "end time").unit("s").positive().numerical().lab_default(
-      "one polhode period of the spin about axis 2: two flips");
+  rigid::lab::declare_end_time(lab, in.t_end, in.periods, "polhode period",
+                               "one polhode period of the spin about axis 2: two flips");
   rigid::lab::declare_integration_options(lab, in.integration,
                                           "the integrator that cross-checks the exact motion "
                                           "(exact: none)",
@@ -156,8 +156,9 @@ int main(int argc, char** argv) {
     }
     // The handle stays near the plane across L (spins about 2 and 3) or near L (about 1).
     // Over a polhode period, or over the run where there is none (the separatrix).
-    const double t_end =
-        lab.given("--t-end") ? in.t_end : rigid::lab::time_scale(launches[1]);
+    const double scale = rigid::lab::time_scale(motion);
+    const double t_end = rigid::lab::end_time(lab, in.t_end, in.periods, scale,
+                                              rigid::lab::time_scale(launches[1]));
     const rigid::CosineRange handle = rigid::direction_cosine_range(
         motion, 0, std::isfinite(motion.period()) ? motion.period() : t_end);
     const double handle_max = std::max(std::abs(handle.min), std::abs(handle.max));
@@ -171,14 +172,13 @@ int main(int argc, char** argv) {
                rigid::rad_to_deg(excursion), "deg");
 
     // Two flips: one polhode period of the spin about 2 (its time scale, if it does not flip).
-    const double scale = rigid::lab::time_scale(motion);
     const rigid::lab::RunPlan plan =
         rigid::lab::plan_run(lab, in.integration, t_end, scale, kMaxSteps);
     lab.section(fmt::format("cross-check: {} to t_end = {:g} s", in.integration.method, t_end));
     rigid::lab::report_plan(lab, plan);
     const rigid::IntegrationResult run =
         rigid::lab::run_free_body(lab, motion, in.integration, plan.options, plan.times);
-    rigid::lab::report_drifts(lab, run);
+    rigid::lab::report_drifts(lab, run, scale);
 
     if (predicted[1].rate != simplified[1].rate) {
       lab.note(fmt::format(

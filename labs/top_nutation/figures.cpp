@@ -222,8 +222,19 @@ void draw(FigureSet& set, const Figures& f) {
     curves.push_back({method_label(c.options), c.completed && std::isfinite(c.max_theta_error),
                       c.t, deg, c.energy_error});
   }
-  set.add("integrators", "every integrator against the exact theta",
-          integrators_plot(curves, "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)",
+  const bool equal_cost = f.evaluations_per_period > 0.0;
+  set.add("integrators",
+          equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
+                                   "nutation period) over {:g} periods against the exact theta",
+                                   f.evaluations_per_period, f.periods)
+                     : "every integrator against the exact theta",
+          integrators_plot(curves,
+                           equal_cost ? fmt::format("at equal cost: {:g} evaluations a period",
+                                                    f.evaluations_per_period)
+                                      : "integrators against the exact solution",
+                           equal_cost ? TimeAxis{f.motion.nutation_period(), "nutation periods"}
+                                      : TimeAxis{},
+                           "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)",
                            "|E - E_0| / (T_0 + mgl)"));
 }
 

@@ -29,6 +29,7 @@ struct Inputs {
   double thetadot0 = 0.0;
   double phidot0 = 0.0;
   double t_end = 0.0;       ///< 0: three nutation periods
+  double periods = 0.0;     ///< --periods: t_end as a number of nutation periods
   IntegrationInputs integration;  ///< "exact" by default; step 0: nutation period / 2000
 };
 
@@ -37,9 +38,12 @@ struct Figures {
   const HeavyTopExact& motion;
   const TopRun& run;                           ///< the lab's run (exact or integrated)
   const TopRun& integrated;                    ///< an integrated run beside the exact one
-  const std::vector<TopComparison>& methods;   ///< every integrator at the lab's settings
+  const std::vector<TopComparison>& methods;   ///< every integrator, at the same cost if
+                                               ///< evaluations_per_period > 0
   double arm = 0.04, disk_radius = 0.05;       ///< for drawing the top, m
   double t_end = 0.0;
+  double evaluations_per_period = 0.0;         ///< the comparison's cost (0: the lab's settings)
+  double periods = 0.0;                        ///< over this many nutation periods
 };
 
 /// Hands the lab's figures to the set.

@@ -31,6 +31,9 @@ constexpr double kRpm = 2 * rigid::kPi / 60.0;  // rad/s per rpm
 constexpr std::size_t kMaxSteps = 20'000'000;
 // Each method of the comparison gets at most this many steps.
 constexpr std::size_t kMaxComparisonSteps = 20'000;
+// The comparison at equal cost: evaluations a nutation period, and periods.
+constexpr double kEqualCostEvaluations = 200.0;
+constexpr double kEqualCostPeriods = 100.0;
 
 // The section 8.1 example's numbers from the rounded spin the text uses.
 double rounded(double x, int digits) {
@@ -63,8 +66,8 @@ int main(int argc, char** argv) {
       .symbol("\\theta-dot_0");
   lab.number("--phidot0", in.phidot0, "initial precession rate phi_dot").unit("rad/s")
       .symbol("\\phi-dot_0");
-  lab.number("--t-end", in.t_end, "end time").unit("s").positive().numerical().lab_default(
-      "three nutation periods");
+  rigid::lab::declare_end_time(lab, in.t_end, in.periods, "nutation period",
+                               "three nutation periods");
   rigid::lab::declare_integration_options(lab, in.integration, "how the motion is computed",
                                           "nutation period / 2000", false);
   lab.enable_csv();
@@ -192,7 +195,7 @@ int main(int argc, char** argv) {
     const double scale = sleeping || !std::isfinite(motion.nutation_period())
                              ? 2 * rigid::kPi / std::max(std::abs(S), 1e-300)
                              : motion.nutation_period();
-    const double t_end = lab.given("--t-end") ? in.t_end : 3.0 * scale;
+    const double t_end = rigid::lab::end_time(lab, in.t_end, in.periods, scale, 3.0 * scale);
     const rigid::lab::RunPlan plan =
         rigid::lab::plan_run(lab, in.integration, t_end, scale, kMaxSteps);
     const rigid::IntegrateOptions& options = plan.options;
@@ -200,6 +203,9 @@ int main(int argc, char** argv) {
     const bool fixed = plan.fixed;
     lab.section(fmt::format("{} to t_end = {:g} s", in.integration.method, t_end));
     rigid::lab::report_plan(lab, plan);
+    if (in.integration.method != "exact") {
+      lab.result_text("method_kind", "method", std::string(rigid::method_kind(options.method)));
+    }
     rigid::TopRun run;
     if (in.integration.method == "exact") {
       run = rigid::sample_exact(motion, times);
@@ -224,9 +230,16 @@ int main(int argc, char** argv) {
       lab.result("max_theta_error_deg", "max |theta - theta_exact|", rigid::rad_to_deg(worst), "deg");
       lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
     }
-    lab.result("energy_drift_rel", "max |E - E0| / (T0 + m g l)", run.energy_drift_rel, "");
-    lab.result("p_phi_drift_rel", "max |p_phi - p_phi0| / |L0|", run.p_phi_drift_rel, "");
-    lab.result("p_psi_drift_rel", "max |p_psi - p_psi0| / |L0|", run.p_psi_drift_rel, "");
+    {
+      std::vector<double> t, e[3];
+      for (const rigid::TopSample& s : run.samples) {
+        t.push_back(s.t);
+        for (int i = 0; i < 3; ++i) e[i].push_back(s.invariant_errors(i));
+      }
+      rigid::lab::report_invariant(lab, "energy", "max |E - E0| / (T0 + m g l)", t, e[0], scale);
+      rigid::lab::report_invariant(lab, "p_phi", "max |p_phi - p_phi0| / |L0|", t, e[1], scale);
+      rigid::lab::report_invariant(lab, "p_psi", "max |p_psi - p_psi0| / |L0|", t, e[2], scale);
+    }
 
     // Every integrator against the exact motion, each within a step budget.
     const std::vector<rigid::TopComparison> methods =
@@ -245,6 +258,20 @@ int main(int argc, char** argv) {
       } else {
         lab.result(key, label, rigid::rad_to_deg(c.max_theta_error), "deg");
       }
+    }
+
+    // "Which method drifts" at equal cost: a sleeping top has no nutation to count
+    // periods by, nor anything to drift through.
+    std::vector<rigid::TopComparison> at_cost;
+    if (!sleeping && std::isfinite(motion.nutation_period())) {
+      at_cost = rigid::compare_top_methods_at_cost(motion, scale, kEqualCostPeriods,
+                                                   kEqualCostEvaluations);
+      std::vector<rigid::lab::EqualCostRow> rows;
+      for (const rigid::TopComparison& c : at_cost) {
+        rows.push_back({c.options, c.completed && std::isfinite(c.max_theta_error), c.evaluations,
+                        c.energy});
+      }
+      rigid::lab::report_equal_cost(lab, rows, kEqualCostEvaluations, kEqualCostPeriods);
     }
 
     // The text's numbers use S rounded to 52.4 rad/s; the exact ones differ in the last digit.
@@ -288,8 +315,11 @@ int main(int argc, char** argv) {
             top, rigid::heavy_top_state(motion.angles(0.0)),
             rigid::sample_times(t_end, scale, o.step), o);
       }
+      // A sleeping top has no comparison at equal cost: the one at the lab's settings.
+      const bool equal_cost = !at_cost.empty();
       rigid::lab::top_nutation::draw(
-          set, {motion, run, integrated, methods, in.arm, in.disk_radius, t_end});
+          set, {motion, run, integrated, equal_cost ? at_cost : methods, in.arm, in.disk_radius,
+                t_end, equal_cost ? kEqualCostEvaluations : 0.0, kEqualCostPeriods});
     });
   });
 }

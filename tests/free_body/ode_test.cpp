@@ -286,3 +286,18 @@ TEST_CASE("ode: bad input is refused by name") {
                                       options_for(Method::kDopri5, 2.0), none),
                     Contains("tolerances must lie in [0, 1)"));
 }
+
+TEST_CASE("ode: an adaptive run may take exactly max_steps steps, and not one more") {
+  const std::vector<double> times{0.0, 5.0, 10.0};
+  for (const Method m : {Method::kDopri5, Method::kRkf78, Method::kBulirschStoer}) {
+    INFO(method_name(m));
+    const auto run = [&](std::size_t cap) {
+      Samples seen;
+      return integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(m, 1e-8, cap), seen);
+    };
+    const std::size_t n = run(1'000'000).steps;
+    REQUIRE(n > 2);
+    CHECK(run(n).steps == n);
+    CHECK_THROWS_AS(run(n - 1), std::runtime_error);
+  }
+}

@@ -77,6 +77,8 @@ TEST_CASE("heavy top: theta stays between the turning angles and E, p_phi, p_psi
     CHECK_THAT(start.p_psi, WithinRel(exact.p_psi(), 1e-15));
     CHECK_THAT(start.E, WithinRel(exact.energy(), 1e-14));
     const double L = std::hypot(start.p_phi, start.p_psi) + top.I * std::abs(r.theta_dot0);
+    // eq. 177, the start's p_phi = I phi_dot sin^2(theta) + Is S cos(theta), as the top reports it
+    CHECK_THAT(exact.p_phi(), WithinAbs(start.p_phi, 1e-15 * L));
     double lowest = M_PI, highest = 0;
     for (int n = 0; n <= 2000; ++n) {
       const double t = 3.0 * exact.nutation_period() * n / 2000;

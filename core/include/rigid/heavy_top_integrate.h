@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rigid/free_body.h"
+#include "rigid/drift.h"
 #include "rigid/heavy_top.h"
 #include "rigid/ode.h"
 
@@ -63,6 +64,9 @@ struct TopSample {
   double energy_error = 0.0;  ///< |E - E0| / (T0 + mgl)
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  ///< unit
+  /// Signed errors of the three invariants: (E - E0) / (T0 + mgl), (p_phi - p_phi0) / |L0|,
+  /// (p_psi - p_psi0) / |L0|.
+  Eigen::Vector3d invariant_errors = Eigen::Vector3d::Zero();
 };
 
 /// The samples of one run and the drift of its invariants.
@@ -73,6 +77,7 @@ struct TopRun {
   double p_phi_drift_rel = 0.0;   ///< max |p_phi - p_phi0| / |L0|
   double p_psi_drift_rel = 0.0;   ///< max |p_psi - p_psi0| / |L0|
   std::size_t steps = 0;
+  std::size_t evaluations = 0;  ///< right-hand-side evaluations (ode.h's evaluations_per_step)
 };
 
 /// Integrates from x0 at times.front(), sampling at `times`. Throws like
@@ -92,6 +97,8 @@ struct TopComparison {
   std::vector<double> theta_error;   ///< |theta - theta_exact|, rad
   std::vector<double> energy_error;  ///< |E - E0| / (T0 + mgl)
   double max_theta_error = 0.0;      ///< rad; infinite if the run blew up
+  std::size_t evaluations = 0;       ///< right-hand-side evaluations of the run
+  InvariantError energy;             ///< E's largest error and drift per period
 };
 
 /// Every method of kAllMethods at `options` with at most `max_steps` steps against the
@@ -100,5 +107,12 @@ struct TopComparison {
 std::vector<TopComparison> compare_top_methods(const HeavyTopExact& exact,
                                                const std::vector<double>& times, double period,
                                                const OdeOptions& options, std::size_t max_steps);
+
+/// Every method at the same cost (compare_methods_at_cost in integrate.h, for the top):
+/// `evaluations_per_period` evaluations a period over `periods` nutation periods.
+std::vector<TopComparison> compare_top_methods_at_cost(const HeavyTopExact& exact, double period,
+                                                       double periods,
+                                                       double evaluations_per_period,
+                                                       double samples_per_period = 8.0);
 
 }  // namespace rigid

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "rigid/free_body.h"
+#include "rigid/drift.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/ode.h"
 
@@ -46,6 +47,8 @@ struct FreeBodySample {
   double t = 0.0;
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  ///< unit, body to space
+  double energy_error = 0.0;    ///< (T - T0) / T0, signed
+  double momentum_error = 0.0;  ///< (|L| - |L0|) / |L0|, signed
 };
 
 /// The samples of one run and what it cost and kept.
@@ -58,6 +61,7 @@ struct IntegrationResult {
   double quaternion_norm_drift = 0.0;  ///< max over samples of ||q| - 1| before normalising
   std::size_t steps = 0;               ///< accepted steps (shortened ones included)
   std::size_t rejected_steps = 0;      ///< steps rejected by the error control (where known)
+  std::size_t evaluations = 0;         ///< right-hand-side evaluations (ode.h's evaluations_per_step)
 };
 
 /// Integrates from the state x0 at t = times.front() and samples at every entry
@@ -97,6 +101,8 @@ struct MethodComparison {
   std::vector<double> omega_error;   ///< |omega - omega_exact| / |omega0|
   std::vector<double> energy_error;  ///< |T - T0| / T0
   double max_omega_error = 0.0;      ///< the largest omega_error (infinite if it diverged)
+  std::size_t evaluations = 0;       ///< right-hand-side evaluations of the run
+  InvariantError energy, momentum;   ///< T's and |L|'s largest error and drift per period
 };
 
 /// Every method of kAllMethods at `options` (no projection, at most `max_steps`
@@ -108,5 +114,15 @@ std::vector<MethodComparison> compare_methods(const FreeBodyExact& exact,
                                               const std::vector<double>& times, double period,
                                               const IntegrateOptions& options,
                                               std::size_t max_steps);
+
+/// Every method at the same cost, the question "which method drifts" answered fairly:
+/// `evaluations_per_period` right-hand-side evaluations a period (options_at_cost:
+/// fixed steps from evaluations_per_step, tolerances found by bisection) over
+/// `periods` periods of length `period`, each run sampled `samples_per_period` times a
+/// period (a fixed step's on its grid). A method that cannot finish is not completed.
+std::vector<MethodComparison> compare_methods_at_cost(const FreeBodyExact& exact, double period,
+                                                      double periods,
+                                                      double evaluations_per_period,
+                                                      double samples_per_period = 8.0);
 
 }  // namespace rigid

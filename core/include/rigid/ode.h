@@ -75,6 +75,15 @@ bool is_adaptive(Method m);
 bool takes_after_step(Method m);
 /// The order of accuracy of a fixed-step method (2, 4, 4); 0 for the adaptive ones.
 int fixed_step_order(Method m);
+/// What kind of method it is and its order, in words for --help and the table:
+/// "symplectic splitting, order 2", "adaptive Runge-Kutta, order 5(4)", ...
+std::string_view method_kind(Method m);
+/// Right-hand-side evaluations a fixed-step method makes a step (rk4: 4). A
+/// splitting has no right-hand side: one Strang step, which costs about what one
+/// evaluation does (five rotations, or a kick and a free flow), counts as one, so
+/// the fourth-order splitting (five Strang steps) counts five. 0 for the adaptive
+/// methods, whose evaluations are counted as they happen.
+int evaluations_per_step(Method m);
 
 /// How to integrate, for any system. Set only what differs from the defaults.
 struct OdeOptions {
@@ -93,6 +102,7 @@ struct OdeOptions {
 struct OdeStats {
   std::size_t steps = 0;           ///< accepted steps (shortened ones included)
   std::size_t rejected_steps = 0;  ///< steps rejected by the error control (rkf78 only)
+  std::size_t evaluations = 0;     ///< right-hand-side evaluations (see evaluations_per_step)
 };
 
 /// Throws std::invalid_argument unless `times` is nonempty, finite and
@@ -298,6 +308,39 @@ OdeStats integrate_on_grid(Stepper& stepper, const System& system, State& x,
   return stats;
 }
 
+/// The settings at which method `options.method` costs about `evaluations_per_period`
+/// right-hand-side evaluations a period, for comparing methods at equal cost. A
+/// fixed-step method gets the step period * evaluations_per_step / evaluations_per_period.
+/// An adaptive method gets the tolerance (abs = rel) whose run costs that: `cost(o)`
+/// runs with options o and returns its evaluations a period (infinity if it could not
+/// finish). Cost falls as the tolerance loosens, though not strictly (the step control
+/// jumps), so bisection on log10(tol) over [1e-14, 1e-1] keeps the tolerance whose cost
+/// came nearest the target from below (5 % over allowed); if even 1e-1 costs more, 1e-1.
+template <class Cost>
+OdeOptions options_at_cost(OdeOptions options, double period, double evaluations_per_period,
+                           Cost cost) {
+  if (!is_adaptive(options.method)) {
+    options.step = period * evaluations_per_step(options.method) / evaluations_per_period;
+    return options;
+  }
+  const auto at = [&options](double log_tol) {
+    OdeOptions o = options;
+    o.abs_tol = o.rel_tol = std::pow(10.0, log_tol);
+    return o;
+  };
+  double lo = -14.0, hi = -1.0;  // log10 of the tolerance: tight, loose
+  double best = hi, best_miss = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 24; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    const double c = cost(at(mid));
+    const double miss = std::abs(c / evaluations_per_period - 1.0);
+    if (c <= 1.05 * evaluations_per_period && miss < best_miss) best = mid, best_miss = miss;
+    if (best_miss < 0.02) break;
+    (c > evaluations_per_period ? lo : hi) = mid;  // too dear: loosen
+  }
+  return at(best);
+}
+
 /// Integrates `system` from x0 at t = times.front() by options.method (rk4, dopri5,
 /// rkf78 or bulirsch-stoer), calls observe(x, t) at every entry of `times`, and
 /// applies after_step(x) after every accepted step (rk4 and rkf78 only). Throws
@@ -314,34 +357,46 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
   detail::require_finite(x0);
   State x = x0;
   const double span = times.back() - times.front();
+  // Every evaluation counted, the starting step's two included: the cost of a run.
+  std::size_t evaluations = 0;
+  const auto counted = [&system, &evaluations](const State& xs, State& dxdt, double t) {
+    ++evaluations;
+    system(xs, dxdt, t);
+  };
   switch (options.method) {
     case Method::kRk4: {
       AfterStepStepper stepper(odeint::runge_kutta4<State>(), std::move(after_step));
-      return integrate_on_grid(stepper, system, x, times, options, observe);
+      OdeStats stats = integrate_on_grid(stepper, counted, x, times, options, observe);
+      stats.evaluations = evaluations;
+      return stats;
     }
     case Method::kRkf78: {
       AfterStepStepper stepper(
           odeint::make_controlled(options.abs_tol, options.rel_tol,
                                   odeint::runge_kutta_fehlberg78<State>()),
           std::move(after_step));
-      const double dt0 = detail::starting_step(system, x0, times.front(), span, 8, options);
+      const double dt0 = detail::starting_step(counted, x0, times.front(), span, 8, options);
       const std::size_t steps =
-          detail::integrate_times_capped(stepper, system, x, times, dt0, options, observe,
+          detail::integrate_times_capped(stepper, counted, x, times, dt0, options, observe,
                                          times.back());
-      return {steps, stepper.rejected_steps()};
+      return {steps, stepper.rejected_steps(), evaluations};
     }
     // the dense-output methods take no hook (validate_run has thrown if given one)
     case Method::kDopri5:
       if constexpr (!kHasHook) {
         auto stepper = odeint::make_dense_output(options.abs_tol, options.rel_tol,
                                                  odeint::runge_kutta_dopri5<State>());
-        return {detail::integrate_dense(stepper, 5, system, x, times, options, observe), 0};
+        const std::size_t steps =
+            detail::integrate_dense(stepper, 5, counted, x, times, options, observe);
+        return {steps, 0, evaluations};
       }
       break;
     case Method::kBulirschStoer:
       if constexpr (!kHasHook) {
         odeint::bulirsch_stoer_dense_out<State> stepper(options.abs_tol, options.rel_tol);
-        return {detail::integrate_dense(stepper, 8, system, x, times, options, observe), 0};
+        const std::size_t steps =
+            detail::integrate_dense(stepper, 8, counted, x, times, options, observe);
+        return {steps, 0, evaluations};
       }
       break;
     case Method::kSplitting:
