@@ -1010,3 +1010,36 @@ TEST_CASE("top_nutation: another top against eqs. 185-189 and a quadrature of th
   }
   CHECK(value(r, "nutation_period_s") == Approx(4 * sum * (M_PI / 2) / n).epsilon(1e-12));
 }
+
+TEST_CASE("labs: which integrator drifts, answered by the table at equal cost, and --periods") {
+  for (const char* lab : {"poinsot", "top_nutation"}) {
+    INFO(lab);
+    const auto run = run_lab(lab, "--json --method rk4 --periods 5");
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    const auto& r = j["results"];
+    // --periods N ends at N of the motion's periods
+    const double period = r.contains("polhode_period_s") ? value(r, "polhode_period_s")
+                                                         : value(r, "nutation_period_s");
+    CHECK(value(r, "t_end_s") == Approx(5 * period).epsilon(1e-15));
+    CHECK(r["method_kind"] == "fixed-step Runge-Kutta, order 4");
+    // Each invariant's largest error and its trend; the old key is the largest error.
+    CHECK(r["energy_drift_rel"] == r["energy_error_max_rel"]);
+    CHECK(std::abs(value(r, "energy_drift_per_period_rel")) <= value(r, "energy_error_max_rel"));
+    // At equal cost a splitting drifts least, by at least ten times every other kind.
+    const std::string least = r["least_energy_drift"];
+    CHECK((least == "splitting" || least == "splitting4"));
+    CHECK(r["least_energy_drift_kind"].get<std::string>().find("symplectic") == 0);
+    const double split = std::abs(value(r, "equal_cost_energy_drift_per_period_rel_splitting"));
+    for (const char* other : {"rk4", "dopri5", "rkf78", "bulirsch_stoer"}) {
+      INFO(other);
+      CHECK(10 * split <
+            std::abs(value(r, ("equal_cost_energy_drift_per_period_rel_" + std::string(other)).c_str())));
+    }
+    CHECK(value(r, "equal_cost_evaluations_per_period") == 200);
+  }
+  // The table says which drifts, with the kind of each method in --help.
+  const auto table = run_lab("poinsot", "");
+  CHECK_THAT(table.out, Catch::Contains("least energy drift at equal cost"));
+  CHECK_THAT(run_lab("poinsot", "--help").out, Catch::Contains("symplectic splitting, order 2"));
+}
