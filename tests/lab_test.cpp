@@ -127,7 +127,16 @@ TEST_CASE("labs: bad input exits 2 with one line naming the option") {
       {"tire_balancing", "--radius 0", "--radius"},
       {"tire_balancing", "--offset nan", "--offset"},
       {"tire_balancing", "--offset inf", "--offset"},
-      {"tire_balancing", "--tilt-deg 0", "--tilt-deg"},
+      {"tire_balancing", "--tilt-deg -1e-9", "--tilt-deg"},
+      {"tire_balancing", "--road-speed-m-s 30 --omega 90", "--road-speed-m-s"},
+      {"tire_balancing", "--tyre-radius-m 0.3", "--tyre-radius-m"},
+      {"tire_balancing", "--road-speed-m-s 30 --tyre-radius-m 0.1", "--tyre-radius-m"},
+      {"tire_balancing", "--road-speed-m-s 0", "--road-speed-m-s"},
+      {"lamina_tensor", "--axis diag", "--axis"},
+      {"lamina_tensor", "--axis 1,2", "--axis"},
+      {"lamina_tensor", "--axis diagonal,1,2", "--axis"},
+      {"lamina_tensor", "--axis diagonal --axis-deg 30", "--axis-deg"},
+      {"lamina_tensor", "--axis-deg nan", "--axis-deg"},
       {"tire_balancing", "--tilt-deg 45", "--tilt-deg"},
       {"tire_balancing", "--tilt-deg -3", "--tilt-deg"},
       {"tire_balancing", "--tilt-deg 40 --offset 0.001", "--tilt-deg"},
@@ -793,7 +802,7 @@ TEST_CASE("labs: extreme but legal inputs end with finite numbers or one line, n
 }
 
 TEST_CASE("lamina_tensor: the paddle and the block at other inputs, against eqs. 40-43 typed here") {
-  const auto run = run_lab("lamina_tensor", "--json --mass 3 --a 0.4 --b 0.9 --c 0.25");
+  const auto run = run_lab("lamina_tensor", "--json --mass 3 --a 0.4 --b 0.9 --c 0.25 --examples");
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const auto& r = j["results"];
@@ -1042,4 +1051,72 @@ TEST_CASE("labs: which integrator drifts, answered by the table at equal cost, a
   const auto table = run_lab("poinsot", "");
   CHECK_THAT(table.out, Catch::Contains("least energy drift at equal cost"));
   CHECK_THAT(run_lab("poinsot", "--help").out, Catch::Contains("symplectic splitting, order 2"));
+}
+
+TEST_CASE("tire_balancing: a straight axle is a balanced wheel, and the spin comes from the road") {
+  const auto run = run_lab("tire_balancing", "--json --tilt-deg 0 --road-speed-m-s 27.8 "
+                                             "--tyre-radius-m 0.31");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& r = j["results"];
+  CHECK(value(r, "omega_rad_s") == Approx(27.8 / 0.31).epsilon(1e-15));
+  CHECK(value(r, "road_speed_km_h") == Approx(100.08).epsilon(1e-15));
+  // No tilt: L along the axle, no torque, no mass needed (all exactly: the disk's axis is x).
+  CHECK(value(r, "angle_L_axle_deg") == 0.0);
+  CHECK(value(r, "torque_unbalanced_nm") == 0.0);
+  CHECK(value(r, "balance_mass_kg") == 0.0);
+  CHECK(value(r, "balance_mass_small_angle_kg") == 0.0);
+  CHECK(!j["inputs"].contains("omega"));
+  // A road speed gives the same wheel as its omega.
+  const auto same = run_lab("tire_balancing", "--json --road-speed-m-s 27.9 --tyre-radius-m 0.31");
+  const auto direct = run_lab("tire_balancing", "--json --omega " + std::to_string(27.9 / 0.31));
+  CHECK(value(same.json()["results"], "torque_unbalanced_nm") ==
+        Approx(value(direct.json()["results"], "torque_unbalanced_nm")).epsilon(1e-12));
+  // Roundoff is printed as 0 with its bound in the table; JSON keeps the number.
+  const auto table = run_lab("tire_balancing", "");
+  CHECK_THAT(table.out, Catch::Contains("(roundoff: |computed| <="));
+}
+
+TEST_CASE("lamina_tensor: the plate about its diagonal, or an axis by its angle in the plane") {
+  // A 1 x 2 plate of mass 1 about its corner: I = (4/3, -1/2; -1/2, 1/3), Izz = 5/3 (eq. 20).
+  const auto diag = run_lab("lamina_tensor", "--json --axis diagonal");
+  REQUIRE(diag.status == 0);
+  const auto j = diag.json();
+  const auto& r = j["results"];
+  const double n[2] = {1 / std::sqrt(5.0), 2 / std::sqrt(5.0)};
+  CHECK(double(r["axis_unit"][0]) == Approx(n[0]).epsilon(1e-15));
+  CHECK(double(r["axis_unit"][1]) == Approx(n[1]).epsilon(1e-15));
+  // n.I.n = (4/3 - 2 + 4/3) / 5 = 2/15; L = I n; about the corner's diagonal the products
+  // of inertia do not vanish, so L is off the axis.
+  CHECK(value(r, "scalar_moment") == Approx(2.0 / 15).epsilon(1e-14));
+  const double Lx = 4.0 / 3 * n[0] - 0.5 * n[1], Ly = -0.5 * n[0] + 1.0 / 3 * n[1];
+  CHECK(double(r["angular_momentum"][0]) == Approx(Lx).epsilon(1e-14));
+  CHECK(double(r["angular_momentum"][1]) == Approx(Ly).epsilon(1e-14));
+  CHECK(value(r, "angle_L_omega_deg") ==
+        Approx(std::acos((Lx * n[0] + Ly * n[1]) / std::hypot(Lx, Ly)) * 180 / M_PI).epsilon(1e-12));
+  CHECK(j["inputs"]["axis"] == "diagonal");
+  CHECK(!r.contains("paddle_principal_moments"));  // section 2.1 only when asked
+  // About the centre the diagonal is no principal axis either (a != b), but Ixy = 0 there.
+  const auto angle = run_lab("lamina_tensor", "--json --axis-deg 30");
+  REQUIRE(angle.status == 0);
+  CHECK(double(angle.json()["results"]["axis_unit"][0]) == Approx(std::sqrt(3.0) / 2).epsilon(1e-15));
+  CHECK(value(angle.json()["results"], "axis_angle_from_x_deg") == Approx(30).epsilon(1e-14));
+}
+
+TEST_CASE("labs: an option the method does not use is said so, once the run succeeds") {
+  const auto run = run_lab("tennis_racquet", "--json --method rk4 --tolerance 1e-6");
+  REQUIRE(run.status == 0);
+  CHECK(run.err == "tennis_racquet: warning: --tolerance: rk4 takes a fixed step; it is not used "
+                   "(--step sets it)\n");
+  bool noted = false;
+  const auto j = run.json();
+  for (const auto& note : j["notes"]) noted |= note.get<std::string>().rfind("warning:", 0) == 0;
+  CHECK(noted);
+  // a fixed step that does not divide t_end: the shortened last step is reported
+  const auto fixed = run_lab("poinsot", "--json --method rk4 --step 0.3 --t-end 10");
+  REQUIRE(fixed.status == 0);
+  CHECK(value(fixed.json()["results"], "last_step_s") == Approx(10 - 33 * 0.3).epsilon(1e-12));
+  CHECK(fixed.err.empty());
+  // --project with the closed form is refused, not ignored
+  CHECK(run_lab("poinsot", "--project").status == 2);
 }

@@ -31,6 +31,7 @@ double balance_mass_exact(const CrookedWheel& wheel) {
   const double t = std::tan(2.0 * wheel.tilt);
   // Eq. 60 is linear in m0: t (m a^2/4 + 2 m0 (a^2 - b^2)) = 4 a b m0.
   const double denominator = 4.0 * a * b - 2.0 * t * (a * a - b * b);
+  if (t == 0.0) return 0.0;  // a straight axle: already balanced
   if (!(t > 0.0) || !(denominator > 0.0)) {
     throw std::invalid_argument(
         "no balancing mass reaches this tilt: need 4 a b > 2 (a^2 - b^2) tan 2 theta");

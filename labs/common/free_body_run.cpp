@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rigid::lab {
 
@@ -14,6 +15,7 @@ namespace {
 constexpr double kMaxRunSeconds = 4.0;
 // A run whose invariants drift by more than this share of themselves is refused.
 constexpr double kMaxDrift = 1.0;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 }  // namespace
 
 void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
@@ -41,7 +43,7 @@ bool fixed_step(const IntegrationInputs& in) {
   return in.method != "exact" && !is_adaptive(method_from_name(in.method));
 }
 
-IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in,
+IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in,
                                      double default_step, std::size_t max_steps) {
   // Below double precision no step meets a tolerance, and odeint's step control
   // then collapses (tolerances under 1e-150 crashed it).
@@ -57,6 +59,25 @@ IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in
   options.max_seconds = kMaxRunSeconds;
   options.method = in.method == "exact" ? Method::kDopri5 : method_from_name(in.method);
   options.project_invariants = in.project;
+  // Never silent: an option nothing uses is said to be unused.
+  const bool exact = in.method == "exact";
+  const auto unused = [&](const std::string& option, const std::string& why,
+                          const std::string& instead) {
+    lab.warn(option, why + (in.compared ? "; only the comparison of every method uses it"
+                                        : "; it is not used" + instead));
+  };
+  if (lab.given("--tolerance") && exact) unused("--tolerance", "--method exact integrates nothing", "");
+  if (lab.given("--step") && exact) unused("--step", "--method exact integrates nothing", "");
+  if (lab.given("--tolerance") && !exact && !is_adaptive(options.method)) {
+    unused("--tolerance", in.method + " takes a fixed step", " (--step sets it)");
+  }
+  if (lab.given("--step") && !exact && is_adaptive(options.method)) {
+    unused("--step", in.method + " chooses its own steps", " (--tolerance controls them)");
+  }
+  if (in.project && exact) {
+    throw UsageError("--project", "--method exact integrates nothing to project; use --method "
+                                  "rk4 or rkf78");
+  }
   return options;
 }
 
@@ -99,7 +120,7 @@ void check_phase_digits(double t_end, double scale) {
   }
 }
 
-RunPlan plan_run(const Lab& lab, const IntegrationInputs& in, double t_end, double scale,
+RunPlan plan_run(Lab& lab, const IntegrationInputs& in, double t_end, double scale,
                  std::size_t max_steps) {
   check_phase_digits(t_end, scale);
   RunPlan plan;
@@ -117,7 +138,18 @@ RunPlan plan_run(const Lab& lab, const IntegrationInputs& in, double t_end, doub
 
 void report_plan(Lab& lab, const RunPlan& plan) {
   lab.result("t_end_s", "end time t_end", plan.t_end, "s");
-  if (plan.fixed) lab.result("step_s", "step h", plan.options.step, "s");
+  if (!plan.fixed) return;
+  const double h = plan.options.step;
+  lab.result("step_s", "step h", h, "s");
+  // t_end is reached exactly: a last step shortened to it when t_end / h is not whole
+  // (to roundoff, as the grid decides it).
+  const double whole = std::floor(plan.t_end / h * (1.0 + 8.0 * kEps));
+  const double last = plan.t_end - whole * h;
+  if (last > 8.0 * kEps * plan.t_end) {
+    lab.result("last_step_s", fmt::format("  the last, shortened to end at t_end ({:g} whole steps)",
+                                          whole),
+               last, "s");
+  }
 }
 
 void refuse_runaway(const std::string& option, double drift) {
@@ -130,15 +162,16 @@ void refuse_runaway(const std::string& option, double drift) {
 }
 
 void report_invariant(Lab& lab, const std::string& key, const std::string& error_label,
-                      const std::vector<double>& t, const std::vector<double>& e, double period) {
+                      const std::vector<double>& t, const std::vector<double>& e, double period,
+                      double roundoff) {
   const InvariantError error = invariant_error(t, e, period);
-  lab.result(key + "_error_max_rel", error_label, error.max_rel, "");
-  lab.result(key + "_drift_per_period_rel", "  its drift: the fitted trend a period",
-             error.drift_per_period_rel, "");
+  lab.result_roundoff(key + "_error_max_rel", error_label, error.max_rel, roundoff, "");
+  lab.result_roundoff(key + "_drift_per_period_rel", "  its drift: the fitted trend a period",
+                      error.drift_per_period_rel, roundoff, "");
   lab.alias(key + "_drift_rel", key + "_error_max_rel");  // the maximum's old name
 }
 
-void report_drifts(Lab& lab, const IntegrationResult& run, double period) {
+void report_drifts(Lab& lab, const IntegrationResult& run, double period, bool exact) {
   // Relative to the start; roundoff for the exact motion.
   std::vector<double> t, dT, dL;
   for (const FreeBodySample& s : run.samples) {
@@ -146,9 +179,11 @@ void report_drifts(Lab& lab, const IntegrationResult& run, double period) {
     dT.push_back(s.energy_error);
     dL.push_back(s.momentum_error);
   }
-  report_invariant(lab, "energy", "max |T - T0| / T0", t, dT, period);
-  report_invariant(lab, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period);
-  lab.result("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel, "");
+  const double roundoff = exact ? kClosedFormRoundoff : 0.0;
+  report_invariant(lab, "energy", "max |T - T0| / T0", t, dT, period, roundoff);
+  report_invariant(lab, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period, roundoff);
+  lab.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|",
+                      run.L_space_drift_rel, roundoff, "");
 }
 
 void declare_end_time(Lab& lab, double& t_end, double& periods, const std::string& period_name,

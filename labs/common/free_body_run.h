@@ -21,6 +21,9 @@ struct IntegrationInputs {
   double tolerance = 1e-10;
   double step = 0.0;  ///< 0: the lab's default step
   bool project = false;
+  /// The lab also compares every method at --step and --tolerance (poinsot,
+  /// top_nutation): neither is then unused, whichever method is chosen.
+  bool compared = false;
 };
 
 /// Declares --method (its default is in.method), --tolerance, --step (whose default
@@ -32,8 +35,9 @@ void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::str
 bool fixed_step(const IntegrationInputs& in);
 
 /// The options of the chosen method: the tolerance, the step (`default_step` unless
-/// --step was given) and at most `max_steps` steps.
-IntegrateOptions integration_options(const Lab& lab, const IntegrationInputs& in,
+/// --step was given) and at most `max_steps` steps. Warns (Lab::warn) of --step or
+/// --tolerance given where nothing uses them.
+IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in,
                                      double default_step, std::size_t max_steps);
 
 /// Runs the chosen method from exact.state(0) through `times` (the exact motion
@@ -52,9 +56,11 @@ struct RunPlan {
   bool fixed = false;
   double t_end = 0.0;
 };
-RunPlan plan_run(const Lab& lab, const IntegrationInputs& in, double t_end, double scale,
+RunPlan plan_run(Lab& lab, const IntegrationInputs& in, double t_end, double scale,
                  std::size_t max_steps);
-/// Reports the plan's end time (t_end_s) and, for a fixed step, the step (step_s).
+/// Reports the plan's end time (t_end_s) and, for a fixed step, the step (step_s) and,
+/// when t_end is not a whole number of steps, the last one, shortened to end there
+/// (last_step_s).
 void report_plan(Lab& lab, const RunPlan& plan);
 
 /// The motion's time scale: its polhode period, or one turn for a steady rotation
@@ -73,15 +79,19 @@ void refuse_runaway(const std::string& option, double drift);
 /// Reports one invariant's signed relative errors `e` at times `t`: its largest
 /// (<key>_error_max_rel, labelled `error_label`) and its drift per `period`
 /// (<key>_drift_per_period_rel), and <key>_drift_rel, the maximum's old name, in JSON.
+/// With `roundoff` > 0 (a run of the closed form), values within it print as 0.
 void report_invariant(Lab& lab, const std::string& key, const std::string& error_label,
-                      const std::vector<double>& t, const std::vector<double>& e, double period);
+                      const std::vector<double>& t, const std::vector<double>& e, double period,
+                      double roundoff = 0.0);
+/// The closed form's own rounding of a relative invariant: a few ulps (64 eps bounds it).
+inline constexpr double kClosedFormRoundoff = 64 * 2.220446049250313e-16;
 
 /// Reports how the run kept T and |L| (report_invariant): for each, its largest relative error
 /// (energy_error_max_rel, momentum_error_max_rel) and its secular drift, the fitted
 /// trend per `period` (energy_drift_per_period_rel, momentum_drift_per_period_rel);
 /// and L's largest error in space (L_space_drift_rel). energy_drift_rel and
 /// momentum_drift_rel stay one release as JSON aliases of the maxima.
-void report_drifts(Lab& lab, const IntegrationResult& run, double period);
+void report_drifts(Lab& lab, const IntegrationResult& run, double period, bool exact);
 
 /// Declares --t-end (s) and --periods N, the end time as N times the lab's `period_name`
 /// ("polhode period"); `default_text` says what the lab does when neither is given.

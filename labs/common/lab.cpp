@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstring>
@@ -107,6 +108,12 @@ Option& Option::open_range(double lo, double hi) {
   hi_ = hi;
   return *this;
 }
+Option& Option::range_from(double lo, double hi) {
+  rule_ = Rule::kRangeFrom;
+  lo_ = lo;
+  hi_ = hi;
+  return *this;
+}
 Option& Option::nonzero() {
   nonzero_ = true;
   return *this;
@@ -140,6 +147,12 @@ std::string Option::broken_rule(double value, const std::string& text) const {
     case Rule::kOpenRange:
       if (!(value > lo_ && value < hi_)) {
         return fail(fmt::format("must be between {} and {}{}, exclusive", lo_, hi_,
+                                unit_.empty() ? "" : " " + unit_));
+      }
+      break;
+    case Rule::kRangeFrom:
+      if (!(value >= lo_ && value < hi_)) {
+        return fail(fmt::format("must be at least {} and below {}{}", lo_, hi_,
                                 unit_.empty() ? "" : " " + unit_));
       }
       break;
@@ -208,24 +221,65 @@ Option& Lab::angle_deg(const std::string& flag, double& degrees, const std::stri
   return option;
 }
 
+namespace {
+// A component the validator has accepted, as a number.
+double component(const std::string& text) {
+  double value = 0.0;
+  CLI::detail::lexical_cast(text, value);
+  return value;
+}
+}  // namespace
+
 Option& Lab::vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help) {
   Option& option = numbers(flag, 3, "X,Y,Z", fmt::format("{},{},{}", value(0), value(1), value(2)), help);
   option.store_ = [&option, &value, flag] {
-    if (option.parts_.empty()) return;
-    value = Eigen::Vector3d(option.parts_[0], option.parts_[1], option.parts_[2]);
+    if (option.texts_.empty()) return;
+    if (option.texts_.size() == 1 && option.takes_word(option.texts_[0])) {
+      option.word_ = option.texts_[0];
+      return;
+    }
+    const bool has_word = std::any_of(option.texts_.begin(), option.texts_.end(),
+                                      [&option](const std::string& t) { return option.takes_word(t); });
+    if (option.texts_.size() != 3 || has_word) {
+      throw UsageError(flag, "expects three numbers X,Y,Z" +
+                                 (option.words_.empty() ? std::string()
+                                                        : " or one of " + option.word_list()));
+    }
+    for (int i = 0; i < 3; ++i) value(i) = component(option.texts_[static_cast<std::size_t>(i)]);
     if (option.nonzero_ && value.isZero(0.0)) throw UsageError(flag, "must not be the zero vector");
   };
   option.record_ = [&option, &value] {
-    option.lab_.inputs_[option.key_] = Json::array({value(0), value(1), value(2)});
+    option.lab_.inputs_[option.key_] =
+        option.word_.empty() ? Json::array({value(0), value(1), value(2)}) : Json(option.word_);
   };
   return option;
+}
+
+Option& Option::words(const std::vector<std::string>& names, const std::string& meaning) {
+  words_ = names;
+  cli_->expected(1, static_cast<int>(count_));
+  cli_->type_name(cli_->get_type_name() + "|" + word_list());
+  help_ += " (" + meaning + ")";
+  describe();
+  return *this;
+}
+
+bool Option::takes_word(const std::string& text) const {
+  return std::find(words_.begin(), words_.end(), text) != words_.end();
+}
+
+std::string Option::word_list() const {
+  std::string list;
+  for (const std::string& w : words_) list += (list.empty() ? "" : "|") + w;
+  return list;
 }
 
 Option& Lab::pair(const std::string& flag, Eigen::Vector2d& value, const std::string& type_name,
                   const std::string& help) {
   Option& option = numbers(flag, 2, type_name, fmt::format("{},{}", value(0), value(1)), help);
   option.store_ = [&option, &value] {
-    if (!option.parts_.empty()) value = Eigen::Vector2d(option.parts_[0], option.parts_[1]);
+    if (option.texts_.empty()) return;
+    value = Eigen::Vector2d(component(option.texts_[0]), component(option.texts_[1]));
   };
   option.record_ = [&option, &value] {
     option.lab_.inputs_[option.key_] = Json::array({value(0), value(1)});
@@ -238,18 +292,21 @@ Option& Lab::numbers(const std::string& flag, int count, const std::string& type
   // CLI11 splits the value at the commas, insists on `count` values and checks each.
   options_.emplace_back(Option(*this, nullptr, json_key(flag), help));
   Option& option = options_.back();
-  CLI::Option* cli = app_.add_option(flag, option.parts_)
+  CLI::Option* cli = app_.add_option(flag, option.texts_)
                          ->delimiter(',')
                          ->expected(count)
                          ->type_name(type_name)
                          ->default_str(default_text);
   option.cli_ = cli;
+  option.count_ = static_cast<std::size_t>(count);
   option.describe();
   cli->check(CLI::Validator(
       [&option](std::string& text) -> std::string {
+        if (option.takes_word(text)) return "";
         double parsed = 0.0;
         if (!CLI::detail::lexical_cast(text, parsed)) {
-          return "each component must be a number (got '" + text + "')";
+          return "each component must be a number (got '" + text + "')" +
+                 (option.words_.empty() ? "" : ", or the value one of " + option.word_list());
         }
         return option.broken_rule(parsed, text);
       },
@@ -370,6 +427,21 @@ void Lab::result_none(const std::string& key, const std::string& label, const st
 void Lab::result_text(const std::string& key, const std::string& label, const std::string& value) {
   results_[key] = value;
   rows_.push_back({label, value, "", ""});
+}
+
+void Lab::result_roundoff(const std::string& key, const std::string& label, double value,
+                          double bound, const std::string& unit) {
+  result(key, label, value, unit);
+  if (std::abs(value) <= bound) {
+    rows_.back().value = "0";
+    rows_.back().remark = "(roundoff: |computed| <= " + format_number(bound, 2) + ")";
+  }
+}
+
+void Lab::warn(const std::string& option, const std::string& text) {
+  // Said once the run has succeeded: a refused run prints its one error line only.
+  warnings_.push_back(option + ": " + text);
+  notes_.push_back("warning: " + option + ": " + text);
 }
 
 void Lab::alias(const std::string& old_key, const std::string& key) {
@@ -515,6 +587,9 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
     std::cerr << name_ << ": error: " << escaped(blamed_option() + ": " + e.what()) << '\n';
     return 2;
   }
+  for (const std::string& warning : warnings_) {
+    std::cerr << name_ << ": warning: " << escaped(warning) << '\n';
+  }
   if (json_) {
     emit_json();
   } else if (!quiet_) {
@@ -558,6 +633,7 @@ void Lab::emit_table() const {
     std::string line = fmt::format("{:<{}}  {:<{}}  {:<{}}", row.label, label_width, row.value,
                                    value_width, row.unit, unit_width);
     if (!row.textbook.empty()) line += "  " + row.textbook;
+    if (!row.remark.empty()) line += "  " + row.remark;
     while (!line.empty() && line.back() == ' ') line.pop_back();
     std::cout << line << "\n";
   }

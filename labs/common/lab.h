@@ -64,6 +64,13 @@ class Option {
   Option& non_negative();
   /// Values must lie strictly between lo and hi.
   Option& open_range(double lo, double hi);
+  /// A vector option also takes one of `names` instead of its numbers (its
+  /// `meaning` is added to --help); Option::word() says which was given.
+  Option& words(const std::vector<std::string>& names, const std::string& meaning);
+  /// The word given instead of numbers ("" if numbers or nothing were given).
+  const std::string& word() const { return word_; }
+  /// Values must satisfy lo <= value < hi.
+  Option& range_from(double lo, double hi);
   /// A vector must not be (0, 0, 0).
   Option& nonzero();
   /// The symbol (text markup) that names this input in figure titles, e.g. "\\theta".
@@ -86,8 +93,13 @@ class Option {
   std::string key_, help_, unit_, symbol_, lab_default_;
   bool physical_ = true, nonzero_ = false;
   double lo_ = -1, hi_ = -1;
-  enum class Rule { kFinite, kPositive, kNonNegative, kOpenRange } rule_ = Rule::kFinite;
-  std::vector<double> parts_;                 // a vector's components as parsed
+  enum class Rule { kFinite, kPositive, kNonNegative, kOpenRange, kRangeFrom } rule_ = Rule::kFinite;
+  std::vector<std::string> texts_;            // a vector's components (or word) as given
+  std::size_t count_ = 0;                     // how many components it takes
+  std::vector<std::string> words_;            // words it takes instead of numbers
+  std::string word_;                          // the word given, if any
+  bool takes_word(const std::string& text) const;
+  std::string word_list() const;
   std::function<void()> store_, record_;      // after parsing: into the lab's inputs
 };
 
@@ -142,6 +154,13 @@ class Lab {
   /// A matrix result (JSON: array of rows).
   void result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
               const std::string& unit, std::optional<std::string> printed = std::nullopt);
+  /// A result that is zero but for roundoff: when |value| <= `bound` the table prints 0
+  /// with the bound beside it (JSON keeps the value computed); else as result().
+  void result_roundoff(const std::string& key, const std::string& label, double value,
+                       double bound, const std::string& unit);
+  /// A warning: one line on stderr ("lab: warning: option: text") once the run has
+  /// succeeded, and a note starting "warning:", for an input the run does not use.
+  void warn(const std::string& option, const std::string& text);
   /// A result that does not exist for these inputs (JSON null), with the reason in the table.
   void result_none(const std::string& key, const std::string& label, const std::string& unit,
                    const std::string& why);
@@ -167,8 +186,12 @@ class Lab {
   friend class Option;
   friend class FigureSet;
   struct Row {
+    Row(std::string l, std::string v, std::string u, std::string t, bool h = false)
+        : label(std::move(l)), value(std::move(v)), unit(std::move(u)), textbook(std::move(t)),
+          heading(h) {}
     std::string label, value, unit, textbook;
     bool heading = false;
+    std::string remark;  ///< printed after the unit and textbook, e.g. the roundoff bound
   };
   Option& declare(CLI::Option* cli, const std::string& flag, const std::string& help);
   /// A comma-separated list of `count` numbers; the caller sets how it is stored and recorded.
@@ -191,7 +214,7 @@ class Lab {
   Json inputs_ = Json::object(), results_ = Json::object(), units_ = Json::object();
   Json textbook_ = Json::object(), captions_ = Json::object();
   std::vector<Row> rows_;
-  std::vector<std::string> notes_, figures_;
+  std::vector<std::string> notes_, figures_, warnings_;
   TimeSeries series_;
   bool json_ = false, quiet_ = false, csv_enabled_ = false;
   bool figures_failed_ = false, timing_ = false;

@@ -17,7 +17,9 @@ struct Inputs {
   double c = 0.5;
   std::string origin = "corner";
   Vec3 axis = Vec3(0.8, 0.6, 0.0);
+  double axis_deg = 0.0;  ///< used only when given: n = (cos, sin, 0), from x toward y
   double omega = 1.0;
+  bool examples = false;  ///< section 2.1's paddle, block and cube beside any plate
 };
 
 /// Hands the lab's figures to the set.

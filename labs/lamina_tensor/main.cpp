@@ -24,17 +24,44 @@ int main(int argc, char** argv) {
   lab.number("--a", in.a, "side a along x").unit("m").positive().symbol("a");
   lab.number("--b", in.b, "side b along y").unit("m").positive().symbol("b");
   lab.number("--c", in.c, "third side c of the section 2.1 block (a x b x c)").unit("m").positive();
-  lab.choice("--origin", in.origin, {"corner", "center"}, "origin of the x, y, z axes")
+  lab.choice("--origin", in.origin, {"corner", "center"},
+             "origin of the axes: x along side a, y along side b, z normal to the plate; "
+             "corner: the plate spans 0 <= x <= a, 0 <= y <= b; center: its middle")
       .symbol("origin");
-  lab.vector("--axis", in.axis, "rotation axis n (normalised)").nonzero();
+  auto& axis = lab.vector("--axis", in.axis, "rotation axis n through the origin (normalised)")
+                   .nonzero()
+                   .words({"diagonal"}, "diagonal: along the plate's diagonal, (a, b, 0)");
+  lab.angle_deg("--axis-deg", in.axis_deg,
+                "rotation axis in the plate's plane, at this angle from x toward y (instead of "
+                "--axis)")
+      .lab_default("--axis's");
   lab.number("--omega", in.omega, "angular speed about the axis").unit("rad/s").positive();
+  lab.flag("--examples", in.examples,
+           "also section 2.1's paddle, block and cube (always with the textbook's inputs)")
+      .numerical();
 
   return lab.run(argc, argv, [&](Lab& lab) {
     const double m = in.mass, a = in.a, ma2 = m * a * a;
+    if (lab.given("--axis") && lab.given("--axis-deg")) {
+      throw rigid::lab::UsageError("--axis-deg", "give --axis or --axis-deg, not both");
+    }
+    // The axis: by its components, the plate's diagonal, or an angle in the plane.
+    if (axis.word() == "diagonal") in.axis = Vec3(a, in.b, 0.0);
+    if (lab.given("--axis-deg")) {
+      const double t = rigid::deg_to_rad(in.axis_deg);
+      in.axis = Vec3(std::cos(t), std::sin(t), 0.0);
+      lab.drop_input("axis");
+    }
     const Vec3 n = in.axis.stableNormalized();
     const Vec3 omega = in.omega * n;
 
-    lab.section("1. inertia tensor about the " + in.origin + " (eqs. 6-11, 20, 70)");
+    lab.section("1. inertia tensor about the " + in.origin + " (eqs. 6-11, 20, 70): x along a, " +
+                "y along b, z normal; " +
+                (in.origin == "corner" ? "the plate fills 0 <= x <= a, 0 <= y <= b"
+                                       : "the plate's centre at the origin"));
+    lab.result("axis_unit", "rotation axis n (unit)", n, "");
+    lab.result("axis_angle_from_x_deg", "  its angle from x toward y",
+               rigid::rad_to_deg(std::atan2(n.y(), n.x())), "deg", lab.textbook("37 (3-4-5)"));
     const Mat3 I = rigid::lamina_tensor({in.mass, a, in.b, in.origin == "corner"});
     lab.result("inertia_tensor", "inertia tensor I", I, "kg m^2",
                lab.textbook("(4/3, -1/2, 0; -1/2, 1/3, 0; 0, 0, 5/3) ma^2"));
@@ -60,18 +87,22 @@ int main(int argc, char** argv) {
     lab.result("kinetic_energy", "T = omega.I omega / 2", rigid::kinetic_energy(I, omega), "J",
                lab.textbook("(1/2)(0.493) ma^2 omega^2"));
 
-    lab.section("2.1 symmetric bodies about their centre of mass, built from primitives");
-    const rigid::Body paddle = rigid::model_paddle(m, a);
-    lab.result("paddle_principal_moments", "model paddle I1, I2, I3 (eqs. 41-43)",
-               Vec3(paddle.I_com.diagonal()), "kg m^2", printed("(1/8, 31/24, 17/12) ma^2"));
-    lab.result("block_principal_moments", "block a x b x c (eq. 40)",
-               Vec3(rigid::solid_box(m, a, in.b, in.c).I_com.diagonal()), "kg m^2",
-               printed("m/12 (b^2+c^2, a^2+c^2, a^2+b^2)"));
-    const Mat3 cube = rigid::solid_box(m, a, a, a).I_com;
-    lab.result("cube_moment_about_axis", "cube of side a, moment about n",
-               rigid::moment_about_axis(cube, n), "kg m^2", printed("ma^2/6"));
-    lab.result("cube_moment_about_diagonal", "cube, moment about its body diagonal",
-               rigid::moment_about_axis(cube, Vec3(1, 1, 1)), "kg m^2", printed("ma^2/6"));
+    // Section 2.1's examples do not depend on the plate's orientation: shown with the
+    // textbook's inputs, or when asked for.
+    if (lab.textbook_inputs() || in.examples) {
+      lab.section("2.1 symmetric bodies about their centre of mass, built from primitives");
+      const rigid::Body paddle = rigid::model_paddle(m, a);
+      lab.result("paddle_principal_moments", "model paddle I1, I2, I3 (eqs. 41-43)",
+                 Vec3(paddle.I_com.diagonal()), "kg m^2", printed("(1/8, 31/24, 17/12) ma^2"));
+      lab.result("block_principal_moments", "block a x b x c (eq. 40)",
+                 Vec3(rigid::solid_box(m, a, in.b, in.c).I_com.diagonal()), "kg m^2",
+                 printed("m/12 (b^2+c^2, a^2+c^2, a^2+b^2)"));
+      const Mat3 cube = rigid::solid_box(m, a, a, a).I_com;
+      lab.result("cube_moment_about_axis", "cube of side a, moment about n",
+                 rigid::moment_about_axis(cube, n), "kg m^2", printed("ma^2/6"));
+      lab.result("cube_moment_about_diagonal", "cube, moment about its body diagonal",
+                 rigid::moment_about_axis(cube, Vec3(1, 1, 1)), "kg m^2", printed("ma^2/6"));
+    }
 
     lab.section("2.3 principal axes in the x-y plane from tan 2 theta (eqs. 53-56)");
     const rigid::InPlaneAxes plane = rigid::in_plane_principal_axes(I);

@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
                                           "polhode period / 2000");
   lab.enable_csv();
 
+  in.integration.compared = true;  // every method at --step and --tolerance, in a section
   return lab.run(argc, argv, [&](Lab& lab) {
     const bool moments_given = lab.given("--inertia");
     if (moments_given && (lab.given("--ellipsoid") || lab.given("--mass"))) {
@@ -112,7 +113,7 @@ int main(int argc, char** argv) {
     const rigid::IntegrationResult run =
         rigid::lab::run_free_body(lab, exact, in.integration, options, times);
     lab.result("omega_end", "omega at t_end", run.samples.back().omega_body, "rad/s");
-    rigid::lab::report_drifts(lab, run, scale);
+    rigid::lab::report_drifts(lab, run, scale, in.integration.method == "exact");
 
     lab.section(fmt::format("every integrator against the exact solution (tolerance {:g}, step {:.4g} s)",
                             in.integration.tolerance, options.step));

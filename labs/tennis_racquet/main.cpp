@@ -178,7 +178,7 @@ int main(int argc, char** argv) {
     rigid::lab::report_plan(lab, plan);
     const rigid::IntegrationResult run =
         rigid::lab::run_free_body(lab, motion, in.integration, plan.options, plan.times);
-    rigid::lab::report_drifts(lab, run, scale);
+    rigid::lab::report_drifts(lab, run, scale, in.integration.method == "exact");
 
     if (predicted[1].rate != simplified[1].rate) {
       lab.note(fmt::format(

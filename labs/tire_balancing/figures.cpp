@@ -18,7 +18,8 @@ namespace {
 // magnifies every angle about the symmetry axis by the same factor and says so.
 render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
   const double a = wheel.radius, b = wheel.offset;
-  const double magnify = std::max(1.0, deg_to_rad(12.0) / wheel.tilt);
+  // A straight axle (tilt 0) has no angle to magnify.
+  const double magnify = wheel.tilt > 0.0 ? std::max(1.0, deg_to_rad(12.0) / wheel.tilt) : 1.0;
   const auto shown = [&](const Vec3& v) -> Vec3 {
     // Magnify the angle of v from the x axis (within the plane of v and x).
     const double angle = std::atan2(std::hypot(v.y(), v.z()), v.x());
@@ -39,14 +40,20 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
   scene.add_cylinder(Vec3(-0.012 * a, 0, 0), Vec3(0.012 * a, 0, 0), a, {render::kLightGray, 0.6f},
                      "disk (symmetry axis x)");
   scene.add_cylinder(-1.9 * a * axle, 1.9 * a * axle, 0.035 * a, {render::kGray}, "crooked axle");
-  const double r0 = 0.07 * a * std::cbrt(std::max(m0, 1e-6) / (0.01 * wheel.mass));
-  scene.add_sphere(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {render::kVermillion},
-                   fmt::format("balancing masses m_0 = {:.1f} g", 1e3 * m0));
-  scene.add_sphere(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {render::kVermillion});
+  // A balanced wheel (a straight axle) needs no masses, and L sweeps no cone.
+  if (m0 > 0.0) {
+    const double r0 = 0.07 * a * std::cbrt(std::max(m0, 1e-6) / (0.01 * wheel.mass));
+    scene.add_sphere(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {render::kVermillion},
+                     fmt::format("balancing masses m_0 = {:.1f} g", 1e3 * m0));
+    scene.add_sphere(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {render::kVermillion});
+  }
   // The cone swept by L about the axle when unbalanced, with L at t = 0.
   const double length = 1.6 * a;
-  scene.add_cone(Vec3::Zero(), length * std::cos(cone_angle) * axle, length * std::sin(cone_angle),
-                 {render::kSkyBlue, 0.35f}, "cone swept by L (unbalanced)");
+  if (cone_angle > 0.0) {
+    scene.add_cone(Vec3::Zero(), length * std::cos(cone_angle) * axle,
+                   length * std::sin(cone_angle), {render::kSkyBlue, 0.35f},
+                   "cone swept by L (unbalanced)");
+  }
   const Vec3 L_shown = shown(L0).normalized();
   scene.add_arrow(Vec3::Zero(), length * L_shown, 0.03 * a, {render::kBlue}, "L before balancing");
   scene.add_arrow(Vec3::Zero(), length * 1.12 * axle, 0.03 * a, {render::kBluishGreen},

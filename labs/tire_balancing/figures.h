@@ -14,6 +14,8 @@ struct Inputs {
   double tilt_deg = 1.0;
   /// 90 rad/s is a wheel of 0.31 m rolling radius at about 100 km/h.
   double omega = 90.0;
+  double road_speed = 0.0;    ///< m/s, used only when given: omega = road_speed / tyre_radius
+  double tyre_radius = 0.31;  ///< m, the tyre's rolling radius, with --road-speed-m-s
 };
 
 /// Hands the lab's figures to the set; m0 is the exact balancing mass.

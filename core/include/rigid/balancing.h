@@ -26,7 +26,8 @@ Vec3 axle_direction(const CrookedWheel& wheel);
 
 /// The m0 that puts a principal axis exactly on the axle, solving
 /// tan 2 theta = 4 a b m0 / (m a^2/4 + 2 m0 (a^2 - b^2)) (eq. 60) for m0.
-/// Throws std::invalid_argument when no positive m0 reaches the tilt.
+/// 0 for a straight axle (tilt 0, already balanced); throws std::invalid_argument
+/// when no positive m0 reaches the tilt.
 double balance_mass_exact(const CrookedWheel& wheel);
 
 /// The small-angle estimate m0 = theta a m / (8 b) from theta ~ 8 b m0 / (a m) (eq. 61).
