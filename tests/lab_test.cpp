@@ -1120,3 +1120,38 @@ TEST_CASE("labs: an option the method does not use is said so, once the run succ
   // --project with the closed form is refused, not ignored
   CHECK(run_lab("poinsot", "--project").status == 2);
 }
+
+TEST_CASE("poinsot: the motion in words, with its stability and how near the separatrix") {
+  struct Case {
+    const char* args;
+    const char* stability;
+    const char* words;  // a part of the sentence
+  };
+  for (const Case& c : {
+           Case{"", "stable", "polhode about the largest axis: stable"},
+           Case{"--inertia 1,2,3 --omega 1,0.1,0.05", "stable", "polhode about the smallest axis"},
+           Case{"--inertia 3,3.75,5 --omega 5,1,3.0001", "unstable", "near the separatrix (k'^2 = 6.5e-05)"},
+           Case{"--inertia 3,3.75,5 --omega 5,1,3", "unstable", "on the separatrix"},
+           Case{"--inertia 1,2,3 --omega 0,1,0", "unstable", "intermediate axis 2: unstable"},
+           Case{"--inertia 1,2,3 --omega 0,0,4", "stable", "largest axis 3: stable"},
+           Case{"--inertia 1,2,3 --omega 4,0,0", "stable", "smallest axis 1: stable"},
+           Case{"--inertia 2,2,3 --omega 1,1,0", "neutral", "plane of two equal moments"},
+           Case{"--inertia 2,2,2 --omega 1,2,3", "neutral", "spherical"}}) {
+    INFO(c.args);
+    const auto run = run_lab("poinsot", std::string("--json ") + c.args);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    CHECK(j["results"]["motion_stability"] == c.stability);
+    CHECK_THAT(j["results"]["motion"].get<std::string>(), Catch::Contains(c.words));
+  }
+  // k'^2 against Landau's k^2 for the near-separatrix body (I = 3, 3.75, 5; omega0 = 5, 1, 3.0001):
+  // k'^2 = 1 - k^2, k^2 = (I2 - I1)(2 E I3 - L^2) / ((I3 - I2)(L^2 - 2 E I1)).
+  const double I[3] = {3, 3.75, 5}, w[3] = {5, 1, 3.0001};
+  double E2 = 0, L2 = 0;
+  for (int i = 0; i < 3; ++i) E2 += I[i] * w[i] * w[i], L2 += I[i] * I[i] * w[i] * w[i];
+  const double kp2 = ((I[2] - I[1]) * (L2 - E2 * I[0]) - (I[1] - I[0]) * (E2 * I[2] - L2)) /
+                     ((I[2] - I[1]) * (L2 - E2 * I[0]));
+  const auto near = run_lab("poinsot", "--json --inertia 3,3.75,5 --omega 5,1,3.0001");
+  // k'^2 is a difference of nearly equal products: conditioned by ~1/k'^2 ~ 1e4
+  CHECK(value(near.json()["results"], "complementary_parameter") == Approx(kp2).epsilon(1e-10));
+}

@@ -63,6 +63,12 @@ RunPlan plan_run(Lab& lab, const IntegrationInputs& in, double t_end, double sca
 /// (last_step_s).
 void report_plan(Lab& lab, const RunPlan& plan);
 
+/// The motion in words, for the table: its regime with its stability and, near
+/// the separatrix, how near. Reports "regime" (to_string of the regime, as before),
+/// "motion" (the sentence), "motion_stability" (stable, unstable or neutral) and
+/// "complementary_parameter" (k'^2: 0 on the separatrix, null for a steady spin).
+void report_motion(Lab& lab, const FreeBodyExact& motion);
+
 /// The motion's time scale: its polhode period, or one turn for a steady rotation
 /// (no polhode to go round).
 double time_scale(const FreeBodyExact& motion);

@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
       lab.result_none("polhode_period_s", "polhode period", "s",
                       "no polhode to go round: " + regime);
     }
-    lab.result_text("regime", "motion", regime);
+    rigid::lab::report_motion(lab, exact);
 
     const double scale = rigid::lab::time_scale(exact);
     const double t_end = rigid::lab::end_time(lab, in.t_end, in.periods, scale, 3.0 * scale);

@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
     lab.section(fmt::format("the spin about axis {}", kAxisNames[axis]));
     lab.result_text("stability", "first order",
                     predicted[axis].unstable ? "unstable: the disturbance grows" : "stable: a wobble");
-    lab.result_text("regime", "motion", rigid::to_string(motion.regime()));
+    rigid::lab::report_motion(lab, motion);
     if (std::isfinite(motion.period())) {
       lab.result("polhode_period_s", "polhode period", motion.period(), "s");
     } else {
