@@ -263,3 +263,60 @@ TEST_CASE("contract: a missing value is said as such, not as a vector's count") 
   const auto vector = run_lab("poinsot", "--omega 1,2");
   CHECK(vector.err.rfind("poinsot: error: --omega: must be three numbers X,Y,Z", 0) == 0);
 }
+
+TEST_CASE("contract: the JSON says which version ran, the command as given and every file written") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_prov_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string csv = (dir / "run.csv").string();
+  // An upper-case X in the size and a prefix on the figures' names.
+  const auto run = run_lab("tire_balancing", "--json --figures '" + dir.string() +
+                                                 "' --figure-size 800X600 --figure-prefix book- "
+                                                 "--csv '" + csv + "'");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const std::string version = j["version"];
+  CHECK(run_lab("tire_balancing", "--version").out == "tire_balancing (rigidlab) " + version + "\n");
+  // The command as given: the program, then each argument.
+  REQUIRE(j["command"].size() == 10);
+  CHECK(j["command"][1] == "--json");
+  CHECK(j["command"][7] == "book-");
+  // Every file by its absolute path, each of them there.
+  std::vector<std::string> outputs = j["outputs"];
+  REQUIRE(outputs.size() == 3);
+  for (const std::string& path : outputs) {
+    INFO(path);
+    CHECK(fs::path(path).is_absolute());
+    CHECK(fs::is_regular_file(path));
+  }
+  CHECK(outputs.back() == fs::absolute(csv).lexically_normal().string());
+  CHECK(fs::exists(dir / "book-tire_balancing_scene.png"));
+  // Counts are integers.
+  const auto poinsot = run_lab("poinsot", "--json --method rk4").json();
+  CHECK(poinsot["results"]["steps"].is_number_integer());
+  fs::remove_all(dir);
+}
+
+TEST_CASE("contract: the textbook's values as numbers in the result's unit, the print beside") {
+  const auto j = run_lab("tire_balancing", "--json").json();
+  const auto& m0 = j["textbook_values"]["balance_mass_kg"];
+  CHECK(m0["value"] == 0.076);
+  CHECK(m0["unit"] == "kg");
+  CHECK(m0["printed"] == "0.076 (76 g)");
+  // a list of numbers, and an expression (no number of its own)
+  const auto p = run_lab("poinsot", "--json").json();
+  CHECK(p["textbook_values"]["ratios_energy"]["value"] == nlohmann::json({0.44, 0.50, 0.58}));
+  CHECK(p["textbook_values"]["principal_moments"]["value"].is_null());
+  // The unit suffix says N m, not nanometres; the old key stays one release.
+  CHECK(j["results"]["torque_unbalanced_n_m"] == j["results"]["torque_unbalanced_nm"]);
+  CHECK(j["units"]["torque_unbalanced_n_m"] == "N m");
+}
+
+TEST_CASE("contract: a bad figure prefix or size is refused naming the option") {
+  for (const char* args : {"--figure-prefix ../x", "--figure-prefix .hidden", "--figure-prefix 'a b'"}) {
+    const auto run = run_lab("poinsot", args);
+    CHECK(run.status == 2);
+    CHECK(run.err.rfind("poinsot: error: --figure-prefix: ", 0) == 0);
+  }
+  CHECK(run_lab("poinsot", "--figure-size 1920*1080").status == 2);
+}

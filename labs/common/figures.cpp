@@ -26,7 +26,7 @@ std::string FigureSet::title(const std::string& own) const {
 
 template <class Figure>
 void FigureSet::save(const std::string& name, const std::string& caption, const Figure& figure) {
-  const std::string file = lab_.name_ + "_" + name + ".png";
+  const std::string file = lab_.figure_prefix_ + lab_.name_ + "_" + name + ".png";
   const fs::path path = fs::path(lab_.figures_dir_) / file;
   if (fs::is_directory(path)) {
     throw UsageError("--figures", "'" + path.string() + "' is a directory, not a figure");

@@ -105,7 +105,7 @@ IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const Inte
   refuse_runaway(option, std::max(run.energy_drift_rel, run.momentum_drift_rel));
   lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
              *std::max_element(errors.begin(), errors.end()), "");
-  lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
+  lab.count("steps", "steps taken", run.steps);
   return run;
 }
 

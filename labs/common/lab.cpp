@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <regex>
 #include <iostream>
 
 #include "rigid/format.h"
@@ -184,7 +186,9 @@ Lab::Lab(std::string name, std::string title)
             int w = 0, h = 0;
             char x = 0, extra = 0;
             const int read = std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
-            if (read != 3 || x != 'x' || w < 800 || h < 600 || w > 8192 || h > 8192) {
+            // 1920x1080 or 1920X1080
+            if (read != 3 || (x != 'x' && x != 'X') || w < 800 || h < 600 || w > 8192 ||
+                h > 8192) {
               return "must be WxH with 800 <= W <= 8192 and 600 <= H <= 8192 (got '" + text + "')";
             }
             figure_width_ = w;
@@ -192,8 +196,24 @@ Lab::Lab(std::string name, std::string title)
             return "";
           },
           ""));
+  app_.add_option("--figure-prefix", figure_prefix_,
+                  "prefix of the figure files, e.g. 'book-' for book-poinsot_omega.png (letters, "
+                  "digits, '-', '_' and '.')")
+      ->type_name("TEXT")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            const bool ok = !text.empty() && text.size() <= 64 && text.front() != '.' &&
+                            std::all_of(text.begin(), text.end(), [](char c) {
+                              return std::isalnum(static_cast<unsigned char>(c)) || c == '-' ||
+                                     c == '_' || c == '.';
+                            });
+            return ok ? "" : "must be 1 to 64 letters, digits, '-', '_' or '.', not starting "
+                             "with '.' (got '" + text + "')";
+          },
+          ""));
+  app_.set_version_flag("--version", name_ + " (rigidlab) " + std::string(RIGID_VERSION),
+                        "print the version and exit");
 }
-
 
 Option& Lab::declare(CLI::Option* cli, const std::string& flag, const std::string& help) {
   return options_.emplace_back(Option(*this, cli, json_key(flag), help));
@@ -532,8 +552,11 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
   try {
     try {
       app_.allow_extras();
+      for (int i = 0; i < argc; ++i) command_.emplace_back(argv[i]);
       app_.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
+      return app_.exit(e);
+    } catch (const CLI::CallForVersion& e) {
       return app_.exit(e);
     } catch (const CLI::ArgumentMismatch& e) {
       // A wrong count of values: say it in the student's terms.
@@ -652,6 +675,8 @@ void Lab::emit_table() const {
 void Lab::emit_json() const {
   Json out;
   out["lab"] = name_;
+  out["version"] = RIGID_VERSION;
+  out["command"] = command_;
   out["inputs"] = inputs_;
   out["results"] = results_;
   out["units"] = units_;
@@ -659,8 +684,60 @@ void Lab::emit_json() const {
   out["captions"] = captions_;
   if (timing_) out["timing"] = {{"figure_seconds", figure_seconds_}};
   out["textbook"] = textbook_;
+  out["textbook_values"] = textbook_values();
+  // Every file the run wrote, by its absolute path.
+  Json outputs = Json::array();
+  std::error_code ec;
+  for (const std::string& figure : figures_) {
+    outputs.push_back(fs::absolute(fs::path(figures_dir_) / figure, ec).lexically_normal().string());
+  }
+  if (!csv_path_.empty() && !series_.columns.empty()) {
+    outputs.push_back(fs::absolute(csv_path_, ec).lexically_normal().string());
+  }
+  out["outputs"] = outputs;
   out["notes"] = notes_;
   std::cout << out.dump(2) << "\n";
+}
+
+// The text's printed values as numbers in the result's unit where the print is a
+// plain number (a parenthetical after it, "0.076 (76 g)", is commentary) or a list
+// of them ("(0.20 : 0.25 : 0.33)"); where it is an expression ("0.493 ma^2",
+// "(pi, 2 pi, 8.168)") the value is null.
+Json Lab::textbook_values() const {
+  static const std::regex number(R"(^\s*([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)\s*(\(.*\))?\s*$)");
+  static const std::regex list(R"(^\s*\(([^()]*)\)\s*$)"), separator(R"(\s*[,:]\s*)");
+  Json values = Json::object();
+  for (const auto& [key, printed] : textbook_.items()) {
+    const std::string text = printed.get<std::string>();
+    std::smatch m;
+    Json value = nullptr;
+    if (std::regex_match(text, m, number)) {
+      value = std::stod(m[1].str());
+    } else if (std::regex_match(text, m, list)) {
+      // "(0.20 : 0.25 : 0.33)" or "(0.4, 0.5, 0.66)": each part a plain number
+      Json parts = Json::array();
+      const std::string inner = m[1].str();
+      std::sregex_token_iterator it(inner.begin(), inner.end(), separator, -1), end;
+      for (; it != end && parts.is_array(); ++it) {
+        std::smatch part;
+        const std::string piece = it->str();
+        if (std::regex_match(piece, part, number) && !part[4].matched) {
+          parts.push_back(std::stod(part[1].str()));
+        } else {
+          parts = nullptr;
+        }
+      }
+      value = parts;
+    }
+    values[key] = {{"value", value}, {"unit", units_.value(key, "1")}, {"printed", text}};
+  }
+  return values;
+}
+
+void Lab::count(const std::string& key, const std::string& label, std::size_t value) {
+  results_[key] = value;
+  units_[key] = "1";
+  rows_.emplace_back(label, std::to_string(value), "", "");
 }
 
 void Lab::write_csv() const {

@@ -164,6 +164,8 @@ class Lab {
   /// A result that does not exist for these inputs (JSON null), with the reason in the table.
   void result_none(const std::string& key, const std::string& label, const std::string& unit,
                    const std::string& why);
+  /// A count (JSON: an integer).
+  void count(const std::string& key, const std::string& label, std::size_t value);
   /// A text result (e.g. a method name).
   void result_text(const std::string& key, const std::string& label, const std::string& value);
   /// A JSON-only second name for a result already reported (a key renamed, kept one
@@ -207,6 +209,7 @@ class Lab {
   void emit_table() const;
   void emit_json() const;
   void write_csv() const;
+  Json textbook_values() const;
 
   std::string name_, title_;
   CLI::App app_;
@@ -219,7 +222,8 @@ class Lab {
   bool json_ = false, quiet_ = false, csv_enabled_ = false;
   bool figures_failed_ = false, timing_ = false;
   Json figure_seconds_ = Json::object();
-  std::string csv_path_, figures_dir_, figure_size_ = "1600x1200";
+  std::string csv_path_, figures_dir_, figure_size_ = "1600x1200", figure_prefix_;
+  std::vector<std::string> command_;  ///< argv as given
   int figure_width_ = 1600, figure_height_ = 1200;
 };
 

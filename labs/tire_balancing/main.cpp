@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     const Vec3 L0 = rigid::angular_momentum_at(wheel, 0.0, omega, 0.0);
     lab.result("angle_L_axle_deg", "angle between L and the axle",
                rigid::rad_to_deg(rigid::angle_between(L0, axle)), "deg");
-    lab.result("torque_unbalanced_nm", "bearing torque |omega x I omega|",
+    lab.result("torque_unbalanced_n_m", "bearing torque |omega x I omega|",
                rigid::bearing_torque(wheel, 0.0, omega).stableNorm(), "N m");
 
     lab.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
@@ -104,9 +104,12 @@ int main(int argc, char** argv) {
                         rigid::rad_to_deg(kRoundoff * moments.maxCoeff() / gap), "deg");
     lab.result("residual_tilt_small_angle_deg", "principal axis to axle, small-angle m0",
                rigid::rad_to_deg(rigid::principal_axis_misalignment(wheel, m0_small)), "deg");
-    lab.result_roundoff("torque_balanced_nm", "bearing torque after balancing",
+    lab.result_roundoff("torque_balanced_n_m", "bearing torque after balancing",
                         rigid::bearing_torque(wheel, m0, omega).stableNorm(),
                         kRoundoff * omega * omega * moments.maxCoeff(), "N m");
+    // The old names (read "nm" as nanometres), kept one release (the schema says so).
+    lab.alias("torque_unbalanced_nm", "torque_unbalanced_n_m");
+    lab.alias("torque_balanced_nm", "torque_balanced_n_m");
     if (lab.textbook_inputs()) {
       lab.note(fmt::format(
           "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "

@@ -105,7 +105,8 @@ int main(int argc, char** argv) {
     lab.result("moment_symmetry_kg_m2", "Is = m r^2 / 2", Is, "kg m^2", lab.textbook("2.5e-3"));
     lab.result("moment_transverse_kg_m2", "I = m r^2 / 4 + m l^2 (parallel axes)", I, "kg m^2",
                lab.textbook("4.45e-3"));
-    lab.result("mgl_nm", "m g l", top.mgl, "N m");
+    lab.result("mgl_n_m", "m g l", top.mgl, "N m");
+    lab.alias("mgl_nm", "mgl_n_m");  // the old name, kept one release
 
     lab.section("8.1 (a) the sleeping top: Is^2 S^2 >= 4 m g l I (eqs. 188-189)");
     const double S_min = rigid::sleeping_min_spin(top);
@@ -229,7 +230,7 @@ int main(int argc, char** argv) {
       rigid::lab::refuse_runaway(option, std::max({run.energy_drift_rel, run.p_phi_drift_rel,
                                                    run.p_psi_drift_rel}));
       lab.result("max_theta_error_deg", "max |theta - theta_exact|", rigid::rad_to_deg(worst), "deg");
-      lab.result("steps", "steps taken", static_cast<double>(run.steps), "");
+      lab.count("steps", "steps taken", run.steps);
     }
     {
       std::vector<double> t, e[3];
