@@ -11,7 +11,7 @@ RIGID_PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libboost-dev libcli11-dev nlohmann-json3-dev libfmt-dev catch2
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libpng-dev libfreetype-dev fonts-dejavu-core
-  libgsl-dev python3-scipy python3-matplotlib python3-mpmath python3-jsonschema
+  libgsl-dev python3-scipy python3-matplotlib python3-mpmath python3-jsonschema help2man
 )
 
 stamp=build/.packages-installed

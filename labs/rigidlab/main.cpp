@@ -1,0 +1,193 @@
+// rigidlab: the front door to the labs. It lists them, runs one by name, and
+// draws every lab's figures into one folder at one size:
+//
+//   rigidlab list                                  each lab and its sections
+//   rigidlab poinsot --omega 1,2,3                 a lab, with its own options
+//   rigidlab figures --out DIR [--figure-size WxH] [--figure-prefix P]
+//   rigidlab --version
+//
+// The labs are the executables beside this one (bin/ when installed, build/labs/
+// in a build tree); rigidlab holds no physics and no drawing of its own.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The one list of labs (labs/CMakeLists.txt), in section order.
+std::vector<std::string> lab_names() {
+  std::vector<std::string> names;
+  std::stringstream list(RIGID_LAB_NAMES);
+  for (std::string name; std::getline(list, name, ',');) names.push_back(name);
+  return names;
+}
+
+bool is_lab(const std::string& name) {
+  for (const std::string& lab : lab_names()) {
+    if (lab == name) return true;
+  }
+  return false;
+}
+
+// The directory this executable lives in: the labs are beside it.
+fs::path own_directory() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::current_path() : self.parent_path();
+}
+
+fs::path lab_path(const std::string& lab) { return own_directory() / lab; }
+
+// A lab's title: the first line of its --help.
+std::string title_of(const std::string& lab) {
+  const std::string command = "'" + lab_path(lab).string() + "' --help 2>/dev/null";
+  std::string line;
+  if (FILE* pipe = ::popen(command.c_str(), "r")) {
+    std::array<char, 512> buffer{};
+    if (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) line = buffer.data();
+    ::pclose(pipe);
+  }
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+  return line.empty() ? "(not found beside rigidlab)" : line;
+}
+
+int list(bool names_only) {
+  std::size_t width = 0;
+  for (const std::string& lab : lab_names()) width = std::max(width, lab.size());
+  for (const std::string& lab : lab_names()) {
+    if (names_only) {
+      std::cout << lab << "\n";
+    } else {
+      std::cout << lab << std::string(width - lab.size() + 2, ' ') << title_of(lab) << "\n";
+    }
+  }
+  return 0;
+}
+
+// Starts a lab with `args`, its stdout to /dev/null and stderr kept; returns the pid.
+pid_t start(const std::string& lab, const std::vector<std::string>& args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv;
+    const std::string path = lab_path(lab).string();
+    argv.push_back(const_cast<char*>(path.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    std::FILE* null = std::freopen("/dev/null", "w", stdout);
+    (void)null;
+    ::execv(path.c_str(), argv.data());
+    std::fprintf(stderr, "rigidlab: error: %s: cannot run (%s)\n", path.c_str(), std::strerror(errno));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Every lab's figures into `out`, as many labs at once as there are processors.
+int figures(const std::string& out, const std::string& size, const std::string& prefix) {
+  std::vector<std::string> args{"--quiet", "--figures", out, "--figure-size", size};
+  if (!prefix.empty()) args.insert(args.end(), {"--figure-prefix", prefix});
+  const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
+  std::vector<std::pair<pid_t, std::string>> running;
+  int failed = 0;
+  const auto wait_one = [&] {
+    int status = 0;
+    const pid_t pid = ::wait(&status);
+    for (auto it = running.begin(); it != running.end(); ++it) {
+      if (it->first != pid) continue;
+      const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+      std::cerr << "rigidlab: " << it->second << (ok ? ": figures drawn" : ": FAILED") << "\n";
+      failed += ok ? 0 : 1;
+      running.erase(it);
+      return;
+    }
+  };
+  for (const std::string& lab : lab_names()) {
+    if (static_cast<long>(running.size()) >= cpus) wait_one();
+    running.emplace_back(start(lab, args), lab);
+  }
+  while (!running.empty()) wait_one();
+  if (failed > 0) {
+    std::cerr << "rigidlab: error: figures: " << failed << " lab(s) failed (their lines above)\n";
+    return 1;
+  }
+  std::cout << "figures of " << lab_names().size() << " labs in " << fs::absolute(out).string()
+            << "\n";
+  return 0;
+}
+
+void usage(std::ostream& os) {
+  os << "rigidlab - course labs for \"Rigid Body Motion in 3D\"\n"
+     << "Usage:\n"
+     << "  rigidlab list [--names]        each lab and its sections\n"
+     << "  rigidlab LAB [options]         run a lab (rigidlab LAB --help for its options)\n"
+     << "  rigidlab figures --out DIR [--figure-size WxH] [--figure-prefix P]\n"
+     << "                                 every lab's figures into DIR\n"
+     << "  rigidlab --version             the version\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    usage(std::cout);
+    return args.empty() ? 2 : 0;
+  }
+  const std::string& command = args[0];
+  if (command == "--version") {
+    std::cout << "rigidlab " << RIGID_VERSION << "\n";
+    return 0;
+  }
+  if (command == "list") {
+    CLI::App app("each lab and its sections", "rigidlab list");
+    bool names = false;
+    app.add_flag("--names", names, "only the labs' names, one a line");
+    try {
+      app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
+    } catch (const CLI::ParseError& e) {
+      return app.exit(e);
+    }
+    return list(names);
+  }
+  if (command == "figures") {
+    CLI::App app("every lab's figures into one folder", "rigidlab figures");
+    std::string out, size = "1600x1200", prefix;
+    app.add_option("--out", out, "the folder for the figures (made if missing)")->required();
+    app.add_option("--figure-size", size, "figure size in pixels, 800x600 to 8192x8192")
+        ->capture_default_str();
+    app.add_option("--figure-prefix", prefix, "prefix of the figure files' names");
+    try {
+      app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
+    } catch (const CLI::ParseError& e) {
+      if (e.get_exit_code() == 0) return app.exit(e);
+      std::cerr << "rigidlab: error: figures: " << e.what() << "\n";
+      return 2;
+    }
+    return figures(out, size, prefix);
+  }
+  if (is_lab(command)) {
+    const std::string path = lab_path(command).string();
+    std::vector<char*> lab_argv{const_cast<char*>(command.c_str())};
+    for (int i = 2; i < argc; ++i) lab_argv.push_back(argv[i]);
+    lab_argv.push_back(nullptr);
+    ::execv(path.c_str(), lab_argv.data());
+    std::cerr << "rigidlab: error: " << command << ": cannot run " << path << " ("
+              << std::strerror(errno) << ")\n";
+    return 1;
+  }
+  std::cerr << "rigidlab: error: " << command
+            << ": no such lab or command (rigidlab list shows the labs)\n";
+  return 2;
+}
