@@ -1155,3 +1155,20 @@ TEST_CASE("poinsot: the motion in words, with its stability and how near the sep
   // k'^2 is a difference of nearly equal products: conditioned by ~1/k'^2 ~ 1e4
   CHECK(value(near.json()["results"], "complementary_parameter") == Approx(kp2).epsilon(1e-10));
 }
+
+TEST_CASE("poinsot: a solid box (a phone) beside the ellipsoid, its moments by eq. 40") {
+  const double m = 0.2, A = 0.16, B = 0.08, C = 0.008;
+  const auto run = run_lab("poinsot", "--json --box 0.16,0.08,0.008 --mass 0.2 --omega 0,5,0.01");
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& I = j["results"]["principal_moments"];
+  CHECK(double(I[0]) == Approx(m * (B * B + C * C) / 12).epsilon(1e-15));
+  CHECK(double(I[1]) == Approx(m * (A * A + C * C) / 12).epsilon(1e-15));
+  CHECK(double(I[2]) == Approx(m * (A * A + B * B) / 12).epsilon(1e-15));
+  // spun about its middle axis, nudged: the tennis racquet theorem for a phone
+  CHECK(j["results"]["motion_stability"] == "unstable");
+  CHECK(!j["inputs"].contains("ellipsoid"));
+  CHECK(run_lab("poinsot", "--box 1,1,1 --ellipsoid 1,2,3").status == 2);
+  CHECK(run_lab("poinsot", "--box 1,1,1 --inertia 1,2,3").status == 2);
+  CHECK(run_lab("poinsot", "--box 1,0,1").status == 2);
+}

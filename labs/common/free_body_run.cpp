@@ -147,14 +147,12 @@ void report_motion(Lab& lab, const FreeBodyExact& motion) {
   std::string words, stability;
   if (regime == FreeMotionRegime::kSteady) {
     std::tie(words, stability) = steady_in_words(motion);
-    lab.result_none("complementary_parameter", "  k'^2 of the elliptic functions", "",
-                    "a steady spin has no polhode");
+    lab.result_none("complementary_parameter", "  k'^2", "", "a steady spin has no polhode");
   } else if (regime == FreeMotionRegime::kSeparatrix) {
     words = "on the separatrix: unstable, omega leaves the intermediate axis and only "
             "approaches it again, never returning";
     stability = "unstable";
-    lab.result("complementary_parameter", "  k'^2 of the elliptic functions (0: the separatrix)",
-               0.0, "");
+    lab.result("complementary_parameter", "  k'^2 (0: on the separatrix)", 0.0, "");
   } else {
     const double kp2 = motion.complementary_parameter();
     // k'^2 measures the distance to the separatrix; below 0.01 the period grows as
@@ -169,8 +167,8 @@ void report_motion(Lab& lab, const FreeBodyExact& motion) {
       stability = "stable";
       words = to_string(regime) + ": stable, omega circles that axis";
     }
-    lab.result("complementary_parameter",
-               "  k'^2 of the elliptic functions (1: far from, 0: on the separatrix)", kp2, "");
+    lab.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2,
+               "");
   }
   lab.result_text("motion", "  in words", words);
   lab.result_text("motion_stability", "  stability", stability);
@@ -279,8 +277,8 @@ void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
   lab.section(fmt::format("which method drifts: every method at {:g} evaluations a period, "
                           "{:g} periods (a symplectic method's energy error stays in a band)",
                           evaluations_per_period, periods));
-  lab.result("equal_cost_evaluations_per_period", "right-hand-side evaluations a period (a "
-             "splitting's Strang step counts one)", evaluations_per_period, "");
+  lab.result("equal_cost_evaluations_per_period", "evaluations a period (a Strang step: one)",
+             evaluations_per_period, "");
   lab.result("equal_cost_periods", "periods run", periods, "");
   const EqualCostRow* least = nullptr;
   for (const EqualCostRow& row : rows) {

@@ -628,6 +628,9 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
   return figures_failed_ ? 1 : 0;
 }
 
+// The widest value that sets the value column's width; longer ones (sentences) overflow it.
+constexpr std::size_t kValueColumnMax = 40;
+
 void Lab::emit_table() const {
   std::cout << name_ << " - " << title_ << "\n";
   std::string inputs;
@@ -640,7 +643,8 @@ void Lab::emit_table() const {
   for (const auto& row : rows_) {
     if (row.heading) continue;
     label_width = std::max(label_width, row.label.size());
-    value_width = std::max(value_width, row.value.size());
+    // A sentence (the motion in words) runs past the column instead of widening it.
+    if (row.value.size() <= kValueColumnMax) value_width = std::max(value_width, row.value.size());
     unit_width = std::max(unit_width, row.unit.size());
     any_textbook = any_textbook || !row.textbook.empty();
   }

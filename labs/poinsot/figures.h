@@ -19,6 +19,7 @@ namespace rigid::lab::poinsot {
 struct Inputs {
   Eigen::Vector3d inertia{1, 1, 1};    ///< used only when --inertia is given
   Eigen::Vector3d ellipsoid{3, 2, 1};  ///< semi-axes A, B, C
+  Eigen::Vector3d box{0.2, 0.15, 0.03};  ///< side lengths, used only when --box is given
   double mass = kPi;
   Eigen::Vector3d omega0{1, 1, 1};
   double t_end = 0.0;    ///< 0: three polhode periods

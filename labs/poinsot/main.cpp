@@ -48,7 +48,14 @@ int main(int argc, char** argv) {
       .unit("m")
       .positive()
       .symbol("A, B, C");
-  lab.number("--mass", in.mass, "mass of the solid ellipsoid").unit("kg").positive().symbol("M");
+  lab.vector("--box", in.box,
+             "side lengths A,B,C of a uniform solid box, a book or a phone (instead of "
+             "--ellipsoid)")
+      .unit("m")
+      .positive()
+      .lab_default("none: the ellipsoid")
+      .symbol("box");
+  lab.number("--mass", in.mass, "mass of the solid ellipsoid or box").unit("kg").positive().symbol("M");
   lab.vector("--omega", in.omega0, "initial angular velocity in body axes")
       .unit("rad/s")
       .nonzero()
@@ -61,22 +68,25 @@ int main(int argc, char** argv) {
 
   in.integration.compared = true;  // every method at --step and --tolerance, in a section
   return lab.run(argc, argv, [&](Lab& lab) {
-    const bool moments_given = lab.given("--inertia");
-    if (moments_given && (lab.given("--ellipsoid") || lab.given("--mass"))) {
+    // The body: its moments, a solid ellipsoid (the text's) or a solid box.
+    const bool moments_given = lab.given("--inertia"), box = lab.given("--box");
+    if (moments_given && (lab.given("--ellipsoid") || lab.given("--mass") || box)) {
       throw UsageError("--inertia",
-                       "give the moments or an ellipsoid (--ellipsoid, --mass), not both");
+                       "give the moments or a body (--ellipsoid or --box, and --mass), not both");
     }
-    if (moments_given) {
-      lab.drop_input("ellipsoid");
-      lab.drop_input("mass");
+    if (box && lab.given("--ellipsoid")) {
+      throw UsageError("--box", "give --ellipsoid or --box, not both");
     }
+    if (moments_given || box) lab.drop_input("ellipsoid");
+    if (moments_given) lab.drop_input("mass");
     const Vector3d moments =
         moments_given ? in.inertia
-                      : Vector3d(rigid::solid_ellipsoid(in.mass, in.ellipsoid(0), in.ellipsoid(1),
-                                                        in.ellipsoid(2))
-                                     .I_com.diagonal());
+        : box ? Vector3d(rigid::solid_box(in.mass, in.box(0), in.box(1), in.box(2)).I_com.diagonal())
+              : Vector3d(rigid::solid_ellipsoid(in.mass, in.ellipsoid(0), in.ellipsoid(1),
+                                                in.ellipsoid(2))
+                             .I_com.diagonal());
     const rigid::PrincipalMoments I{moments(0), moments(1), moments(2)};
-    rigid::lab::for_option(moments_given ? "--inertia" : "--ellipsoid",
+    rigid::lab::for_option(moments_given ? "--inertia" : box ? "--box" : "--ellipsoid",
                            [&] { rigid::validate(I); });
 
     lab.section("5.1 the body and its free motion (eqs. 116-120)");
