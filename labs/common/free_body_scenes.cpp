@@ -1,6 +1,12 @@
 #include "common/free_body_scenes.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "common/figures.h"
+#include "rigid/units.h"
 
 #include "rigid/poinsot.h"
 
@@ -14,8 +20,31 @@ void frame_camera(render::Scene3D& scene, double size) {
   scene.camera.fov_y_deg = 27;
 }
 
-// Polhodes on one energy ellipsoid, about the largest and the smallest axis,
-// split by the separatrix through the intermediate axis (section 4.1).
+void add_ellipsoid_mesh(render::Scene3D& scene, const Vector3d& semi_axes, render::Color color,
+                        const std::string& label) {
+  constexpr int kMeridians = 12, kParallels = 7, kPoints = 96;
+  const auto point = [&](double polar, double azimuth) {
+    return Vector3d(semi_axes.x() * std::sin(polar) * std::cos(azimuth),
+                    semi_axes.y() * std::sin(polar) * std::sin(azimuth),
+                    semi_axes.z() * std::cos(polar));
+  };
+  for (int m = 0; m < kMeridians; ++m) {
+    std::vector<Vector3d> line;
+    const double azimuth = 2 * kPi * m / kMeridians;
+    for (int k = 0; k <= kPoints / 2; ++k) line.push_back(point(kPi * k / (kPoints / 2), azimuth));
+    scene.add_polyline(line, color, 2.0, m == 0 ? label : "");
+  }
+  for (int p = 1; p <= kParallels; ++p) {
+    std::vector<Vector3d> line;
+    const double polar = kPi * p / (kParallels + 1);
+    for (int k = 0; k <= kPoints; ++k) line.push_back(point(polar, 2 * kPi * k / kPoints));
+    scene.add_polyline(line, color, 2.0);
+  }
+}
+
+// Polhodes on one energy ellipsoid, about the largest and the smallest axis (in
+// the colours of those principal axes), split by the separatrix through the
+// intermediate axis (section 4.1); this body's in omega's colour.
 render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omega0,
                                const std::vector<std::vector<Vector3d>>& polhode) {
   const PrincipalMoments& I = motion.moments();
@@ -35,6 +64,9 @@ render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omeg
     return curve;
   };
   const double I_mid = moments.sum() - I_min - I_max;
+  Eigen::Index largest = 0, smallest = 0;  // body axes 1-3 as given, not sorted
+  moments.maxCoeff(&largest);
+  moments.minCoeff(&smallest);
   const int family = 7;
   for (int k = 1; k <= family; ++k) {
     for (const bool about_largest : {true, false}) {
@@ -45,7 +77,7 @@ render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omeg
       for (const double sign : {1.0, -1.0}) {
         for (const auto& curve : rigid::polhode(I, sign * w, 240)) {
           scene.add_tube(lift(curve), 0.006 * size,
-                         {about_largest ? render::kBlue : render::kBluishGreen},
+                         {colors::kPrincipal[about_largest ? largest : smallest]},
                          k == 1 && sign > 0 ? (about_largest ? "polhodes about the largest axis"
                                                              : "polhodes about the smallest axis")
                                             : "");
@@ -55,14 +87,14 @@ render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omeg
   }
   bool first = true;
   for (const auto& curve : separatrices(I, T, 400)) {
-    scene.add_tube(lift(curve), 0.009 * size, {render::kVermillion}, first ? "separatrix" : "");
+    scene.add_tube(lift(curve), 0.009 * size, {colors::kSeparatrix}, first ? "separatrix" : "");
     first = false;
   }
   for (std::size_t k = 0; k < polhode.size(); ++k) {
-    scene.add_tube(lift(polhode[k]), 0.011 * size, {render::kBlack},
+    scene.add_tube(lift(polhode[k]), 0.011 * size, {colors::kPolhode},
                    k == 0 ? "this body's polhode" : "");
   }
-  scene.add_sphere(omega0 * 1.004, 0.02 * size, {render::kBlack}, "\\omega_0");
+  scene.add_sphere(omega0 * 1.004, 0.03 * size, {colors::kMarker}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.3 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
   return scene;

@@ -56,22 +56,22 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
                                rad_to_deg(p.space_cone));
   } else {
     scene.add_cone(Vec3::Zero(), slant * std::cos(space) * L, slant * std::sin(space),
-                   {render::kSkyBlue, 0.55f}, space_name);
+                   {colors::kL, 0.3f}, space_name);
   }
   scene.add_cone(Vec3::Zero(), slant * std::cos(alpha) * axis3, slant * std::sin(alpha),
-                 {render::kOrange, 0.4f}, body_name);
+                 {colors::kSymmetryAxis, 0.35f}, body_name);
   const double r = 0.016;
-  scene.add_arrow(Vec3::Zero(), 1.45 * L, r, {render::kBlue}, "L (fixed in space)");
-  scene.add_arrow(Vec3::Zero(), 1.45 * axis3, r, {render::kVermillion}, "symmetry axis 3");
-  scene.add_arrow(Vec3::Zero(), 1.3 * omega, r, {render::kBlack}, "\\omega, the line of contact");
+  scene.add_arrow(Vec3::Zero(), 1.45 * L, r, {colors::kL}, "L (fixed in space)");
+  scene.add_arrow(Vec3::Zero(), 1.45 * axis3, r, {colors::kSymmetryAxis}, "symmetry axis 3");
+  scene.add_arrow(Vec3::Zero(), 1.3 * omega, r, {colors::kOmega}, "\\omega, the line of contact");
   scene.add_polyline(circle_about_z(1.45 * std::sin(theta), 1.45 * std::cos(theta)),
-                     render::kReddishPurple, 3.0, "path of 3 about L");
+                     colors::kSymmetryAxis, 3.0, "path of 3 about L");
   // omega's tip goes round L on the space cone's rim, once per precession period.
   scene.add_polyline(circle_about_z(1.3 * std::sin(std::abs(lead)), 1.3 * std::cos(lead)),
-                     render::kBluishGreen, 3.0, "path of \\omega about L");
-  scene.add_label(1.5 * L, "L", render::kBlue);
-  scene.add_label(1.5 * axis3, "3", render::kVermillion);
-  scene.add_label(1.35 * omega, "\\omega", render::kBlack);
+                     colors::kOmega, 3.0, "path of \\omega about L");
+  scene.add_label(1.5 * L, "L", colors::kL);
+  scene.add_label(1.5 * axis3, "3", colors::kSymmetryAxis);
+  scene.add_label(1.35 * omega, "\\omega", colors::kOmega);
   return scene;
 }
 

@@ -27,16 +27,16 @@ render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& p
   scene.camera.fov_y_deg = 38;
 
   scene.add_box(centre, Vec3(in.a / 2, in.b / 2, 0.01 * size), Mat3::Identity(),
-                {render::kSkyBlue, 0.55f}, "lamina");
+                flat_body(colors::kBody, 0.35f), "lamina");
   // The fixed rotation axis runs through the origin both ways.
-  scene.add_cylinder(-0.4 * size * n, 1.15 * size * n, 0.006 * size, {render::kGray},
+  scene.add_cylinder(-0.4 * size * n, 1.15 * size * n, 0.006 * size, {colors::kFixedAxis},
                      "rotation axis n");
   const double arrow = 0.9 * size;
-  scene.add_arrow(Vec3::Zero(), arrow * n, 0.018 * size, {render::kBlue}, "\\omega");
-  scene.add_arrow(Vec3::Zero(), arrow * L_dir, 0.018 * size, {render::kVermillion},
+  scene.add_arrow(Vec3::Zero(), arrow * n, 0.018 * size, {colors::kOmega}, "\\omega");
+  scene.add_arrow(Vec3::Zero(), arrow * L_dir, 0.018 * size, {colors::kL},
                   "L = I\\omega (direction)");
-  scene.add_label(arrow * 1.08 * n, "\\omega", render::kBlue);
-  scene.add_label(arrow * 1.08 * L_dir, "L", render::kVermillion);
+  scene.add_label(arrow * 1.08 * n, "\\omega", colors::kOmega);
+  scene.add_label(arrow * 1.08 * L_dir, "L", colors::kL);
   // The angle between omega and L, as an arc in their plane (section 1.1).
   const double angle = angle_between(L_dir, n);
   if (angle > 1e-6) {
@@ -52,8 +52,7 @@ render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& p
                     render::kBlack);
   }
   // Principal axes through the origin, both directions, labelled by moment.
-  const render::Color axis_colors[3] = {render::kBluishGreen, render::kOrange,
-                                        render::kReddishPurple};
+  const render::Color* axis_colors = colors::kPrincipal;
   for (int i = 0; i < 3; ++i) {
     const Vec3 e = principal.axes.row(i).transpose();
     const double reach = (i == 2 ? 0.6 : 0.75) * size;
@@ -87,7 +86,10 @@ render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
        {std::pair{axes.theta, axes.moment}, std::pair{axes.theta_other, axes.moment_other}}) {
     double deg = rad_to_deg(theta);
     if (deg > 90) deg -= 180;
-    panel.add_ref_line(deg, true, fmt::format("principal axis {:.1f}\\deg", deg));
+    // In the plane the smaller moment is axis 1's and the larger axis 2's (I3 is normal).
+    const int index = value < std::max(axes.moment, axes.moment_other) ? 0 : 1;
+    panel.add_ref_line(deg, true, fmt::format("principal axis {} at {:.1f}\\deg", index + 1, deg))
+        .color = colors::kPrincipal[index];
     panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
   }
   const Vec3 n = in.axis.stableNormalized();
@@ -96,7 +98,7 @@ render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
     if (deg > 90) deg -= 180;
     if (deg < -90) deg += 180;
     panel.add_points({deg}, {moment_about_axis(I, n)}, "chosen axis n", render::Marker::kCircle)
-        .color = render::kVermillion;
+        .color = colors::kMarker;
   }
   return plot;
 }

@@ -24,16 +24,18 @@ render::Scene3D ellipsoids_scene(const FreeBodyExact& motion, const Vector3d& om
   render::Scene3D scene;
   scene.title = "energy and momentum ellipsoids";
   frame_camera(scene, size);
+  // The energy ellipsoid a light surface, the momentum one a mesh of lines in L's
+  // colour: two translucent surfaces would blend into a colour neither swatch shows.
   scene.add_ellipsoid(Vector3d::Zero(), e.energy_semi_axes, Eigen::Matrix3d::Identity(),
-                      {render::kSkyBlue, 0.45f}, "energy ellipsoid \\Sigma I_i\\omega_i^2 = 2T");
-  scene.add_ellipsoid(Vector3d::Zero(), e.momentum_semi_axes, Eigen::Matrix3d::Identity(),
-                      {render::kOrange, 0.35f},
-                      "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
+                      {render::kLightGray, 1.0f, 0.15f},
+                      "energy ellipsoid \\Sigma I_i\\omega_i^2 = 2T");
+  add_ellipsoid_mesh(scene, e.momentum_semi_axes, colors::kL,
+                     "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
   // A steady spin has no curve: its polhode is the point omega0 itself.
   for (std::size_t k = 0; k < polhode.size(); ++k) {
-    scene.add_tube(polhode[k], 0.012 * size, {render::kVermillion}, k == 0 ? "polhode" : "");
+    scene.add_tube(polhode[k], 0.012 * size, {colors::kPolhode}, k == 0 ? "polhode" : "");
   }
-  scene.add_sphere(omega0, 0.03 * size, {render::kBlack}, "\\omega_0");
+  scene.add_sphere(omega0, 0.03 * size, {colors::kMarker}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
   return scene;
@@ -52,15 +54,15 @@ render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySamp
   left.x.label = "t (s)";
   left.y.label = "\\omega_i (rad/s)";
   for (int i = 0; i < 3; ++i) {
-    left.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = render::palette_color(i);
+    left.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = colors::kPrincipal[i];
   }
   render::Panel& right = plot.panel(0, 1);
   right.title = "phase plot";
   right.x.label = "\\omega_1 (rad/s)";
   right.y.label = "\\omega_j (rad/s)";
-  right.add_line(w[0], w[1], "\\omega_2 against \\omega_1").color = render::palette_color(1);
-  right.add_line(w[0], w[2], "\\omega_3 against \\omega_1").color = render::palette_color(2);
-  right.add_points({omega0(0), omega0(0)}, {omega0(1), omega0(2)}, "t = 0").color = render::kBlack;
+  right.add_line(w[0], w[1], "\\omega_2 against \\omega_1").color = colors::kPrincipal[1];
+  right.add_line(w[0], w[2], "\\omega_3 against \\omega_1").color = colors::kPrincipal[2];
+  right.add_points({omega0(0), omega0(0)}, {omega0(1), omega0(2)}, "t = 0").color = colors::kMarker;
   right.equal_aspect = true;
   return plot;
 }

@@ -40,7 +40,7 @@ render::Plot2D omega_plot(const Figures& f) {
     panel.x = {axis == 2 ? "t (s)" : "", render::Scale::kLinear, 0, f.t_end};
     panel.y.label = "\\omega_i (rad/s)";
     for (int i = 0; i < 3; ++i) {
-      panel.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = render::palette_color(i);
+      panel.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = colors::kPrincipal[i];
     }
     if (axis != 0) panel.legend = render::LegendPlace::kNone;
   }
@@ -137,19 +137,20 @@ render::Scene3D flip_scene(const Figures& f) {
     const Vector3d head = c + R * r.head_centre, n3 = R.col(2);
     const bool first = k == 0;
     scene.add_torus(head, n3, a, 0.06 * a, {render::kGray}, first ? "the head, a ring" : "");
-    scene.add_disk(head + 0.004 * a * n3, n3, 0.96 * a, {render::kSkyBlue},
+    // The faces unshaded: each keeps its swatch's colour however it is turned.
+    scene.add_disk(head + 0.004 * a * n3, n3, 0.96 * a, flat_body(colors::kBody, 1.0f),
                    first ? "face toward +3" : "");
-    scene.add_disk(head - 0.004 * a * n3, -n3, 0.96 * a, {render::kOrange},
+    scene.add_disk(head - 0.004 * a * n3, -n3, 0.96 * a, flat_body(render::kYellow, 1.0f),
                    first ? "face toward -3" : "");
     scene.add_cylinder(c + R * r.handle_start, c + R * r.handle_end, 0.05 * a, {render::kBlack},
                        first ? "the handle, axis 1" : "");
-    scene.add_arrow(c, c + 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {render::kBlue},
+    scene.add_arrow(c, c + 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {colors::kL},
                     first ? "L, fixed in space" : "");
-    scene.add_arrow(c, c + 0.4 * length * R.col(1), 0.03 * a, {render::kVermillion},
+    scene.add_arrow(c, c + 0.4 * length * R.col(1), 0.03 * a, {colors::kPrincipal[1]},
                     first ? "body axis 2" : "");
     scene.add_label(c - 0.45 * length * Vector3d::UnitZ(), fmt::format("t = {:.3f} s", t));
     scene.add_label(c + 0.45 * length * R.col(1), fmt::format("{:.0f}\\deg", rad_to_deg(angle2(t))),
-                    render::kVermillion);
+                    colors::kPrincipal[1]);
   }
   scene.camera.eye = Vector3d(0.9 * spacing_x, -4.0 * length * 3, 0.8 * length * 3);
   scene.camera.target = Vector3d(spacing_x, 0, -0.5 * spacing_z);

@@ -37,29 +37,29 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
   scene.camera.target = Vec3(0.05 * a, 0, 0);
   scene.camera.fov_y_deg = 34;
 
-  scene.add_cylinder(Vec3(-0.012 * a, 0, 0), Vec3(0.012 * a, 0, 0), a, {render::kLightGray, 0.6f},
+  scene.add_cylinder(Vec3(-0.012 * a, 0, 0), Vec3(0.012 * a, 0, 0), a, flat_body(colors::kBody, 0.35f),
                      "disk (symmetry axis x)");
-  scene.add_cylinder(-1.9 * a * axle, 1.9 * a * axle, 0.035 * a, {render::kGray}, "crooked axle");
+  scene.add_cylinder(-1.9 * a * axle, 1.9 * a * axle, 0.035 * a, {colors::kFixedAxis}, "crooked axle");
   // A balanced wheel (a straight axle) needs no masses, and L sweeps no cone.
   if (m0 > 0.0) {
     const double r0 = 0.07 * a * std::cbrt(std::max(m0, 1e-6) / (0.01 * wheel.mass));
-    scene.add_sphere(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {render::kVermillion},
+    scene.add_sphere(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {colors::kMarker},
                      fmt::format("balancing masses m_0 = {:.1f} g", 1e3 * m0));
-    scene.add_sphere(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {render::kVermillion});
+    scene.add_sphere(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {colors::kMarker});
   }
   // The cone swept by L about the axle when unbalanced, with L at t = 0.
   const double length = 1.6 * a;
   if (cone_angle > 0.0) {
     scene.add_cone(Vec3::Zero(), length * std::cos(cone_angle) * axle,
-                   length * std::sin(cone_angle), {render::kSkyBlue, 0.35f},
+                   length * std::sin(cone_angle), {colors::kL, 0.25f},
                    "cone swept by L (unbalanced)");
   }
   const Vec3 L_shown = shown(L0).normalized();
-  scene.add_arrow(Vec3::Zero(), length * L_shown, 0.03 * a, {render::kBlue}, "L before balancing");
-  scene.add_arrow(Vec3::Zero(), length * 1.12 * axle, 0.03 * a, {render::kBluishGreen},
+  scene.add_arrow(Vec3::Zero(), length * L_shown, 0.03 * a, {colors::kL}, "L before balancing");
+  scene.add_arrow(Vec3::Zero(), length * 1.12 * axle, 0.03 * a, {colors::kOmega},
                   "\\omega along the axle");
-  scene.add_label(length * 1.05 * L_shown, "L", render::kBlue);
-  scene.add_label(length * 1.15 * axle, "\\omega", render::kBluishGreen);
+  scene.add_label(length * 1.05 * L_shown, "L", colors::kL);
+  scene.add_label(length * 1.15 * axle, "\\omega", colors::kOmega);
   scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"});
   return scene;
 }

@@ -107,12 +107,12 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
     }
     const bool first = index == 0;
     scene.add_sphere(c, 1.0, {render::kLightGray, 0.35f, 0.1f}, first ? "unit sphere" : "");
-    scene.add_tube(path, 0.016, {render::kVermillion}, first ? "path of the symmetry axis" : "");
+    scene.add_tube(path, 0.016, {colors::kSymmetryAxis}, first ? "path of the symmetry axis" : "");
     // Paths and circles just outside the translucent sphere, so it does not veil them.
-    scene.add_polyline(circle(motion.theta_min(), c, 1.02), render::kBlue, 2.5,
+    scene.add_polyline(circle(motion.theta_min(), c, 1.02), render::kBlack, 2.5,
                        first ? "turning circles \\theta_{min}, \\theta_{max}" : "");
-    scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlue, 2.5);
-    scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {render::kGray}, first ? "vertical z" : "");
+    scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlack, 2.5);
+    scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {colors::kFixedAxis}, first ? "vertical z" : "");
     scene.add_label(c + Vector3d(0, -1.3, 0), to_string(motion.regime()));
     ++index;
   }
@@ -182,22 +182,22 @@ render::Scene3D top_scene(const Figures& f) {
   const Vector3d torque = -top.mgl * e3.cross(Vector3d::UnitZ());
   render::Scene3D scene;
   scene.title = "the top at t = 0; arrows show directions";
-  scene.add_sphere(Vector3d::Zero(), 0.04 * size, {render::kBlack}, "tip (pivot)");
+  scene.add_sphere(Vector3d::Zero(), 0.04 * size, {render::kGray}, "tip (pivot)");
   scene.add_cylinder(Vector3d::Zero(), (l + 0.5 * r) * e3, 0.03 * size, {render::kGray});
   // The disk translucent, so the tip, the spindle and the circle below stay in view.
-  scene.add_cylinder(l * e3 - 0.05 * r * e3, l * e3 + 0.05 * r * e3, r, {render::kOrange, 0.5f},
+  scene.add_cylinder(l * e3 - 0.05 * r * e3, l * e3 + 0.05 * r * e3, r, {colors::kBody, 0.5f},
                      "disk");
   const double arrow = 1.6 * size;
   if (L.norm() > 0) {
-    scene.add_arrow(Vector3d::Zero(), arrow * L.normalized(), 0.025 * size, {render::kBlue}, "L");
+    scene.add_arrow(Vector3d::Zero(), arrow * L.normalized(), 0.025 * size, {colors::kL}, "L");
   }
   if (torque.norm() > 0) {
     scene.add_arrow(l * e3, l * e3 + 0.8 * arrow * torque.normalized(), 0.025 * size,
-                    {render::kVermillion}, "gravity torque");
+                    {colors::kTorque}, "gravity torque");
   }
   if (omega.norm() > 0) {
     scene.add_arrow(Vector3d::Zero(), 1.2 * arrow * omega.normalized(), 0.018 * size,
-                    {render::kBluishGreen}, "\\omega");
+                    {colors::kOmega}, "\\omega");
   }
   scene.add_polyline(circle(std::acos(std::clamp(e3.z(), -1.0, 1.0)), Vector3d::Zero(), l),
                      render::kReddishPurple, 3.0, "centre of mass's precession circle");

@@ -50,8 +50,8 @@ DashPattern dash_pattern(Dash d, double width, const Style& st) {
   return {};
 }
 
-void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c) {
-  const double r = 0.5 * size;
+namespace {
+void marker_shape(Painter& p, Marker m, double x, double y, double r, Color c) {
   switch (m) {
     case Marker::kNone: break;
     case Marker::kCircle: p.disc({x, y, 0}, r, c); break;
@@ -60,6 +60,17 @@ void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c)
       p.triangle({x, y - 1.15 * r, 0}, {x - r, y + 0.6 * r, 0}, {x + r, y + 0.6 * r, 0}, c);
       break;
   }
+}
+}  // namespace
+
+// A marker with a contrasting edge, white round a dark one and dark round a light one,
+// so it stays visible on a curve of its own colour.
+void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c) {
+  const double r = 0.5 * size, edge = std::max(1.5, 0.2 * r);
+  const double luminance = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+  const Color rim = luminance < 0.6 ? kWhite : kTextColor;
+  marker_shape(p, m, x, y, r + edge, rim.with_alpha(c.a));
+  marker_shape(p, m, x, y, r, c);
 }
 
 ScreenRect text_box(const TextExtent& e, double x, double y, HAlign h, VAlign v) {

@@ -103,6 +103,7 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
     const Material& m = o.material;
     gl.Uniform4f(prog.color, m.color.r, m.color.g, m.color.b, m.opacity);
     gl.Uniform1f(prog.spec, m.specular);
+    gl.Uniform1i(prog.lit, m.lit ? 1 : 0);
     gl.Uniform1f(prog.shininess, m.shininess);
     gl.BindVertexArray(g->vao);
     gl.DrawElements(GL_TRIANGLES, g->count, GL_UNSIGNED_INT, nullptr);
@@ -112,7 +113,7 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
   //    always hidden behind its front faces, so they are culled: half the
   //    triangles never reach the rasteriser. Open ones (disk, plane) and
   //    custom meshes show both sides.
-  auto is_open = [](const Scene3D::Object* o) { return o->shape == Scene3D::Shape::kDisk || o->shape == Scene3D::Shape::kPlane; };
+  auto is_open = [](const Scene3D::Object* o) { return detail::is_open(o->shape); };
   gl.Disable(GL_BLEND);
   gl.CullFace(GL_BACK);
   gl.DepthMask(GL_TRUE);

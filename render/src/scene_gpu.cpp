@@ -37,8 +37,13 @@ uniform vec4 u_color;
 uniform float u_spec;
 uniform float u_shininess;
 uniform int u_ortho;
+uniform int u_lit;
 out vec4 frag;
 void main() {
+  if (u_lit == 0) {
+    frag = u_color;
+    return;
+  }
   vec3 n = normalize(v_n);
   if (!gl_FrontFacing) n = -n;
   vec3 v = u_ortho == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-v_p);
@@ -106,6 +111,7 @@ MeshProgram& mesh_program() {
     m->spec = gl.GetUniformLocation(m->program, "u_spec");
     m->shininess = gl.GetUniformLocation(m->program, "u_shininess");
     m->ortho = gl.GetUniformLocation(m->program, "u_ortho");
+    m->lit = gl.GetUniformLocation(m->program, "u_lit");
     return m;
   }();
   return *p;

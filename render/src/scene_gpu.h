@@ -17,7 +17,7 @@ struct GpuMesh {
 /// The lit-mesh shader program and its uniform locations.
 struct MeshProgram {
   GLuint program = 0;
-  GLint mvp = -1, mv = -1, nmat = -1, color = -1, spec = -1, shininess = -1, ortho = -1;
+  GLint mvp = -1, mv = -1, nmat = -1, color = -1, spec = -1, shininess = -1, ortho = -1, lit = -1;
 };
 
 /// Copies a mesh into new GL buffers (positions and normals interleaved).

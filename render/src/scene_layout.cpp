@@ -16,15 +16,36 @@ using Eigen::Vector3d;
 
 namespace {
 
-// The legend rows: surfaces as filled swatches (a translucent one as it looks over
-// white), polylines as lines.
+// How bright the shader (kMeshFragment in scene_gpu.cpp) draws a surface that faces
+// the viewer, n = (0, 0, 1): the hemispheric ambient at its middle, mix(0.30, 0.46,
+// 0.5), plus the key light 0.55 n.key and the fill 0.20 n.fill, with the lights'
+// directions as the shader has them. About 0.82: a swatch at full colour would be
+// lighter than the surface it names.
+double facing_light() {
+  const Vector3d key = Vector3d(-0.45, 0.65, 0.62).normalized();
+  const Vector3d fill = Vector3d(0.75, -0.15, 0.45).normalized();
+  return 0.38 + 0.55 * key.z() + 0.20 * fill.z();
+}
+
+// The legend rows: surfaces as filled swatches, each the colour a face toward the
+// viewer is drawn in (lit, then a translucent one over white), polylines as lines.
 std::vector<LegendEntry> legend_entries(const Scene3D& scene) {
   std::vector<LegendEntry> out;
+  const float light = static_cast<float>(facing_light());
   for (const Scene3D::Object& o : scene.objects())
     if (!o.label.empty()) {
       const float a = o.material.opacity;
       const Color c = o.material.color;
-      out.push_back({o.label, {c.r * a + (1 - a), c.g * a + (1 - a), c.b * a + (1 - a), 1}, true});
+      const float k = o.material.lit ? light : 1.0f;
+      // A closed translucent shape is seen through two of its faces (its back, then
+      // its front, each blended over what lies behind); an open one (a disk, a plane)
+      // through one.
+      const bool open = is_open(o.shape);
+      const auto shown = [&](float v) {
+        const float lit = std::min(1.0f, v * k), once = lit * a + (1 - a);
+        return open ? once : lit * a + (1 - a) * once;
+      };
+      out.push_back({o.label, {shown(c.r), shown(c.g), shown(c.b), 1}, true});
     }
   for (const Scene3D::Polyline& pl : scene.polylines())
     if (!pl.label.empty()) out.push_back({pl.label, pl.color, false, pl.width});

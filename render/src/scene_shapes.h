@@ -12,6 +12,11 @@ namespace rigid::render::detail {
 /// The minor/major ratio of a torus in thousandths (0 for other shapes): a cache key.
 int torus_ratio_key(Scene3D::Shape shape, double torus_minor);
 
+// An open surface (a disk, a plane) has no back: seen through once, drawn both sides.
+inline bool is_open(Scene3D::Shape shape) {
+  return shape == Scene3D::Shape::kDisk || shape == Scene3D::Shape::kPlane;
+}
+
 /// The unit mesh of a built-in shape with `segments` around (empty for tubes and custom meshes).
 Mesh unit_shape_mesh(Scene3D::Shape shape, int segments, int ratio);
 

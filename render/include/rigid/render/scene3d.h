@@ -49,6 +49,9 @@ struct Material {
   float opacity = 1.0f;
   float specular = 0.25f;   ///< strength of the Blinn-Phong highlight
   float shininess = 48.0f;  ///< Blinn-Phong exponent
+  /// false: drawn in its flat colour, unshaded (a translucent plate or disk whose
+  /// colour must match its legend swatch from any side).
+  bool lit = true;
 };
 
 /// Text naming a 3D point: drawn on the point where that is clear, else beside it (right,
