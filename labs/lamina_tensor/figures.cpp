@@ -61,7 +61,8 @@ render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& p
         fmt::format("principal axis {}: I_{} = {:.4g} kg m^2", i + 1, i + 1, principal.moments(i)));
     scene.add_label(reach * 1.1 * e, std::to_string(i + 1), axis_colors[i]);
   }
-  scene.add_axes(Vec3::Zero(), Mat3::Identity(), 0.35 * size, {"x", "y", "z"});
+  // The x, y, z triad as thick as the principal axes, so it reads at 800x600 too.
+  scene.add_axes(Vec3::Zero(), Mat3::Identity(), 0.45 * size, {"x", "y", "z"}, 0.009 * size);
   return scene;
 }
 

@@ -60,7 +60,7 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
                   "\\omega along the axle");
   scene.add_label(length * 1.05 * L_shown, "L", colors::kL);
   scene.add_label(length * 1.15 * axle, "\\omega", colors::kOmega);
-  scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"});
+  scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"}, 0.015 * a);
   return scene;
 }
 

@@ -107,7 +107,7 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
     }
     const bool first = index == 0;
     scene.add_sphere(c, 1.0, {render::kLightGray, 0.35f, 0.1f}, first ? "unit sphere" : "");
-    scene.add_tube(path, 0.016, {colors::kSymmetryAxis}, first ? "path of the symmetry axis" : "");
+    scene.add_tube(path, 0.022, {colors::kSymmetryAxis}, first ? "path of the symmetry axis" : "");
     // Paths and circles just outside the translucent sphere, so it does not veil them.
     scene.add_polyline(circle(motion.theta_min(), c, 1.02), render::kBlack, 2.5,
                        first ? "turning circles \\theta_{min}, \\theta_{max}" : "");
