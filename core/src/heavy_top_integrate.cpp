@@ -222,22 +222,14 @@ std::vector<TopComparison> compare_top_methods_at_cost(const HeavyTopExact& exac
   const auto max_samples = static_cast<std::size_t>(std::ceil(periods * samples_per_period)) + 1;
   std::vector<TopComparison> out;
   for (const Method m : kAllMethods) {
-    OdeOptions o;
-    o.method = m;
-    // A run dearer than 4x the budget is not a candidate (each step costs >= 1).
-    o.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
     const auto run_with = [&](const OdeOptions& settings) {
       const std::vector<double> times = sample_times(
           t_end, period, is_adaptive(m) ? 0.0 : settings.step, samples_per_period, max_samples);
       return integrate_heavy_top(exact.top(), x0, times, settings);
     };
-    o = options_at_cost(o, period, evaluations_per_period, [&](const OdeOptions& settings) {
-      try {
-        return static_cast<double>(run_with(settings).evaluations) / periods;
-      } catch (const std::exception&) {
-        return std::numeric_limits<double>::infinity();
-      }
-    });
+    const OdeOptions o =
+        settings_at_cost(m, period, periods, evaluations_per_period,
+                         [&](const OdeOptions& settings) { return run_with(settings).evaluations; });
     TopComparison c;
     c.options = o;
     try {

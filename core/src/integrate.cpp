@@ -280,26 +280,17 @@ std::vector<MethodComparison> compare_methods_at_cost(const FreeBodyExact& exact
   const auto max_samples = static_cast<std::size_t>(std::ceil(periods * samples_per_period)) + 1;
   std::vector<MethodComparison> out;
   for (const Method m : kAllMethods) {
-    MethodComparison c;
-    c.options.method = m;
-    // A run dearer than 4x the budget is not a candidate (each step costs >= 1).
-    c.options.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
-    const auto run_with = [&](const IntegrateOptions& o) {
+    const auto run_with = [&](const OdeOptions& o) {
       const std::vector<double> times =
           sample_times(t_end, period, is_adaptive(m) ? 0.0 : o.step, samples_per_period, max_samples);
-      return integrate_free_body(exact.moments(), exact.state(0.0), times, o);
-    };
-    const OdeOptions found = options_at_cost(c.options, period, evaluations_per_period,
-                                             [&](const OdeOptions& o) {
-      IntegrateOptions io = c.options;
+      IntegrateOptions io;
       static_cast<OdeOptions&>(io) = o;
-      try {
-        return static_cast<double>(run_with(io).evaluations) / periods;
-      } catch (const std::exception&) {
-        return std::numeric_limits<double>::infinity();
-      }
-    });
-    static_cast<OdeOptions&>(c.options) = found;
+      return integrate_free_body(exact.moments(), exact.state(0.0), times, io);
+    };
+    MethodComparison c;
+    static_cast<OdeOptions&>(c.options) = settings_at_cost(
+        m, period, periods, evaluations_per_period,
+        [&](const OdeOptions& o) { return run_with(o).evaluations; });
     try {
       measure(c, run_with(c.options), exact, period);
     } catch (const std::exception&) {

@@ -9,8 +9,23 @@ namespace rigid {
 
 namespace {
 
-constexpr std::array<std::string_view, 6> kNames = {"splitting", "splitting4", "rk4",
-                                                    "dopri5",    "rkf78",      "bulirsch-stoer"};
+// Every method's facts in one table, in the order of Method.
+struct MethodFacts {
+  std::string_view name, kind;
+  int fixed_step_order;      // 0: adaptive
+  int evaluations_per_step;  // 0: counted as they happen (adaptive)
+  bool adaptive, after_step;
+};
+constexpr std::array<MethodFacts, 6> kFacts = {{
+    {"splitting", "symplectic splitting, order 2", 2, 1, false, false},
+    {"splitting4", "symplectic splitting, order 4", 4, 5, false, false},
+    {"rk4", "fixed-step Runge-Kutta, order 4", 4, 4, false, true},
+    {"dopri5", "adaptive Runge-Kutta, order 5(4)", 0, 0, true, false},
+    {"rkf78", "adaptive Runge-Kutta-Fehlberg, order 7(8)", 0, 0, true, true},
+    {"bulirsch-stoer", "adaptive extrapolation (Bulirsch-Stoer)", 0, 0, true, false},
+}};
+
+const MethodFacts& facts(Method m) { return kFacts[static_cast<std::size_t>(m)]; }
 
 // The one wording of "this run needs too many steps", fixed-step (step > 0) or adaptive.
 std::string too_many_steps(Method m, std::size_t max_steps, double t_end, double step) {
@@ -27,7 +42,7 @@ std::string too_many_steps(Method m, std::size_t max_steps, double t_end, double
 }  // namespace
 
 std::string_view method_name(Method m) {
-  return kNames[static_cast<std::size_t>(m)];
+  return facts(m).name;
 }
 
 Method method_from_name(std::string_view name) {
@@ -35,61 +50,29 @@ Method method_from_name(std::string_view name) {
     if (method_name(m) == name) return m;
   }
   std::string list;
-  for (auto n : kNames) list += (list.empty() ? "" : ", ") + std::string(n);
+  for (const MethodFacts& f : kFacts) list += (list.empty() ? "" : ", ") + std::string(f.name);
   throw std::invalid_argument("unknown method '" + std::string(name) + "'; expected one of " +
                               list);
 }
 
 bool is_adaptive(Method m) {
-  return m == Method::kDopri5 || m == Method::kRkf78 || m == Method::kBulirschStoer;
+  return facts(m).adaptive;
 }
 
 bool takes_after_step(Method m) {
-  return m == Method::kRk4 || m == Method::kRkf78;
+  return facts(m).after_step;
 }
 
 int fixed_step_order(Method m) {
-  switch (m) {
-    case Method::kSplitting:
-      return 2;
-    case Method::kSplitting4:
-      return 4;
-    case Method::kRk4:
-      return 4;
-    default:
-      return 0;
-  }
+  return facts(m).fixed_step_order;
 }
 
 std::string_view method_kind(Method m) {
-  switch (m) {
-    case Method::kSplitting:
-      return "symplectic splitting, order 2";
-    case Method::kSplitting4:
-      return "symplectic splitting, order 4";
-    case Method::kRk4:
-      return "fixed-step Runge-Kutta, order 4";
-    case Method::kDopri5:
-      return "adaptive Runge-Kutta, order 5(4)";
-    case Method::kRkf78:
-      return "adaptive Runge-Kutta-Fehlberg, order 7(8)";
-    case Method::kBulirschStoer:
-      return "adaptive extrapolation (Bulirsch-Stoer)";
-  }
-  return "";
+  return facts(m).kind;
 }
 
 int evaluations_per_step(Method m) {
-  switch (m) {
-    case Method::kSplitting:
-      return 1;
-    case Method::kSplitting4:
-      return 5;
-    case Method::kRk4:
-      return 4;
-    default:
-      return 0;
-  }
+  return facts(m).evaluations_per_step;
 }
 
 void validate_run(const OdeOptions& o, const std::vector<double>& times, bool after_step) {

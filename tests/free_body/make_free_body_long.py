@@ -23,6 +23,8 @@ import os
 
 import mpmath as mp
 
+from make_reference import axis_angle, rhs  # Euler's equations and q's kinematics, shared
+
 mp.mp.dps = 30
 
 
@@ -54,24 +56,6 @@ def landau_period(I, w):
     rate = mp.sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3))
     k2 = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1))
     return 4 * mp.ellipk(k2) / rate
-
-
-def rhs(I):
-    I1, I2, I3 = I
-
-    def F(t, y):
-        w1, w2, w3, qw, qx, qy, qz = y
-        return [-(w2 * w3 * (I3 - I2)) / I1, -(w3 * w1 * (I1 - I3)) / I2,
-                -(w1 * w2 * (I2 - I1)) / I3,
-                (-qx * w1 - qy * w2 - qz * w3) / 2, (qw * w1 + qy * w3 - qz * w2) / 2,
-                (qw * w2 + qz * w1 - qx * w3) / 2, (qw * w3 + qx * w2 - qy * w1) / 2]
-    return F
-
-
-def axis_angle(axis, angle):
-    n = math.sqrt(sum(a * a for a in axis))
-    s = math.sin(angle / 2)
-    return [math.cos(angle / 2)] + [s * a / n for a in axis]
 
 
 Q0 = axis_angle([1.0, 2.0, 3.0], 0.3)

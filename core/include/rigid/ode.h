@@ -341,6 +341,25 @@ OdeOptions options_at_cost(OdeOptions options, double period, double evaluations
   return at(best);
 }
 
+/// The settings of method `m` for a run of `periods` periods that costs about
+/// `evaluations_per_period` a period (options_at_cost), each trial run by
+/// `evaluations_of(options)`, which returns its evaluations; a trial that throws
+/// (past its step cap: 4x the budget, each step costing at least one) costs infinity.
+template <class Evaluations>
+OdeOptions settings_at_cost(Method m, double period, double periods,
+                            double evaluations_per_period, Evaluations evaluations_of) {
+  OdeOptions o;
+  o.method = m;
+  o.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
+  return options_at_cost(o, period, evaluations_per_period, [&](const OdeOptions& trial) {
+    try {
+      return static_cast<double>(evaluations_of(trial)) / periods;
+    } catch (const std::exception&) {
+      return std::numeric_limits<double>::infinity();
+    }
+  });
+}
+
 /// Integrates `system` from x0 at t = times.front() by options.method (rk4, dopri5,
 /// rkf78 or bulirsch-stoer), calls observe(x, t) at every entry of `times`, and
 /// applies after_step(x) after every accepted step (rk4 and rkf78 only). Throws
