@@ -142,7 +142,8 @@ void usage(std::ostream& os) {
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    usage(std::cout);
+    // Asked for: the usage on stdout; no command at all: on stderr, as an error.
+    usage(args.empty() ? std::cerr : std::cout);
     return args.empty() ? 2 : 0;
   }
   const std::string& command = args[0];
