@@ -60,42 +60,12 @@ std::vector<std::uint8_t> unmatched(const rigid::render::Image& a, const rigid::
   return out;
 }
 
-// The largest 8-connected cluster of marked pixels.
-long largest_cluster(std::vector<std::uint8_t> mark, int width) {
-  long best = 0;
-  std::vector<std::size_t> stack;
-  for (std::size_t s = 0; s < mark.size(); ++s) {
-    if (mark[s] != 1) continue;
-    long size = 0;
-    mark[s] = 2;
-    stack.push_back(s);
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      ++size;
-      const int x = static_cast<int>(i % width), y = static_cast<int>(i / width);
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          const long nx = x + dx, ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= width) continue;
-          const std::size_t j = static_cast<std::size_t>(ny) * width + static_cast<std::size_t>(nx);
-          if (j < mark.size() && mark[j] == 1) {
-            mark[j] = 2;
-            stack.push_back(j);
-          }
-        }
-      }
-    }
-    best = std::max(best, size);
-  }
-  return best;
-}
 
 // The verdict of one comparison: empty when the figure matches.
 std::string mismatch(const rigid::render::Image& actual, const rigid::render::Image& expected) {
   std::string why;
   for (const auto& mark : {unmatched(actual, expected), unmatched(expected, actual)}) {
-    const long cluster = largest_cluster(mark, actual.width);
+    const long cluster = rigid::render::largest_cluster(mark, actual.width);
     if (cluster > kMaxCluster) why += " a changed region of " + std::to_string(cluster) + " px;";
   }
   const auto d = rigid::render::compare_images(actual, expected, kChannelThreshold);

@@ -24,6 +24,39 @@ int pixel_diff(const Image& a, const Image& b, std::size_t i) {
 
 }  // namespace
 
+long largest_cluster(const std::vector<std::uint8_t>& mask, int width) {
+  // Flood fill over the 8 neighbours, an explicit stack (no recursion); 2 marks visited.
+  std::vector<std::uint8_t> mark(mask.size());
+  for (std::size_t i = 0; i < mask.size(); ++i) mark[i] = mask[i] != 0;
+  long best = 0;
+  std::vector<std::size_t> stack;
+  for (std::size_t start = 0; start < mark.size(); ++start) {
+    if (mark[start] != 1) continue;
+    long size = 0;
+    mark[start] = 2;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      ++size;
+      const long x = static_cast<long>(i % width), y = static_cast<long>(i / width);
+      for (long dy = -1; dy <= 1; ++dy) {
+        for (long dx = -1; dx <= 1; ++dx) {
+          const long nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= width) continue;
+          const std::size_t j = static_cast<std::size_t>(ny) * width + static_cast<std::size_t>(nx);
+          if (j < mark.size() && mark[j] == 1) {
+            mark[j] = 2;
+            stack.push_back(j);
+          }
+        }
+      }
+    }
+    best = std::max(best, size);
+  }
+  return best;
+}
+
 ImageDiff compare_images(const Image& a, const Image& b, int threshold) {
   check_sizes(a, b);
   ImageDiff r;
@@ -41,32 +74,7 @@ ImageDiff compare_images(const Image& a, const Image& b, int threshold) {
   }
   r.differing_fraction = n ? double(r.differing_pixels) / double(n) : 0.0;
   r.mean_diff = n ? sum / double(n) : 0.0;
-  // Clusters by flood fill over the 8 neighbours (an explicit stack: no recursion).
-  std::vector<std::size_t> stack;
-  for (std::size_t start = 0; start < n; ++start) {
-    if (differs[start] != 1) continue;
-    long size = 0;
-    differs[start] = 2;
-    stack.push_back(start);
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      ++size;
-      const int x = static_cast<int>(i % a.width), y = static_cast<int>(i / a.width);
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = x + dx, ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= a.width || ny >= a.height) continue;
-          const std::size_t j = static_cast<std::size_t>(ny) * a.width + nx;
-          if (differs[j] == 1) {
-            differs[j] = 2;
-            stack.push_back(j);
-          }
-        }
-      }
-    }
-    r.largest_cluster = std::max(r.largest_cluster, size);
-  }
+  r.largest_cluster = largest_cluster(differs, a.width);
   return r;
 }
 

@@ -37,6 +37,10 @@ struct ImageDiff {
 /// Compares a and b; throws std::invalid_argument if their sizes differ.
 ImageDiff compare_images(const Image& a, const Image& b, int threshold = 16);
 
+/// The largest 8-connected cluster of the nonzero entries of `mask`, a
+/// width-wide row-major grid of pixels (0: unmarked).
+long largest_cluster(const std::vector<std::uint8_t>& mask, int width);
+
 /// An image that shows where a and b differ (grey copy of a, differences in red).
 Image difference_image(const Image& a, const Image& b, int threshold = 16);
 
