@@ -55,8 +55,13 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
     scene.title += fmt::format("; space cone {:.3g}\\deg, not drawn",
                                rad_to_deg(p.space_cone));
   } else {
-    scene.add_cone(Vec3::Zero(), slant * std::cos(space) * L, slant * std::sin(space),
-                   {colors::kL, 0.3f}, space_name);
+    // The space cone as lines in L's colour: inside the body cone (an oblate body) two
+    // translucent cones would blend into a colour neither swatch shows.
+    const std::vector<Vec3> rim = circle_about_z(slant * std::sin(space), slant * std::cos(space));
+    scene.add_polyline(rim, colors::kL, 3.0, space_name);
+    for (std::size_t k = 0; k + 1 < rim.size(); k += 10) {
+      scene.add_polyline({Vec3::Zero(), rim[k]}, colors::kL, 2.0);
+    }
   }
   scene.add_cone(Vec3::Zero(), slant * std::cos(alpha) * axis3, slant * std::sin(alpha),
                  {colors::kSymmetryAxis, 0.35f}, body_name);
@@ -91,13 +96,15 @@ render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
   render::Panel& panel = plot.panel();
   panel.x = {"angle \\alpha between \\omega and 3 (\\deg)", render::Scale::kLinear, 0, 90};
   panel.y = {"rate / \\omega"};
+  // In the colours of the cones' axes: the turn about L (the space cone's), the turn
+  // about 3 (the body cone's).
   panel.add_line(alpha_deg, space, "\\phi-dot / \\omega, 3 about L in space (eq. 147)").color =
-      render::kBlue;
+      colors::kL;
   panel.add_line(alpha_deg, body, "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
-      .color = render::kVermillion;
+      .color = colors::kSymmetryAxis;
   panel.add_points({in.alpha_deg, in.alpha_deg}, {p.space_rate / in.omega, p.body_rate / in.omega},
                    fmt::format("this run, \\alpha = {:.3g}\\deg", in.alpha_deg))
-      .color = render::kBlack;
+      .color = colors::kMarker;
   return plot;
 }
 

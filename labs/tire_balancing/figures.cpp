@@ -92,7 +92,7 @@ render::Plot2D mass_plot(const CrookedWheel& wheel, double m0) {
   panel
       .add_points({rad_to_deg(wheel.tilt)}, {1e3 * m0},
                   fmt::format("this wheel: {:.1f} g", 1e3 * m0))
-      .color = render::kBlue;
+      .color = colors::kMarker;  // as the masses are drawn in the scene
   return plot;
 }
 

@@ -365,6 +365,20 @@ class PanelPlan {
              {rect_.x0 + end, y - gap - h, rect_.x0 + end + w, y - gap},
              {rect_.x0 + end, y + gap, rect_.x0 + end + w, y + gap + h}};
       }
+      // Where the data crosses the line near both ends, a place along it, ends first.
+      for (const double f : {0.75, 0.25, 0.5}) {
+        if (r.vertical) {
+          const double x = xm_(r.value), w = e.height(), h = e.width;
+          const double y0 = rect_.y0 + f * (rect_.height() - h);
+          c.push_back({x - gap - w, y0, x - gap, y0 + h});
+          c.push_back({x + gap, y0, x + gap + w, y0 + h});
+        } else {
+          const double y = ym_(r.value), w = e.width, h = e.height();
+          const double x0 = rect_.x0 + f * (rect_.width() - w);
+          c.push_back({x0, y - gap - h, x0 + w, y - gap});
+          c.push_back({x0, y + gap, x0 + w, y + gap + h});
+        }
+      }
       const detail::Placement pl = detail::choose_place(c, grid, rect_, taken);
       ref_boxes_[k] = pl.box.empty() ? c.front() : pl.box;
       taken.push_back(ref_boxes_[k]);
