@@ -48,6 +48,9 @@ namespace rigid::render::detail {
   X(void, TexSubImage2D,                                                             \
     (GLenum, GLint, GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, const void*))    \
   X(void, TexParameteri, (GLenum, GLenum, GLint))                                    \
+  X(void, TexImage2DMultisample, (GLenum, GLsizei, GLenum, GLsizei, GLsizei, GLboolean)) \
+  X(void, FramebufferTexture2D, (GLenum, GLenum, GLenum, GLuint, GLint))             \
+  X(void, DeleteTextures, (GLsizei, const GLuint*))                                  \
   X(GLuint, CreateShader, (GLenum))                                                  \
   X(void, ShaderSource, (GLuint, GLsizei, const GLchar* const*, const GLint*))       \
   X(void, CompileShader, (GLuint))                                                   \

@@ -19,20 +19,20 @@ namespace rigid::render {
 
 namespace {
 
-// Compression chosen by measurement: the demo's 1600×1200 plot and scene,
-// encoded in memory, Release, this 2-core machine (mean of 5; ms / kB):
-//                         plot          scene
-//   zlib 6, all filters   77 / 121      105 / 145   (libpng default)
-//   zlib 3, all filters   49 / 142       67 / 181
-//   zlib 1, SUB           20 / 181       20 / 200
-//   zlib 1, UP            17 / 145       21 / 200
-//   zlib 2, UP            18 / 141       21 / 195   <- chosen
-//   zlib 3, UP            17 / 138       27 / 188
-//   zlib 1, NONE          15 / 164       17 / 224
-// Figures are mostly flat colour, so UP (rows repeat) with fast deflate is
-// 4-5x faster than the default for 15-35% larger files.
-constexpr int kZlibLevel = 2;
-constexpr int kFilters = PNG_FILTER_UP;
+// Compression chosen by measurement: three of the labs' 1600x1200 figures,
+// encoded in memory by libpng 1.6 and zlib 1.2.13, Release, this 2-core
+// machine (best of 5; ms / kB):
+//                          tire scene    poinsot errors   top paths
+//   zlib 2, UP (until now)  13.0 / 168   12.4 / 160       16.1 / 290
+//   zlib 1, UP              12.7 / 176   12.2 / 162       15.6 / 302
+//   zlib 1, RLE, UP         12.7 / 221   12.0 / 213       14.8 / 311
+//   zlib 1, RLE, NONE       15.5 / 602   10.3 / 251       11.4 / 338
+//   zlib 1, NONE             9.8 / 157    9.8 / 164       13.1 / 319   <- chosen
+// (libpng's default, zlib 6 with every filter, took 4-5 times as long.) The
+// figures are mostly flat colour: deflate's matches find the repeats that a
+// filter would, and skipping the filter saves a pass over every row.
+constexpr int kZlibLevel = 1;
+constexpr int kFilters = PNG_FILTER_NONE;
 
 // libpng reports errors by longjmp; its default handler also prints to stderr,
 // which a caller that catches the exception does not want.

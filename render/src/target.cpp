@@ -19,10 +19,48 @@ void Target::release() {
   GLuint rbs[] = {color_rb_, depth_rb_, resolve_rb_};
   gl.DeleteFramebuffers(3, fbos);
   gl.DeleteRenderbuffers(3, rbs);
-  color_fbo_ = depth_fbo_ = resolve_fbo_ = color_rb_ = depth_rb_ = resolve_rb_ = 0;
+  gl.DeleteTextures(1, &color_tex_);
+  color_fbo_ = depth_fbo_ = resolve_fbo_ = color_rb_ = depth_rb_ = resolve_rb_ = color_tex_ = 0;
 }
 
 namespace {
+
+// The resolve: one triangle covering the viewport; each pixel the mean of its samples.
+const char* kResolveVertex = R"(#version 330 core
+void main() {
+  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+
+const char* kResolveFragment = R"(#version 330 core
+uniform sampler2DMS u_samples;
+uniform int u_count;
+out vec4 frag;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 sum = vec4(0.0);
+  for (int i = 0; i < u_count; ++i) sum += texelFetch(u_samples, p, i);
+  frag = sum / float(u_count);
+}
+)";
+
+struct ResolveProgram {
+  GLuint program = 0, vao = 0;
+  GLint samples = -1, count = -1;
+};
+
+const ResolveProgram& resolve_program() {
+  static const ResolveProgram p = [] {
+    ResolveProgram r;
+    r.program = build_program(kResolveVertex, kResolveFragment, nullptr, 0);
+    r.samples = gl.GetUniformLocation(r.program, "u_samples");
+    r.count = gl.GetUniformLocation(r.program, "u_count");
+    gl.GenVertexArrays(1, &r.vao);  // core profile: a draw needs a bound VAO, even an empty one
+    return r;
+  }();
+  return p;
+}
 
 // Storage for the bound renderbuffer: multisampled, or plain for supersampling.
 void storage(int samples, GLenum format, int w, int h) {
@@ -46,9 +84,17 @@ void Target::add_depth() {
   storage(scale_ == 1 ? samples_ : 0, GL_DEPTH_COMPONENT24, pw, ph);
   gl.GenFramebuffers(1, &depth_fbo_);
   gl.BindFramebuffer(GL_FRAMEBUFFER, depth_fbo_);
-  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
+  attach_color();
   gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb_);
   check_complete("drawing (with depth)");
+}
+
+void Target::attach_color() {
+  if (color_tex_ != 0)
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE,
+                            color_tex_, 0);
+  else
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
 }
 
 void Target::begin(int width, int height, bool depth, Color clear) {
@@ -63,12 +109,20 @@ void Target::begin(int width, int height, bool depth, Color clear) {
     samples_ = info.samples;
     scale_ = samples_ >= 2 ? 1 : 2;
     const int pw = width * scale_, ph = height * scale_;
-    gl.GenRenderbuffers(1, &color_rb_);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, color_rb_);
-    storage(scale_ == 1 ? samples_ : 0, GL_RGBA8, pw, ph);
+    if (scale_ == 1) {
+      // fixed sample locations: required to share the FBO with a multisampled renderbuffer (depth)
+      gl.GenTextures(1, &color_tex_);
+      gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, color_tex_);
+      gl.TexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples_, GL_RGBA8, pw, ph, GL_TRUE);
+      gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    } else {
+      gl.GenRenderbuffers(1, &color_rb_);
+      gl.BindRenderbuffer(GL_RENDERBUFFER, color_rb_);
+      storage(0, GL_RGBA8, pw, ph);
+    }
     gl.GenFramebuffers(1, &color_fbo_);
     gl.BindFramebuffer(GL_FRAMEBUFFER, color_fbo_);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
+    attach_color();
     check_complete("drawing");
     gl.GenFramebuffers(1, &resolve_fbo_);
     gl.BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
@@ -88,13 +142,35 @@ void Target::begin(int width, int height, bool depth, Color clear) {
   gl.Clear(GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0));
 }
 
-Image Target::finish() {
-  // MSAA resolve (same size) or supersampling filter (2× down, linear = 2×2 box).
+void Target::resolve() {
   gl.Disable(GL_SCISSOR_TEST);
-  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, depth_ ? depth_fbo_ : color_fbo_);
-  gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
-  gl.BlitFramebuffer(0, 0, width_ * scale_, height_ * scale_, 0, 0, width_, height_,
-                     GL_COLOR_BUFFER_BIT, scale_ == 1 ? GL_NEAREST : GL_LINEAR);
+  if (color_tex_ == 0) {
+    // supersampling: 2× down, linear = the mean of each 2×2 block
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, depth_ ? depth_fbo_ : color_fbo_);
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+    gl.BlitFramebuffer(0, 0, width_ * scale_, height_ * scale_, 0, 0, width_, height_,
+                       GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    return;
+  }
+  const ResolveProgram& r = resolve_program();
+  gl.BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+  gl.Viewport(0, 0, width_, height_);
+  gl.Disable(GL_DEPTH_TEST);
+  gl.Disable(GL_BLEND);
+  gl.Disable(GL_CULL_FACE);
+  gl.UseProgram(r.program);
+  gl.ActiveTexture(GL_TEXTURE0);
+  gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, color_tex_);
+  gl.Uniform1i(r.samples, 0);
+  gl.Uniform1i(r.count, samples_);
+  gl.BindVertexArray(r.vao);
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl.BindVertexArray(0);
+  gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+}
+
+Image Target::finish() {
+  resolve();
   gl.BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
   Image img;
   img.width = width_;
