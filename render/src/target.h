@@ -4,8 +4,8 @@
 // (supersampling). The shader, not glBlitFramebuffer, resolves the samples
 // because llvmpipe builds its blit shaders afresh in every process (about 30
 // ms before the first figure, measured), while ours is found in Mesa's shader
-// cache like the other programs, and runs faster too (10-14 ms against 13-18
-// ms at 1600x1200, 4 samples). Reused between figures of the same size: the
+// cache like the other programs, and runs faster too (11-12 ms against 13-18
+// ms at 1600x1200, 4 samples, this 2-core machine). Reused between figures of the same size: the
 // colour buffer is shared by a colour-only FBO (2D plots) and a colour+depth
 // FBO (3D scenes) whose depth buffer is made only when a scene first needs it,
 // so a plot after a scene reallocates nothing and a 2D-only process never
