@@ -124,10 +124,14 @@ void check_lab_figures(const std::string& lab) {
     REQUIRE(actual.width == expected.width);
     REQUIRE(actual.height == expected.height);
     const std::string why = mismatch(actual, expected);
+    // build/figure-diff/ holds the images of the comparisons that failed in this run,
+    // one folder per lab and backend like figure-actual/ (CI keeps them as artifacts):
+    // an earlier run's, for a figure that now matches, go.
+    const fs::path out = fs::path(RIGID_BINARY_DIR) / "figure-diff" / actual_dir.filename();
+    const std::string stem = fs::path(file).stem().string();
+    for (const char* kind : {".actual.png", ".expected.png", ".diff.png"}) fs::remove(out / (stem + kind));
     if (!why.empty()) {
-      const fs::path out = fs::path(RIGID_BINARY_DIR) / "figure-diff";
       fs::create_directories(out);
-      const std::string stem = fs::path(file).stem().string();
       rigid::render::write_png(actual, (out / (stem + ".actual.png")).string());
       rigid::render::write_png(expected, (out / (stem + ".expected.png")).string());
       rigid::render::write_png(rigid::render::difference_image(actual, expected, kChannelThreshold),
