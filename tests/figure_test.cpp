@@ -166,6 +166,36 @@ TEST_CASE("figures: without a GL context the numbers still print, with one error
   CHECK(fs::is_empty(dir));
 }
 
+TEST_CASE("figures: --timing says where each figure's time went and it adds up to its wall time") {
+  const fs::path dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / "timing";
+  fs::remove_all(dir);
+  const auto run = run_lab("poinsot", "--json --timing --figures " + dir.string());
+  REQUIRE(run.status == 0);
+  const auto j = run.json();
+  const auto& seconds = j["timing"]["figure_seconds"];
+  const auto& phases = j["timing"]["figure_phases"];
+  REQUIRE(j["figures"].size() >= 2);
+  CHECK(phases.size() == j["figures"].size());
+  for (const auto& name : j["figures"]) {
+    const std::string file = name.get<std::string>();
+    INFO(file);
+    double sum = 0;
+    for (const char* phase : {"setup", "layout", "draw", "resolve", "encode"}) {
+      const double s = phases[file][phase].get<double>();
+      CHECK(s > 0);  // every phase does work: a phase never timed would read 0
+      sum += s;
+    }
+    // The phases are laps of one clock inside the figure's own span: they add up to
+    // it, less what lies outside save() (a path check, microseconds).
+    const double wall = seconds[file].get<double>();
+    CHECK(sum <= wall);
+    CHECK(sum >= 0.9 * wall);
+  }
+  // The first figure makes the drawing buffers; a later one of the same size reuses them.
+  const std::string first = j["figures"][0], second = j["figures"][1];
+  CHECK(phases[first]["setup"].get<double>() > phases[second]["setup"].get<double>());
+}
+
 TEST_CASE("figures: the comparison itself fails on what a reader would see changed") {
   using rigid::render::Image;
   const Image golden =

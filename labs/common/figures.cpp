@@ -33,7 +33,15 @@ void FigureSet::save(const std::string& name, const std::string& caption, const 
   }
   const auto start = std::chrono::steady_clock::now();
 #if RIGID_HAVE_RENDER
-  figure.save(path.string(), lab_.figure_width_, lab_.figure_height_);
+  // --timing: where each figure's time went (the phases wait for the GL to finish each)
+  render::FigureTiming phases;
+  figure.save(path.string(), lab_.figure_width_, lab_.figure_height_,
+              lab_.timing_ ? &phases : nullptr);
+  if (lab_.timing_) {
+    lab_.figure_phases_[file] = {{"setup", phases.setup},     {"layout", phases.layout},
+                                 {"draw", phases.draw},       {"resolve", phases.resolve},
+                                 {"encode", phases.encode}};
+  }
 #else
   (void)figure;
   throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");

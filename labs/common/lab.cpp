@@ -174,7 +174,7 @@ Lab::Lab(std::string name, std::string title)
     : name_(std::move(name)), title_(std::move(title)), app_(title_, name_) {
   app_.add_flag("--json", json_, "print one JSON object on stdout instead of the table");
   app_.add_flag("--quiet", quiet_, "print no table (files are still written)");
-  app_.add_flag("--timing", timing_, "with --json: the wall time of each figure, for bench/");
+  app_.add_flag("--timing", timing_, "with --json: the wall time of each figure and where it went, for bench/");
   app_.add_option("--figures", figures_dir_, "write this lab's PNG figures into DIR")
       ->type_name("DIR");
   // The figure style is laid out for 800x600 and up; 8192 bounds memory.
@@ -686,7 +686,7 @@ void Lab::emit_json() const {
   out["units"] = units_;
   out["figures"] = figures_;
   out["captions"] = captions_;
-  if (timing_) out["timing"] = {{"figure_seconds", figure_seconds_}};
+  if (timing_) out["timing"] = {{"figure_seconds", figure_seconds_}, {"figure_phases", figure_phases_}};
   out["textbook"] = textbook_;
   out["textbook_values"] = textbook_values();
   // Every file the run wrote, by its absolute path.

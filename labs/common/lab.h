@@ -222,6 +222,7 @@ class Lab {
   bool json_ = false, quiet_ = false, csv_enabled_ = false;
   bool figures_failed_ = false, timing_ = false;
   Json figure_seconds_ = Json::object();
+  Json figure_phases_ = Json::object();
   std::string csv_path_, figures_dir_, figure_size_ = "1600x1200", figure_prefix_;
   std::vector<std::string> command_;  ///< argv as given
   int figure_width_ = 1600, figure_height_ = 1200;

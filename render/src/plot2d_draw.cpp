@@ -11,7 +11,6 @@
 #include "painter.h"
 #include "placement.h"
 #include "rigid/render/plot2d.h"
-#include "rigid/render/png.h"
 #include "rigid/render/text.h"
 #include "rigid/render/ticks.h"
 #include "target.h"
@@ -685,21 +684,27 @@ Plot2D::Layout Plot2D::layout(int width, int height) const {
   return out;
 }
 
-Image Plot2D::render(int width, int height) const {
+Image Plot2D::render(int width, int height, FigureTiming* timing) const {
+  detail::PhaseClock clock(timing);
   const FigurePlan fp = plan_figure(*this, width, height);
+  clock.lap(&FigureTiming::layout);
   detail::Target& tgt = detail::target();
   // No depth buffer for 2D.
   tgt.begin(width, height, false, kWhite);
+  clock.lap(&FigureTiming::setup, true);
   detail::Painter& p = detail::painter();
   p.begin(width, height);
   detail::draw_title(p, fp.title);
   for (const PanelPlan& panel : fp.panels) panel.draw(p);
   p.flush();
-  return tgt.finish();
+  clock.lap(&FigureTiming::draw, true);
+  Image img = tgt.finish();
+  clock.lap(&FigureTiming::resolve);
+  return img;
 }
 
-void Plot2D::save(const std::string& path, int width, int height) const {
-  write_png(render(width, height), path);
+void Plot2D::save(const std::string& path, int width, int height, FigureTiming* timing) const {
+  detail::save_timed(render(width, height, timing), path, timing);
 }
 
 }  // namespace rigid::render

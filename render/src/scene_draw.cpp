@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "painter.h"
-#include "rigid/render/png.h"
 #include "rigid/render/scene3d.h"
 #include "scene_gpu.h"
 #include "scene_layout.h"
@@ -210,19 +209,25 @@ Scene3D::Layout Scene3D::layout(int width, int height) const {
   return {fr.title.box, fr.legend, fr.region, static_cast<int>(fr.title.lines.size()), fr.title.size, fr.labels};
 }
 
-Image Scene3D::render(int width, int height) const {
+Image Scene3D::render(int width, int height, FigureTiming* timing) const {
   const double k = detail::normalising_scale(*this);
-  if (k != 1.0) return scaled(k).render(width, height);
+  if (k != 1.0) return scaled(k).render(width, height, timing);
+  detail::PhaseClock clock(timing);
   detail::Target& tgt = detail::target();
   tgt.begin(width, height, true, kWhite);
+  clock.lap(&FigureTiming::setup, true);
   const detail::SceneFrame fr = detail::frame_scene(*this, width, height);
+  clock.lap(&FigureTiming::layout);
   detail::draw_geometry(*this, fr);
   detail::draw_overlay(*this, fr);
-  return tgt.finish();
+  clock.lap(&FigureTiming::draw, true);
+  Image img = tgt.finish();
+  clock.lap(&FigureTiming::resolve);
+  return img;
 }
 
-void Scene3D::save(const std::string& path, int width, int height) const {
-  write_png(render(width, height), path);
+void Scene3D::save(const std::string& path, int width, int height, FigureTiming* timing) const {
+  detail::save_timed(render(width, height, timing), path, timing);
 }
 
 }  // namespace rigid::render

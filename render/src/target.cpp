@@ -2,10 +2,12 @@
 #include "target.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
 #include "rigid/render/context.h"
+#include "rigid/render/png.h"
 
 namespace rigid::render::detail {
 
@@ -189,6 +191,28 @@ Image Target::finish() {
   if (GLenum err = gl.GetError(); err != GL_NO_ERROR)
     throw std::runtime_error("rigid::render: GL error " + std::to_string(err) + " while drawing");
   return img;
+}
+
+namespace {
+double seconds_now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+PhaseClock::PhaseClock(FigureTiming* timing) : timing_(timing), last_(timing ? seconds_now() : 0) {}
+
+void PhaseClock::lap(double FigureTiming::*phase, bool wait_for_gl) {
+  if (timing_ == nullptr) return;
+  if (wait_for_gl) gl.Finish();
+  const double now = seconds_now();
+  timing_->*phase += now - last_;
+  last_ = now;
+}
+
+void save_timed(const Image& img, const std::string& path, FigureTiming* timing) {
+  PhaseClock clock(timing);
+  write_png(img, path);
+  clock.lap(&FigureTiming::encode);
 }
 
 }  // namespace rigid::render::detail

@@ -13,6 +13,8 @@
 // of a 30 MB multisampled buffer is faulted in on first touch.)
 #pragma once
 
+#include <string>
+
 #include "gl.h"
 #include "rigid/render/image.h"
 #include "rigid/render/palette.h"
@@ -43,5 +45,21 @@ class Target {
 
 /// The process's drawing target (valid after context()).
 Target& target();
+
+/// Times the phases of one figure into a FigureTiming (a no-op without one):
+/// lap(&FigureTiming::draw, true) waits for the GL to finish, then adds the time
+/// since the last lap to that phase.
+class PhaseClock {
+ public:
+  explicit PhaseClock(FigureTiming* timing);
+  void lap(double FigureTiming::*phase, bool wait_for_gl = false);
+
+ private:
+  FigureTiming* timing_;
+  double last_ = 0;
+};
+
+/// Writes img as a PNG (png.h), its time as timing's encode phase.
+void save_timed(const Image& img, const std::string& path, FigureTiming* timing);
 
 }  // namespace rigid::render::detail

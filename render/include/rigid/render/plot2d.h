@@ -162,9 +162,10 @@ class Plot2D {
   Layout layout(int width = 1600, int height = 1200) const;
 
   /// Draws the figure into an image of width × height pixels (makes the GL context on first use).
-  Image render(int width = 1600, int height = 1200) const;
-  /// Renders and writes a PNG atomically (see png.h).
-  void save(const std::string& path, int width = 1600, int height = 1200) const;
+  Image render(int width = 1600, int height = 1200, FigureTiming* timing = nullptr) const;
+  /// Renders and writes a PNG atomically (see png.h); `timing`, if given, gets where the time went.
+  void save(const std::string& path, int width = 1600, int height = 1200,
+            FigureTiming* timing = nullptr) const;
 
  private:
   int rows_, cols_;

@@ -124,9 +124,10 @@ class Scene3D {
   Layout layout(int width, int height) const;
 
   /// Draws the scene at width × height pixels (makes the GL context on first use).
-  Image render(int width = 1600, int height = 1200) const;
-  /// Renders and writes a PNG atomically (see png.h).
-  void save(const std::string& path, int width = 1600, int height = 1200) const;
+  Image render(int width = 1600, int height = 1200, FigureTiming* timing = nullptr) const;
+  /// Renders and writes a PNG atomically (see png.h); `timing`, if given, gets where the time went.
+  void save(const std::string& path, int width = 1600, int height = 1200,
+            FigureTiming* timing = nullptr) const;
 
   /// What the scene holds; public so the renderer (and tests) can read it.
   enum class Shape { kSphere, kCone, kCylinder, kDisk, kBox, kTorus, kPlane, kTube, kCustom };
