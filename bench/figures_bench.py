@@ -1,13 +1,18 @@
 #!/usr/bin/python3
-"""rigidlab's side of the figure-speed benchmark (issue 3, "Speed").
+"""rigidlab's side of the figure-speed benchmark (issues 3 and 11, "Speed").
 
 Runs the labs as a user does and times them from outside and inside:
 
-- each figure: every lab runs with `--figures DIR --json --timing`, whose JSON
-  holds the wall time of drawing and writing each PNG; the best of --repeats
-  runs per figure (the first figure of a process includes making the context);
+- each figure: every lab (`rigidlab list --names`) runs with
+  `--figures DIR --json --timing`, whose JSON holds the wall time of drawing and
+  writing each PNG and where it went (setup, layout, draw, resolve, encode); the
+  best of --repeats runs per figure, with that run's phases (the first figure of
+  a process includes making the drawing buffers and first use of the shaders);
 - the whole figure set of a lab: the wall time of the process
   `LAB --quiet --figures DIR`, from start to exit, best of --repeats;
+- every lab's figure set side by side: all labs started at once, from the first
+  start to the last exit, best of --repeats (the instructor's "all figures" on
+  this machine's cores);
 - the context: bench_figure_context makes one and reports
   ContextInfo::creation_seconds (loading the backend library, the context,
   the GL entry points), best of --repeats fresh processes;
@@ -19,8 +24,9 @@ Rounds go over every lab in turn, so a burst of load on the shared machine
 spoils one round, not one lab. Writes a JSON array of entries
   {"group": "figures", "case": ..., "tool": "rigidlab", "seconds": s, "kind": ...}
 with kind "figure" (case = the PNG's name, "lab" = its lab, "first" = true for
-the first figure of its process), "context", "set" (case = the lab) and
-"json_run" ("build": "render" or "norender").
+the first figure of its process, "phases" = {phase: seconds}), "context", "set"
+(case = the lab), "side_by_side" (case = "all labs") and "json_run"
+("build": "render" or "norender").
 
 Usage: figures_bench.py --labs DIR --context EXE --out FILE [--norender DIR]
                         [--repeats N] [--json-repeats N]
@@ -36,13 +42,21 @@ import sys
 import tempfile
 import time
 
-LABS = ["lamina_tensor", "tire_balancing", "poinsot"]
-
-
 def wall(cmd):
     """Seconds from spawning cmd to its exit (stdout discarded); raises if it fails."""
     t0 = time.perf_counter()
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    return time.perf_counter() - t0
+
+
+def side_by_side(labs_dir, labs, work):
+    """Seconds from starting every lab's figure set at once to the last one's exit."""
+    t0 = time.perf_counter()
+    procs = [subprocess.Popen([os.path.join(labs_dir, lab), "--quiet", "--figures",
+                               os.path.join(work, "all", lab)], stdout=subprocess.DEVNULL)
+             for lab in labs]
+    if any(p.wait() != 0 for p in procs):
+        raise RuntimeError("a lab failed while drawing side by side")
     return time.perf_counter() - t0
 
 
@@ -56,6 +70,8 @@ def main():
     ap.add_argument("--json-repeats", type=int, default=30)
     args = ap.parse_args()
 
+    labs = subprocess.run([os.path.join(args.labs, "rigidlab"), "list", "--names"], check=True,
+                          capture_output=True, text=True).stdout.split()
     entries = []
     work = tempfile.mkdtemp(prefix="rigid_figbench_")
     try:
@@ -71,36 +87,43 @@ def main():
                         "renderer": info.get("gl_renderer", "")})
 
         # per figure (inside the process) and the whole set (the process)
-        figure_best, figure_lab, first = {}, {}, {}
-        set_best = {lab: math.inf for lab in LABS}
+        figure_best, figure_phases, figure_lab, first = {}, {}, {}, {}
+        set_best = {lab: math.inf for lab in labs}
+        all_best = math.inf
         for _ in range(args.repeats):
-            for lab in LABS:
+            for lab in labs:
                 exe = os.path.join(args.labs, lab)
                 d = os.path.join(work, lab)
                 os.makedirs(d, exist_ok=True)
-                out = subprocess.run([exe, "--figures", d, "--json", "--timing"], check=True,
-                                     capture_output=True, text=True)
-                timing = json.loads(out.stdout)["timing"]["figure_seconds"]
-                order = json.loads(out.stdout)["figures"]
-                for name, s in timing.items():
-                    figure_best[name] = min(figure_best.get(name, math.inf), s)
+                out = json.loads(subprocess.run([exe, "--figures", d, "--json", "--timing"],
+                                                check=True, capture_output=True, text=True).stdout)
+                order = out["figures"]
+                for name, s in out["timing"]["figure_seconds"].items():
+                    if s < figure_best.get(name, math.inf):
+                        figure_best[name] = s
+                        figure_phases[name] = out["timing"]["figure_phases"][name]
                     figure_lab[name] = lab
                     first[name] = bool(order) and name == order[0]
                 set_best[lab] = min(set_best[lab], wall([exe, "--quiet", "--figures", d]))
+            all_best = min(all_best, side_by_side(args.labs, labs, work))
         for name, s in figure_best.items():
             entries.append({"group": "figures", "case": name, "tool": "rigidlab", "seconds": s,
-                            "kind": "figure", "lab": figure_lab[name], "first": first[name]})
-        for lab in LABS:
+                            "kind": "figure", "lab": figure_lab[name], "first": first[name],
+                            "phases": figure_phases[name]})
+        for lab in labs:
             entries.append({"group": "figures", "case": lab, "tool": "rigidlab",
                             "seconds": set_best[lab], "kind": "set"})
+        entries.append({"group": "figures", "case": "all labs", "tool": "rigidlab",
+                        "seconds": all_best, "kind": "side_by_side", "labs": labs,
+                        "processors": os.cpu_count()})
 
         # --json without figures: renderer linked against not built
         builds = [("render", args.labs)]
         if args.norender:
             builds.append(("norender", args.norender))
-        json_best = {(b, lab): math.inf for b, _ in builds for lab in LABS}
+        json_best = {(b, lab): math.inf for b, _ in builds for lab in labs}
         for _ in range(args.json_repeats):
-            for lab in LABS:
+            for lab in labs:
                 for b, d in builds:
                     json_best[(b, lab)] = min(json_best[(b, lab)],
                                               wall([os.path.join(d, lab), "--json"]))

@@ -179,6 +179,8 @@ Image Target::finish() {
   Image img;
   img.width = width_;
   img.height = height_;
+  img.rgb = std::move(spare_);  // the last saved figure's pixels, already faulted in
+  spare_ = {};
   img.rgb.resize(static_cast<std::size_t>(width_) * height_ * 3);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   // GL rows run bottom-up: read them straight into the image, then swap rows
@@ -209,10 +211,13 @@ void PhaseClock::lap(double FigureTiming::*phase, bool wait_for_gl) {
   last_ = now;
 }
 
-void save_timed(const Image& img, const std::string& path, FigureTiming* timing) {
+void Target::recycle(std::vector<std::uint8_t>&& pixels) { spare_ = std::move(pixels); }
+
+void save_timed(Image img, const std::string& path, FigureTiming* timing) {
   PhaseClock clock(timing);
   write_png(img, path);
   clock.lap(&FigureTiming::encode);
+  target().recycle(std::move(img.rgb));
 }
 
 }  // namespace rigid::render::detail
