@@ -16,13 +16,17 @@ struct MethodFacts {
   int evaluations_per_step;  // 0: counted as they happen (adaptive)
   bool adaptive, after_step;
 };
-constexpr std::array<MethodFacts, 6> kFacts = {{
+constexpr std::array<MethodFacts, kAllMethods.size()> kFacts = {{
     {"splitting", "symplectic splitting, order 2", 2, 1, false, false},
     {"splitting4", "symplectic splitting, order 4", 4, 5, false, false},
     {"rk4", "fixed-step Runge-Kutta, order 4", 4, 4, false, true},
     {"dopri5", "adaptive Runge-Kutta, order 5(4)", 0, 0, true, false},
     {"rkf78", "adaptive Runge-Kutta-Fehlberg, order 7(8)", 0, 0, true, true},
     {"bulirsch-stoer", "adaptive extrapolation (Bulirsch-Stoer)", 0, 0, true, false},
+    {"vern6", "adaptive Runge-Kutta (Verner), order 6(5)", 0, 0, true, true},
+    {"vern7", "adaptive Runge-Kutta (Verner), order 7(6)", 0, 0, true, true},
+    {"vern8", "adaptive Runge-Kutta (Verner), order 8(7)", 0, 0, true, true},
+    {"vern9", "adaptive Runge-Kutta (Verner), order 9(8)", 0, 0, true, true},
 }};
 
 const MethodFacts& facts(Method m) { return kFacts[static_cast<std::size_t>(m)]; }
@@ -97,8 +101,12 @@ void validate_run(const OdeOptions& o, const std::vector<double>& times, bool af
     throw std::invalid_argument(os.str());
   }
   if (after_step && !takes_after_step(o.method)) {
+    std::string can;
+    for (const MethodFacts& f : kFacts) {
+      if (f.after_step) can += (can.empty() ? "" : ", ") + std::string(f.name);
+    }
     throw std::invalid_argument(std::string(method_name(o.method)) +
-                                " cannot apply an after-step projection: only rk4 and rkf78 can");
+                                " cannot apply an after-step projection: only " + can + " can");
   }
 }
 

@@ -12,6 +12,35 @@ std::string method_label(const OdeOptions& o) {
                                 : fmt::format("h = {:.3g} s", o.step));
 }
 
+namespace {
+
+struct LineStyle {
+  render::Color color;
+  render::Dash dash;
+};
+
+// One line style a method, so a method looks alike in every lab and no two share
+// one: a family shares a colour (the splittings blue, Verner's pairs orange and
+// black), its members differ in dash.
+LineStyle line_style(Method m) {
+  using render::Dash;
+  switch (m) {
+    case Method::kSplitting: return {render::kBlue, Dash::kSolid};
+    case Method::kSplitting4: return {render::kBlue, Dash::kDashed};
+    case Method::kRk4: return {render::kBluishGreen, Dash::kSolid};
+    case Method::kDopri5: return {render::kVermillion, Dash::kDashDot};
+    case Method::kRkf78: return {render::kReddishPurple, Dash::kSolid};
+    case Method::kBulirschStoer: return {render::kSkyBlue, Dash::kDotted};
+    case Method::kVern6: return {render::kOrange, Dash::kSolid};
+    case Method::kVern7: return {render::kOrange, Dash::kDashed};
+    case Method::kVern8: return {render::kBlack, Dash::kDashDot};
+    case Method::kVern9: return {render::kBlack, Dash::kDashed};
+  }
+  return {render::kGray, Dash::kSolid};
+}
+
+}  // namespace
+
 render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
                                 const TimeAxis& time, const std::string& error_title,
                                 const std::string& error_label, const std::string& energy_label) {
@@ -35,9 +64,6 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
     for (auto it = v.begin() + 1; it != v.end(); ++it) out.push_back(most = std::max(most, *it));
     return out;
   };
-  const render::Dash dashes[] = {render::Dash::kSolid,   render::Dash::kDashed,
-                                 render::Dash::kSolid,   render::Dash::kDashDot,
-                                 render::Dash::kSolid,   render::Dash::kDotted};
   for (std::size_t k = 0; k < methods.size(); ++k) {
     // A method that did not run, or blew up, has no curve to show.
     if (!methods[k].drawn || methods[k].t.size() < 2) continue;
@@ -47,8 +73,9 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
     }
     auto& a = error.add_line(t, running_max(methods[k].error), methods[k].name);
     auto& b = energy.add_line(t, running_max(methods[k].energy_error), methods[k].name);
-    a.color = b.color = render::palette_color(k);
-    a.dash = b.dash = dashes[k % 6];
+    const LineStyle style = line_style(methods[k].method);
+    a.color = b.color = style.color;
+    a.dash = b.dash = style.dash;
   }
   energy.legend = render::LegendPlace::kNone;
   return plot;

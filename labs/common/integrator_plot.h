@@ -12,6 +12,7 @@ namespace rigid::lab {
 
 /// One method's curves; a method that did not run or blew up is listed but not drawn.
 struct MethodCurve {
+  Method method;     ///< its line's colour and dash (a family shares a colour)
   std::string name;  ///< e.g. "rk4, h = 0.001 s"
   bool drawn = false;
   std::vector<double> t, error, energy_error;

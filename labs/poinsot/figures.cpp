@@ -79,7 +79,7 @@ void draw(FigureSet& set, const Run& run) {
           omega_plot(run.omega0, run.samples));
   std::vector<MethodCurve> curves;
   for (const MethodComparison& m : run.methods) {
-    curves.push_back({method_label(m.options), m.completed && std::isfinite(m.max_omega_error),
+    curves.push_back({m.options.method, method_label(m.options), m.completed && std::isfinite(m.max_omega_error),
                       m.t, m.omega_error, m.energy_error});
   }
   set.add("integrators",

@@ -219,7 +219,7 @@ void draw(FigureSet& set, const Figures& f) {
   for (const TopComparison& c : f.methods) {
     std::vector<double> deg;
     for (const double e : c.theta_error) deg.push_back(rad_to_deg(e));
-    curves.push_back({method_label(c.options), c.completed && std::isfinite(c.max_theta_error),
+    curves.push_back({c.options.method, method_label(c.options), c.completed && std::isfinite(c.max_theta_error),
                       c.t, deg, c.energy_error});
   }
   const bool equal_cost = f.evaluations_per_period > 0.0;

@@ -102,7 +102,7 @@ TEST_CASE("integrate: projection keeps T and |L| to roundoff and rk4 at order 4"
 
   o.method = Method::kDopri5;
   CHECK_THROWS_WITH(integrate_free_body(kEllipsoid, make_state(kOmega0, kQ0), times, o),
-                    Contains("only rk4 and rkf78"));
+                    Contains("cannot apply an after-step projection"));
 }
 
 TEST_CASE("integrate: the splittings keep |L| and |q| to roundoff over 1e5 steps") {

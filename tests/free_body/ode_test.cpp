@@ -199,7 +199,7 @@ TEST_CASE("ode: rk4 through the generic layer converges at order 4 when the step
   CHECK(std::abs(p2 - fixed_step_order(Method::kRk4)) <= 0.1);
 }
 
-TEST_CASE("ode: the after-step hook keeps the energy of rk4 and rkf78 to roundoff") {
+TEST_CASE("ode: the after-step hook keeps the energy of rk4, rkf78 and Verner's pairs to roundoff") {
   // Rescale (x, v / w) back to the unit circle after each step.
   const auto onto_energy = [](State& x) {
     const double r = std::hypot(x[0], x[1] / kW);
@@ -207,7 +207,8 @@ TEST_CASE("ode: the after-step hook keeps the energy of rk4 and rkf78 to roundof
     x[1] /= r;
   };
   const std::vector<double> times = {0.0, 50.0};
-  for (Method m : {Method::kRk4, Method::kRkf78}) {
+  for (Method m : {Method::kRk4, Method::kRkf78, Method::kVern6, Method::kVern7, Method::kVern8,
+                   Method::kVern9}) {
     State end{};
     const OdeStats stats = integrate_sampled(
         Oscillator{}, State{1, 0}, times, options_for(m, is_adaptive(m) ? 1e-8 : 0.05),
@@ -220,7 +221,7 @@ TEST_CASE("ode: the after-step hook keeps the energy of rk4 and rkf78 to roundof
   CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, times,
                                       options_for(Method::kDopri5, 1e-8),
                                       [](const State&, double) {}, onto_energy),
-                    Contains("only rk4 and rkf78"));
+                    Contains("cannot apply an after-step projection"));
   // the free body's splittings need no right-hand side: not here
   CHECK_THROWS_AS(integrate_sampled(Oscillator{}, State{1, 0}, times,
                                     options_for(Method::kSplitting, 0.1),

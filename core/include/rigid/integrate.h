@@ -36,7 +36,7 @@ inline bool can_project(Method m) {
 /// rel_tol, step, max_steps) and the free body's own. Set only what differs.
 struct IntegrateOptions : OdeOptions {
   MomentsRule moments_rule = MomentsRule::kPhysical;
-  /// rk4 and rkf78 only: after every step, pull omega back onto the energy and
+  /// rk4, rkf78 and vern6..vern9 only: after every step, pull omega back onto the energy and
   /// |L| of the start (the standard projection, Hairer, Lubich & Wanner IV.4),
   /// so both invariants hold to roundoff; other methods throw if asked.
   bool project_invariants = false;

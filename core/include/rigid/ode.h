@@ -9,6 +9,10 @@
 //  - "dopri5": runge_kutta_dopri5, error-controlled, with dense output.
 //  - "rkf78": runge_kutta_fehlberg78, error-controlled.
 //  - "bulirsch-stoer": bulirsch_stoer_dense_out.
+//  - "vern6", "vern7", "vern8", "vern9": Verner's most efficient pairs 6(5) ..
+//    9(8) (verner.h) under a PI step-size controller, with Verner's
+//    interpolants between steps (dense output); with an after-step hook they
+//    run as odeint controlled steppers instead, which land on every sample.
 //  - "splitting", "splitting4": the free body's Lie-Poisson splittings
 //    (splitting.h); named here so one Method lists every integrator, they run
 //    through integrate_on_grid from integrate.cpp.
@@ -50,28 +54,42 @@
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+#include "rigid/verner.h"
 // odeint's Eigen support must follow its own headers (it specialises their templates).
 #include <boost/numeric/odeint/external/eigen/eigen.hpp>
 
 namespace rigid {
 
 /// The integrators, by their command-line names.
-enum class Method { kSplitting, kSplitting4, kRk4, kDopri5, kRkf78, kBulirschStoer };
+enum class Method {
+  kSplitting,
+  kSplitting4,
+  kRk4,
+  kDopri5,
+  kRkf78,
+  kBulirschStoer,
+  kVern6,
+  kVern7,
+  kVern8,
+  kVern9
+};
 
 /// Every method, in the order of `method_name`.
-inline constexpr std::array<Method, 6> kAllMethods = {Method::kSplitting, Method::kSplitting4,
-                                                      Method::kRk4,       Method::kDopri5,
-                                                      Method::kRkf78,     Method::kBulirschStoer};
+inline constexpr std::array<Method, 10> kAllMethods = {
+    Method::kSplitting, Method::kSplitting4,     Method::kRk4,   Method::kDopri5,
+    Method::kRkf78,     Method::kBulirschStoer, Method::kVern6, Method::kVern7,
+    Method::kVern8,     Method::kVern9};
 
-/// The command-line name: "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer".
+/// The command-line name: "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer",
+/// "vern6", "vern7", "vern8", "vern9".
 std::string_view method_name(Method m);
 /// The method of a name; throws std::invalid_argument listing the valid names.
 Method method_from_name(std::string_view name);
-/// True for the error-controlled methods (dopri5, rkf78, bulirsch-stoer), which take
-/// tolerances; the others take a fixed step.
+/// True for the error-controlled methods (dopri5, rkf78, bulirsch-stoer, vern6..vern9),
+/// which take tolerances; the others take a fixed step.
 bool is_adaptive(Method m);
-/// True for the methods that apply an after-step hook (rk4, rkf78); the dense-output
-/// ones interpolate between steps, where a hook would not act.
+/// True for the methods that apply an after-step hook (rk4, rkf78, vern6..vern9); dopri5
+/// and bulirsch-stoer interpolate between steps, where a hook would not act.
 bool takes_after_step(Method m);
 /// The order of accuracy of a fixed-step method (2, 4, 4); 0 for the adaptive ones.
 int fixed_step_order(Method m);
@@ -101,7 +119,7 @@ struct OdeOptions {
 /// What a run cost.
 struct OdeStats {
   std::size_t steps = 0;           ///< accepted steps (shortened ones included)
-  std::size_t rejected_steps = 0;  ///< steps rejected by the error control (rkf78 only)
+  std::size_t rejected_steps = 0;  ///< steps rejected by the error control (rkf78, vern*)
   std::size_t evaluations = 0;     ///< right-hand-side evaluations (see evaluations_per_step)
 };
 
@@ -116,6 +134,13 @@ struct NoAfterStep {
   template <class State>
   void operator()(State& /*x*/) const {}
 };
+
+namespace detail {
+template <class T, class = void>
+inline constexpr bool kHasReset = false;
+template <class T>
+inline constexpr bool kHasReset<T, std::void_t<decltype(std::declval<T&>().reset())>> = true;
+}  // namespace detail
 
 /// An odeint stepper (simple or controlled) that applies `after_step` to the
 /// state after every accepted step of `Stepper`, and counts rejected steps.
@@ -146,6 +171,10 @@ class AfterStepStepper {
     const auto r = stepper_.try_step(system, x, t, dt);
     if (r == boost::numeric::odeint::success) {
       after_step_(x);
+      // an FSAL stepper keeps f(x) for its next step: after a real hook x has moved
+      if constexpr (!std::is_same_v<AfterStep, NoAfterStep> && detail::kHasReset<Stepper>) {
+        stepper_.reset();
+      }
     } else {
       ++rejected_;
     }
@@ -272,6 +301,34 @@ std::size_t integrate_dense(Stepper& stepper, int order, const System& system, S
   return integrate_times_capped(stepper, scaled, x, tau, dt0, options, observe_t, times.back());
 }
 
+// A Verner pair: dense output under the PI controller; with a hook, odeint's
+// controlled stepper with the same controller, which lands on every sample.
+template <class Tableau, class System, class State, class Observer, class AfterStep>
+OdeStats integrate_verner(const System& system, State& x, const std::vector<double>& times,
+                          const OdeOptions& o, Observer& observe, AfterStep after_step,
+                          const std::size_t& evaluations) {
+  namespace odeint = boost::numeric::odeint;
+  if constexpr (std::is_same_v<AfterStep, NoAfterStep>) {
+    VernerDenseOutput<Tableau, State> stepper(o.abs_tol, o.rel_tol);
+    const std::size_t steps = integrate_dense(stepper, Tableau::kOrder, system, x, times, o,
+                                              observe);
+    return {steps, stepper.rejected_steps(), evaluations};
+  } else {
+    using Stepper = VernerStepper<Tableau, State>;
+    using Checker = odeint::default_error_checker<double, typename Stepper::algebra_type,
+                                                  typename Stepper::operations_type>;
+    AfterStepStepper stepper(
+        odeint::controlled_runge_kutta<Stepper, Checker, PiStepAdjuster>(
+            Checker(o.abs_tol, o.rel_tol), PiStepAdjuster(Tableau::kErrorOrder)),
+        std::move(after_step));
+    const double span = times.back() - times.front();
+    const double dt0 = starting_step(system, x, times.front(), span, Tableau::kOrder, o);
+    const std::size_t steps =
+        integrate_times_capped(stepper, system, x, times, dt0, o, observe, times.back());
+    return {steps, stepper.rejected_steps(), evaluations};
+  }
+}
+
 }  // namespace detail
 
 /// Steps any fixed-step stepper (odeint's Stepper concept, `do_step(system, x, t, dt)`)
@@ -361,8 +418,8 @@ OdeOptions settings_at_cost(Method m, double period, double periods,
 }
 
 /// Integrates `system` from x0 at t = times.front() by options.method (rk4, dopri5,
-/// rkf78 or bulirsch-stoer), calls observe(x, t) at every entry of `times`, and
-/// applies after_step(x) after every accepted step (rk4 and rkf78 only). Throws
+/// rkf78, bulirsch-stoer or a Verner pair), calls observe(x, t) at every entry of
+/// `times`, and applies after_step(x) after every accepted step (rk4, rkf78, vern*). Throws
 /// std::invalid_argument for bad input (validate_run, a nonfinite x0, a fixed-step
 /// run needing more than max_steps, a splitting method) and std::runtime_error
 /// when an adaptive run needs more than max_steps steps.
@@ -418,6 +475,18 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
         return {steps, 0, evaluations};
       }
       break;
+    case Method::kVern6:
+      return detail::integrate_verner<verner::Vern6>(counted, x, times, options, observe,
+                                                     std::move(after_step), evaluations);
+    case Method::kVern7:
+      return detail::integrate_verner<verner::Vern7>(counted, x, times, options, observe,
+                                                     std::move(after_step), evaluations);
+    case Method::kVern8:
+      return detail::integrate_verner<verner::Vern8>(counted, x, times, options, observe,
+                                                     std::move(after_step), evaluations);
+    case Method::kVern9:
+      return detail::integrate_verner<verner::Vern9>(counted, x, times, options, observe,
+                                                     std::move(after_step), evaluations);
     case Method::kSplitting:
     case Method::kSplitting4:
       break;
