@@ -281,13 +281,18 @@ std::size_t integrate_times_capped(Stepper& stepper, const System& system, State
 // for runs shorter than 1e-14 s), so a short run goes in tau = (t - t0) / span,
 // the whole run one unit of time: dx/dtau = span f(x, t). The control acts on the
 // state; only the starting step's rule is not scale-free, so runs of a
-// millisecond or more keep their own time and their results.
+// millisecond or more keep their own time and their results (and the system is
+// called as given, with nothing wrapped round it).
 template <class Stepper, class System, class State, class Observer>
 std::size_t integrate_dense(Stepper& stepper, int order, const System& system, State& x,
                             const std::vector<double>& times, const OdeOptions& options,
                             Observer& observe) {
   const double t0 = times.front(), span = times.back() - t0;
-  const double scale = span > 0.0 && span < 1e-3 ? span : 1.0;
+  if (!(span > 0.0 && span < 1e-3)) {
+    const double dt0 = starting_step(system, x, t0, span, order, options);
+    return integrate_times_capped(stepper, system, x, times, dt0, options, observe, times.back());
+  }
+  const double scale = span;
   const auto scaled = [&system, t0, scale](const State& xs, State& dxdtau, double tau) {
     system(xs, dxdtau, t0 + tau * scale);
     for (auto& v : dxdtau) v *= scale;
