@@ -18,6 +18,7 @@ namespace bench {
 struct RunResult {
   rigid::FreeBodyState x{};
   long long steps = 0;
+  long long evaluations = 0;  ///< right-hand-side evaluations (a counter in the system)
 };
 
 RunResult odeint_vector_dopri5(const Problem& p, double tol);

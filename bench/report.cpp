@@ -45,7 +45,7 @@ constexpr double kLevels[] = {1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
 
 struct Point {
   double param = 0, error = 0, seconds = 0;
-  long long steps = 0;
+  long long steps = 0, evaluations = 0;
 };
 
 struct SolverCurve {
@@ -99,7 +99,8 @@ std::map<std::string, std::vector<SolverCurve>> work_precision_curves(const Json
     c.solver = text(e, "solver");
     c.peer = e.value("peer", false);
     c.points.push_back({std::isfinite(tol) ? tol : step, error, seconds,
-                        static_cast<long long>(number(e, "steps", 0))});
+                        static_cast<long long>(number(e, "steps", 0)),
+                        static_cast<long long>(number(e, "evaluations", 0))});
   }
   std::map<std::string, std::vector<SolverCurve>> out;
   for (auto& [problem, solvers] : by_problem) {
@@ -128,6 +129,126 @@ struct Targets {
     lines.push_back(fmt::format("- **{}** {}", met ? "met" : "NOT met", what));
   }
 };
+
+// The right-hand-side evaluations of the loosest measurement of a solver that reaches
+// `level` (0 if none does, or it did not count them).
+long long evaluations_at(const SolverCurve& c, double level) {
+  for (const Point& p : c.points)
+    if (p.error <= level) return p.evaluations;
+  return 0;
+}
+
+// Issue 12's target: at every level from 1e-4 down to ten times the best error any
+// solver reaches on the problem, by half decades (and that floor itself), the fastest
+// rigidlab solver takes at most kIssue12Ratio of the fastest peer's time; beside each
+// time, the evaluations of the measurement that reached the level, to say where a gain
+// or a miss comes from.
+constexpr double kIssue12Ratio = 0.75;
+void issue12_levels(std::ostream& md, const std::string& problem,
+                    const std::vector<SolverCurve>& curves, Targets& targets) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const SolverCurve& c : curves)
+    for (const Point& p : c.points) best = std::min(best, p.error);
+  if (!std::isfinite(best)) return;
+  const double floor = 10.0 * best;
+  std::vector<double> levels;
+  for (int k = 8; std::pow(10.0, -0.5 * k) > floor * (1 + 1e-9); ++k)
+    levels.push_back(std::pow(10.0, -0.5 * k));
+  if (floor < 1e-4) levels.push_back(floor);
+  md << fmt::format("\nIssue 12: every level from 1e-4 down to ten times the best error any "
+                    "solver reached ({:.1e}, so {:.1e}), by half decades; evaluations of the "
+                    "loosest measured run that reached the level.\n\n",
+                    best, floor);
+  md << "| error ≤ | fastest rigidlab | time | evaluations | fastest peer | time | evaluations "
+        "| rigidlab / peer |\n|---|---|---|---|---|---|---|---|\n";
+  double worst = 0.0;
+  std::vector<std::string> misses;
+  for (const double level : levels) {
+    const SolverCurve *ours = nullptr, *peer = nullptr;
+    double s_ours = std::numeric_limits<double>::infinity(), s_peer = s_ours;
+    for (const SolverCurve& c : curves) {
+      const double t = time_to_reach(c, level);
+      if (c.peer ? t < s_peer : t < s_ours) (c.peer ? peer : ours) = &c, (c.peer ? s_peer : s_ours) = t;
+    }
+    const double ratio = s_ours / s_peer;
+    const bool both = ours != nullptr && peer != nullptr;
+    md << fmt::format("| {:.1e} | {} | {} | {} | {} | {} | {} | {} |\n", level,
+                      ours ? ours->solver : "—", seconds_text(s_ours),
+                      ours ? fmt::format("{}", evaluations_at(*ours, level)) : "—",
+                      peer ? peer->solver : "—", seconds_text(s_peer),
+                      peer ? fmt::format("{}", evaluations_at(*peer, level)) : "—",
+                      both ? fmt::format("{:.2f}", ratio)
+                           : (ours ? "peers do not reach it" : "not reached by rigidlab"));
+    if (both) worst = std::max(worst, ratio);
+    if (!ours || (both && ratio > kIssue12Ratio))
+      misses.push_back(fmt::format("{:.1e} ({})", level,
+                                   both ? fmt::format("{:.2f}", ratio) : "not reached"));
+  }
+  targets.add(misses.empty(),
+              fmt::format("{} (issue 12): fastest rigidlab at most {:.2f}× the fastest peer at "
+                          "every level 1e-4..{:.1e} (worst ratio {:.2f}{}{})",
+                          problem, kIssue12Ratio, floor, worst,
+                          misses.empty() ? "" : "; missed at ",
+                          fmt::format("{}", fmt::join(misses, ", "))));
+}
+
+// The PI controller against odeint's default one on the same Verner stepper: the
+// time each takes to reach an error level (time_to_reach over its tolerances), and
+// what its runs cost in steps, rejections and evaluations.
+void controller_section(std::ostream& md, const Json& all) {
+  // problem -> pair -> controller -> curve
+  std::map<std::string, std::map<std::string, std::map<std::string, SolverCurve>>> curves;
+  std::map<std::string, std::map<std::string, std::map<std::string, long long>>> rejected;
+  for (const Json& e : all) {
+    if (text(e, "group") != "controller") continue;
+    SolverCurve& c = curves[text(e, "problem")][text(e, "method")][text(e, "controller")];
+    c.solver = text(e, "controller");
+    c.points.push_back({number(e, "tolerance"), number(e, "error"), number(e, "seconds"),
+                        static_cast<long long>(number(e, "steps", 0)),
+                        static_cast<long long>(number(e, "evaluations", 0))});
+    rejected[text(e, "problem")][text(e, "method")][text(e, "controller")] +=
+        static_cast<long long>(number(e, "rejected", 0));
+  }
+  if (curves.empty()) return;
+  md << "\n## Step-size control: PI against odeint's default (issue 12)\n\n"
+        "The same Verner stepper and starting step, run directly on the free body's "
+        "right-hand side to t_end at tolerances 1e-4, 1e-6, .., 1e-12: rigidlab's PI "
+        "controller (Gustafsson; Hairer & Wanner II, IV.2: α = 0.7/k, β = 0.4/k, factor in "
+        "[0.2, 10], safety 0.9) against odeint's default_step_adjuster (grows the step only "
+        "when the error is below 1/2, by at most 5×; shrinks it by err^(-1/(q-1))). At one "
+        "tolerance the PI controller takes more, smaller steps and reaches a smaller error, so "
+        "the two are compared at equal error: the time to reach each level (interpolated as in "
+        "the work-precision tables), the steps rejected over the five runs, and the "
+        "evaluations of the run at the tightest tolerance.\n\n"
+        "| problem | pair | controller | rejected (5 runs) | evaluations at 1e-12 |";
+  for (double level : kLevels) md << fmt::format(" {:.0e} |", level);
+  md << "\n|---|---|---|---|---|";
+  for (std::size_t i = 0; i < std::size(kLevels); ++i) md << "---|";
+  md << "\n";
+  for (auto& [problem, pairs] : curves) {
+    for (auto& [pair, by] : pairs) {
+      for (auto& [controller, c] : by) {
+        std::sort(c.points.begin(), c.points.end(),
+                  [](const Point& a, const Point& b) { return a.param > b.param; });
+        md << fmt::format("| {} | {} | {} | {} | {} |", problem, pair, controller,
+                          rejected[problem][pair][controller], c.points.back().evaluations);
+        for (double level : kLevels) md << " " << seconds_text(time_to_reach(c, level)) << " |";
+        md << "\n";
+      }
+      if (by.count("PI") && by.count("odeint default")) {
+        md << fmt::format("| {} | {} | PI / odeint time | | |", problem, pair);
+        for (double level : kLevels) {
+          const double pi = time_to_reach(by["PI"], level),
+                       od = time_to_reach(by["odeint default"], level);
+          md << (std::isfinite(pi) && std::isfinite(od) ? fmt::format(" {:.2f} |", pi / od)
+                 : std::isfinite(pi)                    ? std::string(" only PI reaches it |")
+                                                        : std::string(" — |"));
+        }
+        md << "\n";
+      }
+    }
+  }
+}
 
 // Table: per error level, the fastest rigidlab solver vs the fastest peer.
 void work_precision_section(std::ostream& md, const std::string& problem, const std::string& title,
@@ -181,6 +302,8 @@ void work_precision_section(std::ostream& md, const std::string& problem, const 
                           unreachable.empty() ? "" : "; reached by no solver, rigidlab or peer: ",
                           fmt::format("{}", fmt::join(unreachable, ", "))));
 
+  issue12_levels(md, problem, curves, targets);
+
   // every solver at every level
   md << "\n<details><summary>every solver (time to reach each error level)</summary>\n\n";
   md << "| solver | peer |";
@@ -212,16 +335,23 @@ struct SolverStyle {
 };
 
 SolverStyle solver_style(const std::string& solver, bool peer) {
+  // a method and its projected twin share a colour (the twin dashed); the peers are
+  // dashed with squares (odeint) or triangles (GSL; SciPy dash-dot)
   static const std::map<std::string, rr::Color> colors = {
-      {"rigidlab:rkf78", rr::kBlue},          {"odeint:rkf78", rr::kBlue},
-      {"rigidlab:rkf78+proj", rr::kSkyBlue},  {"rigidlab:dopri5", rr::kOrange},
-      {"odeint:dopri5", rr::kOrange},         {"rigidlab:bulirsch-stoer", rr::kReddishPurple},
-      {"rigidlab:rk4", rr::kVermillion},      {"rigidlab:rk4+proj", rr::kBluishGreen},
-      {"rigidlab:splitting", rr::kGray},      {"rigidlab:splitting4", rr::kBlack},
-      {"gsl:rk8pd", rr::kBlack},              {"gsl:rkf45", rr::kGray},
-      {"scipy:DOP853", rr::kReddishPurple},   {"scipy:RK45", rr::kVermillion}};
+      {"rkf78", rr::kBlue},           {"dopri5", rr::kOrange},
+      {"bulirsch-stoer", rr::kReddishPurple}, {"rk4", rr::kVermillion},
+      {"splitting", rr::kGray},       {"splitting4", rr::kBlack},
+      {"vern6", rr::kBluishGreen},    {"vern7", rr::kSkyBlue},
+      {"vern8", rr::kVermillion},     {"vern9", rr::kReddishPurple},
+      {"rk8pd", rr::kBlack},          {"rkf45", rr::kGray},
+      {"DOP853", rr::kReddishPurple}, {"RK45", rr::kVermillion}};
+  const std::string method = solver.substr(solver.find(':') + 1);
+  const bool projected = method.size() > 5 && method.substr(method.size() - 5) == "+proj";
   SolverStyle style;
-  if (const auto it = colors.find(solver); it != colors.end()) style.color = it->second;
+  if (const auto it = colors.find(projected ? method.substr(0, method.size() - 5) : method);
+      it != colors.end())
+    style.color = it->second;
+  if (projected) style.dash = rr::Dash::kDashed;
   if (peer) {
     const bool scipy = solver.rfind("scipy:", 0) == 0, gsl = solver.rfind("gsl:", 0) == 0;
     style.dash = scipy ? rr::Dash::kDashDot : rr::Dash::kDashed;
@@ -230,44 +360,57 @@ SolverStyle solver_style(const std::string& solver, bool peer) {
   return style;
 }
 
+bool is_verner(const SolverCurve& c) { return c.solver.rfind("rigidlab:vern", 0) == 0; }
+
+// Two panels on the same axes, each with every peer: rigidlab's other methods on the
+// left, Verner's pairs (issue 12) on the right; fifteen rigidlab curves in one panel
+// would hide each other.
 void draw_work_precision(const std::string& title, const std::vector<SolverCurve>& curves,
                          const std::string& path) {
-  rr::Plot2D plot;
-  rr::Panel& p = plot.panel();
+  rr::Plot2D plot(1, 2);
   plot.title = "Work-precision, free body " + title;
-  p.x.label = "relative error of \\omega_{body} at t_{end} (max-norm / |\\omega|)";
-  p.y.label = "run time (s), best of repeats";
-  p.x.scale = rr::Scale::kLog10;
-  p.y.scale = rr::Scale::kLog10;
   // two decades of headroom above the slowest point leave a corner for the legend
-  double y_lo = INFINITY, y_hi = 0;
+  double y_lo = INFINITY, y_hi = 0, x_lo = INFINITY;
   for (const SolverCurve& c : curves)
     for (const Point& pt : c.points)
-      if (pt.error <= 1.0) y_lo = std::min(y_lo, pt.seconds), y_hi = std::max(y_hi, pt.seconds);
-  if (y_hi > 0) {
-    p.y.min = y_lo / 2;
-    p.y.max = y_hi * 100;
-  }
-  p.x.max = 1.0;
-  p.legend = rr::LegendPlace::kAuto;
-  for (const SolverCurve& c : curves) {
-    std::vector<double> x, y;
-    for (const Point& pt : c.points) {
-      if (pt.error > 1.0) continue;  // no digit correct: off the plot, kept in the tables
-      x.push_back(pt.error);
-      y.push_back(pt.seconds);
+      if (pt.error <= 1.0)
+        y_lo = std::min(y_lo, pt.seconds), y_hi = std::max(y_hi, pt.seconds),
+        x_lo = std::min(x_lo, pt.error);
+  for (int side = 0; side < 2; ++side) {
+    rr::Panel& p = plot.panel(0, side);
+    p.title = side == 0 ? "rigidlab's other methods and the peers"
+                        : "Verner's pairs (rigidlab) and the peers";
+    p.x.label = "relative error of \\omega_{body} at t_{end}";
+    p.y.label = "run time (s), best of repeats";
+    p.x.scale = rr::Scale::kLog10;
+    p.y.scale = rr::Scale::kLog10;
+    if (y_hi > 0) {
+      p.y.min = y_lo / 2;
+      p.y.max = y_hi * 100;
+      p.x.min = x_lo / 2;
     }
-    rr::Series& s = p.add_line(x, y, c.solver);
-    const SolverStyle style = solver_style(c.solver, c.peer);
-    s.color = style.color;
-    s.marker = style.marker;
-    s.dash = style.dash;
-    s.width = 3.0;
-  }
-  for (double level : kLevels) {
-    rr::RefLine& r = p.add_ref_line(level, true);
-    r.width = 1.5;
-    r.color = rr::kLightGray;
+    p.x.max = 1.0;
+    p.legend = rr::LegendPlace::kAuto;
+    for (const SolverCurve& c : curves) {
+      if (!c.peer && is_verner(c) != (side == 1)) continue;
+      std::vector<double> x, y;
+      for (const Point& pt : c.points) {
+        if (pt.error > 1.0) continue;  // no digit correct: off the plot, kept in the tables
+        x.push_back(pt.error);
+        y.push_back(pt.seconds);
+      }
+      rr::Series& s = p.add_line(x, y, c.solver);
+      const SolverStyle style = solver_style(c.solver, c.peer);
+      s.color = style.color;
+      s.marker = style.marker;
+      s.dash = style.dash;
+      s.width = 3.0;
+    }
+    for (double level : kLevels) {
+      rr::RefLine& r = p.add_ref_line(level, true);
+      r.width = 1.5;
+      r.color = rr::kLightGray;
+    }
   }
   plot.save(path);
 }
@@ -374,7 +517,7 @@ void reference_section(std::ostream& md, const Json& all) {
 // Groups this report does not know: one generic table each.
 void other_groups(std::ostream& md, const Json& all) {
   const std::set<std::string> known = {"work_precision", "elliptic", "invariants", "reference",
-                                       "problem", "figures"};
+                                       "problem", "figures", "controller"};
   std::map<std::string, std::vector<const Json*>> groups;
   for (const Json& e : all)
     if (!known.count(text(e, "group"))) groups[text(e, "group", "(no group)")].push_back(&e);
@@ -663,10 +806,11 @@ int main(int argc, char** argv) {
   reference_section(md, all);
   elliptic_section(md, all, targets);
   invariants_section(md, all, targets);
+  controller_section(md, all);
   figures_section(md, all, targets);
   other_groups(md, all);
 
-  md << "\n## Targets (issues 4 and 9: work-precision; issue 3: figures)\n\n";
+  md << "\n## Targets (issues 4, 9 and 12: work-precision; issues 3 and 11: figures)\n\n";
   for (const auto& line : targets.lines) md << line << "\n";
 
   const std::string path = out_dir + "/results.md";

@@ -6,7 +6,9 @@
 //  - the cost of one sample of the exact solution beside GSL's and
 //    Boost.Math's Jacobi elliptic functions;
 //  - the splittings' invariants: |L| after 10^6 steps, and the energy error's
-//    maximum over one polhode period against ten.
+//    maximum over one polhode period against ten;
+//  - each Verner pair under the PI controller and under odeint's default one,
+//    on the same stepper: steps, rejections, evaluations, error and time.
 // Writes OUT_DIR/work_precision.json (an array of entries, merged into
 // results.json by the bench target) and OUT_DIR/reference.json (the exact end
 // states, for scipy_work_precision.py).
@@ -30,7 +32,9 @@
 #include "problems.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/integrate.h"
+#include "rigid/ode.h"
 #include "rigid/splitting.h"
+#include "rigid/verner.h"
 #include "timing.h"
 
 namespace {
@@ -62,7 +66,8 @@ RunResult rigidlab_run(const Problem& p, rigid::Method m, double param, bool pro
   const rigid::IntegrationResult r =
       rigid::integrate_free_body(p.I, p.initial_state(), {0.0, p.t_end}, o);
   const rigid::FreeBodySample& s = r.samples.back();
-  return {rigid::make_state(s.omega_body, s.attitude), static_cast<long long>(r.steps)};
+  return {rigid::make_state(s.omega_body, s.attitude), static_cast<long long>(r.steps),
+          static_cast<long long>(r.evaluations)};
 }
 
 struct Solver {
@@ -81,7 +86,8 @@ std::vector<Solver> solvers() {
                  [m](const Problem& p, double param) { return rigidlab_run(p, m, param); }});
   }
   // The same methods with omega projected back onto T and |L| after each step.
-  for (rigid::Method m : {rigid::Method::kRk4, rigid::Method::kRkf78}) {
+  for (rigid::Method m : {rigid::Method::kRk4, rigid::Method::kRkf78, rigid::Method::kVern7,
+                          rigid::Method::kVern8, rigid::Method::kVern9}) {
     s.push_back({"rigidlab:" + std::string(rigid::method_name(m)) + "+proj", false,
                  rigid::is_adaptive(m), rigid::fixed_step_order(m),
                  [m](const Problem& p, double param) { return rigidlab_run(p, m, param, true); }});
@@ -144,6 +150,7 @@ Json entry(const Problem& p, const Measurement& m, const rigid::FreeBodyState& e
   e["attitude_error"] = att;
   e["seconds"] = m.seconds;
   e["steps"] = m.result.steps;
+  e["evaluations"] = m.result.evaluations;
   return e;
 }
 
@@ -300,6 +307,66 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
           policy));
 }
 
+// One run of a Verner pair under a step controller, directly on the free body's
+// right-hand side (the same starting step for every controller).
+template <class Tableau, class Adjuster>
+Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double tol,
+                    const char* controller, Adjuster adjuster) {
+  namespace odeint = boost::numeric::odeint;
+  long long evaluations = 0;
+  std::size_t steps = 0, rejected = 0;
+  rigid::FreeBodyState x;
+  const rigid::EulerRhs rhs{p.I};
+  const auto counted = [&](const rigid::FreeBodyState& xs, rigid::FreeBodyState& d, double t) {
+    ++evaluations;
+    rhs(xs, d, t);
+  };
+  rigid::OdeOptions o;
+  o.abs_tol = o.rel_tol = tol;
+  const double dt0 = rigid::detail::starting_step(rhs, p.initial_state(), 0.0, p.t_end,
+                                                  Tableau::kOrder, o);
+  const std::vector<double> times = {0.0, p.t_end};
+  const double seconds = bench::best_seconds(
+      [&] {
+        rigid::VernerDenseOutput<Tableau, rigid::FreeBodyState, Adjuster> stepper(tol, tol,
+                                                                                  adjuster);
+        evaluations = 0;
+        x = p.initial_state();
+        steps = odeint::integrate_times(std::ref(stepper), counted, x, times.begin(),
+                                        times.end(), dt0, [](const auto&, double) {});
+        rejected = stepper.rejected_steps();
+      },
+      kRoundPolicy);
+  Json e;
+  e["group"] = "controller";
+  e["problem"] = p.name;
+  e["method"] = std::string("vern") + std::to_string(Tableau::kOrder);
+  e["controller"] = controller;
+  e["tolerance"] = tol;
+  e["steps"] = steps;
+  e["rejected"] = rejected;
+  e["evaluations"] = evaluations;
+  e["error"] = bench::omega_error(x, exact);
+  e["seconds"] = seconds;
+  std::printf("  %-6s %-15s tol %-7.0e %6zu steps %5zu rejected %7lld evaluations error %.2e %8.3f ms\n",
+              e["method"].get<std::string>().c_str(), controller, tol, steps, rejected,
+              evaluations, e["error"].get<double>(), seconds * 1e3);
+  return e;
+}
+
+// The PI controller against odeint's default one on the same stepper (issue 12).
+template <class Tableau>
+void controllers(const Problem& p, const rigid::FreeBodyState& exact, Json& out) {
+  namespace odeint = boost::numeric::odeint;
+  for (int k = 4; k <= 12; k += 2) {
+    const double tol = std::pow(10.0, -k);
+    out.push_back(controller_run<Tableau>(p, exact, tol, "PI",
+                                          rigid::PiStepAdjuster(Tableau::kErrorOrder)));
+    out.push_back(controller_run<Tableau>(p, exact, tol, "odeint default",
+                                          odeint::default_step_adjuster<double, double>()));
+  }
+}
+
 // The splittings' invariants: |L| after 10^6 steps; energy error over [0, T] vs [0, 10T].
 void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Settings& cfg,
                 Json& out) {
@@ -430,6 +497,13 @@ int main(int argc, char** argv) {
   for (const auto& [p, x_end] : exact_ends) {
     std::printf("work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
     work_precision(p, all_solvers, x_end, cfg, entries);
+  }
+  for (const auto& [p, x_end] : exact_ends) {
+    std::printf("step controllers, problem %s\n", p.name.c_str());
+    controllers<rigid::verner::Vern6>(p, x_end, entries);
+    controllers<rigid::verner::Vern7>(p, x_end, entries);
+    controllers<rigid::verner::Vern8>(p, x_end, entries);
+    controllers<rigid::verner::Vern9>(p, x_end, entries);
   }
   for (const Problem& p : bench::problems()) {
     const rigid::FreeBodyExact exact(p.I, p.omega0_body(), Eigen::Quaterniond::Identity(), kRule);
