@@ -18,6 +18,15 @@ constexpr double kMaxRunSeconds = 4.0;
 // A run whose invariants drift by more than this share of themselves is refused.
 constexpr double kMaxDrift = 1.0;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// The methods --project works with, as a list: "rk4, rkf78, vern6, ..".
+std::string projecting_methods() {
+  std::string list;
+  for (const Method m : kAllMethods) {
+    if (can_project(m)) list += (list.empty() ? "" : ", ") + std::string(method_name(m));
+  }
+  return list;
+}
 }  // namespace
 
 void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
@@ -37,7 +46,7 @@ void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::str
       .lab_default(step_default);
   if (!offer_project) return;
   lab.flag("--project", in.project,
-           "rk4, rkf78: project omega back onto T and |L| after each step")
+           projecting_methods() + ": project omega back onto T and |L| after each step")
       .numerical();
 }
 
@@ -78,7 +87,7 @@ IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in,
   }
   if (in.project && exact) {
     throw UsageError("--project", "--method exact integrates nothing to project; use --method "
-                                  "rk4 or rkf78");
+                                  "one of " + projecting_methods());
   }
   return options;
 }
@@ -87,7 +96,7 @@ IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const Inte
                                 const IntegrateOptions& options, const std::vector<double>& times) {
   if (in.method == "exact") return sample_exact(exact, times);
   if (in.project && !can_project(options.method)) {
-    throw UsageError("--project", "works with --method rk4 or rkf78 only");
+    throw UsageError("--project", "works with --method " + projecting_methods() + " only");
   }
   const char* option = fixed_step(in) ? "--step" : "--tolerance";
   IntegrationResult run;

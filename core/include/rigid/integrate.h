@@ -27,7 +27,7 @@
 
 namespace rigid {
 
-/// True for the methods that can project onto the invariants (rk4, rkf78).
+/// True for the methods that can project onto the invariants (rk4, rkf78, vern6..vern9).
 inline bool can_project(Method m) {
   return takes_after_step(m);
 }
