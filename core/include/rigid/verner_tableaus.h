@@ -5,7 +5,8 @@
 
 namespace rigid::verner {
 
-/// Verner's most efficient 6(5) pair, RKV65.IIIXb.Efficient: 9 stages, the 9th FSAL; interpolant of order 6 with 3 extra stages.
+/// Verner's most efficient 6(5) pair, RKV65.IIIXb.Efficient: 9 stages, the 9th FSAL. Interpolant
+/// with 3 extra stages, of order 6 by its order conditions.
 struct Vern6 {
   static constexpr int kStages = 9;  ///< stages of a step
   static constexpr int kTotalStages = 12;  ///< with the interpolant's extra stages
@@ -83,7 +84,9 @@ struct Vern6 {
   };
 };
 
-/// Verner's most efficient 7(6) pair, RKV76.IIa.Efficient: 10 stages; interpolant of order 7 with 6 extra stages.
+/// Verner's most efficient 7(6) pair, RKV76.IIa.Efficient: 10 stages. Interpolant with 6 extra
+/// stages, of order 6 by its order conditions (the source gives it as order 7; its order-7
+/// conditions miss by up to 2.3e-7, so it is taken as order 6).
 struct Vern7 {
   static constexpr int kStages = 10;  ///< stages of a step
   static constexpr int kTotalStages = 16;  ///< with the interpolant's extra stages
@@ -193,7 +196,8 @@ struct Vern7 {
   };
 };
 
-/// Verner's most efficient 8(7) pair, RKV87.IIa.Efficient: 13 stages; interpolant of order 8 with 8 extra stages.
+/// Verner's most efficient 8(7) pair, RKV87.IIa.Efficient: 13 stages. Interpolant with 8 extra
+/// stages, of order 8 by its order conditions.
 struct Vern8 {
   static constexpr int kStages = 13;  ///< stages of a step
   static constexpr int kTotalStages = 21;  ///< with the interpolant's extra stages
@@ -348,7 +352,8 @@ struct Vern8 {
   };
 };
 
-/// Verner's most efficient 9(8) pair, RKV98.IIa.Efficient: 16 stages; interpolant of order 9 with 10 extra stages.
+/// Verner's most efficient 9(8) pair, RKV98.IIa.Efficient: 16 stages. Interpolant with 10 extra
+/// stages, of order 9 by its order conditions.
 struct Vern9 {
   static constexpr int kStages = 16;  ///< stages of a step
   static constexpr int kTotalStages = 26;  ///< with the interpolant's extra stages
