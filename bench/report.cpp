@@ -144,6 +144,10 @@ long long evaluations_at(const SolverCurve& c, double level) {
 // time, the evaluations of the measurement that reached the level, to say where a gain
 // or a miss comes from.
 constexpr double kIssue12Ratio = 0.75;
+std::string count_text(const SolverCurve* c, double level) {
+  const long long n = c ? evaluations_at(*c, level) : 0;
+  return n > 0 ? fmt::format("{}", n) : "—";  // SciPy's runs are not counted
+}
 void issue12_levels(std::ostream& md, const std::string& problem,
                     const std::vector<SolverCurve>& curves, Targets& targets) {
   double best = std::numeric_limits<double>::infinity();
@@ -174,10 +178,9 @@ void issue12_levels(std::ostream& md, const std::string& problem,
     const bool both = ours != nullptr && peer != nullptr;
     md << fmt::format("| {:.1e} | {} | {} | {} | {} | {} | {} | {} |\n", level,
                       ours ? ours->solver : "—", seconds_text(s_ours),
-                      ours ? fmt::format("{}", evaluations_at(*ours, level)) : "—",
-                      peer ? peer->solver : "—", seconds_text(s_peer),
-                      peer ? fmt::format("{}", evaluations_at(*peer, level)) : "—",
-                      both ? fmt::format("{:.2f}", ratio)
+                      count_text(ours, level), peer ? peer->solver : "—", seconds_text(s_peer),
+                      count_text(peer, level),
+                      both ? fmt::format(ratio < 0.01 ? "{:.1e}" : "{:.2f}", ratio)
                            : (ours ? "peers do not reach it" : "not reached by rigidlab"));
     if (both) worst = std::max(worst, ratio);
     if (!ours || (both && ratio > kIssue12Ratio))
@@ -365,10 +368,12 @@ bool is_verner(const SolverCurve& c) { return c.solver.rfind("rigidlab:vern", 0)
 // Two panels on the same axes, each with every peer: rigidlab's other methods on the
 // left, Verner's pairs (issue 12) on the right; fifteen rigidlab curves in one panel
 // would hide each other.
-void draw_work_precision(const std::string& title, const std::vector<SolverCurve>& curves,
-                         const std::string& path) {
+void draw_work_precision(const std::string& problem, const std::string& title,
+                         const std::vector<SolverCurve>& curves, const std::string& path) {
+  // the heavy-top problems (top_*) score theta at t_end, the free body omega
+  const bool top = problem.rfind("top_", 0) == 0;
   rr::Plot2D plot(1, 2);
-  plot.title = "Work-precision, free body " + title;
+  plot.title = (top ? "Work-precision, heavy top " : "Work-precision, free body ") + title;
   // two decades of headroom above the slowest point leave a corner for the legend
   double y_lo = INFINITY, y_hi = 0, x_lo = INFINITY;
   for (const SolverCurve& c : curves)
@@ -380,7 +385,8 @@ void draw_work_precision(const std::string& title, const std::vector<SolverCurve
     rr::Panel& p = plot.panel(0, side);
     p.title = side == 0 ? "rigidlab's other methods and the peers"
                         : "Verner's pairs (rigidlab) and the peers";
-    p.x.label = "relative error of \\omega_{body} at t_{end}";
+    p.x.label = top ? "|\\theta(t_{end}) - \\theta_{exact}| (rad)"
+                    : "relative error of \\omega_{body} at t_{end}";
     p.y.label = "run time (s), best of repeats";
     p.x.scale = rr::Scale::kLog10;
     p.y.scale = rr::Scale::kLog10;
@@ -796,7 +802,7 @@ int main(int argc, char** argv) {
     const std::string png = "work_precision_" + problem + ".png";
 #ifdef RIGID_BENCH_HAVE_RENDER
     try {
-      draw_work_precision(title, c, out_dir + "/" + png);
+      draw_work_precision(problem, title, c, out_dir + "/" + png);
       md << "\n![work-precision " << problem << "](" << png << ")\n";
     } catch (const std::exception& e) {
       std::cerr << "bench_report: plot " << png << " not drawn: " << e.what() << "\n";
