@@ -12,6 +12,7 @@ RIGID_PACKAGES=(
   libeigen3-dev libboost-dev libcli11-dev nlohmann-json3-dev libfmt-dev catch2
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libpng-dev libfreetype-dev fonts-dejavu-core
   libgsl-dev python3-scipy python3-matplotlib python3-mpmath python3-jsonschema help2man
+  libwebp-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
 )
 
 stamp=build/.packages-installed

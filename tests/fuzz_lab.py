@@ -38,8 +38,9 @@ def options_of(lab):
             continue
         name, kind, default, count, rest = (m.group(1), m.group(2) or "", m.group(3), m.group(4),
                                             m.group(5))
-        if name in ("--help", "--version", "--figures", "--figure-size", "--figure-prefix", "--timing"):
-            continue  # drawing is covered by the figure tests; here only the contract
+        if name in ("--help", "--version", "--figures", "--figure-size", "--figure-prefix", "--timing",
+                    "--animate"):
+            continue  # drawing is covered by the figure and animation tests; here only the contract
         if kind.startswith("NUMBER") or kind.startswith("WORD") or kind.startswith("FILE"):
             kind = kind.split("=")[0]
         choices = []

@@ -3,6 +3,7 @@
 // (what every lab shares is in contract_test.cpp).
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 
 #include "lab_common.h"
@@ -1171,4 +1172,62 @@ TEST_CASE("poinsot: a solid box (a phone) beside the ellipsoid, its moments by e
   CHECK(run_lab("poinsot", "--box 1,1,1 --ellipsoid 1,2,3").status == 2);
   CHECK(run_lab("poinsot", "--box 1,1,1 --inertia 1,2,3").status == 2);
   CHECK(run_lab("poinsot", "--box 1,0,1").status == 2);
+}
+
+TEST_CASE("poinsot: --animate writes the motion as an MP4 or a WebP, and says so in the JSON") {
+  const std::string dir = "/tmp/rigid_anim_test_" + std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  for (const std::string ext : {"mp4", "webp"}) {
+    const std::string path = dir + "/poinsot." + ext;
+    const rigid::test::Run run = rigid::test::run_lab(
+        "poinsot", "--json --animate " + path + " --duration 0.5 --fps 8 --animation-size 480x270");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    const nlohmann::json a = run.json()["animation"];
+    // 0.5 s at 8 fps: 4 frames over three polhode periods (the default --t-end)
+    CHECK(a["frames"] == 4);
+    CHECK(a["width"] == 480);
+    CHECK(a["height"] == 270);
+    CHECK(a["duration_s"] == Approx(0.5));
+    CHECK(a["motion_s"] == Approx(3 * run.json()["results"]["polhode_period_s"].get<double>()));
+    CHECK(std::filesystem::file_size(path) == a["bytes"].get<std::size_t>());
+    const auto outputs = run.json()["outputs"];
+    CHECK(std::find(outputs.begin(), outputs.end(), std::filesystem::absolute(path).string()) !=
+          outputs.end());
+    // one final line on stderr (not a terminal: no progress line)
+    CHECK(run.err.find("wrote " + path) != std::string::npos);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  }
+  // --quiet says nothing
+  const rigid::test::Run quiet =
+      rigid::test::run_lab("poinsot", "--quiet --animate " + dir + "/q.mp4 --duration 0.2 --fps 5");
+  CHECK(quiet.status == 0);
+  CHECK(quiet.err.empty());
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("poinsot: bad animation options exit 2 with one line naming the option") {
+  const std::string dir = "/tmp/rigid_anim_bad_" + std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--animate " + dir + "/a.gif", "--animate"},
+      {"--animate " + dir + "/no/such/dir/a.mp4", "--animate"},
+      {"--animate " + dir, "--animate"},
+      {"--animate " + dir + "/a.mp4 --fps 0", "--fps"},
+      {"--animate " + dir + "/a.mp4 --fps nan", "--fps"},
+      {"--animate " + dir + "/a.mp4 --duration 1e9", "--duration"},
+      {"--animate " + dir + "/a.mp4 --animation-size 641x360", "--animation-size"},
+      {"--fps 10", "--fps"},
+      {"--duration 2", "--duration"},
+  };
+  for (const auto& [args, option] : cases) {
+    const rigid::test::Run run = rigid::test::run_lab("poinsot", args);
+    INFO(args << " -> " << run.err);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.find(option) != std::string::npos);
+  }
+  // nothing was written
+  CHECK(std::filesystem::is_empty(dir));
+  std::filesystem::remove_all(dir);
 }

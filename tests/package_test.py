@@ -47,6 +47,10 @@ def main():
         recommends = control_field(deb, "Recommends")
         if "libegl1" not in recommends or "libgl1-mesa-dri" not in recommends:
             failures.append(f"Recommends lacks the EGL backend: {recommends!r}")
+        # --animate opens these with dlopen: the package must bring them along
+        for lib in ("libwebpmux3", "libavformat59", "libavcodec59", "libswscale6"):
+            if lib not in recommends:
+                failures.append(f"Recommends lacks {lib} (--animate): {recommends!r}")
 
         listing = subprocess.run(["dpkg-deb", "-c", deb], check=True, capture_output=True,
                                  text=True).stdout

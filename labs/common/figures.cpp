@@ -14,11 +14,13 @@
 namespace rigid::lab {
 namespace fs = std::filesystem;
 
-std::string FigureSet::title(const std::string& own) const {
+std::string FigureSet::title(const std::string& own) const { return lab_.scene_title(own); }
+
+std::string Lab::scene_title(const std::string& own) const {
   // The lab's name in text markup: '_' would start a subscript.
   std::string text;
-  for (char c : lab_.name()) text += c == '_' ? std::string("\\_") : std::string(1, c);
-  const std::string inputs = lab_.title_inputs();
+  for (char c : name_) text += c == '_' ? std::string("\\_") : std::string(1, c);
+  const std::string inputs = title_inputs();
   if (!inputs.empty()) text += ": " + inputs;
   if (!own.empty()) text += ": " + own;
   return text;

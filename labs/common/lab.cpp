@@ -503,6 +503,7 @@ std::string Lab::title_inputs() const {
 // ---- Running ----------------------------------------------------------------
 
 void Lab::check_output_paths() const {
+  check_animation_path();
   std::error_code ec;  // every filesystem question is asked without throwing
   if (app_.count("--figures") > 0 && figures_dir_.empty()) {
     throw UsageError("--figures", "needs a directory name");
@@ -668,6 +669,10 @@ void Lab::emit_table() const {
     std::cout << "\nnotes:\n";
     for (const auto& note : notes_) std::cout << "  - " << note << "\n";
   }
+  if (!animation_.is_null()) {
+    std::cout << "\nanimation: " << animation_path_ << "  "
+              << animation_["caption"].get<std::string>() << "\n";
+  }
   if (!figures_.empty()) {
     std::cout << "\nfigures in " << figures_dir_ << ":\n";
     for (const auto& figure : figures_) {
@@ -686,6 +691,7 @@ void Lab::emit_json() const {
   out["units"] = units_;
   out["figures"] = figures_;
   out["captions"] = captions_;
+  if (!animation_.is_null()) out["animation"] = animation_;
   if (timing_) out["timing"] = {{"figure_seconds", figure_seconds_}, {"figure_phases", figure_phases_}};
   out["textbook"] = textbook_;
   out["textbook_values"] = textbook_values();
@@ -698,6 +704,7 @@ void Lab::emit_json() const {
   if (!csv_path_.empty() && !series_.columns.empty()) {
     outputs.push_back(fs::absolute(csv_path_, ec).lexically_normal().string());
   }
+  if (!animation_.is_null()) outputs.push_back(animation_["path"]);
   out["outputs"] = outputs;
   out["notes"] = notes_;
   std::cout << out.dump(2) << "\n";

@@ -20,6 +20,10 @@
 #include <string>
 #include <vector>
 
+namespace rigid::render {
+class Scene3D;
+}
+
 namespace rigid::lab {
 
 using Json = nlohmann::ordered_json;
@@ -127,6 +131,9 @@ class Lab {
   Option& flag(const std::string& flag, bool& value, const std::string& help);
   /// Offer --csv FILE for this lab's time series.
   void enable_csv();
+  /// Offer --animate FILE for this lab's motion, with --fps, --duration and
+  /// --animation-size (animation.cpp).
+  void enable_animation();
 
   /// True if the user gave this option on the command line.
   bool given(const std::string& flag) const;
@@ -181,6 +188,16 @@ class Lab {
   /// set. A drawing failure (no GL context, say) is reported on stderr and sets
   /// exit status 1; the numeric results still print.
   void figures(const std::function<void(FigureSet&)>& draw);
+  /// Writes the animation if --animate FILE was given: `motion_seconds` of the motion in
+  /// --duration seconds of video; `frame(t)` is the scene at motion time t in seconds, its
+  /// title following the lab's name and inputs. Frames are drawn at their own times,
+  /// with one camera fitted to the whole motion.
+  void animate(double motion_seconds, const std::string& caption,
+               const std::function<render::Scene3D(double)>& frame);
+  /// True if --animate FILE was given (what an animation needs is made only then).
+  bool animating() const { return !animation_path_.empty(); }
+  /// A figure's or animation's title: the lab's name and inputs, then `own` after a colon.
+  std::string scene_title(const std::string& own) const;
 
   const std::string& name() const { return name_; }
 
@@ -225,6 +242,13 @@ class Lab {
   Json figure_phases_ = Json::object();
   std::string csv_path_, figures_dir_, figure_size_ = "1600x1200", figure_prefix_;
   std::vector<std::string> command_;  ///< argv as given
+  // --animate and its settings (animation.cpp)
+  bool animation_enabled_ = false;
+  std::string animation_path_, animation_size_ = "1280x720";
+  double animation_fps_ = 30.0, animation_duration_ = 10.0;
+  int animation_width_ = 1280, animation_height_ = 720;
+  Json animation_ = nullptr;  ///< what was written, for the JSON
+  void check_animation_path() const;
   int figure_width_ = 1600, figure_height_ = 1200;
 };
 

@@ -93,4 +93,88 @@ void draw(FigureSet& set, const Run& run) {
                            "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0"));
 }
 
+Animation::Animation(const FreeBodyExact& motion, const Vector3d& half_extents, bool box,
+                     double t_end)
+    : motion_(motion), half_extents_(half_extents), box_(box) {
+  const PrincipalMoments& I = motion.moments();
+  const Vector3d w0 = motion.omega_body(0.0);
+  const Vector3d L0 = Vector3d(I.I1, I.I2, I.I3).cwiseProduct(w0);
+  // the space frame turned so that L, fixed in space, points straight down: the energy
+  // ellipsoid then rests on the invariable plane like a ball on a table
+  const Eigen::Matrix3d attitude0 = motion.attitude(0.0).toRotationMatrix();
+  space_ = Eigen::Quaterniond::FromTwoVectors(attitude0 * L0, -Vector3d::UnitZ()).toRotationMatrix();
+  size_ = half_extents.maxCoeff();
+  const PoinsotEllipsoids e = poinsot_ellipsoids(I, w0);
+  construction_scale_ = size_ / e.energy_semi_axes.maxCoeff();
+  omega_scale_ = 1.7 * size_ / e.energy_semi_axes.maxCoeff();
+  // omega . L / |L| = 2T / |L|: the plane's distance from the fixed point
+  plane_depth_ = construction_scale_ * 2.0 * motion.energy() / motion.angular_momentum_magnitude();
+  offset_ = Vector3d(3.0 * size_, 0.0, 0.0);
+  polhode_ = polhode(I, w0, 240);
+  // the herpolhode: the contact point over the whole motion, 240 samples a polhode period
+  const double period = std::isfinite(motion.period()) ? motion.period() : t_end;
+  const int n = std::clamp(static_cast<int>(240.0 * t_end / period), 240, 20000);
+  double reach = 0.0;
+  for (int k = 0; k <= n; ++k) {
+    const double t = t_end * k / n;
+    const FreeBodyState x = motion.state(t);
+    const Eigen::Matrix3d a = space_ * attitude(x).toRotationMatrix();
+    herpolhode_t_.push_back(t);
+    herpolhode_.push_back(to_construction(a, omega_body(x)));
+    reach = std::max(reach, (herpolhode_.back() - offset_).head<2>().norm());
+  }
+  plane_radius_ = std::max(1.2 * reach, 0.6 * size_);
+}
+
+Vector3d Animation::to_construction(const Eigen::Matrix3d& attitude, const Vector3d& w) const {
+  return offset_ + construction_scale_ * (attitude * w);
+}
+
+render::Scene3D Animation::frame(double t) const {
+  const FreeBodyState x = motion_.state(t);
+  const Eigen::Matrix3d a = space_ * attitude(x).toRotationMatrix();
+  const Vector3d w = omega_body(x);
+  render::Scene3D scene;
+  scene.title = fmt::format("the body turning, L fixed; its energy ellipsoid rolls on the "
+                            "invariable plane: t = {:.2f} s", t);
+  // from the side and above: the plane and the herpolhode on it show, and the body
+  scene.camera.eye = Vector3d(1.5 * size_, -8.0 * size_, 6.0 * size_);
+  scene.camera.target = Vector3d(1.5 * size_, 0.0, -0.5 * size_);
+  scene.camera.fov_y_deg = 27;
+  // the body, its principal axes, L and omega
+  render::Material body{colors::kBody};
+  if (box_) {
+    scene.add_box(Vector3d::Zero(), half_extents_, a, body, "the body");
+  } else {
+    scene.add_ellipsoid(Vector3d::Zero(), half_extents_, a, body, "the body");
+  }
+  scene.add_arrow(Vector3d::Zero(), -1.9 * size_ * Vector3d::UnitZ(), 0.035 * size_,
+                  {colors::kL}, "L, fixed in space");
+  scene.add_arrow(Vector3d::Zero(), omega_scale_ * (a * w), 0.035 * size_, {colors::kOmega},
+                  "\\omega");
+  // Poinsot's construction: the energy ellipsoid turning with the body, touching the
+  // invariable plane at omega, the polhode on it, the herpolhode on the plane
+  const PoinsotEllipsoids e = poinsot_ellipsoids(motion_.moments(), motion_.omega_body(0.0));
+  // translucent, so the polhode behind it and the herpolhode beneath it show
+  scene.add_ellipsoid(offset_, construction_scale_ * e.energy_semi_axes, a,
+                      {render::kLightGray, 0.55f, 0.15f}, "energy ellipsoid");
+  for (std::size_t k = 0; k < polhode_.size(); ++k) {
+    std::vector<Vector3d> curve;
+    for (const Vector3d& p : polhode_[k]) curve.push_back(to_construction(a, 1.004 * p));
+    scene.add_tube(std::move(curve), 0.012 * size_, {colors::kPolhode}, k == 0 ? "polhode" : "");
+  }
+  scene.add_disk(offset_ - plane_depth_ * Vector3d::UnitZ(), Vector3d::UnitZ(), plane_radius_,
+                 flat_body(render::kLightGray, 0.55f), "invariable plane");
+  std::vector<Vector3d> trace;
+  for (std::size_t k = 0; k < herpolhode_t_.size() && herpolhode_t_[k] < t; ++k) {
+    trace.push_back(herpolhode_[k]);
+  }
+  const Vector3d contact = to_construction(a, w);
+  trace.push_back(contact);
+  if (trace.size() >= 2) scene.add_tube(std::move(trace), 0.012 * size_, {render::kBlack}, "herpolhode");
+  scene.add_arrow(offset_, contact, 0.025 * size_, {colors::kOmega});
+  scene.add_sphere(contact, 0.035 * size_, {colors::kOmega});
+  return scene;
+}
+
 }  // namespace rigid::lab::poinsot

@@ -42,4 +42,31 @@ struct Run {
 /// Hands the lab's figures to the set.
 void draw(FigureSet& set, const Run& run);
 
+/// The animation of the motion: the body turning in space with L fixed (drawn
+/// pointing down), and beside it Poinsot's construction, the body's energy
+/// ellipsoid rolling without slipping on the invariable plane, the polhode on the
+/// ellipsoid and the herpolhode traced on the plane so far. Lengths of the
+/// construction (rad/s) are scaled to the body's size.
+class Animation {
+ public:
+  /// `half_extents`: the semi-axes of the solid ellipsoid drawn (a box's half sides
+  /// if `box`); the herpolhode is sampled over [0, t_end].
+  Animation(const FreeBodyExact& motion, const Eigen::Vector3d& half_extents, bool box,
+            double t_end);
+  /// The scene at time t of the motion.
+  render::Scene3D frame(double t) const;
+
+ private:
+  Eigen::Vector3d to_construction(const Eigen::Matrix3d& attitude, const Eigen::Vector3d& w) const;
+  const FreeBodyExact& motion_;
+  Eigen::Vector3d half_extents_;
+  bool box_;
+  Eigen::Matrix3d space_;  ///< the motion's space frame turned so that L points down
+  double size_, omega_scale_, construction_scale_, plane_depth_, plane_radius_;
+  Eigen::Vector3d offset_;                          ///< where the construction stands
+  std::vector<std::vector<Eigen::Vector3d>> polhode_;  ///< in body axes, rad/s
+  std::vector<double> herpolhode_t_;
+  std::vector<Eigen::Vector3d> herpolhode_;  ///< the contact point at those times, drawn
+};
+
 }  // namespace rigid::lab::poinsot

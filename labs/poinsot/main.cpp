@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   rigid::lab::declare_integration_options(lab, in.integration, "how omega(t) is computed",
                                           "polhode period / 2000");
   lab.enable_csv();
+  lab.enable_animation();
 
   in.integration.compared = true;  // every method at --step and --tolerance, in a section
   return lab.run(argc, argv, [&](Lab& lab) {
@@ -195,6 +196,23 @@ int main(int argc, char** argv) {
                              rigid::angular_momentum_magnitude(I, s.omega_body)});
     }
     lab.series(std::move(series));
+
+    if (lab.animating()) {
+      // the body drawn as given, or, from its moments alone, as the solid ellipsoid
+      // with those moments (semi-axes^2 in proportion to I_j + I_k - I_i, eq. 40)
+      const Vector3d extents =
+          box ? Vector3d(0.5 * in.box)
+          : moments_given
+              ? Vector3d(std::sqrt(std::max(I.I2 + I.I3 - I.I1, 1e-3 * moments.sum())),
+                         std::sqrt(std::max(I.I1 + I.I3 - I.I2, 1e-3 * moments.sum())),
+                         std::sqrt(std::max(I.I1 + I.I2 - I.I3, 1e-3 * moments.sum())))
+              : in.ellipsoid;
+      const rigid::lab::poinsot::Animation animation(exact, extents, box, t_end);
+      lab.animate(t_end,
+                  "the body turning with L fixed, and its energy ellipsoid rolling on the "
+                  "invariable plane: polhode and herpolhode",
+                  [&](double t) { return animation.frame(t); });
+    }
 
     lab.figures([&](rigid::lab::FigureSet& set) {
       rigid::lab::poinsot::draw(

@@ -247,6 +247,12 @@ void Scene3D::add_label(const Vector3d& position, std::string text, Color color)
   labels_.push_back(std::move(l));
 }
 
+void Scene3D::merge(const Scene3D& other) {
+  objects_.insert(objects_.end(), other.objects_.begin(), other.objects_.end());
+  polylines_.insert(polylines_.end(), other.polylines_.begin(), other.polylines_.end());
+  labels_.insert(labels_.end(), other.labels_.begin(), other.labels_.end());
+}
+
 Scene3D Scene3D::scaled(double k) const {
   Scene3D out = *this;
   const Eigen::Affine3d scale(Eigen::Scaling(k));

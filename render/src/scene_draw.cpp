@@ -209,6 +209,21 @@ Scene3D::Layout Scene3D::layout(int width, int height) const {
   return {fr.title.box, fr.legend, fr.region, static_cast<int>(fr.title.lines.size()), fr.title.size, fr.labels};
 }
 
+Camera Scene3D::fitted_camera(int width, int height) const {
+  const double k = detail::normalising_scale(*this);
+  Camera c;
+  if (k != 1.0) {
+    c = scaled(k).fitted_camera(width, height);
+    c.eye /= k;
+    c.target /= k;
+    c.ortho_height /= k;
+  } else {
+    c = detail::frame_scene(*this, width, height).camera;
+  }
+  c.fit = false;
+  return c;
+}
+
 Image Scene3D::render(int width, int height, FigureTiming* timing) const {
   const double k = detail::normalising_scale(*this);
   if (k != 1.0) return scaled(k).render(width, height, timing);

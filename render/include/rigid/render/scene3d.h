@@ -123,6 +123,13 @@ class Scene3D {
   /// The layout render() draws at width × height (needs fonts, not a GL context).
   Layout layout(int width, int height) const;
 
+  /// The camera render() would draw with at width × height: the fit applied (Camera::fit),
+  /// returned with fit off, so frames of an animation can share one view.
+  Camera fitted_camera(int width, int height) const;
+  /// Adds every surface, line and label of `other` (its camera and title are not taken):
+  /// the union of an animation's frames, to fit one camera to all of them.
+  void merge(const Scene3D& other);
+
   /// Draws the scene at width × height pixels (makes the GL context on first use).
   Image render(int width = 1600, int height = 1200, FigureTiming* timing = nullptr) const;
   /// Renders and writes a PNG atomically (see png.h); `timing`, if given, gets where the time went.

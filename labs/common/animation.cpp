@@ -1,0 +1,224 @@
+// The animation layer of the labs: --animate FILE writes the lab's motion as an
+// animated WebP or an H.264 MP4 (by the file's extension), --fps and --duration
+// set the video's frame rate and length, --animation-size its pixels. A lab
+// describes one frame as a Scene3D at a time of its motion (Lab::animate); this
+// layer samples the frame times, fits one camera to the whole motion, draws the
+// frames while a second thread encodes them (render/video.h), shows progress on
+// stderr, and lists the file in the JSON. Nothing of it loads without --animate.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+#include "common/lab.h"
+#include "rigid/render/scene3d.h"
+
+#if RIGID_HAVE_RENDER
+#include "rigid/render/context.h"
+#include "rigid/render/video.h"
+#endif
+
+namespace rigid::lab {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Frames a camera is fitted to: spread over the motion, so whatever moves stays in view.
+constexpr int kFitSamples = 16;
+
+// "1280x720" into width and height; empty if it breaks the rule.
+std::string parse_size(const std::string& text, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  const int read = std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
+  // H.264's 4:2:0 chroma needs even sizes; the figure style is laid out from 320x240 up
+  if (read != 3 || (x != 'x' && x != 'X') || w < 320 || h < 240 || w > 3840 || h > 2160 ||
+      w % 2 != 0 || h % 2 != 0) {
+    return "must be WxH, both even, with 320 <= W <= 3840 and 240 <= H <= 2160 (got '" + text +
+           "')";
+  }
+  width = w;
+  height = h;
+  return "";
+}
+
+// Progress on stderr while frames are drawn: a line rewritten in place when stderr is
+// a terminal (frames done, time left), nothing otherwise; the final line is the caller's.
+class Progress {
+ public:
+  Progress(std::string lab, int frames, bool quiet)
+      : lab_(std::move(lab)), frames_(frames), shown_(!quiet && ::isatty(STDERR_FILENO) != 0),
+        start_(std::chrono::steady_clock::now()) {}
+  ~Progress() {
+    if (drawn_) std::cerr << "\r\033[K" << std::flush;
+  }
+  void update(int done) {
+    if (!shown_) return;
+    const double elapsed = seconds();
+    // quiet for the first half second, then at most ten updates a second
+    if (elapsed < 0.5 || elapsed - last_ < 0.1) return;
+    last_ = elapsed;
+    const double left = done > 0 ? elapsed / done * (frames_ - done) : 0.0;
+    std::cerr << "\r\033[K" << lab_ << ": animation " << done << "/" << frames_ << " frames, "
+              << fmt::format("{:.0f}", left) << " s left" << std::flush;
+    drawn_ = true;
+  }
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::string lab_;
+  int frames_;
+  bool shown_, drawn_ = false;
+  double last_ = 0.0;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+void Lab::enable_animation() {
+  animation_enabled_ = true;
+  app_.add_option("--animate", animation_path_,
+                  "write the motion as an animation to FILE: .mp4 (H.264, for players and "
+                  "slides) or .webp (animated WebP, for browsers and READMEs)")
+      ->type_name("FILE");
+  app_.add_option("--fps", animation_fps_, "frames a second of the animation, 1 to 120")
+      ->type_name("NUMBER")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !(v >= 1.0 && v <= 120.0))
+              return "must be a number from 1 to 120 (got '" + text + "')";
+            return "";
+          },
+          ""));
+  app_.add_option("--duration", animation_duration_,
+                  "length of the animation in seconds, 0.1 to 600 (the motion to --t-end is "
+                  "shown in it)")
+      ->type_name("NUMBER")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !(v >= 0.1 && v <= 600.0))
+              return "must be a number of seconds from 0.1 to 600 (got '" + text + "')";
+            return "";
+          },
+          ""));
+  app_.add_option("--animation-size", animation_size_,
+                  "animation size in pixels, even, 320x240 to 3840x2160")
+      ->type_name("WxH")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [this](std::string& text) -> std::string {
+            return parse_size(text, animation_width_, animation_height_);
+          },
+          ""));
+}
+
+void Lab::check_animation_path() const {
+  if (!animation_enabled_ || app_.count("--animate") == 0) {
+    for (const char* flag : {"--fps", "--duration", "--animation-size"}) {
+      if (animation_enabled_ && app_.count(flag) > 0)
+        throw UsageError(flag, "sets the animation: give --animate FILE too");
+    }
+    return;
+  }
+  if (animation_path_.empty()) throw UsageError("--animate", "needs a file name");
+#if RIGID_HAVE_RENDER
+  if (!render::video_format_for(animation_path_)) {
+    throw UsageError("--animate", "the file name must end in .mp4 or .webp (got '" +
+                                      animation_path_ + "')");
+  }
+#endif
+  std::error_code ec;
+  const fs::path path = fs::absolute(animation_path_, ec);
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (!ec && fs::exists(status) && !fs::is_regular_file(status)) {
+    throw UsageError("--animate", "'" + animation_path_ + "' exists and is not a regular file");
+  }
+  const fs::path parent = path.parent_path();
+  if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0) {
+    throw UsageError("--animate", "cannot write into directory '" + parent.string() + "'");
+  }
+}
+
+void Lab::animate(double motion_seconds, const std::string& caption,
+                  const std::function<render::Scene3D(double)>& frame) {
+  if (animation_path_.empty()) return;
+  if (!(motion_seconds > 0.0) || !std::isfinite(motion_seconds)) {
+    throw UsageError("--animate", "there is no motion to show (its span is not positive)");
+  }
+#if RIGID_HAVE_RENDER
+  const auto start = std::chrono::steady_clock::now();
+  const int frames = std::max(1, static_cast<int>(std::lround(animation_duration_ * animation_fps_)));
+  // frame k shows the motion at k/frames of its span: the last frame is one frame short of
+  // the span's end, so a periodic motion loops without a repeated frame
+  const auto motion_time = [&](int k) { return motion_seconds * k / frames; };
+  const int w = animation_width_, h = animation_height_;
+  try {
+    render::context();
+    // one camera for every frame, fitted to the union of frames spread over the motion
+    render::Scene3D envelope = frame(0.0);
+    envelope.title = scene_title(envelope.title);
+    for (int k = 1; k < kFitSamples; ++k) envelope.merge(frame(motion_seconds * k / kFitSamples));
+    const render::Camera camera = envelope.fitted_camera(w, h);
+
+    render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
+                               {w, h, animation_fps_});
+    Progress progress(name_, frames, quiet_);
+    for (int k = 0; k < frames; ++k) {
+      render::Scene3D scene = frame(motion_time(k));
+      scene.title = scene_title(scene.title);
+      scene.camera = camera;
+      writer.add(scene.render(w, h));
+      progress.update(k + 1);
+    }
+    const std::size_t bytes = writer.finish();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::error_code ec;
+    animation_ = {{"path", fs::absolute(animation_path_, ec).lexically_normal().string()},
+                  {"caption", caption},
+                  {"frames", frames},
+                  {"fps", animation_fps_},
+                  {"duration_s", frames / animation_fps_},
+                  {"motion_s", motion_seconds},
+                  {"width", w},
+                  {"height", h},
+                  {"bytes", bytes},
+                  {"seconds", seconds}};
+    if (!quiet_) {
+      std::cerr << name_ << ": wrote " << animation_path_ << ": " << frames << " frames, " << w
+                << "x" << h << " at " << fmt::format("{:g}", animation_fps_) << " fps ("
+                << fmt::format("{:g}", frames / animation_fps_) << " s of video for "
+                << fmt::format("{:.3g}", motion_seconds) << " s of motion), "
+                << fmt::format("{:.1f}", bytes / 1e6) << " MB, in "
+                << fmt::format("{:.1f}", seconds) << " s\n";
+    }
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--animate", e.what());
+  } catch (const std::exception& e) {
+    figures_failed_ = true;
+    std::cerr << name_ << ": error: --animate: " << e.what() << '\n';
+  }
+#else
+  (void)frame;
+  (void)caption;
+  figures_failed_ = true;
+  std::cerr << name_ << ": error: --animate: this build has no renderer (RIGID_BUILD_RENDER=OFF)\n";
+#endif
+}
+
+}  // namespace rigid::lab
