@@ -88,32 +88,28 @@ void Lab::enable_animation() {
                   "write the motion as an animation to FILE: .mp4 (H.264, for players and "
                   "slides) or .webp (animated WebP, for browsers and READMEs)")
       ->type_name("FILE");
+  // a number in [lo, hi] or the rule, as the options' errors say it
+  const auto in_range = [](double lo, double hi, std::string what) {
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+          char* end = nullptr;
+          const double v = std::strtod(text.c_str(), &end);
+          if (end == text.c_str() || *end != '\0' || !(v >= lo && v <= hi))
+            return fmt::format("must be {} from {:g} to {:g} (got '{}')", what, lo, hi, text);
+          return "";
+        },
+        "");
+  };
   app_.add_option("--fps", animation_fps_, "frames a second of the animation, 1 to 120")
       ->type_name("NUMBER")
       ->capture_default_str()
-      ->check(CLI::Validator(
-          [](std::string& text) -> std::string {
-            char* end = nullptr;
-            const double v = std::strtod(text.c_str(), &end);
-            if (end == text.c_str() || *end != '\0' || !(v >= 1.0 && v <= 120.0))
-              return "must be a number from 1 to 120 (got '" + text + "')";
-            return "";
-          },
-          ""));
+      ->check(in_range(1.0, 120.0, "a number"));
   app_.add_option("--duration", animation_duration_,
                   "length of the animation in seconds, 0.1 to 600 (the motion to --t-end is "
                   "shown in it)")
       ->type_name("NUMBER")
       ->capture_default_str()
-      ->check(CLI::Validator(
-          [](std::string& text) -> std::string {
-            char* end = nullptr;
-            const double v = std::strtod(text.c_str(), &end);
-            if (end == text.c_str() || *end != '\0' || !(v >= 0.1 && v <= 600.0))
-              return "must be a number of seconds from 0.1 to 600 (got '" + text + "')";
-            return "";
-          },
-          ""));
+      ->check(in_range(0.1, 600.0, "a number of seconds"));
   app_.add_option("--animation-size", animation_size_,
                   "animation size in pixels, even, 320x240 to 3840x2160")
       ->type_name("WxH")
