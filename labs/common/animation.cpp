@@ -172,14 +172,33 @@ void Lab::animate(double motion_seconds, const std::string& caption,
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
                                {w, h, animation_fps_});
     Progress progress(name_, frames, quiet_);
+    // --timing: where the frames' time went (the GL phases waited for, as for figures)
+    render::FigureTiming phases;
+    double build = 0.0, handover = 0.0;
+    const auto lap = [](std::chrono::steady_clock::time_point& t0) {
+      const auto t1 = std::chrono::steady_clock::now();
+      const double s = std::chrono::duration<double>(t1 - t0).count();
+      t0 = t1;
+      return s;
+    };
     for (int k = 0; k < frames; ++k) {
+      auto t0 = std::chrono::steady_clock::now();
       render::Scene3D scene = frame(motion_time(k));
       scene.title = scene_title(scene.title);
       scene.camera = camera;
-      writer.add(scene.render(w, h));
+      build += lap(t0);
+      render::FigureTiming f;
+      render::Image image = scene.render(w, h, timing_ ? &f : nullptr);
+      phases.setup += f.setup, phases.layout += f.layout, phases.draw += f.draw,
+          phases.resolve += f.resolve;
+      lap(t0);
+      writer.add(std::move(image));  // waits while two frames are still being encoded
+      handover += lap(t0);
       progress.update(k + 1);
     }
+    auto t_finish = std::chrono::steady_clock::now();
     const std::size_t bytes = writer.finish();
+    const double finishing = lap(t_finish);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::error_code ec;
@@ -193,6 +212,12 @@ void Lab::animate(double motion_seconds, const std::string& caption,
                   {"height", h},
                   {"bytes", bytes},
                   {"seconds", seconds}};
+    if (timing_) {
+      animation_["phases"] = {{"scene", build},          {"setup", phases.setup},
+                              {"layout", phases.layout}, {"draw", phases.draw},
+                              {"resolve", phases.resolve}, {"encoder_wait", handover},
+                              {"finish", finishing}};
+    }
     if (!quiet_) {
       std::cerr << name_ << ": wrote " << animation_path_ << ": " << frames << " frames, " << w
                 << "x" << h << " at " << fmt::format("{:g}", animation_fps_) << " fps ("
