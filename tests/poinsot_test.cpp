@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rigid/free_body.h"
+#include "rigid/integrate.h"
 #include "rigid/poinsot.h"
 
 using namespace rigid;
@@ -100,4 +101,56 @@ TEST_CASE("poinsot: section 4.1 axis ratios for I1 : I2 : I3 = 5 : 4 : 3") {
   CHECK_THAT(t3(1), WithinRel(s3 / 4, 1e-15));
   CHECK_THAT(t1(1), WithinRel(s5 / 4, 1e-15));
   CHECK_THAT(t1(2), WithinRel(s5 / 3, 1e-15));
+}
+
+TEST_CASE("poinsot: the herpolhode touches the invariable plane, and its turn a period two ways") {
+  // the text's ellipsoid (section 5.1): I = (pi, 2 pi, 8.168), omega0 = (1, 1, 1)
+  const rigid::PrincipalMoments I{M_PI, 2 * M_PI, 8.168140899333462};
+  const Eigen::Vector3d w0(1, 1, 1);
+  const rigid::FreeBodyExact motion(I, w0);
+  const double T = motion.period();
+  const Eigen::Vector3d L = I.vector().cwiseProduct(w0);  // in space: the attitude starts at 1
+  const double d = 2 * motion.energy() / motion.angular_momentum_magnitude();
+  for (const Eigen::Vector3d& p : rigid::herpolhode(motion, 3 * T, 97)) {
+    // on the plane omega . L / |L| = 2T / |L| (to the exact solution's roundoff)
+    CHECK(std::abs(p.dot(L.normalized()) - d) < 1e-13 * d);
+  }
+  // the turn about L in one polhode period, against the same angle from an rkf78
+  // integration of Euler's equations and the attitude at tolerance 1e-13 (a second
+  // method: no elliptic function), unwrapped the same way
+  const double turn = rigid::herpolhode_turn_per_period(motion);
+  rigid::IntegrateOptions o;
+  o.method = rigid::Method::kRkf78;
+  o.abs_tol = o.rel_tol = 1e-13;
+  const auto times = rigid::uniform_times(0.0, T, 257);
+  const auto run = rigid::integrate_free_body(I, rigid::make_state(w0, Eigen::Quaterniond::Identity()),
+                                              times, o);
+  const Eigen::Vector3d n = L.normalized(), e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+  double turned = 0, previous = 0;
+  for (std::size_t k = 0; k < run.samples.size(); ++k) {
+    const Eigen::Vector3d p = run.samples[k].attitude * run.samples[k].omega_body;
+    const double a = std::atan2(p.dot(e2), p.dot(e1));
+    if (k > 0) turned += std::remainder(a - previous, 2 * M_PI);
+    previous = a;
+  }
+  INFO("exact " << turn << " rad, integrated " << turned << " rad");
+  // tolerance 1e-13 per step over ~100 steps, amplified by 1/|omega_perp| ~ 1: 1e-9
+  CHECK(std::abs(turn - turned) < 1e-9);
+  // it is not a whole number of turns: the herpolhode does not close (in general)
+  CHECK(std::abs(std::remainder(turn, 2 * M_PI)) > 1e-3);
+}
+
+TEST_CASE("poinsot: near a symmetric body the herpolhode turns as the space cone does") {
+  // I1 = I2 (1 + 1e-9): omega precesses about L at |L| / I1 (section 6) while the
+  // polhode, a circle, takes 2 pi / |Omega|, Omega = omega3 (I3 - I1) / I1
+  const double I1 = 1.0, I3 = 2.0;
+  const rigid::PrincipalMoments I{I1, I1 * (1 + 1e-9), I3};
+  const Eigen::Vector3d w0(0.3, 0.0, 1.0);
+  const rigid::FreeBodyExact motion(I, w0);
+  const double L = I.vector().cwiseProduct(w0).norm();
+  const double Omega = w0.z() * (I3 - I1) / I1;
+  const double expected = L / I1 * 2 * M_PI / std::abs(Omega);
+  INFO("turn " << rigid::herpolhode_turn_per_period(motion) << " rad, symmetric limit " << expected);
+  // the asymmetry 1e-9 moves both by about that much, relatively
+  CHECK(std::abs(std::abs(rigid::herpolhode_turn_per_period(motion)) - expected) < 1e-6 * expected);
 }

@@ -58,6 +58,39 @@ std::vector<std::vector<Eigen::Vector3d>> polhode(const PrincipalMoments& I,
   return {curve};
 }
 
+std::vector<Eigen::Vector3d> herpolhode(const FreeBodyExact& motion, double t_end, int samples) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(static_cast<std::size_t>(std::max(samples, 0)));
+  for (int k = 0; k < samples; ++k) {
+    const double t = samples > 1 ? t_end * k / (samples - 1) : 0.0;
+    const FreeBodyState x = motion.state(t);
+    points.push_back(attitude(x) * omega_body(x));
+  }
+  return points;
+}
+
+double herpolhode_turn_per_period(const FreeBodyExact& motion) {
+  const double T = motion.period();
+  if (!std::isfinite(T)) return std::nan("");
+  // L in space, and two axes across it in the plane
+  const Eigen::Vector3d w0 = motion.omega_body(0.0);
+  const Eigen::Vector3d L = motion.attitude(0.0) * motion.moments().vector().cwiseProduct(w0);
+  const Eigen::Vector3d n = L.normalized();
+  const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+  // The angle of the contact point about L, unwrapped along the way: the step between
+  // samples stays far below half a turn (a turn per polhode period takes ~2 pi / 256)
+  constexpr int kSamples = 256;
+  double turned = 0.0, previous = 0.0;
+  for (int k = 0; k <= kSamples; ++k) {
+    const FreeBodyState x = motion.state(T * k / kSamples);
+    const Eigen::Vector3d p = attitude(x) * omega_body(x);
+    const double angle = std::atan2(p.dot(e2), p.dot(e1));
+    if (k > 0) turned += std::remainder(angle - previous, 2.0 * kPi);
+    previous = angle;
+  }
+  return turned;
+}
+
 Eigen::Vector3d omega_on_energy_ellipsoid(const PrincipalMoments& I, double T, double L2) {
   const Eigen::Vector3d moments = I.vector();
   const auto [s, m, l] = sorted_axes(moments);

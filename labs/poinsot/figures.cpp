@@ -177,4 +177,46 @@ render::Scene3D Animation::frame(double t) const {
   return scene;
 }
 
+render::Scene3D Animation::herpolhode_scene(double periods) const {
+  const double T = motion_.period();
+  const auto contact = [&](double t) {
+    const FreeBodyState x = motion_.state(t);
+    return to_construction(space_ * attitude(x).toRotationMatrix(), omega_body(x));
+  };
+  render::Scene3D scene;
+  scene.title = fmt::format("the herpolhode over {:g} polhode periods on the invariable plane",
+                            periods);
+  // the plane face on, from its free side (the ellipsoid rests on the other), a little
+  // aslant so the ellipsoid shows as a body behind it
+  scene.camera.eye = offset_ + Vector3d(0.0, -3.0 * size_, -12.0 * size_);
+  scene.camera.target = offset_ - plane_depth_ * Vector3d::UnitZ();
+  scene.camera.up = Vector3d::UnitY();
+  scene.camera.fov_y_deg = 27;
+  const int n = static_cast<int>(std::ceil(periods * 480));
+  std::vector<Vector3d> trace;
+  double reach = 0.0;
+  for (int k = 0; k <= n; ++k) {
+    trace.push_back(contact(periods * T * k / n));
+    reach = std::max(reach, (trace.back() - offset_).head<2>().norm());
+  }
+  scene.add_disk(offset_ - plane_depth_ * Vector3d::UnitZ(), Vector3d::UnitZ(),
+                 std::max(1.15 * reach, 0.6 * size_), flat_body(render::kLightGray, 0.55f),
+                 "invariable plane");
+  // a thin line: many loops over a few periods
+  scene.add_polyline(std::move(trace), render::kBlack, 2.0, "herpolhode");
+  for (int k = 0; k <= static_cast<int>(periods); ++k) {
+    const Vector3d p = contact(k * T);
+    scene.add_sphere(p, 0.03 * size_, {colors::kOmega},
+                     k == 0 ? "the contact point at t = 0, T, 2T, .." : "");
+    scene.add_label(p, k == 0 ? "0" : k == 1 ? "T" : fmt::format("{}T", k));
+  }
+  // the energy ellipsoid at t = 0, touching the plane at the first contact point
+  const FreeBodyState x0 = motion_.state(0.0);
+  const Eigen::Matrix3d a0 = space_ * attitude(x0).toRotationMatrix();
+  const PoinsotEllipsoids e = poinsot_ellipsoids(motion_.moments(), motion_.omega_body(0.0));
+  scene.add_ellipsoid(offset_, construction_scale_ * e.energy_semi_axes, a0,
+                      {render::kLightGray, 1.0f, 0.15f}, "energy ellipsoid at t = 0, behind the plane");
+  return scene;
+}
+
 }  // namespace rigid::lab::poinsot

@@ -55,6 +55,10 @@ class Animation {
             double t_end);
   /// The scene at time t of the motion.
   render::Scene3D frame(double t) const;
+  /// The construction alone, seen from above: the herpolhode over `periods` polhode
+  /// periods on the invariable plane with the contact point at each whole period
+  /// (they do not coincide), and the energy ellipsoid touching the plane at t = 0.
+  render::Scene3D herpolhode_scene(double periods) const;
 
  private:
   Eigen::Vector3d to_construction(const Eigen::Matrix3d& attitude, const Eigen::Vector3d& w) const;

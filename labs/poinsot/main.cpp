@@ -33,6 +33,8 @@ constexpr std::size_t kMaxComparisonSteps = 20'000;
 // drift to leave the splittings' bounded band behind.
 constexpr double kEqualCostEvaluations = 200.0;
 constexpr double kEqualCostPeriods = 100.0;
+// The herpolhode figure: enough polhode periods for its failure to close to show.
+constexpr double kHerpolhodePeriods = 6.0;
 
 }  // namespace
 
@@ -162,6 +164,24 @@ int main(int argc, char** argv) {
                ellipsoids.energy_semi_axes, "rad/s");
     lab.result("momentum_ellipsoid_semi_axes", "momentum ellipsoid semi-axes |L|/I_i",
                ellipsoids.momentum_semi_axes, "rad/s");
+    // Poinsot's construction: the energy ellipsoid rolls on the invariable plane, the
+    // contact point (omega) tracing the herpolhode there
+    lab.result("invariable_plane_distance", "invariable plane's distance from the fixed point, 2T/|L|",
+               2.0 * exact.energy() / exact.angular_momentum_magnitude(), "rad/s");
+    const double turn = rigid::herpolhode_turn_per_period(exact);
+    if (std::isfinite(turn)) {
+      lab.result("herpolhode_turn_per_period_deg", "herpolhode: turn about L a polhode period",
+                 rigid::rad_to_deg(turn), "deg");
+      const double apart = std::abs(std::remainder(kHerpolhodePeriods * turn, 2.0 * rigid::kPi));
+      lab.note(fmt::format(
+          "the herpolhode closes only if its turn a polhode period, {:.4f} deg, is a rational "
+          "multiple of 360 deg, and in general it is not: after {:g} periods the contact point is "
+          "{:.2f} deg from where it started (the herpolhode figure shows it)",
+          rigid::rad_to_deg(turn), kHerpolhodePeriods, rigid::rad_to_deg(apart)));
+    } else {
+      lab.result_none("herpolhode_turn_per_period_deg", "herpolhode: turn about L a polhode period",
+                      "deg", "no polhode period: " + regime);
+    }
 
     lab.section("4.1 the text's example I1 : I2 : I3 = 5 : 4 : 3");
     const Vector3d ratios(5, 4, 3);
@@ -197,16 +217,16 @@ int main(int argc, char** argv) {
     }
     lab.series(std::move(series));
 
+    // The body as drawn: as given, or, from its moments alone, the solid ellipsoid with
+    // those moments (semi-axes^2 in proportion to I_j + I_k - I_i, eq. 40).
+    const Vector3d extents =
+        box ? Vector3d(0.5 * in.box)
+        : moments_given
+            ? Vector3d(std::sqrt(std::max(I.I2 + I.I3 - I.I1, 1e-3 * moments.sum())),
+                       std::sqrt(std::max(I.I1 + I.I3 - I.I2, 1e-3 * moments.sum())),
+                       std::sqrt(std::max(I.I1 + I.I2 - I.I3, 1e-3 * moments.sum())))
+            : in.ellipsoid;
     if (lab.animating()) {
-      // the body drawn as given, or, from its moments alone, as the solid ellipsoid
-      // with those moments (semi-axes^2 in proportion to I_j + I_k - I_i, eq. 40)
-      const Vector3d extents =
-          box ? Vector3d(0.5 * in.box)
-          : moments_given
-              ? Vector3d(std::sqrt(std::max(I.I2 + I.I3 - I.I1, 1e-3 * moments.sum())),
-                         std::sqrt(std::max(I.I1 + I.I3 - I.I2, 1e-3 * moments.sum())),
-                         std::sqrt(std::max(I.I1 + I.I2 - I.I3, 1e-3 * moments.sum())))
-              : in.ellipsoid;
       const rigid::lab::poinsot::Animation animation(exact, extents, box, t_end);
       lab.animate(t_end,
                   "the body turning with L fixed, and its energy ellipsoid rolling on the "
@@ -218,6 +238,14 @@ int main(int argc, char** argv) {
       rigid::lab::poinsot::draw(
           set, {exact, in.omega0, run.samples, at_cost, kEqualCostEvaluations, kEqualCostPeriods,
                 scale, std::isfinite(exact.period()) ? "polhode periods" : "turns"});
+      if (std::isfinite(exact.period())) {
+        set.add("herpolhode",
+                fmt::format("Poinsot's construction seen from above: the herpolhode over {:g} "
+                            "polhode periods does not close",
+                            kHerpolhodePeriods),
+                rigid::lab::poinsot::Animation(exact, extents, box, t_end)
+                    .herpolhode_scene(kHerpolhodePeriods));
+      }
     });
   });
 }

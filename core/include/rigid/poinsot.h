@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rigid/free_body.h"
+#include "rigid/free_body_exact.h"
 
 namespace rigid {
 
@@ -34,6 +35,17 @@ Eigen::Vector3d momentum_ratios_touching(const Eigen::Vector3d& moments, int j);
 /// none for a steady rotation, whose polhode is the single point omega0_body.
 std::vector<std::vector<Eigen::Vector3d>> polhode(const PrincipalMoments& I,
                                                   const Eigen::Vector3d& omega0_body, int samples);
+
+/// The herpolhode (Poinsot's construction): omega in space over [0, t_end] at `samples`
+/// times, each the point where the energy ellipsoid, turning with the body about the
+/// fixed point, touches the invariable plane (normal to L, at distance 2T/|L| from the
+/// point). In the motion's space frame (the attitude's), rad/s.
+std::vector<Eigen::Vector3d> herpolhode(const FreeBodyExact& motion, double t_end, int samples);
+
+/// The angle, rad, that the contact point turns about L in one polhode period (unwrapped:
+/// a full turn and more counts as such): the herpolhode closes only if this is a rational
+/// multiple of 2 pi, so in general it never does. NaN without a polhode period.
+double herpolhode_turn_per_period(const FreeBodyExact& motion);
 
 /// omega_body on the energy ellipsoid of energy T with |L|^2 = L2, chosen where
 /// the intermediate component is zero; L2 must lie in [2 T I_min, 2 T I_max].
