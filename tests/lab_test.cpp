@@ -1231,3 +1231,18 @@ TEST_CASE("poinsot: bad animation options exit 2 with one line naming the option
   CHECK(std::filesystem::is_empty(dir));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("labs with motion: --animate writes a short animation of each") {
+  const std::string dir = "/tmp/rigid_anim_labs_" + std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  for (const std::string lab : {"poinsot", "football"}) {
+    const std::string path = dir + "/" + lab + ".mp4";
+    const rigid::test::Run run =
+        rigid::test::run_lab(lab, "--json --animate " + path + " --duration 0.2 --fps 10");
+    INFO(lab << ": " << run.err);
+    REQUIRE(run.status == 0);
+    CHECK(run.json()["animation"]["frames"] == 2);
+    CHECK(std::filesystem::file_size(path) > 0);
+  }
+  std::filesystem::remove_all(dir);
+}

@@ -24,11 +24,15 @@ std::vector<Vec3> circle_about_z(double radius, double z) {
   return points;
 }
 
+}  // namespace
+
 // L along z; the symmetry axis 3 and omega in the x-z plane at t = 0. The body
 // cone (half-angle alpha about 3) touches the space cone (half-angle |theta - alpha|
 // about L) along omega. Small angles are magnified by one factor, said in the title.
+// At time t the plane of L, 3 and omega has turned about L by phi_dot t, and the body
+// cone has rolled on the space cone: lines drawn on it, fixed in the body, show it.
 render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrecession& p,
-                            const std::string& prefix) {
+                            const std::string& prefix, double t) {
   const double widest = std::max(p.theta, p.body_cone);
   const double magnify = std::max(1.0, std::min(deg_to_rad(22.0) / p.body_cone,
                                                 deg_to_rad(70.0) / widest));
@@ -36,8 +40,10 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   const double space = magnify * p.space_cone;
   const double lead = theta - alpha;  // omega's angle from L, towards 3 when > 0
   const Vec3 L = Vec3::UnitZ();
-  const Vec3 axis3(std::sin(theta), 0, std::cos(theta));
-  const Vec3 omega(std::sin(lead), 0, std::cos(lead));
+  // the plane of L, 3 and omega turns about L at phi_dot
+  const Eigen::Matrix3d turn(Eigen::AngleAxisd(p.space_rate * t, Vec3::UnitZ()));
+  const Vec3 axis3 = turn * Vec3(std::sin(theta), 0, std::cos(theta));
+  const Vec3 omega = turn * Vec3(std::sin(lead), 0, std::cos(lead));
 
   render::Scene3D scene;
   scene.title = prefix + fmt::format("Is/I = {:.6g}, \\alpha = {:.3g}\\deg, body cone rolls {} the space cone",
@@ -65,6 +71,20 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   }
   scene.add_cone(Vec3::Zero(), slant * std::cos(alpha) * axis3, slant * std::sin(alpha),
                  {colors::kSymmetryAxis, 0.35f}, body_name);
+  // Lines fixed in the body cone, so its rolling shows: in the turning plane the body
+  // turns about 3 by -Omega' t, where Omega' sin(alpha) = phi_dot sin(space) makes the
+  // drawn (magnified) cones roll without slipping; the line at pi from the plane's x
+  // side lies along omega. Unmagnified, Omega' is the body's own Omega.
+  const double roll = std::sin(alpha) > 0 ? p.space_rate * std::sin(space) / std::sin(alpha) : 0.0;
+  const double spin = (p.body_rate >= 0 ? 1.0 : -1.0) * roll * t;
+  const Eigen::Matrix3d tilt(Eigen::AngleAxisd(theta, Vec3::UnitY()));
+  for (int k = 0; k < 8; ++k) {
+    const double beta = kPi + 2 * kPi * k / 8 - spin;
+    const Vec3 line = turn * tilt *
+                      Vec3(std::sin(alpha) * std::cos(beta), std::sin(alpha) * std::sin(beta),
+                           std::cos(alpha));
+    scene.add_polyline({0.15 * slant * line, slant * line}, colors::kSymmetryAxis, 2.5);
+  }
   const double r = 0.016;
   scene.add_arrow(Vec3::Zero(), 1.45 * L, r, {colors::kL}, "L (fixed in space)");
   scene.add_arrow(Vec3::Zero(), 1.45 * axis3, r, {colors::kSymmetryAxis}, "symmetry axis 3");
@@ -79,6 +99,8 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   scene.add_label(1.35 * omega, "\\omega", colors::kOmega);
   return scene;
 }
+
+namespace {
 
 // Omega / omega and phi_dot / omega against alpha for this body.
 render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
@@ -112,9 +134,9 @@ render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
 
 void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p, const Contrast& other) {
   set.add("cones", "the body cone rolls on the space cone along omega",
-          cones_scene(in.inertia(1) / in.inertia(0), in.alpha_deg, p, ""));
+          cones_scene(in.inertia(1) / in.inertia(0), in.alpha_deg, p, "", 0.0));
   set.add("cones_contrast", other.caption,
-          cones_scene(other.ratio, in.alpha_deg, other.precession, other.title + ": "));
+          cones_scene(other.ratio, in.alpha_deg, other.precession, other.title + ": ", 0.0));
   set.add("rates", "the precession rates against alpha", rates_plot(in, p));
 }
 

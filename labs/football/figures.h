@@ -26,6 +26,12 @@ struct Contrast {
   std::string title, caption;
 };
 
+/// The cones at time t (s) of the motion: the plane of L, 3 and omega turned about L
+/// by phi_dot t, the body cone rolled on the space cone (lines fixed in it show it);
+/// t = 0 is the "cones" figure. `prefix` starts the title.
+render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrecession& p,
+                            const std::string& prefix, double t);
+
 /// Hands the lab's figures to the set; `p` is the closed-form precession of `in`.
 void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p, const Contrast& other);
 

@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
       .symbol("\\alpha")
       .lab_default("the preset's");
 
+  lab.enable_animation();
   return lab.run(argc, argv, [&](Lab& lab) {
     if (lab.given("--preset") && lab.given("--inertia")) {
       throw rigid::lab::UsageError("--inertia",
@@ -225,6 +226,13 @@ int main(int argc, char** argv) {
         prolate ? "for contrast, an oblate thin disk" : "for contrast, a prolate football",
         prolate ? "for contrast, an oblate body: its body cone surrounds the space cone"
                 : "for contrast, a prolate body: its body cone rolls outside the space cone"};
+    // two turns of 3 about L, a precession period in each 5 s of the default 10 s animation
+    lab.animate(2.0 * p.space_period,
+                "the body cone rolling on the space cone, omega along their line of contact",
+                [&](double t) {
+                  return rigid::lab::football::cones_scene(in.inertia(1) / in.inertia(0),
+                                                           in.alpha_deg, p, "", t);
+                });
     lab.figures([&](rigid::lab::FigureSet& set) {
       rigid::lab::football::draw(set, in, p, contrast);
     });
