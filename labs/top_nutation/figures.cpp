@@ -169,24 +169,40 @@ render::Plot2D theta_plot(const Figures& f) {
 
 // The top at t = 0: tip, spindle and disk, with L, the gravity torque and the
 // circle its centre of mass sweeps as it precesses.
-render::Scene3D top_scene(const Figures& f) {
-  const HeavyTopExact& m = f.motion;
-  const Eigen::Quaterniond q = m.attitude(0.0);
+}  // namespace
+
+render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius, double t) {
+  const Eigen::Quaterniond q = m.attitude(t);
   const Vector3d e3 = q * Vector3d::UnitZ();
-  const double l = f.arm, r = f.disk_radius, size = std::max(l + r, 2 * r);
-  const TopAngles a0 = m.angles(0.0);
+  const double l = arm, r = disk_radius, size = std::max(l + r, 2 * r);
+  const TopAngles a0 = m.angles(t);
   const Vector3d omega = q * euler_omega_body(a0);
   const HeavyTop& top = m.top();
   const Vector3d L_body = Vector3d(top.I, top.I, top.Is).cwiseProduct(euler_omega_body(a0));
   const Vector3d L = q * L_body;
   const Vector3d torque = -top.mgl * e3.cross(Vector3d::UnitZ());
   render::Scene3D scene;
-  scene.title = "the top at t = 0; arrows show directions";
+  scene.title = t > 0 ? fmt::format("the top at t = {:.3f} s; arrows show directions", t)
+                      : "the top at t = 0; arrows show directions";
   scene.add_sphere(Vector3d::Zero(), 0.04 * size, {render::kGray}, "tip (pivot)");
   scene.add_cylinder(Vector3d::Zero(), (l + 0.5 * r) * e3, 0.03 * size, {render::kGray});
   // The disk translucent, so the tip, the spindle and the circle below stay in view.
   scene.add_cylinder(l * e3 - 0.05 * r * e3, l * e3 + 0.05 * r * e3, r, {colors::kBody, 0.5f},
                      "disk");
+  // two spokes fixed in the disk, so its spin shows as it turns
+  for (const Vector3d& spoke : {Vector3d(q * Vector3d::UnitX()), Vector3d(q * Vector3d::UnitY())}) {
+    scene.add_polyline({l * e3 - 0.95 * r * spoke, l * e3 + 0.95 * r * spoke}, render::kBlack, 2.5);
+  }
+  // the symmetry axis drawn on past the disk, and the path of its end on a sphere
+  // clear of the disk so far (none at t = 0): the nodding and the precession
+  if (t > 0) {
+    const double reach = 1.3 * size;
+    scene.add_polyline({(l + 0.5 * r) * e3, reach * e3}, colors::kSymmetryAxis, 2.0);
+    std::vector<Vector3d> path;
+    const int n = std::max(2, static_cast<int>(400.0 * t / m.nutation_period()));
+    for (int k = 0; k <= n; ++k) path.push_back(reach * (m.attitude(t * k / n) * Vector3d::UnitZ()));
+    scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0, "path of the symmetry axis");
+  }
   const double arrow = 1.6 * size;
   if (L.norm() > 0) {
     scene.add_arrow(Vector3d::Zero(), arrow * L.normalized(), 0.025 * size, {colors::kL}, "L");
@@ -207,14 +223,13 @@ render::Scene3D top_scene(const Figures& f) {
   return scene;
 }
 
-}  // namespace
-
 void draw(FigureSet& set, const Figures& f) {
   set.add("potential", "the effective potential, E' and the turning points",
           potential_plot(f.motion));
   set.add("paths", "the axis's path on the sphere: wavy, cusped, looping", paths_scene(f.motion));
   set.add("theta", "theta(t) and phi_dot(t), exact beside integrated", theta_plot(f));
-  set.add("top", "the top, L, the gravity torque and the precession circle", top_scene(f));
+  set.add("top", "the top, L, the gravity torque and the precession circle",
+          top_scene(f.motion, f.arm, f.disk_radius, 0.0));
   std::vector<MethodCurve> curves;
   for (const TopComparison& c : f.methods) {
     std::vector<double> deg;

@@ -49,4 +49,9 @@ struct Figures {
 /// Hands the lab's figures to the set.
 void draw(FigureSet& set, const Figures& f);
 
+/// The top at time t (s): its disk (with spokes, so its spin shows), L, the gravity
+/// torque, omega, the centre of mass's circle at the current tilt, and the path of
+/// the symmetry axis's end since t = 0; t = 0 is the "top" figure.
+render::Scene3D top_scene(const HeavyTopExact& motion, double arm, double disk_radius, double t);
+
 }  // namespace rigid::lab::top_nutation

@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
   rigid::lab::declare_integration_options(lab, in.integration, "how the motion is computed",
                                           "nutation period / 2000", false);
   lab.enable_csv();
+  lab.enable_animation();
 
   in.integration.compared = true;  // every method at --step and --tolerance, in a section
   return lab.run(argc, argv, [&](Lab& lab) {
@@ -311,6 +312,11 @@ int main(int argc, char** argv) {
                              s.omega_body(2), q.w(), q.x(), q.y(), q.z(), s.energy_error});
     }
     lab.series(std::move(series));
+
+    lab.animate(t_end, "the top precessing and nodding; the path of its axis on the sphere",
+                [&](double t) {
+                  return rigid::lab::top_nutation::top_scene(motion, in.arm, in.disk_radius, t);
+                });
 
     lab.figures([&](rigid::lab::FigureSet& set) {
       // Beside the exact motion, an integrated one: the lab's own, or splitting4 at its default step.
