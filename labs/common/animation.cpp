@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "common/lab.h"
+#include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 
 #if RIGID_HAVE_RENDER
@@ -150,6 +151,12 @@ void Lab::check_animation_path() const {
 
 void Lab::animate(double motion_seconds, const std::string& caption,
                   const std::function<render::Scene3D(double)>& frame) {
+  animate(motion_seconds, caption, frame, {}, 0.0);
+}
+
+void Lab::animate(double motion_seconds, const std::string& caption,
+                  const std::function<render::Scene3D(double)>& frame,
+                  const std::function<render::Plot2D(double)>& strip, double strip_share) {
   if (animation_path_.empty()) return;
   if (!(motion_seconds > 0.0) || !std::isfinite(motion_seconds)) {
     throw UsageError("--animate", "there is no motion to show (its span is not positive)");
@@ -161,13 +168,16 @@ void Lab::animate(double motion_seconds, const std::string& caption,
   // the span's end, so a periodic motion loops without a repeated frame
   const auto motion_time = [&](int k) { return motion_seconds * k / frames; };
   const int w = animation_width_, h = animation_height_;
+  // the scene above, the strip (if any) below: both even, for H.264
+  const int h_strip = strip ? 2 * static_cast<int>(std::lround(0.5 * strip_share * h)) : 0;
+  const int h_scene = h - h_strip;
   try {
     render::context();
     // one camera for every frame, fitted to the union of frames spread over the motion
     render::Scene3D envelope = frame(0.0);
     envelope.title = scene_title(envelope.title);
     for (int k = 1; k < kFitSamples; ++k) envelope.merge(frame(motion_seconds * k / kFitSamples));
-    const render::Camera camera = envelope.fitted_camera(w, h);
+    const render::Camera camera = envelope.fitted_camera(w, h_scene);
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
                                {w, h, animation_fps_});
@@ -188,9 +198,18 @@ void Lab::animate(double motion_seconds, const std::string& caption,
       scene.camera = camera;
       build += lap(t0);
       render::FigureTiming f;
-      render::Image image = scene.render(w, h, timing_ ? &f : nullptr);
+      render::Image image = scene.render(w, h_scene, timing_ ? &f : nullptr);
       phases.setup += f.setup, phases.layout += f.layout, phases.draw += f.draw,
           phases.resolve += f.resolve;
+      if (strip) {
+        render::Plot2D plot = strip(motion_time(k));
+        plot.style_height = h;
+        const render::Image below = plot.render(w, h_strip, timing_ ? &f : nullptr);
+        phases.setup += f.setup, phases.layout += f.layout, phases.draw += f.draw,
+            phases.resolve += f.resolve;
+        image.height = h;
+        image.rgb.insert(image.rgb.end(), below.rgb.begin(), below.rgb.end());
+      }
       lap(t0);
       writer.add(std::move(image));  // waits while two frames are still being encoded
       handover += lap(t0);
@@ -237,6 +256,8 @@ void Lab::animate(double motion_seconds, const std::string& caption,
 #else
   (void)frame;
   (void)caption;
+  (void)strip;
+  (void)strip_share;
   figures_failed_ = true;
   std::cerr << name_ << ": error: --animate: this build has no renderer (RIGID_BUILD_RENDER=OFF)\n";
 #endif

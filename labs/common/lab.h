@@ -22,6 +22,7 @@
 
 namespace rigid::render {
 class Scene3D;
+class Plot2D;
 }
 
 namespace rigid::lab {
@@ -194,6 +195,11 @@ class Lab {
   /// with one camera fitted to the whole motion.
   void animate(double motion_seconds, const std::string& caption,
                const std::function<render::Scene3D(double)>& frame);
+  /// The same with a strip under the scene: `strip(t)`, a plot at motion time t drawn
+  /// across the frame's lower `strip_share`, in the frame's text size.
+  void animate(double motion_seconds, const std::string& caption,
+               const std::function<render::Scene3D(double)>& frame,
+               const std::function<render::Plot2D(double)>& strip, double strip_share);
   /// True if --animate FILE was given (what an animation needs is made only then).
   bool animating() const { return !animation_path_.empty(); }
   /// A figure's or animation's title: the lab's name and inputs, then `own` after a colon.

@@ -44,4 +44,10 @@ struct Figures {
 /// Hands the lab's figures to the set.
 void draw(FigureSet& set, const Figures& f);
 
+/// The racquet at time t of `motion` in space, L fixed and drawn up, with body axis 2:
+/// spun about axis 2 it turns over and back (the animation's scene).
+render::Scene3D spin_scene(const Racquet& racquet, const FreeBodyExact& motion, int axis, double t);
+/// omega_1, omega_2, omega_3 of `motion` over [0, t_end] with a line at t (the strip under it).
+render::Plot2D omega_strip(const FreeBodyExact& motion, double t_end, double t);
+
 }  // namespace rigid::lab::tennis_racquet

@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
                                           "(exact: none)",
                                           "polhode period / 2000");
   lab.enable_csv();
+  lab.enable_animation();
 
   return lab.run(argc, argv, [&](Lab& lab) {
     const rigid::Racquet racquet = rigid::lab::for_option("--head-mass", [&] {
@@ -208,6 +209,13 @@ int main(int argc, char** argv) {
                              s.omega_body(1), s.omega_body(2)});
     }
     lab.series(std::move(series));
+
+    lab.animate(t_end, "the racquet turning in space, omega's components below",
+                [&](double t) {
+                  return rigid::lab::tennis_racquet::spin_scene(racquet, motion, axis, t);
+                },
+                [&](double t) { return rigid::lab::tennis_racquet::omega_strip(motion, t_end, t); },
+                0.3);
 
     lab.figures([&](rigid::lab::FigureSet& set) {
       rigid::lab::tennis_racquet::draw(

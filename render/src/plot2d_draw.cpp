@@ -656,7 +656,7 @@ struct FigurePlan {
 };
 
 FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
-  FigurePlan fp{detail::figure_style(width, height), {}, {}};
+  FigurePlan fp{detail::figure_style(width, plot.style_height > 0 ? plot.style_height : height), {}, {}};
   const Style& st = fp.st;
   fp.title = detail::layout_title(plot.title, st.title_font, st.margin, width - st.margin, 0.5 * width, st.margin);
   // Panels keep a padding inside their cells, so the cells reach to a padding short of the

@@ -140,6 +140,10 @@ class Plot2D {
 
   /// Figure title over all panels (text.h markup); empty for none.
   std::string title;
+  /// The height the figure style (fonts, line widths, margins) is sized for; 0: the
+  /// image's own. A strip under an animation's scene sets the whole frame's height,
+  /// so its text matches the scene's instead of shrinking with the strip.
+  int style_height = 0;
 
   /// Where one panel's parts land at a size, in pixels.
   struct PanelLayout {
