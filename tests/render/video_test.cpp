@@ -195,3 +195,20 @@ TEST_CASE("video: a writer that is not finished, or is given a wrong frame, leav
   CHECK(fs::is_empty(dir));
   fs::remove_all(dir);
 }
+
+TEST_CASE("video: the README's animations are what the figures target makes") {
+  // figures/<lab>_motion.webp: 640x360, 12 fps, 8 s (scripts/figures.cmake)
+  int found = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(RIGID_SOURCE_DIR) / "figures")) {
+    if (entry.path().extension() != ".webp") continue;
+    ++found;
+    const ReadBack r = read_webp(entry.path().string());
+    INFO(entry.path().filename().string() << ": " << r.frames << " frames, " << r.width << "x"
+                                          << r.height << ", " << r.duration << " s");
+    CHECK(r.frames == 96);
+    CHECK(r.width == 640);
+    CHECK(r.height == 360);
+    CHECK(std::abs(r.duration - 8.0) < 1e-3);
+  }
+  CHECK(found == 4);  // poinsot, tennis_racquet, football, top_nutation
+}
