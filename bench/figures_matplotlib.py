@@ -54,6 +54,7 @@ import csv  # noqa: E402
 import json  # noqa: E402
 import math  # noqa: E402
 import os  # noqa: E402
+import shutil  # noqa: E402
 import subprocess  # noqa: E402
 import sys  # noqa: E402
 import tempfile  # noqa: E402
@@ -878,6 +879,80 @@ def top_path_runs(labs, work, res):
     return out
 
 
+ANIMATION = dict(frames=300, fps=30, figsize=(12.8, 7.2), dpi=100)  # 10 s at 1280x720
+
+
+def rotated_ellipsoid(ax, centre, semi, R, color, alpha, n=40):
+    """An ellipsoid of these semi-axes turned by R about its centre, as plot_surface draws it."""
+    u = np.linspace(0, 2 * np.pi, n)
+    v = np.linspace(0, np.pi, n // 2)
+    pts = np.stack([semi[0] * np.outer(np.cos(u), np.sin(v)),
+                    semi[1] * np.outer(np.sin(u), np.sin(v)),
+                    semi[2] * np.outer(np.ones_like(u), np.cos(v))], axis=-1) @ R.T
+    ax.plot_surface(*(pts[..., k] + centre[k] for k in range(3)), color=color, alpha=alpha,
+                    linewidth=0, antialiased=True, shade=True)
+
+
+def poinsot_animation(d, series, path):
+    """poinsot --animate drawn by matplotlib's FuncAnimation through its ffmpeg writer (H.264,
+    veryfast, CRF 20, as rigidlab's): the body turning with L fixed (down), its energy ellipsoid
+    rolling on the invariable plane with the polhode, the herpolhode growing. Every frame clears
+    the axes and draws the scene anew, as a user of mplot3d does; the frames are the lab's run
+    (its --csv) resampled at the frame times."""
+    from matplotlib.animation import FFMpegWriter, FuncAnimation
+    res = d["results"]
+    semi = np.array([3.0, 2.0, 1.0])
+    moments = np.array(res["principal_moments"])
+    energy_semi = np.array(res["energy_ellipsoid_semi_axes"])
+    t_end = series["t_s"][-1]
+    times = np.linspace(0, t_end, ANIMATION["frames"], endpoint=False)
+    _, w = resample(series["t_s"], [series["omega1"], series["omega2"], series["omega3"]],
+                    t_end, ANIMATION["frames"] + 1)
+    _, q = resample(series["t_s"], [series["qw"], series["qx"], series["qy"], series["qz"]],
+                    t_end, ANIMATION["frames"] + 1)
+    S = rotation_between(moments * w[0], [0, 0, -1])  # L down
+    scale = semi.max() / energy_semi.max()
+    offset = np.array([3 * semi.max(), 0, 0])
+    depth = scale * 2 * res["energy"] / res["angular_momentum_magnitude"]
+    polhode = w[:, :].copy()
+    contacts = np.array([offset + scale * (S @ rotation(q[k]) @ w[k])
+                         for k in range(ANIMATION["frames"])])
+    fig = plt.figure(figsize=ANIMATION["figsize"], dpi=ANIMATION["dpi"])
+    fig.subplots_adjust(0, 0, 1, 0.86)
+    ax = fig.add_subplot(projection="3d")
+
+    def draw(k):
+        ax.cla()
+        R = S @ rotation(q[k])
+        ax.set_title(lab_title(POINSOT, "the body turning, L fixed; its energy ellipsoid rolls "
+                               f"on the invariable plane: t = {times[k]:.2f} s"), fontsize=16)
+        rotated_ellipsoid(ax, np.zeros(3), semi, R, SKY, 1.0)
+        arrow(ax, [0, 0, 0], [0, 0, -1.9 * semi.max()], VERMILLION, "L, fixed in space")
+        arrow(ax, [0, 0, 0], 1.7 * scale * (R @ w[k]), BLUE, "ω")
+        rotated_ellipsoid(ax, offset, scale * energy_semi, R, LIGHT, 0.55)
+        ax.plot(*(offset[:, None] + scale * (R @ (1.004 * polhode.T))), color=BLUE, lw=3,
+                label="polhode")
+        r = np.linspace(0, 1.2 * np.abs(contacts[:, :2] - offset[:2]).max(), 2)
+        a = np.linspace(0, 2 * np.pi, 48)
+        ax.plot_surface(offset[0] + np.outer(r, np.cos(a)), offset[1] + np.outer(r, np.sin(a)),
+                        np.full((2, 48), offset[2] - depth), color=LIGHT, alpha=0.55, linewidth=0)
+        ax.plot(*contacts[:k + 1].T, color=BLACK, lw=3, label="herpolhode")
+        ax.legend(loc="upper right")
+        ax.view_init(*view_from((1.5, -8.0, 6.0), (1.5, 0, -0.5)))
+        ax.set_xlim(-semi.max(), offset[0] + semi.max())
+        ax.set_ylim(-semi.max(), semi.max())
+        ax.set_zlim(-1.9 * semi.max(), semi.max())
+        ax.set_box_aspect((offset[0] + 2 * semi.max(), 2 * semi.max(), 2.9 * semi.max()),
+                          zoom=1.3)
+        ax.set_axis_off()
+
+    anim = FuncAnimation(fig, draw, frames=ANIMATION["frames"])
+    anim.save(path, writer=FFMpegWriter(fps=ANIMATION["fps"], codec="libx264",
+                                        extra_args=["-preset", "veryfast", "-crf", "20",
+                                                    "-pix_fmt", "yuv420p"]))
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--labs", required=True, help="directory with the lab executables")
@@ -944,6 +1019,16 @@ def main():
                         "seconds": best[name], "kind": "figure"})
         print(f"figures_matplotlib: {name}: {best[name] * 1e3:.1f} ms", file=sys.stderr)
     print(f"figures_matplotlib: import {IMPORT_SECONDS * 1e3:.1f} ms", file=sys.stderr)
+    # the animation, once (it takes tens of seconds), where ffmpeg is installed
+    if shutil.which("ffmpeg"):
+        t0 = time.perf_counter()
+        poinsot_animation(poinsot, series, os.path.join(out_dir, "poinsot_motion.mp4"))
+        seconds = time.perf_counter() - t0
+        entries.append({"group": "figures", "case": "poinsot animation", "tool": "matplotlib",
+                        "seconds": seconds, "kind": "animation", "frames": ANIMATION["frames"],
+                        "fps": ANIMATION["fps"], "size": "1280x720"})
+        print(f"figures_matplotlib: poinsot animation (300 frames, 1280x720): {seconds:.1f} s",
+              file=sys.stderr)
     with open(args.out + ".tmp", "w") as f:
         json.dump(entries, f, indent=1)
     os.replace(args.out + ".tmp", args.out)
