@@ -1244,5 +1244,14 @@ TEST_CASE("labs with motion: --animate writes a short animation of each") {
     CHECK(run.json()["animation"]["frames"] == 2);
     CHECK(std::filesystem::file_size(path) > 0);
   }
+  // frames from an integrator, sampled at the frame times: a fixed step off their grid,
+  // and an adaptive method with dense output
+  for (const std::string method : {"--method rk4 --step 0.37", "--method vern7"}) {
+    const rigid::test::Run run = rigid::test::run_lab(
+        "poinsot", method + " --json --animate " + dir + "/i.mp4 --duration 0.5 --fps 10");
+    INFO(method << ": " << run.err);
+    CHECK(run.status == 0);
+    CHECK(run.json()["animation"]["frames"] == 5);
+  }
   std::filesystem::remove_all(dir);
 }

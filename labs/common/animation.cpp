@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -122,6 +123,25 @@ void Lab::enable_animation() {
           ""));
 }
 
+namespace {
+// Frame k at k/frames of the motion (the last frame one short of its end, so a periodic
+// motion loops without a repeated frame), the camera fitted at kFitSamples more.
+int frame_count(double duration, double fps) {
+  return std::max(1, static_cast<int>(std::lround(duration * fps)));
+}
+double frame_time(double motion_seconds, int k, int frames) { return motion_seconds * k / frames; }
+}  // namespace
+
+std::vector<double> Lab::animation_times(double motion_seconds) const {
+  const int frames = frame_count(animation_duration_, animation_fps_);
+  std::vector<double> times;
+  for (int k = 0; k < frames; ++k) times.push_back(frame_time(motion_seconds, k, frames));
+  for (int k = 0; k < kFitSamples; ++k) times.push_back(frame_time(motion_seconds, k, kFitSamples));
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
 void Lab::check_animation_path() const {
   if (!animation_enabled_ || app_.count("--animate") == 0) {
     for (const char* flag : {"--fps", "--duration", "--animation-size"}) {
@@ -163,10 +183,8 @@ void Lab::animate(double motion_seconds, const std::string& caption,
   }
 #if RIGID_HAVE_RENDER
   const auto start = std::chrono::steady_clock::now();
-  const int frames = std::max(1, static_cast<int>(std::lround(animation_duration_ * animation_fps_)));
-  // frame k shows the motion at k/frames of its span: the last frame is one frame short of
-  // the span's end, so a periodic motion loops without a repeated frame
-  const auto motion_time = [&](int k) { return motion_seconds * k / frames; };
+  const int frames = frame_count(animation_duration_, animation_fps_);
+  const auto motion_time = [&](int k) { return frame_time(motion_seconds, k, frames); };
   const int w = animation_width_, h = animation_height_;
   // the scene above, the strip (if any) below: both even, for H.264
   const int h_strip = strip ? 2 * static_cast<int>(std::lround(0.5 * strip_share * h)) : 0;
@@ -176,7 +194,7 @@ void Lab::animate(double motion_seconds, const std::string& caption,
     // one camera for every frame, fitted to the union of frames spread over the motion
     render::Scene3D envelope = frame(0.0);
     envelope.title = scene_title(envelope.title);
-    for (int k = 1; k < kFitSamples; ++k) envelope.merge(frame(motion_seconds * k / kFitSamples));
+    for (int k = 1; k < kFitSamples; ++k) envelope.merge(frame(frame_time(motion_seconds, k, kFitSamples)));
     const render::Camera camera = envelope.fitted_camera(w, h_scene);
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),

@@ -200,6 +200,9 @@ class Lab {
   void animate(double motion_seconds, const std::string& caption,
                const std::function<render::Scene3D(double)>& frame,
                const std::function<render::Plot2D(double)>& strip, double strip_share);
+  /// Every time of the motion animate() will ask a frame for, sorted (the frames and the
+  /// camera's fit): a lab that draws from an integrator samples it at exactly these.
+  std::vector<double> animation_times(double motion_seconds) const;
   /// True if --animate FILE was given (what an animation needs is made only then).
   bool animating() const { return !animation_path_.empty(); }
   /// A figure's or animation's title: the lab's name and inputs, then `own` after a colon.

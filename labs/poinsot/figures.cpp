@@ -94,8 +94,10 @@ void draw(FigureSet& set, const Run& run) {
 }
 
 Animation::Animation(const FreeBodyExact& motion, const Vector3d& half_extents, bool box,
-                     double t_end)
-    : motion_(motion), half_extents_(half_extents), box_(box) {
+                     double t_end, StateAt state_at, const std::vector<double>& path_times)
+    : motion_(motion), half_extents_(half_extents), box_(box),
+      state_at_(state_at ? std::move(state_at)
+                         : StateAt([&motion](double t) { return motion.state(t); })) {
   const PrincipalMoments& I = motion.moments();
   const Vector3d w0 = motion.omega_body(0.0);
   const Vector3d L0 = Vector3d(I.I1, I.I2, I.I3).cwiseProduct(w0);
@@ -111,13 +113,17 @@ Animation::Animation(const FreeBodyExact& motion, const Vector3d& half_extents, 
   plane_depth_ = construction_scale_ * 2.0 * motion.energy() / motion.angular_momentum_magnitude();
   offset_ = Vector3d(3.0 * size_, 0.0, 0.0);
   polhode_ = polhode(I, w0, 240);
-  // the herpolhode: the contact point over the whole motion, 240 samples a polhode period
-  const double period = std::isfinite(motion.period()) ? motion.period() : t_end;
-  const int n = std::clamp(static_cast<int>(240.0 * t_end / period), 240, 20000);
+  // the herpolhode: the contact point over the whole motion, at `path_times` or else
+  // 240 samples a polhode period
+  std::vector<double> times = path_times;
+  if (times.empty()) {
+    const double period = std::isfinite(motion.period()) ? motion.period() : t_end;
+    const int n = std::clamp(static_cast<int>(240.0 * t_end / period), 240, 20000);
+    for (int k = 0; k <= n; ++k) times.push_back(t_end * k / n);
+  }
   double reach = 0.0;
-  for (int k = 0; k <= n; ++k) {
-    const double t = t_end * k / n;
-    const FreeBodyState x = motion.state(t);
+  for (const double t : times) {
+    const FreeBodyState x = state_at_(t);
     const Eigen::Matrix3d a = space_ * attitude(x).toRotationMatrix();
     herpolhode_t_.push_back(t);
     herpolhode_.push_back(to_construction(a, omega_body(x)));
@@ -131,7 +137,7 @@ Vector3d Animation::to_construction(const Eigen::Matrix3d& attitude, const Vecto
 }
 
 render::Scene3D Animation::frame(double t) const {
-  const FreeBodyState x = motion_.state(t);
+  const FreeBodyState x = state_at_(t);
   const Eigen::Matrix3d a = space_ * attitude(x).toRotationMatrix();
   const Vector3d w = omega_body(x);
   render::Scene3D scene;

@@ -3,6 +3,7 @@
 // plot, and every integrator's error against the exact solution.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,10 +50,13 @@ void draw(FigureSet& set, const Run& run);
 /// construction (rad/s) are scaled to the body's size.
 class Animation {
  public:
+  /// The state (omega_body, attitude) at a time: the exact solution's, or an integrator's.
+  using StateAt = std::function<FreeBodyState(double)>;
   /// `half_extents`: the semi-axes of the solid ellipsoid drawn (a box's half sides
-  /// if `box`); the herpolhode is sampled over [0, t_end].
+  /// if `box`); the herpolhode is sampled over [0, t_end] (240 times a polhode period),
+  /// or at `path_times`. States come from `state_at`, the exact solution if empty.
   Animation(const FreeBodyExact& motion, const Eigen::Vector3d& half_extents, bool box,
-            double t_end);
+            double t_end, StateAt state_at = {}, const std::vector<double>& path_times = {});
   /// The scene at time t of the motion.
   render::Scene3D frame(double t) const;
   /// The construction alone, seen from above: the herpolhode over `periods` polhode
@@ -65,6 +69,7 @@ class Animation {
   const FreeBodyExact& motion_;
   Eigen::Vector3d half_extents_;
   bool box_;
+  StateAt state_at_;
   Eigen::Matrix3d space_;  ///< the motion's space frame turned so that L points down
   double size_, omega_scale_, construction_scale_, plane_depth_, plane_radius_;
   Eigen::Vector3d offset_;                          ///< where the construction stands

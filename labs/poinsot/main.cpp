@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "common/free_body_run.h"
 #include "common/lab.h"
@@ -227,7 +228,21 @@ int main(int argc, char** argv) {
                        std::sqrt(std::max(I.I1 + I.I2 - I.I3, 1e-3 * moments.sum())))
             : in.ellipsoid;
     if (lab.animating()) {
-      const rigid::lab::poinsot::Animation animation(exact, extents, box, t_end);
+      // Frames from the chosen method: the exact solution, or the integrator sampled at
+      // exactly the animation's times (never at its own steps)
+      rigid::lab::poinsot::Animation::StateAt state_at;
+      std::vector<double> path_times;
+      std::map<double, rigid::FreeBodyState> states;
+      if (in.integration.method != "exact") {
+        path_times = lab.animation_times(t_end);
+        const rigid::IntegrationResult frames = rigid::lab::run_free_body(
+            lab, exact, in.integration, options, path_times);
+        for (const rigid::FreeBodySample& s : frames.samples)
+          states[s.t] = rigid::make_state(s.omega_body, s.attitude);
+        state_at = [&states](double t) { return states.at(t); };
+      }
+      const rigid::lab::poinsot::Animation animation(exact, extents, box, t_end, state_at,
+                                                     path_times);
       lab.animate(t_end,
                   "the body turning with L fixed, and its energy ellipsoid rolling on the "
                   "invariable plane: polhode and herpolhode",
