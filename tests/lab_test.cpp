@@ -1246,10 +1246,14 @@ TEST_CASE("labs with motion: --animate writes a short animation of each") {
   }
   // frames from an integrator, sampled at the frame times: a fixed step off their grid,
   // and an adaptive method with dense output
-  for (const std::string method : {"--method rk4 --step 0.37", "--method vern7"}) {
+  for (const auto& [lab, method] :
+       {std::pair<std::string, std::string>{"poinsot", "--method rk4 --step 0.37"},
+        {"poinsot", "--method vern7"},
+        {"top_nutation", "--method splitting4"},
+        {"top_nutation", "--method vern8"}}) {
     const rigid::test::Run run = rigid::test::run_lab(
-        "poinsot", method + " --json --animate " + dir + "/i.mp4 --duration 0.5 --fps 10");
-    INFO(method << ": " << run.err);
+        lab, method + " --json --animate " + dir + "/i.mp4 --duration 0.5 --fps 10");
+    INFO(lab << " " << method << ": " << run.err);
     CHECK(run.status == 0);
     CHECK(run.json()["animation"]["frames"] == 5);
   }

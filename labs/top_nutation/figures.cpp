@@ -171,14 +171,18 @@ render::Plot2D theta_plot(const Figures& f) {
 // circle its centre of mass sweeps as it precesses.
 }  // namespace
 
-render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius, double t) {
-  const Eigen::Quaterniond q = m.attitude(t);
+render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius, double t,
+                          const TopStateAt& state_at, const std::vector<double>& path_times) {
+  const auto state = [&](double s) {
+    return state_at ? state_at(s) : TopState{m.attitude(s), euler_omega_body(m.angles(s))};
+  };
+  const TopState now = state(t);
+  const Eigen::Quaterniond q = now.attitude;
   const Vector3d e3 = q * Vector3d::UnitZ();
   const double l = arm, r = disk_radius, size = std::max(l + r, 2 * r);
-  const TopAngles a0 = m.angles(t);
-  const Vector3d omega = q * euler_omega_body(a0);
+  const Vector3d omega = q * now.omega_body;
   const HeavyTop& top = m.top();
-  const Vector3d L_body = Vector3d(top.I, top.I, top.Is).cwiseProduct(euler_omega_body(a0));
+  const Vector3d L_body = Vector3d(top.I, top.I, top.Is).cwiseProduct(now.omega_body);
   const Vector3d L = q * L_body;
   const Vector3d torque = -top.mgl * e3.cross(Vector3d::UnitZ());
   render::Scene3D scene;
@@ -199,8 +203,16 @@ render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius
     const double reach = 1.3 * size;
     scene.add_polyline({(l + 0.5 * r) * e3, reach * e3}, colors::kSymmetryAxis, 2.0);
     std::vector<Vector3d> path;
-    const int n = std::max(2, static_cast<int>(400.0 * t / m.nutation_period()));
-    for (int k = 0; k <= n; ++k) path.push_back(reach * (m.attitude(t * k / n) * Vector3d::UnitZ()));
+    std::vector<double> when;
+    for (const double s : path_times) {
+      if (s < t) when.push_back(s);
+    }
+    if (path_times.empty()) {
+      const int n = std::max(2, static_cast<int>(400.0 * t / m.nutation_period()));
+      for (int k = 0; k < n; ++k) when.push_back(t * k / n);
+    }
+    when.push_back(t);
+    for (const double s : when) path.push_back(reach * (state(s).attitude * Vector3d::UnitZ()));
     scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0, "path of the symmetry axis");
   }
   const double arrow = 1.6 * size;

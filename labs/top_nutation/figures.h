@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,9 +50,20 @@ struct Figures {
 /// Hands the lab's figures to the set.
 void draw(FigureSet& set, const Figures& f);
 
+/// The top's attitude and angular velocity in body axes at a time.
+struct TopState {
+  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
+};
+/// The state at a time: an integrator's (the exact motion's when empty).
+using TopStateAt = std::function<TopState(double)>;
+
 /// The top at time t (s): its disk (with spokes, so its spin shows), L, the gravity
 /// torque, omega, the centre of mass's circle at the current tilt, and the path of
-/// the symmetry axis's end since t = 0; t = 0 is the "top" figure.
-render::Scene3D top_scene(const HeavyTopExact& motion, double arm, double disk_radius, double t);
+/// the symmetry axis's end since t = 0 (through `path_times` up to t, or 400 points a
+/// nutation period); t = 0 is the "top" figure. States from `state_at`, else exact.
+render::Scene3D top_scene(const HeavyTopExact& motion, double arm, double disk_radius, double t,
+                          const TopStateAt& state_at = {},
+                          const std::vector<double>& path_times = {});
 
 }  // namespace rigid::lab::top_nutation

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "common/free_body_run.h"
 #include "common/lab.h"
@@ -313,10 +314,27 @@ int main(int argc, char** argv) {
     }
     lab.series(std::move(series));
 
-    lab.animate(t_end, "the top precessing and nodding; the path of its axis on the sphere",
-                [&](double t) {
-                  return rigid::lab::top_nutation::top_scene(motion, in.arm, in.disk_radius, t);
-                });
+    if (lab.animating()) {
+      // Frames from the chosen method: exact, or the integrator sampled at exactly the
+      // animation's times (never at its steps)
+      rigid::lab::top_nutation::TopStateAt state_at;
+      std::vector<double> path_times;
+      std::map<double, rigid::lab::top_nutation::TopState> states;
+      if (in.integration.method != "exact") {
+        path_times = lab.animation_times(t_end);
+        const rigid::TopRun frames = rigid::lab::for_option(fixed ? "--step" : "--tolerance", [&] {
+          return rigid::integrate_heavy_top(top, rigid::heavy_top_state(motion.angles(0.0)),
+                                            path_times, options);
+        });
+        for (const rigid::TopSample& s : frames.samples) states[s.t] = {s.attitude, s.omega_body};
+        state_at = [&states](double t) { return states.at(t); };
+      }
+      lab.animate(t_end, "the top precessing and nodding; the path of its axis on the sphere",
+                  [&](double t) {
+                    return rigid::lab::top_nutation::top_scene(motion, in.arm, in.disk_radius, t,
+                                                               state_at, path_times);
+                  });
+    }
 
     lab.figures([&](rigid::lab::FigureSet& set) {
       // Beside the exact motion, an integrated one: the lab's own, or splitting4 at its default step.
