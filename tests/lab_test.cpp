@@ -1250,6 +1250,7 @@ TEST_CASE("labs with motion: --animate writes a short animation of each") {
        {std::pair<std::string, std::string>{"poinsot", "--method rk4 --step 0.37"},
         {"poinsot", "--method vern7"},
         {"top_nutation", "--method splitting4"},
+        {"tennis_racquet", "--method rk4 --step 0.01"},
         {"top_nutation", "--method vern8"}}) {
     const rigid::test::Run run = rigid::test::run_lab(
         lab, method + " --json --animate " + dir + "/i.mp4 --duration 0.5 --fps 10");

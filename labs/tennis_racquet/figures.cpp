@@ -168,14 +168,16 @@ render::Scene3D flip_scene(const Figures& f) {
 
 }  // namespace
 
-render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int axis, double t) {
+render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int axis, double t,
+                           const std::function<FreeBodyState(double)>& state_at) {
   const Eigen::Quaterniond to_display =
       Eigen::Quaterniond::FromTwoVectors(motion.L_space(), Vector3d::UnitZ());
-  const Eigen::Matrix3d R = (to_display * motion.attitude(t)).toRotationMatrix();
+  const FreeBodyState x = state_at ? state_at(t) : motion.state(t);
+  const Eigen::Matrix3d R = (to_display * attitude(x).normalized()).toRotationMatrix();
   const double a = r.cm_offset > 0 ? (r.handle_start - r.head_centre).norm() : 0.0;
   const double length = (r.handle_end - r.head_centre).norm() + a;
   const double I2 = motion.moments().I2, L = motion.angular_momentum_magnitude();
-  const double angle2 = std::acos(std::clamp(I2 * motion.omega_body(t)(1) / L, -1.0, 1.0));
+  const double angle2 = std::acos(std::clamp(I2 * omega_body(x)(1) / L, -1.0, 1.0));
   render::Scene3D scene;
   scene.title = axis == 1 ? fmt::format("spun about axis 2, it turns over and back: t = {:.3f} s, "
                                        "axis 2 at {:.0f}\\deg from L", t, rad_to_deg(angle2))

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,9 @@ void draw(FigureSet& set, const Figures& f);
 
 /// The racquet at time t of `motion` in space, L fixed and drawn up, with body axis 2:
 /// spun about axis 2 it turns over and back (the animation's scene).
-render::Scene3D spin_scene(const Racquet& racquet, const FreeBodyExact& motion, int axis, double t);
+/// States (omega_body, attitude) from `state_at` when given (an integrator's), else exact.
+render::Scene3D spin_scene(const Racquet& racquet, const FreeBodyExact& motion, int axis, double t,
+                           const std::function<FreeBodyState(double)>& state_at = {});
 /// omega_1, omega_2, omega_3 of `motion` over [0, t_end] with a line at t (the strip under it).
 render::Plot2D omega_strip(const FreeBodyExact& motion, double t_end, double t);
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <optional>
 
 #include "common/free_body_run.h"
@@ -210,9 +211,22 @@ int main(int argc, char** argv) {
     }
     lab.series(std::move(series));
 
+    // Frames from the exact motion, or, when --method names an integrator, from it sampled
+    // at exactly the animation's times (never at its steps); the cross-check's default
+    // method alone does not replace the exact motion
+    std::map<double, rigid::FreeBodyState> states;
+    if (lab.animating() && lab.given("--method") && in.integration.method != "exact") {
+      const rigid::IntegrationResult frames = rigid::lab::run_free_body(
+          lab, motion, in.integration, plan.options, lab.animation_times(t_end));
+      for (const rigid::FreeBodySample& s : frames.samples)
+        states[s.t] = rigid::make_state(s.omega_body, s.attitude);
+    }
     lab.animate(t_end, "the racquet turning in space, omega's components below",
                 [&](double t) {
-                  return rigid::lab::tennis_racquet::spin_scene(racquet, motion, axis, t);
+                  return rigid::lab::tennis_racquet::spin_scene(
+                      racquet, motion, axis, t,
+                      states.empty() ? std::function<rigid::FreeBodyState(double)>()
+                                     : [&states](double s) { return states.at(s); });
                 },
                 [&](double t) { return rigid::lab::tennis_racquet::omega_strip(motion, t_end, t); },
                 0.3);
