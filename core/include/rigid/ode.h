@@ -287,6 +287,14 @@ template <class Stepper, class System, class State, class Observer>
 std::size_t integrate_dense(Stepper& stepper, int order, const System& system, State& x,
                             const std::vector<double>& times, const OdeOptions& options,
                             Observer& observe) {
+  // A sample time repeated at the start is the initial state each time: odeint's dense
+  // output would interpolate a step it has not taken yet (dopri5 returned garbage there)
+  if (times.size() > 1 && times[1] == times.front()) {
+    std::size_t first = 0;
+    while (first + 1 < times.size() && times[first + 1] == times.front()) observe(x, times[first++]);
+    const std::vector<double> rest(times.begin() + static_cast<std::ptrdiff_t>(first), times.end());
+    return integrate_dense(stepper, order, system, x, rest, options, observe);
+  }
   const double t0 = times.front(), span = times.back() - t0;
   if (!(span > 0.0 && span < 1e-3)) {
     const double dt0 = starting_step(system, x, t0, span, order, options);

@@ -256,8 +256,9 @@ class VernerDenseOutput {
 
   /// odeint: start from x0 at t0 with the trial step dt0.
   void initialize(const State& x0, double t0, double dt0) {
-    x_ = x0;
-    t_ = t0;
+    x_ = x_old_ = x0;
+    t_ = t_old_ = t0;
+    h_ = 0.0;  // no step yet: the state at t0 is x0 itself
     dt_ = dt0;
     have_deriv_ = false;
   }
@@ -301,11 +302,12 @@ class VernerDenseOutput {
 
   /// odeint: the state at t in the last step, from the interpolant.
   void calc_state(double t, State& x) {
-    const double theta = (t - t_old_) / h_;
-    if (theta >= 1.0) {
+    // the step's ends exactly (before any step, both are the initial state)
+    if (h_ == 0.0 || t >= t_) {
       x = x_;
       return;
     }
+    const double theta = (t - t_old_) / h_;
     if (theta <= 0.0) {
       x = x_old_;
       return;
@@ -364,7 +366,7 @@ class VernerDenseOutput {
       checker_;
   Adjuster adjuster_;
   State x_{}, x_new_{}, x_old_{}, dxdt_{}, dxdt_new_{};
-  double t_ = 0.0, t_old_ = 0.0, dt_ = 0.0, h_ = 1.0, next_dt_ = 0.0;
+  double t_ = 0.0, t_old_ = 0.0, dt_ = 0.0, h_ = 0.0, next_dt_ = 0.0;
   bool have_deriv_ = false;
   bool extra_done_ = false;
   std::size_t rejected_ = 0;
