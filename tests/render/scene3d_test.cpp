@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "rigid/render/image.h"
 #include "rigid/render/mesh.h"
 #include "rigid/render/palette.h"
 #include "rigid/render/scene3d.h"
@@ -234,4 +235,27 @@ TEST_CASE("scene3d: a scene looks the same at any scale (GL's float range is no 
     // The same picture up to float rounding of the normalised scene: a few edge pixels.
     CHECK(compare_images(draw(k), reference).differing_fraction < 0.001);
   }
+}
+
+TEST_CASE("scene3d: the fitted camera is the one render uses, and a merge fits both scenes",
+          "[render][scene3d]") {
+  Scene3D a;
+  a.title = "a sphere and an arrow";
+  a.add_sphere({0, 0, 0}, 1.0, {kSkyBlue}, "sphere");
+  a.add_arrow({0, 0, 0}, {0, 0, 2.5}, 0.05, {kVermillion}, "arrow");
+  // drawn with its own fit, and with the camera that fit returns (fit off): pixel for pixel
+  Scene3D fixed = a;
+  fixed.camera = a.fitted_camera(640, 480);
+  CHECK_FALSE(fixed.camera.fit);
+  const ImageDiff same = compare_images(a.render(640, 480), fixed.render(640, 480), 0);
+  CHECK(same.differing_pixels == 0);
+  // a camera fitted to a and a far-off second scene keeps both in view: a's own fit,
+  // applied to the merge, would not (the far sphere falls outside)
+  Scene3D b;
+  b.add_sphere({6, 0, 0}, 1.0, {kBluishGreen}, "far sphere");
+  Scene3D both = a;
+  both.merge(b);
+  CHECK(both.objects().size() == a.objects().size() + b.objects().size());
+  const Camera wide = both.fitted_camera(640, 480), tight = a.fitted_camera(640, 480);
+  CHECK((wide.eye - wide.target).norm() > (tight.eye - tight.target).norm());
 }
