@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -170,13 +171,14 @@ void Lab::check_animation_path() const {
 }
 
 void Lab::animate(double motion_seconds, const std::string& caption,
-                  const std::function<render::Scene3D(double)>& frame) {
-  animate(motion_seconds, caption, frame, {}, 0.0);
+                  const std::function<render::Scene3D(double)>& frame, const std::string& still) {
+  animate(motion_seconds, caption, frame, {}, 0.0, still);
 }
 
 void Lab::animate(double motion_seconds, const std::string& caption,
                   const std::function<render::Scene3D(double)>& frame,
-                  const std::function<render::Plot2D(double)>& strip, double strip_share) {
+                  const std::function<render::Plot2D(double)>& strip, double strip_share,
+                  const std::string& still) {
   if (animation_path_.empty()) return;
   if (!(motion_seconds > 0.0) || !std::isfinite(motion_seconds)) {
     throw UsageError("--animate", "there is no motion to show (its span is not positive)");
@@ -191,10 +193,15 @@ void Lab::animate(double motion_seconds, const std::string& caption,
   const int h_scene = h - h_strip;
   try {
     render::context();
-    // one camera for every frame, fitted to the union of frames spread over the motion
+    // one camera for every frame, fitted to the union of frames spread over the motion;
+    // RIGID_ANIMATION_FIT=first fits it to the first frame alone, as its still figure is
+    // fitted (for the test that the first frame is the still figure's scene)
     render::Scene3D envelope = frame(0.0);
     envelope.title = scene_title(envelope.title);
-    for (int k = 1; k < kFitSamples; ++k) envelope.merge(frame(frame_time(motion_seconds, k, kFitSamples)));
+    const char* fit = std::getenv("RIGID_ANIMATION_FIT");
+    const bool first_only = fit != nullptr && std::string(fit) == "first";
+    for (int k = 1; k < kFitSamples && !first_only; ++k)
+      envelope.merge(frame(frame_time(motion_seconds, k, kFitSamples)));
     const render::Camera camera = envelope.fitted_camera(w, h_scene);
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
@@ -249,6 +256,7 @@ void Lab::animate(double motion_seconds, const std::string& caption,
                   {"height", h},
                   {"bytes", bytes},
                   {"seconds", seconds}};
+    if (!still.empty()) animation_["still"] = figure_prefix_ + name_ + "_" + still + ".png";
     if (timing_) {
       animation_["phases"] = {{"scene", build},          {"setup", phases.setup},
                               {"layout", phases.layout}, {"draw", phases.draw},
@@ -276,6 +284,7 @@ void Lab::animate(double motion_seconds, const std::string& caption,
   (void)caption;
   (void)strip;
   (void)strip_share;
+  (void)still;
   figures_failed_ = true;
   std::cerr << name_ << ": error: --animate: this build has no renderer (RIGID_BUILD_RENDER=OFF)\n";
 #endif

@@ -192,14 +192,17 @@ class Lab {
   /// Writes the animation if --animate FILE was given: `motion_seconds` of the motion in
   /// --duration seconds of video; `frame(t)` is the scene at motion time t in seconds, its
   /// title following the lab's name and inputs. Frames are drawn at their own times,
-  /// with one camera fitted to the whole motion.
+  /// with one camera fitted to the whole motion. `still` names the lab's figure whose
+  /// scene frame(0) is, if one is (the JSON says which, and a test holds them together).
   void animate(double motion_seconds, const std::string& caption,
-               const std::function<render::Scene3D(double)>& frame);
+               const std::function<render::Scene3D(double)>& frame,
+               const std::string& still = {});
   /// The same with a strip under the scene: `strip(t)`, a plot at motion time t drawn
   /// across the frame's lower `strip_share`, in the frame's text size.
   void animate(double motion_seconds, const std::string& caption,
                const std::function<render::Scene3D(double)>& frame,
-               const std::function<render::Plot2D(double)>& strip, double strip_share);
+               const std::function<render::Plot2D(double)>& strip, double strip_share,
+               const std::string& still = {});
   /// Every time of the motion animate() will ask a frame for, sorted (the frames and the
   /// camera's fit): a lab that draws from an integrator samples it at exactly these.
   std::vector<double> animation_times(double motion_seconds) const;

@@ -232,7 +232,8 @@ int main(int argc, char** argv) {
                 [&](double t) {
                   return rigid::lab::football::cones_scene(in.inertia(1) / in.inertia(0),
                                                            in.alpha_deg, p, "", t);
-                });
+                },
+                "cones");
     lab.figures([&](rigid::lab::FigureSet& set) {
       rigid::lab::football::draw(set, in, p, contrast);
     });

@@ -333,7 +333,8 @@ int main(int argc, char** argv) {
                   [&](double t) {
                     return rigid::lab::top_nutation::top_scene(motion, in.arm, in.disk_radius, t,
                                                                state_at, path_times);
-                  });
+                  },
+                  "top");
     }
 
     lab.figures([&](rigid::lab::FigureSet& set) {
