@@ -42,6 +42,13 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from progress import Progress, add_arguments, configure, detail, duration  # noqa: E402
+
+# Rough seconds of each kind of run on this machine, for the progress line's time left.
+WEIGHT = {"figures": 0.6, "set": 0.3, "side_by_side": 1.1, "context": 0.05, "animation": 9.0,
+          "json": 0.004}
+
 def wall(cmd):
     """Seconds from spawning cmd to its exit (stdout discarded); raises if it fails."""
     t0 = time.perf_counter()
@@ -68,11 +75,27 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--json-repeats", type=int, default=30)
+    add_arguments(ap)
     args = ap.parse_args()
+    configure(args)
 
     labs = subprocess.run([os.path.join(args.labs, "rigidlab"), "list", "--names"], check=True,
                           capture_output=True, text=True).stdout.split()
     entries = []
+    builds = [("render", args.labs)] + ([("norender", args.norender)] if args.norender else [])
+    progress = Progress("bench figures", None,
+                        args.repeats * (WEIGHT["context"] + WEIGHT["side_by_side"]
+                                        + len(labs) * (WEIGHT["figures"] + WEIGHT["set"]))
+                        + 3 * WEIGHT["animation"]
+                        + args.json_repeats * len(labs) * len(builds) * WEIGHT["json"],
+                        args.quiet)
+    done = 0.0
+
+    def tick(kind, now):
+        nonlocal done
+        done += WEIGHT[kind]
+        progress.update(done, now)
+
     work = tempfile.mkdtemp(prefix="rigid_figbench_")
     try:
         # the context, in fresh processes
@@ -82,6 +105,7 @@ def main():
             out = subprocess.run([args.context], check=True, capture_output=True, text=True)
             info = json.loads(out.stdout)
             best = min(best, info["creation_seconds"])
+            tick("context", "GL context")
         entries.append({"group": "figures", "case": "context creation", "tool": "rigidlab",
                         "seconds": best, "kind": "context", "backend": info.get("backend", ""),
                         "renderer": info.get("gl_renderer", "")})
@@ -104,8 +128,11 @@ def main():
                         figure_phases[name] = out["timing"]["figure_phases"][name]
                     figure_lab[name] = lab
                     first[name] = bool(order) and name == order[0]
+                tick("figures", f"{lab} figures")
                 set_best[lab] = min(set_best[lab], wall([exe, "--quiet", "--figures", d]))
+                tick("set", f"{lab} figure set")
             all_best = min(all_best, side_by_side(args.labs, labs, work))
+            tick("side_by_side", "all labs side by side")
         for name, s in figure_best.items():
             entries.append({"group": "figures", "case": name, "tool": "rigidlab", "seconds": s,
                             "kind": "figure", "lab": figure_lab[name], "first": first[name],
@@ -123,21 +150,18 @@ def main():
         for _ in range(2):
             anim_best = min(anim_best, wall([os.path.join(args.labs, "poinsot"), "--quiet",
                                              "--animate", os.path.join(work, "poinsot.mp4")]))
+            tick("animation", "poinsot --animate")
         out = subprocess.run([os.path.join(args.labs, "poinsot"), "--json", "--timing", "--animate",
                               os.path.join(work, "poinsot.mp4")], check=True, capture_output=True,
                              text=True)
+        tick("animation", "poinsot --animate --timing")
         anim = json.loads(out.stdout)["animation"]
         entries.append({"group": "figures", "case": "poinsot animation", "tool": "rigidlab",
                         "seconds": anim_best, "kind": "animation", "frames": anim["frames"],
                         "fps": anim["fps"], "size": f"{anim['width']}x{anim['height']}",
                         "video_seconds": anim["duration_s"], "phases": anim["phases"]})
-        print(f"figures_bench: poinsot animation: {anim_best:.2f} s for {anim['duration_s']:g} s "
-              "of video", file=sys.stderr)
 
         # --json without figures: renderer linked against not built
-        builds = [("render", args.labs)]
-        if args.norender:
-            builds.append(("norender", args.norender))
         json_best = {(b, lab): math.inf for b, _ in builds for lab in labs}
         for r in range(args.json_repeats):
             for lab in labs:
@@ -147,6 +171,7 @@ def main():
                 for b, d in (builds if r % 2 == 0 else builds[::-1]):
                     json_best[(b, lab)] = min(json_best[(b, lab)],
                                               wall([os.path.join(d, lab), "--json"]))
+                    tick("json", f"{lab} --json ({b})")
         for (b, lab), s in json_best.items():
             entries.append({"group": "figures", "case": f"{lab} --json", "tool": "rigidlab",
                             "seconds": s, "kind": "json_run", "build": b})
@@ -154,11 +179,14 @@ def main():
         shutil.rmtree(work, ignore_errors=True)
 
     for e in entries:
-        print(f"figures_bench: {e['case']} ({e['kind']}{', ' + e['build'] if 'build' in e else ''})"
-              f": {e['seconds'] * 1e3:.2f} ms", file=sys.stderr)
+        detail(f"figures_bench: {e['case']} ({e['kind']}{', ' + e['build'] if 'build' in e else ''})"
+               f": {e['seconds'] * 1e3:.2f} ms")
     with open(args.out + ".tmp", "w") as f:
         json.dump(entries, f, indent=1)
     os.replace(args.out + ".tmp", args.out)
+    progress.finish(f"{len(labs)} labs, {len(entries)} entries in {duration(progress.seconds())} "
+                    f"(the poinsot animation: {anim_best:.2f} s for {anim['duration_s']:g} s of "
+                    f"video); wrote {args.out}")
 
 
 if __name__ == "__main__":

@@ -60,6 +60,12 @@ import sys  # noqa: E402
 import tempfile  # noqa: E402
 import textwrap  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from progress import Progress, add_arguments, configure, detail, duration  # noqa: E402
+
+# Rough seconds of a figure and of an animation frame, for the progress line's time left.
+WEIGHT = {"figure": 0.17, "frame": 0.1}
+
 # Okabe-Ito, as rigid::render's palette
 BLACK, ORANGE, SKY, GREEN, YELLOW, BLUE, VERMILLION, PURPLE = (
     "#000000", "#E69F00", "#56B4E9", "#009E73", "#F0E442", "#0072B2", "#D55E00", "#CC79A7")
@@ -893,7 +899,7 @@ def rotated_ellipsoid(ax, centre, semi, R, color, alpha, n=40):
                     linewidth=0, antialiased=True, shade=True)
 
 
-def poinsot_animation(d, series, path):
+def poinsot_animation(d, series, path, on_frame=None):
     """poinsot --animate drawn by matplotlib's FuncAnimation through its ffmpeg writer (H.264,
     veryfast, CRF 20, as rigidlab's): the body turning with L fixed (down), its energy ellipsoid
     rolling on the invariable plane with the polhode, the herpolhode growing. Every frame clears
@@ -949,7 +955,8 @@ def poinsot_animation(d, series, path):
     anim = FuncAnimation(fig, draw, frames=ANIMATION["frames"])
     anim.save(path, writer=FFMpegWriter(fps=ANIMATION["fps"], codec="libx264",
                                         extra_args=["-preset", "veryfast", "-crf", "20",
-                                                    "-pix_fmt", "yuv420p"]))
+                                                    "-pix_fmt", "yuv420p"]),
+              progress_callback=on_frame)
     plt.close(fig)
 
 
@@ -959,7 +966,9 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--keep", help="directory to leave the PNGs in (default: a temporary one)")
+    add_arguments(ap)
     args = ap.parse_args()
+    configure(args)
 
     work = tempfile.mkdtemp(prefix="rigid_mpl_")
     out_dir = args.keep or work
@@ -1008,30 +1017,41 @@ def main():
     entries = [{"group": "figures", "case": "import", "tool": "matplotlib",
                 "seconds": IMPORT_SECONDS, "kind": "import"}]
     best = {name: math.inf for name, _ in figures}
+    animating = shutil.which("ffmpeg") is not None
+    progress = Progress("bench figures_matplotlib", None,
+                        args.repeats * len(figures) * WEIGHT["figure"]
+                        + (ANIMATION["frames"] * WEIGHT["frame"] if animating else 0.0),
+                        args.quiet)
     # rounds over the whole set, so a burst of load on the machine hits one round, not one figure
     for _ in range(args.repeats):
         for name, draw in figures:
             t0 = time.perf_counter()
             draw(os.path.join(out_dir, name))
             best[name] = min(best[name], time.perf_counter() - t0)
+            progress.update(progress.done + WEIGHT["figure"], name)
     for name, _ in figures:
         entries.append({"group": "figures", "case": name, "tool": "matplotlib",
                         "seconds": best[name], "kind": "figure"})
-        print(f"figures_matplotlib: {name}: {best[name] * 1e3:.1f} ms", file=sys.stderr)
-    print(f"figures_matplotlib: import {IMPORT_SECONDS * 1e3:.1f} ms", file=sys.stderr)
+        detail(f"figures_matplotlib: {name}: {best[name] * 1e3:.1f} ms")
+    detail(f"figures_matplotlib: import {IMPORT_SECONDS * 1e3:.1f} ms")
+    summary = f"{len(figures)} figures"
     # the animation, once (it takes tens of seconds), where ffmpeg is installed
-    if shutil.which("ffmpeg"):
+    if animating:
+        figures_done = progress.done
         t0 = time.perf_counter()
-        poinsot_animation(poinsot, series, os.path.join(out_dir, "poinsot_motion.mp4"))
+        poinsot_animation(poinsot, series, os.path.join(out_dir, "poinsot_motion.mp4"),
+                          lambda i, n: progress.update(figures_done + (i + 1) * WEIGHT["frame"],
+                                                       f"animation frame {i + 1}/{n}"))
         seconds = time.perf_counter() - t0
         entries.append({"group": "figures", "case": "poinsot animation", "tool": "matplotlib",
                         "seconds": seconds, "kind": "animation", "frames": ANIMATION["frames"],
                         "fps": ANIMATION["fps"], "size": "1280x720"})
-        print(f"figures_matplotlib: poinsot animation (300 frames, 1280x720): {seconds:.1f} s",
-              file=sys.stderr)
+        detail(f"figures_matplotlib: poinsot animation (300 frames, 1280x720): {seconds:.1f} s")
+        summary += f" and the poinsot animation ({seconds:.1f} s)"
     with open(args.out + ".tmp", "w") as f:
         json.dump(entries, f, indent=1)
     os.replace(args.out + ".tmp", args.out)
+    progress.finish(f"{summary} in {duration(progress.seconds())}; wrote {args.out}")
 
 
 if __name__ == "__main__":

@@ -12,7 +12,7 @@
 // Writes OUT_DIR/heavy_top.json (entries for the report) and
 // OUT_DIR/heavy_top_reference.json (for scipy_heavy_top.py).
 //
-// Usage: bench_heavy_top [OUT_DIR] [--quick]
+// Usage: bench_heavy_top [OUT_DIR] [--quick] [--verbose] [--quiet]
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "output.h"
 #include "rigid/heavy_top.h"
 #include "rigid/heavy_top_integrate.h"
 #include "timing.h"
@@ -178,7 +179,7 @@ bool measure(const TopProblem& p, const Solver& s, double param, double theta_ex
   try {
     m.seconds = bench::best_seconds([&] { r = s.run(p, param); }, kRoundPolicy);
   } catch (const std::exception& e) {
-    std::printf("  %-24s %.3g: failed (%s)\n", s.name.c_str(), param, e.what());
+    bench::detail("  %-24s %.3g: failed (%s)\n", s.name.c_str(), param, e.what());
     return false;
   }
   m.steps = r.steps;
@@ -235,31 +236,42 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick") quick = true;
-    else dir = a;
+    else if (!bench::output_option(a)) dir = a;
   }
+  // the work, counted for the progress line: each problem's solver sweeps, their
+  // later timing rounds, and the elliptic functions
+  const std::vector<TopProblem> all_problems = problems();
+  const std::vector<Solver> all = solvers();
+  const int rounds = quick ? 1 : 3;
+  rigid::lab::Progress progress(
+      "bench heavy_top", "parts",
+      static_cast<int>(all_problems.size()) * (rounds * static_cast<int>(all.size()) + 1),
+      bench::output().quiet);
+  int done = 0;
+  const auto tick = [&](const std::string& now) { progress.update(++done, now); };
   Json entries = Json::array(), ref;
   ref["problems"] = Json::array();
-  for (TopProblem p : problems()) {
+  for (TopProblem p : all_problems) {
     const rigid::HeavyTopExact exact(p.top, p.start);
     p.t_end = 20 * exact.nutation_period();
     const double theta_exact = exact.theta(p.t_end);
     const rigid::FreeBodyState x0 = rigid::heavy_top_state(exact.angles(0));
-    std::printf("heavy top work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
+    bench::detail("heavy top work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
     entries.push_back({{"group", "problem"}, {"problem", p.name}, {"title", p.title}});
     ref["problems"].push_back({{"name", p.name}, {"I", p.top.I}, {"Is", p.top.Is},
                                {"mgl", p.top.mgl}, {"x0", x0}, {"t_end", p.t_end},
                                {"theta_end", theta_exact}});
     std::vector<Measurement> ms;
-    const std::vector<Solver> all = solvers();
-    for (const Solver& s : all) sweep(p, s, theta_exact, exact.nutation_period(), quick, ms);
-    for (int round = 1; round < (quick ? 1 : 3); ++round) {
-      for (Measurement& m : ms) {
-        Measurement again;
-        if (measure(p, *m.solver, m.param, theta_exact, again)) m.seconds = std::min(m.seconds, again.seconds);
-      }
-    }
+    bench::measure_in_rounds<Solver, Measurement>(
+        all, ms, rounds,
+        [&](const Solver& s) { sweep(p, s, theta_exact, exact.nutation_period(), quick, ms); },
+        [&](const Measurement& m) {
+          Measurement again;
+          return measure(p, *m.solver, m.param, theta_exact, again) ? again.seconds : -1.0;
+        },
+        [&](const std::string& what) { tick(p.name + ", " + what); });
     for (const Measurement& m : ms) {
-      std::printf("  %-24s %s %-9.3g theta error %-9.2e %9.3f ms %9lld steps\n", m.solver->name.c_str(),
+      bench::detail("  %-24s %s %-9.3g theta error %-9.2e %9.3f ms %9lld steps\n", m.solver->name.c_str(),
                   m.solver->adaptive ? "tol" : "h  ", m.param, m.error, m.seconds * 1e3, m.steps);
       Json e;
       e["group"] = "work_precision";
@@ -285,7 +297,7 @@ int main(int argc, char** argv) {
       e["tool"] = tool;
       e["what"] = what;
       e["ns_per_sample"] = seconds / kSamples * 1e9;
-      std::printf("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
+      bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
       entries.push_back(e);
     };
     add("rigidlab", "theta", bench::best_seconds([&] {
@@ -315,8 +327,13 @@ int main(int argc, char** argv) {
         }, policy));
 #endif
     std::fflush(stdout);
+    tick(p.name + ", elliptic functions");
   }
   write_json(dir / "heavy_top.json", entries);
   write_json(dir / "heavy_top_reference.json", ref);
+  progress.finish(fmt::format("{} problems, {} solvers: {} entries in {}; wrote {}",
+                              all_problems.size(), all.size(), entries.size(),
+                              rigid::lab::Progress::duration(progress.seconds()),
+                              (dir / "heavy_top.json").string()));
   return 0;
 }

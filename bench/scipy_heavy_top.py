@@ -16,10 +16,12 @@ Usage: scipy_heavy_top.py --reference heavy_top_reference.json --out scipy_heavy
 import argparse
 import json
 import math
+import os
 import time
 
 from scipy.integrate import solve_ivp
 
+from progress import Progress, add_arguments, configure, detail, duration
 from scipy_work_precision import best_time  # the same timing as the free body's peers
 
 MAX_SOLVE_SECONDS = 4.0
@@ -57,16 +59,23 @@ def main():
     ap.add_argument("--reference", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--quick", action="store_true", help="tolerances down to 1e-9 only")
+    add_arguments(ap)
     args = ap.parse_args()
+    configure(args)
     with open(args.reference) as f:
         ref = json.load(f)
     entries = []
+    methods = ("DOP853", "RK45")
+    tolerances = range(3, 10 if args.quick else 14)
+    progress = Progress("bench scipy_heavy_top", "sweep points",
+                        len(ref["problems"]) * len(methods) * len(tolerances), args.quiet)
     for p in ref["problems"]:
         rhs = top_rhs(p["I"], p["Is"], p["mgl"])
         x0, t_end, theta_end = p["x0"], p["t_end"], p["theta_end"]
-        print(f"scipy heavy top, problem {p['name']} (t_end = {t_end:g} s)")
-        for method in ("DOP853", "RK45"):
-            for k in range(3, 10 if args.quick else 14):
+        detail(f"scipy heavy top, problem {p['name']} (t_end = {t_end:g} s)")
+        for method in methods:
+            start = progress.done
+            for k in tolerances:
                 tol = 10.0 ** -k
                 atol = ATOL_FACTOR * tol
 
@@ -75,21 +84,24 @@ def main():
 
                 seconds, sol = best_time(solve)
                 if not sol.success:
-                    print(f"  scipy:{method} tol {tol:.0e}: failed ({sol.message})")
+                    detail(f"  scipy:{method} tol {tol:.0e}: failed ({sol.message})")
                     break
                 err = abs(tilt(sol.y[:, -1]) - theta_end)
                 steps = int(sol.t.size - 1)
-                print(f"  scipy:{method:8s} tol {tol:.0e} theta error {err:.2e} "
-                      f"{seconds * 1e3:9.2f} ms {steps:8d} steps", flush=True)
+                detail(f"  scipy:{method:8s} tol {tol:.0e} theta error {err:.2e} "
+                       f"{seconds * 1e3:9.2f} ms {steps:8d} steps")
                 entries.append({"group": "work_precision", "problem": p["name"],
                                 "solver": f"scipy:{method}", "peer": True, "tolerance": tol,
                                 "atol": atol, "error": err, "seconds": seconds, "steps": steps})
+                progress.update(now=f"{p['name']}, scipy:{method}, tol {tol:.0e}")
                 if seconds > MAX_SOLVE_SECONDS:
                     break
+            progress.update(start + len(tolerances))
     with open(args.out + ".tmp", "w") as f:
         json.dump(entries, f, indent=1)
-    import os
     os.replace(args.out + ".tmp", args.out)
+    progress.finish(f"{len(ref['problems'])} problems, {len(methods)} methods: {len(entries)} "
+                    f"entries in {duration(progress.seconds())}; wrote {args.out}")
 
 
 if __name__ == "__main__":

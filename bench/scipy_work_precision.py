@@ -28,6 +28,9 @@ import sys
 import time
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from progress import Progress, add_arguments, configure, detail, duration  # noqa: E402
 from scipy.integrate import solve_ivp
 
 MAX_SOLVE_SECONDS = 4.0
@@ -84,20 +87,27 @@ def main():
     ap.add_argument("--reference", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--quick", action="store_true", help="tolerances down to 1e-9 only")
+    add_arguments(ap)
     args = ap.parse_args()
+    configure(args)
 
     with open(args.reference) as f:
         ref = json.load(f)
 
     entries = []
+    methods = ("DOP853", "RK45")
+    tolerances = range(3, 10 if args.quick else 14)
+    progress = Progress("bench scipy_work_precision", "sweep points",
+                        len(ref["problems"]) * len(methods) * len(tolerances), args.quiet)
     for p in ref["problems"]:
         I1, I2, I3 = p["I"]
         x0 = list(p["omega0_body"]) + [1.0, 0.0, 0.0, 0.0]
         t_end, exact = p["t_end"], p["state_end"]
         rhs = euler_rhs(I1, I2, I3)
-        print(f"scipy work-precision, problem {p['name']} (t_end = {t_end:g} s)")
-        for method in ("DOP853", "RK45"):
-            for k in range(3, 10 if args.quick else 14):
+        detail(f"scipy work-precision, problem {p['name']} (t_end = {t_end:g} s)")
+        for method in methods:
+            start = progress.done
+            for k in tolerances:
                 tol = 10.0 ** -k
                 atol = ATOL_FACTOR * tol
 
@@ -106,28 +116,31 @@ def main():
 
                 seconds, sol = best_time(solve)
                 if not sol.success:
-                    print(f"  scipy:{method} tol {tol:.0e}: failed ({sol.message})")
+                    detail(f"  scipy:{method} tol {tol:.0e}: failed ({sol.message})")
                     break
                 x = sol.y[:, -1]
                 err, att = omega_error(x, exact), attitude_error(x, exact)
                 steps = int(sol.t.size - 1)
-                print(f"  scipy:{method:8s} tol {tol:.0e} error {err:.2e} attitude {att:.2e} "
-                      f"{seconds * 1e3:9.2f} ms {steps:8d} steps", flush=True)
+                detail(f"  scipy:{method:8s} tol {tol:.0e} error {err:.2e} attitude {att:.2e} "
+                       f"{seconds * 1e3:9.2f} ms {steps:8d} steps")
                 entries.append({
                     "group": "work_precision", "problem": p["name"],
                     "solver": f"scipy:{method}", "peer": True, "tolerance": tol,
                     "atol": atol, "error": err, "attitude_error": att,
                     "seconds": seconds, "steps": steps,
                 })
+                progress.update(now=f"{p['name']}, scipy:{method}, tol {tol:.0e}")
                 if seconds > MAX_SOLVE_SECONDS:
-                    print(f"  scipy:{method}: stopping the sweep, one solve took {seconds:.1f} s")
+                    detail(f"  scipy:{method}: stopping the sweep, one solve took {seconds:.1f} s")
                     break
+            progress.update(start + len(tolerances))
 
     tmp = args.out + ".tmp"
     with open(tmp, "w") as f:
         json.dump(entries, f, indent=1)
     os.replace(tmp, args.out)
-    print(f"wrote {args.out} ({len(entries)} entries)")
+    progress.finish(f"{len(ref['problems'])} problems, {len(methods)} methods: {len(entries)} "
+                    f"entries in {duration(progress.seconds())}; wrote {args.out}")
 
 
 if __name__ == "__main__":

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace bench {
 
@@ -30,6 +33,32 @@ double best_seconds(F&& f, const TimingPolicy& policy = {}) {
     if (rep >= policy.min_repeats && total >= policy.min_total_s) break;
   }
   return best;
+}
+
+/// Each solver's sweep (`sweep(s)` appends its settings' measurements, each with its
+/// `solver` and `seconds`, to `ms`), then `rounds - 1` more rounds over every measured
+/// setting, each keeping the setting's fastest time (`again(m)`: its time once more, or
+/// a negative number if it failed): the machine is shared, and a burst of load then
+/// spoils one round of a setting, not all. `tick(what)` after each solver's part.
+template <class Solver, class Measurement>
+void measure_in_rounds(const std::vector<Solver>& solvers, std::vector<Measurement>& ms,
+                       int rounds, const std::function<void(const Solver&)>& sweep,
+                       const std::function<double(const Measurement&)>& again,
+                       const std::function<void(const std::string&)>& tick) {
+  for (const Solver& s : solvers) {
+    sweep(s);
+    tick(s.name);
+  }
+  for (int round = 1; round < rounds; ++round) {
+    for (const Solver& s : solvers) {
+      for (Measurement& m : ms) {
+        if (m.solver != &s) continue;
+        const double seconds = again(m);
+        if (seconds >= 0.0) m.seconds = std::min(m.seconds, seconds);
+      }
+      tick(s.name + ", round " + std::to_string(round + 1));
+    }
+  }
 }
 
 /// Keeps a value alive so the optimiser cannot drop the computation behind it.

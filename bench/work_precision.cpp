@@ -13,7 +13,7 @@
 // results.json by the bench target) and OUT_DIR/reference.json (the exact end
 // states, for scipy_work_precision.py).
 //
-// Usage: bench_work_precision [OUT_DIR] [--quick]
+// Usage: bench_work_precision [OUT_DIR] [--quick] [--verbose] [--quiet]
 #include <algorithm>
 #include <boost/math/policies/policy.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "output.h"
 #include "peers.h"
 #include "problems.h"
 #include "rigid/free_body_exact.h"
@@ -51,6 +52,16 @@ constexpr double kMaxRunSeconds = 1.0;
 struct Settings {
   bool quick = false;
 };
+
+// Timing rounds over every setting (the first is the sweep itself).
+int rounds(const Settings& cfg) { return cfg.quick ? 1 : 3; }
+
+// The work, counted for the progress line: per problem its reference, each solver's
+// sweep and later rounds, the four controller comparisons, elliptic functions and
+// invariants.
+int units_per_problem(std::size_t solvers, const Settings& cfg) {
+  return 1 + rounds(cfg) * static_cast<int>(solvers) + 4 + 2;
+}
 
 // One rigidlab run through the core's integrate API: the state at t_end.
 RunResult rigidlab_run(const Problem& p, rigid::Method m, double param, bool project = false) {
@@ -116,7 +127,6 @@ struct Measurement {
 
 // Best of a few repeats within one round; rounds are taken apart in time.
 constexpr bench::TimingPolicy kRoundPolicy{0.02, 3, 0.3};
-constexpr int kRounds = 3;
 
 // Runs and times one setting; false if the solver failed.
 bool measure(const Problem& p, const Solver& s, double param, const rigid::FreeBodyState& exact,
@@ -126,7 +136,7 @@ bool measure(const Problem& p, const Solver& s, double param, const rigid::FreeB
   try {
     m.seconds = bench::best_seconds([&] { m.result = s.run(p, param); }, kRoundPolicy);
   } catch (const std::exception& e) {
-    std::printf("  %-24s %s %.3g: failed (%s)\n", s.name.c_str(), s.adaptive ? "tol" : "h", param,
+    bench::detail("  %-24s %s %.3g: failed (%s)\n", s.name.c_str(), s.adaptive ? "tol" : "h", param,
                 e.what());
     return false;
   }
@@ -137,7 +147,7 @@ bool measure(const Problem& p, const Solver& s, double param, const rigid::FreeB
 Json entry(const Problem& p, const Measurement& m, const rigid::FreeBodyState& exact) {
   const Solver& s = *m.solver;
   const double att = bench::attitude_error(m.result.x, exact);
-  std::printf("  %-24s %s %-9.3g error %-9.2e attitude %-9.2e %9.3f ms %9lld steps\n",
+  bench::detail("  %-24s %s %-9.3g error %-9.2e attitude %-9.2e %9.3f ms %9lld steps\n",
               s.name.c_str(), s.adaptive ? "tol" : "h  ", m.param, m.error, att, m.seconds * 1e3,
               m.result.steps);
   Json e;
@@ -186,18 +196,16 @@ void sweep(const Problem& p, const Solver& s, const rigid::FreeBodyState& exact,
 }
 
 void work_precision(const Problem& p, const std::vector<Solver>& all,
-                    const rigid::FreeBodyState& exact, const Settings& cfg, Json& out) {
+                    const rigid::FreeBodyState& exact, const Settings& cfg, Json& out,
+                    const std::function<void(const std::string&)>& tick) {
   std::vector<Measurement> ms;
-  for (const Solver& s : all) sweep(p, s, exact, cfg, ms);
-  // more rounds over every setting keep each one's fastest time: the machine is
-  // shared, and a burst of load then spoils one round of a setting, not all
-  for (int round = 1; round < (cfg.quick ? 1 : kRounds); ++round) {
-    for (Measurement& m : ms) {
-      Measurement again;
-      if (measure(p, *m.solver, m.param, exact, again))
-        m.seconds = std::min(m.seconds, again.seconds);
-    }
-  }
+  bench::measure_in_rounds<Solver, Measurement>(
+      all, ms, rounds(cfg), [&](const Solver& s) { sweep(p, s, exact, cfg, ms); },
+      [&](const Measurement& m) {
+        Measurement again;
+        return measure(p, *m.solver, m.param, exact, again) ? again.seconds : -1.0;
+      },
+      [&](const std::string& what) { tick(p.name + ", " + what); });
   for (const Measurement& m : ms) out.push_back(entry(p, m, exact));
   std::fflush(stdout);
 }
@@ -215,7 +223,7 @@ rigid::FreeBodyState reference(const Problem& p, const rigid::FreeBodyExact& exa
   e["attitude_diff"] = bench::attitude_error(r.x, x);
   e["polhode_period"] = exact.period();
   e["k2"] = 1.0 - exact.complementary_parameter();
-  std::printf(
+  bench::detail(
       "%s: exact vs rkf78(1e-15) at t_end: omega %.2e, attitude %.2e rad; T = %.6g s, "
       "k'^2 = %.3e\n",
       p.name.c_str(), e["omega_diff"].get<double>(), e["attitude_diff"].get<double>(),
@@ -230,7 +238,7 @@ rigid::FreeBodyState reference(const Problem& p, const rigid::FreeBodyExact& exa
   l["check"] = "FreeBodyExact vs long-double odeint rkf78 at tol 1e-17";
   l["omega_diff"] = bench::omega_error(xl, x);
   l["attitude_diff"] = bench::attitude_error(xl, x);
-  std::printf("%s: exact vs long-double rkf78(1e-17): omega %.2e, attitude %.2e rad\n",
+  bench::detail("%s: exact vs long-double rkf78(1e-17): omega %.2e, attitude %.2e rad\n",
               p.name.c_str(), l["omega_diff"].get<double>(), l["attitude_diff"].get<double>());
   out.push_back(l);
   return x;
@@ -255,7 +263,7 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
     e["what"] = what;
     e["ns_per_sample"] = seconds / kSamples * 1e9;
     e["k2"] = m;
-    std::printf("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
+    bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
     out.push_back(e);
   };
   add("rigidlab", "omega",
@@ -348,7 +356,7 @@ Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double 
   e["evaluations"] = evaluations;
   e["error"] = bench::omega_error(x, exact);
   e["seconds"] = seconds;
-  std::printf("  %-6s %-15s tol %-7.0e %6zu steps %5zu rejected %7lld evaluations error %.2e %8.3f ms\n",
+  bench::detail("  %-6s %-15s tol %-7.0e %6zu steps %5zu rejected %7lld evaluations error %.2e %8.3f ms\n",
               e["method"].get<std::string>().c_str(), controller, tol, steps, rejected,
               evaluations, e["error"].get<double>(), seconds * 1e3);
   return e;
@@ -408,7 +416,7 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
     e["polhode_period"] = T;
     e["energy_err_max_T"] = e1;
     e["energy_err_max_10T"] = e10;
-    std::printf(
+    bench::detail(
         "  %-22s h = T/%d: |L| change after %lld steps %.2e; max |dE|/E [0,T] %.2e, "
         "[0,10T] %.2e (x%.2f)\n",
         e["solver"].get<std::string>().c_str(), per_period, static_cast<long long>(long_run.steps),
@@ -431,7 +439,7 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
     raw["steps"] = n_long;
     raw["L_rel_change"] = std::abs(L.norm() - p.L0_body.norm()) / p.L0_body.norm();
     raw["quaternion_norm_change"] = std::abs(q.norm() - 1.0);
-    std::printf("  %-22s |L| change after %lld steps %.2e, |q| - 1 %.2e\n",
+    bench::detail("  %-22s |L| change after %lld steps %.2e, |q| - 1 %.2e\n",
                 raw["solver"].get<std::string>().c_str(), n_long, raw["L_rel_change"].get<double>(),
                 raw["quaternion_norm_change"].get<double>());
     out.push_back(raw);
@@ -457,20 +465,29 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--quick")
       cfg.quick = true;
-    else
+    else if (!bench::output_option(a))
       dir = a;
   }
   std::filesystem::create_directories(dir);
+  const std::vector<Solver> all_solvers = solvers();
+  const std::vector<Problem> problems = bench::problems();
+  rigid::lab::Progress progress(
+      "bench work_precision", "parts",
+      static_cast<int>(problems.size()) * units_per_problem(all_solvers.size(), cfg),
+      bench::output().quiet);
+  int done = 0;
+  const auto tick = [&](const std::string& now) { progress.update(++done, now); };
 
   Json entries = Json::array(), ref;
   ref["note"] =
       "exact end states from rigid::FreeBodyExact; state = omega_body, then the "
       "body-to-space quaternion (w, x, y, z); initial attitude identity";
   std::vector<std::pair<Problem, rigid::FreeBodyState>> exact_ends;
-  for (const Problem& p : bench::problems()) {
+  for (const Problem& p : problems) {
     const rigid::FreeBodyExact exact(p.I, p.omega0_body(), Eigen::Quaterniond::Identity(), kRule);
     const rigid::FreeBodyState x_end = reference(p, exact, entries);
     exact_ends.push_back({p, x_end});
+    tick(p.name + ", reference");
     Json desc;
     desc["group"] = "problem";
     desc["problem"] = p.name;
@@ -493,27 +510,35 @@ int main(int argc, char** argv) {
   // the reference first, so the SciPy run can start from it whatever happens below
   write_json(dir / "reference.json", ref);
 
-  const std::vector<Solver> all_solvers = solvers();
   for (const auto& [p, x_end] : exact_ends) {
-    std::printf("work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
-    work_precision(p, all_solvers, x_end, cfg, entries);
+    bench::detail("work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
+    work_precision(p, all_solvers, x_end, cfg, entries, tick);
   }
   for (const auto& [p, x_end] : exact_ends) {
-    std::printf("step controllers, problem %s\n", p.name.c_str());
+    bench::detail("step controllers, problem %s\n", p.name.c_str());
     controllers<rigid::verner::Vern6>(p, x_end, entries);
+    tick(p.name + ", controllers vern6");
     controllers<rigid::verner::Vern7>(p, x_end, entries);
+    tick(p.name + ", controllers vern7");
     controllers<rigid::verner::Vern8>(p, x_end, entries);
+    tick(p.name + ", controllers vern8");
     controllers<rigid::verner::Vern9>(p, x_end, entries);
+    tick(p.name + ", controllers vern9");
   }
-  for (const Problem& p : bench::problems()) {
+  for (const Problem& p : problems) {
     const rigid::FreeBodyExact exact(p.I, p.omega0_body(), Eigen::Quaterniond::Identity(), kRule);
-    std::printf("elliptic functions, problem %s (k^2 = %.12g)\n", p.name.c_str(),
-                1.0 - exact.complementary_parameter());
+    bench::detail("elliptic functions, problem %s (k^2 = %.12g)\n", p.name.c_str(),
+                  1.0 - exact.complementary_parameter());
     elliptic(p, exact, entries);
-    std::printf("splitting invariants, problem %s\n", p.name.c_str());
+    tick(p.name + ", elliptic functions");
+    bench::detail("splitting invariants, problem %s\n", p.name.c_str());
     invariants(p, exact, cfg, entries);
+    tick(p.name + ", invariants");
   }
   write_json(dir / "work_precision.json", entries);
-  std::printf("wrote %s (%zu entries)\n", (dir / "work_precision.json").c_str(), entries.size());
+  progress.finish(fmt::format("{} problems, {} solvers: {} entries in {}; wrote {}",
+                              problems.size(), all_solvers.size(), entries.size(),
+                              rigid::lab::Progress::duration(progress.seconds()),
+                              (dir / "work_precision.json").string()));
   return 0;
 }

@@ -18,6 +18,7 @@
 #include <stdexcept>
 
 #include "common/lab.h"
+#include "common/progress.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 
@@ -49,39 +50,6 @@ std::string parse_size(const std::string& text, int& width, int& height) {
   height = h;
   return "";
 }
-
-// Progress on stderr while frames are drawn: a line rewritten in place when stderr is
-// a terminal (frames done, time left), nothing otherwise; the final line is the caller's.
-class Progress {
- public:
-  Progress(std::string lab, int frames, bool quiet)
-      : lab_(std::move(lab)), frames_(frames), shown_(!quiet && ::isatty(STDERR_FILENO) != 0),
-        start_(std::chrono::steady_clock::now()) {}
-  ~Progress() {
-    if (drawn_) std::cerr << "\r\033[K" << std::flush;
-  }
-  void update(int done) {
-    if (!shown_) return;
-    const double elapsed = seconds();
-    // quiet for the first half second, then at most ten updates a second
-    if (elapsed < 0.5 || elapsed - last_ < 0.1) return;
-    last_ = elapsed;
-    const double left = done > 0 ? elapsed / done * (frames_ - done) : 0.0;
-    std::cerr << "\r\033[K" << lab_ << ": animation " << done << "/" << frames_ << " frames, "
-              << fmt::format("{:.0f}", left) << " s left" << std::flush;
-    drawn_ = true;
-  }
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  std::string lab_;
-  int frames_;
-  bool shown_, drawn_ = false;
-  double last_ = 0.0;
-  std::chrono::steady_clock::time_point start_;
-};
 
 }  // namespace
 
@@ -206,7 +174,7 @@ void Lab::animate(double motion_seconds, const std::string& caption,
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
                                {w, h, animation_fps_});
-    Progress progress(name_, frames, quiet_);
+    Progress progress(name_, "animation frames", frames, quiet_);
     // --timing: where the frames' time went (the GL phases waited for, as for figures)
     render::FigureTiming phases;
     double build = 0.0, handover = 0.0;
@@ -263,14 +231,11 @@ void Lab::animate(double motion_seconds, const std::string& caption,
                               {"resolve", phases.resolve}, {"encoder_wait", handover},
                               {"finish", finishing}};
     }
-    if (!quiet_) {
-      std::cerr << name_ << ": wrote " << animation_path_ << ": " << frames << " frames, " << w
-                << "x" << h << " at " << fmt::format("{:g}", animation_fps_) << " fps ("
-                << fmt::format("{:g}", frames / animation_fps_) << " s of video for "
-                << fmt::format("{:.3g}", motion_seconds) << " s of motion), "
-                << fmt::format("{:.1f}", bytes / 1e6) << " MB, in "
-                << fmt::format("{:.1f}", seconds) << " s\n";
-    }
+    progress.finish(fmt::format(
+        "wrote {}: {} frames, {}x{} at {:g} fps ({:g} s of video for {:.3g} s of motion), "
+        "{:.1f} MB, in {:.1f} s",
+        animation_path_, frames, w, h, animation_fps_, frames / animation_fps_, motion_seconds,
+        bytes / 1e6, seconds));
   } catch (const UsageError&) {
     throw;
   } catch (const std::invalid_argument& e) {
