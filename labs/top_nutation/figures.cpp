@@ -171,6 +171,9 @@ render::Plot2D theta_plot(const Figures& f) {
 // circle its centre of mass sweeps as it precesses.
 }  // namespace
 
+// The animation's path of the symmetry axis: this many nutation periods behind the top.
+constexpr int kPathPeriods = 10;
+
 render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius, double t,
                           const TopStateAt& state_at, const std::vector<double>& path_times) {
   const auto state = [&](double s) {
@@ -202,18 +205,25 @@ render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius
   if (t > 0) {
     const double reach = 1.3 * size;
     scene.add_polyline({(l + 0.5 * r) * e3, reach * e3}, colors::kSymmetryAxis, 2.0);
+    // the last kPathPeriods nutation periods of it: over a long run the older loops only
+    // fill the band between the turning circles, and a frame's cost stays bounded
+    const double T = m.nutation_period();
+    const double from = std::isfinite(T) ? std::max(0.0, t - kPathPeriods * T) : 0.0;
     std::vector<Vector3d> path;
     std::vector<double> when;
     for (const double s : path_times) {
-      if (s < t) when.push_back(s);
+      if (s >= from && s < t) when.push_back(s);
     }
     if (path_times.empty()) {
-      const int n = std::max(2, static_cast<int>(400.0 * t / m.nutation_period()));
-      for (int k = 0; k < n; ++k) when.push_back(t * k / n);
+      const int n = std::clamp(static_cast<int>(400.0 * (t - from) / T), 2, 400 * kPathPeriods);
+      for (int k = 0; k < n; ++k) when.push_back(from + (t - from) * k / n);
     }
     when.push_back(t);
     for (const double s : when) path.push_back(reach * (state(s).attitude * Vector3d::UnitZ()));
-    scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0, "path of the symmetry axis");
+    scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0,
+                       from > 0 ? fmt::format("path of the symmetry axis, its last {} nutation "
+                                              "periods", kPathPeriods)
+                                : "path of the symmetry axis");
   }
   const double arrow = 1.6 * size;
   if (L.norm() > 0) {
