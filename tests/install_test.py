@@ -63,9 +63,24 @@ def main():
         for png in pngs:
             if png_size(os.path.join(out, png)) != (1920, 1080):
                 failures.append(f"{png} is {png_size(os.path.join(out, png))}")
-        bad = run("rigidlab", "nosuchlab")
-        if bad.returncode != 2 or not bad.stderr.startswith("rigidlab: error: nosuchlab"):
-            failures.append(f"rigidlab nosuchlab: {bad.returncode} {bad.stderr!r}")
+        # bad input: exit 2, one line naming the command and the option, nothing drawn
+        bad_out = os.path.join(stage, "bad")
+        for args, start in [(["nosuchlab"], "rigidlab: error: nosuchlab"),
+                            (["list", "--bogus"], "rigidlab: error: list: "),
+                            (["list", "extra"], "rigidlab: error: list: "),
+                            (["--version", "extra"], "rigidlab: error: --version: "),
+                            (["figures", "--out", bad_out, "--figure-size", "10x10"],
+                             "rigidlab: error: figures: --figure-size: "),
+                            (["figures", "--out", bad_out, "--figure-prefix", "a/b"],
+                             "rigidlab: error: figures: --figure-prefix: "),
+                            (["figures", "--out", "/proc/rigidlab-cannot"],
+                             "rigidlab: error: figures: --out: ")]:
+            bad = run("rigidlab", *args)
+            if (bad.returncode != 2 or not bad.stderr.startswith(start)
+                    or bad.stderr.count("\n") != 1 or bad.stdout):
+                failures.append(f"rigidlab {' '.join(args)}: {bad.returncode} {bad.stderr!r}")
+        if os.path.isdir(bad_out) and os.listdir(bad_out):
+            failures.append(f"rejected figures left {os.listdir(bad_out)}")
     finally:
         shutil.rmtree(stage, ignore_errors=True)
     for f in failures:

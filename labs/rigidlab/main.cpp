@@ -76,10 +76,12 @@ int list(bool names_only) {
   return 0;
 }
 
-// Starts a lab with `args`, its stdout to /dev/null and stderr kept; returns the pid.
-pid_t start(const std::string& lab, const std::vector<std::string>& args) {
+// Starts a lab with `args`, its stdout to /dev/null and stderr kept (or into `err_fd`
+// if one is given); returns the pid.
+pid_t start(const std::string& lab, const std::vector<std::string>& args, int err_fd = -1) {
   const pid_t pid = ::fork();
   if (pid == 0) {
+    if (err_fd >= 0) ::dup2(err_fd, STDERR_FILENO);
     std::vector<char*> argv;
     const std::string path = lab_path(lab).string();
     argv.push_back(const_cast<char*>(path.c_str()));
@@ -94,13 +96,43 @@ pid_t start(const std::string& lab, const std::vector<std::string>& args) {
   return pid;
 }
 
+// Runs a lab with `args` to its end, its stderr captured; returns its exit status
+// (-1 if it did not exit) and its stderr in `err`.
+int run_captured(const std::string& lab, const std::vector<std::string>& args, std::string& err) {
+  int fds[2];
+  if (::pipe(fds) != 0) return -1;
+  const pid_t pid = start(lab, args, fds[1]);
+  ::close(fds[1]);
+  std::array<char, 4096> buffer{};
+  for (ssize_t n; (n = ::read(fds[0], buffer.data(), buffer.size())) > 0;) err.append(buffer.data(), n);
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 // Every lab's figures into `out`, as many labs at once as there are processors.
 int figures(const std::string& out, const std::string& size, const std::string& prefix) {
   std::vector<std::string> args{"--quiet", "--figures", out, "--figure-size", size};
   if (!prefix.empty()) args.insert(args.end(), {"--figure-prefix", prefix});
+  // The first lab alone: it checks the options by the labs' own rules, so bad ones are
+  // one line and exit status 2 here, not one failure per lab.
+  const std::vector<std::string> labs = lab_names();
+  std::string err;
+  const int first = run_captured(labs.front(), args, err);
+  if (first == 2) {
+    const std::string prefix_of_lab = labs.front() + ": error: ";
+    if (err.rfind(prefix_of_lab, 0) == 0) err.erase(0, prefix_of_lab.size());
+    // the labs' --figures is rigidlab's --out
+    if (err.rfind("--figures:", 0) == 0) err.replace(0, 9, "--out");
+    std::cerr << "rigidlab: error: figures: " << err.substr(0, err.find('\n')) << "\n";
+    return 2;
+  }
+  std::cerr << err;
+  int failed = first == 0 ? 0 : 1;
+  std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED") << "\n";
   const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
   std::vector<std::pair<pid_t, std::string>> running;
-  int failed = 0;
   const auto wait_one = [&] {
     int status = 0;
     const pid_t pid = ::wait(&status);
@@ -113,7 +145,8 @@ int figures(const std::string& out, const std::string& size, const std::string& 
       return;
     }
   };
-  for (const std::string& lab : lab_names()) {
+  for (std::size_t k = 1; k < labs.size(); ++k) {
+    const std::string& lab = labs[k];
     if (static_cast<long>(running.size()) >= cpus) wait_one();
     running.emplace_back(start(lab, args), lab);
   }
@@ -122,7 +155,7 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     std::cerr << "rigidlab: error: figures: " << failed << " lab(s) failed (their lines above)\n";
     return 1;
   }
-  std::cout << "figures of " << lab_names().size() << " labs in " << fs::absolute(out).string()
+  std::cout << "figures of " << labs.size() << " labs in " << fs::absolute(out).string()
             << "\n";
   return 0;
 }
@@ -148,6 +181,10 @@ int main(int argc, char** argv) {
   }
   const std::string& command = args[0];
   if (command == "--version") {
+    if (args.size() > 1) {
+      std::cerr << "rigidlab: error: --version: takes nothing after it (got '" << args[1] << "')\n";
+      return 2;
+    }
     std::cout << "rigidlab " << RIGID_VERSION << "\n";
     return 0;
   }
@@ -158,7 +195,9 @@ int main(int argc, char** argv) {
     try {
       app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
     } catch (const CLI::ParseError& e) {
-      return app.exit(e);
+      if (e.get_exit_code() == 0) return app.exit(e);
+      std::cerr << "rigidlab: error: list: " << e.what() << "\n";
+      return 2;
     }
     return list(names);
   }
