@@ -140,6 +140,25 @@ TEST_CASE("poinsot: the herpolhode touches the invariable plane, and its turn a 
   CHECK(std::abs(std::remainder(turn, 2 * M_PI)) > 1e-3);
 }
 
+TEST_CASE("poinsot: a symmetric body's herpolhode turns as the space cone does, many turns a period") {
+  // I1 = I2 exactly, omega nearly across the symmetry axis: the polhode period
+  // 2 pi / |Omega| is long (1257 s) and the contact point goes round L ~200 times in it,
+  // at |L| / I1 (section 6). Sampling the angle once per ~1/256 period missed whole
+  // turns here (it gave -20156 deg for 72003.6).
+  const double I1 = 1.0, I3 = 2.0;
+  for (const double w3 : {0.005, 0.001, 0.3}) {
+    const rigid::PrincipalMoments I{I1, I1, I3};
+    const Eigen::Vector3d w0(1.0, 0.0, w3);
+    const rigid::FreeBodyExact motion(I, w0);
+    const double L = I.vector().cwiseProduct(w0).norm();
+    const double expected = L / I1 * 2 * M_PI / (w3 * (I3 - I1) / I1);
+    const double turn = rigid::herpolhode_turn_per_period(motion);
+    INFO("omega3 " << w3 << ": turn " << turn << " rad, closed form " << expected);
+    // the trapezoidal rule on a constant rate: exact but for rounding in the sum
+    CHECK(std::abs(turn - expected) < 1e-12 * expected);
+  }
+}
+
 TEST_CASE("poinsot: near a symmetric body the herpolhode turns as the space cone does") {
   // I1 = I2 (1 + 1e-9): omega precesses about L at |L| / I1 (section 6) while the
   // polhode, a circle, takes 2 pi / |Omega|, Omega = omega3 (I3 - I1) / I1
