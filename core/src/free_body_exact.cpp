@@ -34,6 +34,25 @@ namespace {
 // Double stays double inside Boost.Math: no silent long-double promotion.
 using NoPromote = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
 
+// Quadruple precision where the hardware's long double is not: for the few sums of
+// products that cancel (113-bit significands hold a product of two doubles exactly).
+#if defined(__SIZEOF_FLOAT128__)
+using Quad = __float128;
+#else
+using Quad = long double;
+#endif
+
+// L^2 - 2 T I_m over I_m from the doubles given (the moments, omega in body axes), the
+// separatrix test: I_l (I_l - I_m) w_l^2 - I_s (I_m - I_s) w_s^2, all over I_m, formed in
+// quadruple precision. In double, near the separatrix its two terms cancel to a few ulps
+// of their size and rounding in the squares and products decided k'^2 (poinsot at
+// I = 1,2,3, omega = 1.73205080756887, 1e-8, 1: k'^2 8.2897e-15 for 8.3205e-15).
+double separatrix_distance(double Is, double Im, double Il, double ws, double wl) {
+  const Quad s = Quad(Is) * (Quad(Im) - Quad(Is)) * Quad(ws) * Quad(ws);
+  const Quad l = Quad(Il) * (Quad(Il) - Quad(Im)) * Quad(wl) * Quad(wl);
+  return static_cast<double>((l - s) / Quad(Im));
+}
+
 // AGM stops when |a - b| <= kAgmTol a; the neglected term is O(kAgmTol^2).
 constexpr double kAgmTol = 1e-9;
 
@@ -170,8 +189,7 @@ FreeBodyExact::FreeBodyExact(const PrincipalMoments& I, const Eigen::Vector3d& o
   const double a_sl = (Il - Is) / (Is * Il);
   const double a_sm = (Im - Is) / (Is * Im);
   // Separatrix test L^2 - 2 T I_mid, scaled: its sign selects the polhode's axis.
-  const double Ls = L0[s[0]], Ll = L0[s[2]];
-  const double delta = a_ml * Ll * Ll - a_sm * Ls * Ls;
+  const double delta = separatrix_distance(Is, Im, Il, w0[s[0]], w0[s[2]]);
   int o, p;
   double a_o, a_p;
   if (delta >= 0.0) {

@@ -141,6 +141,30 @@ TEST_CASE("exact free body: omega and the attitude at 10 to 1000 periods match t
   CHECK(worst < 1.0);
 }
 
+// A few ulps from the separatrix (make_near_separatrix.py: Landau's period at 50 digits
+// from the double inputs).
+struct NearSeparatrix {
+  double I[3], w0[3], period, kp2;
+};
+const NearSeparatrix kNearSeparatrix[] = {
+#include "reference_near_separatrix.inc"
+};
+
+TEST_CASE("exact free body: k'^2 and the period a few ulps from the separatrix") {
+  // The separatrix distance L^2 - 2 T I2 is formed in quadruple precision from the
+  // doubles given, so k'^2 keeps its relative accuracy however small it is (in double
+  // its terms cancelled: 8.2897e-15 for 8.3205e-15, the period 1e-4 off). Then the
+  // period 4 K / lambda, K ~ ln(4 / k'): a few ulps of k'^2 and lambda, 1e-14.
+  for (const NearSeparatrix& c : kNearSeparatrix) {
+    const rigid::FreeBodyExact motion({c.I[0], c.I[1], c.I[2]},
+                                      Eigen::Vector3d(c.w0[0], c.w0[1], c.w0[2]));
+    INFO("I = (" << c.I[0] << ", " << c.I[1] << ", " << c.I[2] << "), omega0 = (" << c.w0[0]
+                 << ", " << c.w0[1] << ", " << c.w0[2] << ")");
+    CHECK(std::abs(motion.complementary_parameter() - c.kp2) < 1e-12 * c.kp2);
+    CHECK(std::abs(motion.period() - c.period) < 1e-13 * c.period);
+  }
+}
+
 TEST_CASE("exact free body: regimes chosen from the data") {
   const PrincipalMoments ellipsoid{kPi, 2 * kPi, 13 * kPi / 5};
   CHECK(FreeBodyExact(ellipsoid, {1, 1, 1}).regime() == FreeMotionRegime::kPolhodeAboutLargest);
