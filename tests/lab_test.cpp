@@ -1219,6 +1219,11 @@ TEST_CASE("poinsot: bad animation options exit 2 with one line naming the option
       {"--animate " + dir + "/a.mp4 --animation-size 641x360", "--animation-size"},
       {"--fps 10", "--fps"},
       {"--duration 2", "--duration"},
+      // where permission bits say yes and no file can be made: checked before any work,
+      // so the CSV and figures asked beside it are not written either
+      {"--csv " + dir + "/x.csv --figures " + dir + "/f --animate /proc/a.mp4", "--animate"},
+      {"--animate " + dir + "/a.mp4 --figures /proc/f", "--figures"},
+      {"--figures " + dir + "/f --csv /proc/x.csv", "--csv"},
   };
   for (const auto& [args, option] : cases) {
     const rigid::test::Run run = rigid::test::run_lab("poinsot", args);

@@ -133,7 +133,7 @@ void Lab::check_animation_path() const {
     throw UsageError("--animate", "'" + animation_path_ + "' exists and is not a regular file");
   }
   const fs::path parent = path.parent_path();
-  if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0) {
+  if (!fs::is_directory(parent, ec) || !can_create_in(parent.string())) {
     throw UsageError("--animate", "cannot write into directory '" + parent.string() + "'");
   }
 }

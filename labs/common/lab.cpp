@@ -1,6 +1,7 @@
 #include "lab.h"
 
 #include <fmt/format.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -502,6 +503,15 @@ std::string Lab::title_inputs() const {
 
 // ---- Running ----------------------------------------------------------------
 
+bool can_create_in(const std::string& dir) {
+  const std::string probe = (fs::path(dir) / fmt::format(".rigidlab-probe-{}", ::getpid())).string();
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) return false;
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return true;
+}
+
 void Lab::check_output_paths() const {
   check_animation_path();
   std::error_code ec;  // every filesystem question is asked without throwing
@@ -515,7 +525,7 @@ void Lab::check_output_paths() const {
     while (!ec && !fs::exists(dir, ec) && dir.has_parent_path() && dir != dir.parent_path()) {
       dir = dir.parent_path();
     }
-    if (ec || !fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK | X_OK) != 0) {
+    if (ec || !fs::is_directory(dir, ec) || !can_create_in(dir.string())) {
       throw UsageError("--figures", "cannot create or write directory '" + figures_dir_ + "'");
     }
   }
@@ -541,7 +551,7 @@ void Lab::check_output_paths() const {
       }
     }
     const fs::path parent = path.parent_path();
-    if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0) {
+    if (!fs::is_directory(parent, ec) || !can_create_in(parent.string())) {
       throw UsageError("--csv", "cannot write into directory '" + parent.string() + "'");
     }
   }

@@ -56,6 +56,11 @@ struct TimeSeries {
 };
 
 class Lab;
+/// True if a file can be created in directory `dir`: tried (a probe file made with
+/// O_EXCL and removed), since permission bits do not tell (root may write anywhere by
+/// them, yet not into /proc or a read-only mount).
+bool can_create_in(const std::string& dir);
+
 class FigureSet;
 
 /// One declared option; its rule, unit and role are chained onto the declaration.
