@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "rigid/units.h"
@@ -43,6 +44,19 @@ TEST_CASE("inertia: the lamina about its corner is eq. 20") {
   CHECK_THAT(I(1, 0), WithinAbs(-0.5, kRoundoff));
   CHECK_THAT(I(0, 2), WithinAbs(0.0, kRoundoff));
   CHECK_THAT(I(1, 2), WithinAbs(0.0, kRoundoff));
+}
+
+TEST_CASE("inertia: a narrow lamina's small moment keeps its relative accuracy") {
+  // b / a up to 1e6: m a^2 / 3 is 1e-12 of m b^2 / 3, and the parallel-axis shift must
+  // not form it as a difference of the large terms (it lost eps (b/a)^2 relatively)
+  for (const double ratio : {1e2, 1e3, 1e4, 1e6}) {
+    const Lamina narrow{1e-3, 1e-3, 1e-3 * ratio, true};
+    const Mat3 I = lamina_tensor(narrow);
+    const double expected = narrow.mass * narrow.a * narrow.a / 3.0;
+    INFO("b/a = " << ratio << ": I_yy = " << I(1, 1) << ", m a^2/3 = " << expected);
+    // a few roundings of the terms m a^2/12 and m (a/2)^2
+    CHECK(std::abs(I(1, 1) - expected) <= 4 * std::numeric_limits<double>::epsilon() * expected);
+  }
 }
 
 TEST_CASE("inertia: the lamina about its centre is diagonal, eq. 70") {

@@ -29,7 +29,13 @@ Body diagonal_body(double m, double Ixx, double Iyy, double Izz) {
 // Tensor of a point mass m at r about the origin: m (|r|^2 1 - r r^T) (eq. 27),
 // whose off-diagonal entries carry the text's negative sign (eqs. 9-11).
 Mat3 point_tensor(double m, const Vec3& r) {
-  return m * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+  // m (|r|^2 1 - r r^T), its diagonal formed as the sums of the other two squares: as
+  // |r|^2 - r_i^2 it cancelled (a 1e-3 x 1 lamina's corner I_yy = m a^2 / 3 lost 6e-11)
+  Mat3 t = -m * (r * r.transpose());
+  t(0, 0) = m * (r.y() * r.y() + r.z() * r.z());
+  t(1, 1) = m * (r.x() * r.x() + r.z() * r.z());
+  t(2, 2) = m * (r.x() * r.x() + r.y() * r.y());
+  return t;
 }
 
 }  // namespace
