@@ -322,3 +322,44 @@ TEST_CASE("ode: a sample time repeated, at the start or later, gives the same st
     CHECK(worst < 1e-8);  // tolerance 1e-10 over 1.5 s of a period-pi oscillation
   }
 }
+
+TEST_CASE("ode: a run shorter than machine epsilon in absolute time is integrated, not skipped") {
+  // The oscillator slowed by 1e15: the same motion over 10 s / 1e15. odeint's
+  // integrate_times takes sample times closer than epsilon as one and steps nothing
+  // between them (rkf78 took 0 steps over a 2.6e-15 s run and returned the initial
+  // state); every adaptive method, with and without the hook, must give the 10 s
+  // answer of the slow oscillator within its tolerance's bound (as in the test above).
+  constexpr double kScale = 1e15;
+  struct Fast {
+    void operator()(const State& x, State& dxdt, double /*t*/) const {
+      dxdt[0] = kScale * x[1];
+      dxdt[1] = -kScale * kW * kW * x[0];
+    }
+  };
+  std::vector<double> times;
+  for (int i = 0; i <= 20; ++i) times.push_back(0.5 * i / kScale);
+  const std::vector<Method> methods = {Method::kDopri5, Method::kRkf78, Method::kBulirschStoer,
+                                       Method::kVern6,  Method::kVern7, Method::kVern8,
+                                       Method::kVern9};
+  for (const Method m : methods) {
+    for (const bool hooked : {false, true}) {
+      if (hooked && (m == Method::kDopri5 || m == Method::kBulirschStoer)) continue;
+      const double tol = 1e-10;
+      double worst = 0.0;
+      std::size_t seen = 0;
+      const auto observe = [&](const State& x, double t) {
+        worst = std::max(worst, error(x, t * kScale));
+        ++seen;
+      };
+      const OdeStats stats =
+          hooked ? integrate_sampled(Fast{}, State{1, 0}, times, options_for(m, tol), observe,
+                                     [](State&) {})
+                 : integrate_sampled(Fast{}, State{1, 0}, times, options_for(m, tol), observe);
+      INFO(method_name(m) << (hooked ? " with a hook" : "") << ": " << stats.steps
+                          << " steps, error " << worst);
+      CHECK(seen == times.size());
+      CHECK(stats.steps > 10);
+      CHECK(worst < 5 * tol * static_cast<double>(stats.steps) + 1e-14);
+    }
+  }
+}

@@ -275,14 +275,48 @@ std::size_t integrate_times_capped(Stepper& stepper, const System& system, State
                                                  std::ref(cap));
 }
 
-// A dense-output stepper (order `order`) through the sample times. odeint's
-// dense-output steppers break down for steps below ~1e-15 in absolute time
-// (dopri5 returns NaN, Bulirsch-Stoer's interpolation reads out of bounds: seen
-// for runs shorter than 1e-14 s), so a short run goes in tau = (t - t0) / span,
-// the whole run one unit of time: dx/dtau = span f(x, t). The control acts on the
-// state; only the starting step's rule is not scale-free, so runs of a
-// millisecond or more keep their own time and their results (and the system is
-// called as given, with nothing wrapped round it).
+// odeint's integrate_times treats sample times less than machine epsilon apart (in
+// absolute time) as one and steps nothing between them, and its dense-output steppers
+// break down for steps below ~1e-15 (dopri5 returns NaN, Bulirsch-Stoer's interpolation
+// reads out of bounds: seen for runs shorter than 1e-14 s; rkf78 took 0 steps over a
+// 2.6e-15 s run). So a short run goes in tau = (t - t0) / span, the whole run one unit
+// of time: dx/dtau = span f(x, t). The control acts on the state; only the starting
+// step's rule is not scale-free, so runs of a millisecond or more keep their own time and
+// their results (and the system is called as given, with nothing wrapped round it).
+// `run(system, times, dt0, observe)` integrates with the system and times it is given.
+template <class System, class State, class Observer, class Run>
+std::size_t in_run_time(const System& system, const State& x, const std::vector<double>& times,
+                        int order, const OdeOptions& options, Observer& observe, Run run) {
+  const double t0 = times.front(), span = times.back() - t0;
+  if (!(span > 0.0 && span < 1e-3)) {
+    return run(system, times, starting_step(system, x, t0, span, order, options), observe);
+  }
+  const double scale = span;
+  const auto scaled = [&system, t0, scale](const State& xs, State& dxdtau, double tau) {
+    system(xs, dxdtau, t0 + tau * scale);
+    for (auto& v : dxdtau) v *= scale;
+  };
+  std::vector<double> tau(times.size());
+  for (std::size_t i = 0; i < times.size(); ++i) tau[i] = (times[i] - t0) / scale;
+  tau.back() = span / scale;
+  std::size_t next = 0;  // the observer sees the times asked for, not tau
+  auto observe_t = [&](const State& xs, double) { observe(xs, times[next++]); };
+  return run(scaled, tau, starting_step(scaled, x, 0.0, span / scale, order, options), observe_t);
+}
+
+// An error-controlled stepper (order `order`) through the sample times, in run time.
+template <class Stepper, class System, class State, class Observer>
+std::size_t integrate_controlled(Stepper& stepper, int order, const System& system, State& x,
+                                 const std::vector<double>& times, const OdeOptions& options,
+                                 Observer& observe) {
+  return in_run_time(system, x, times, order, options, observe,
+                     [&](const auto& sys, const std::vector<double>& ts, double dt0, auto& obs) {
+                       return integrate_times_capped(stepper, sys, x, ts, dt0, options, obs,
+                                                     times.back());
+                     });
+}
+
+// A dense-output stepper (order `order`) through the sample times, in run time.
 template <class Stepper, class System, class State, class Observer>
 std::size_t integrate_dense(Stepper& stepper, int order, const System& system, State& x,
                             const std::vector<double>& times, const OdeOptions& options,
@@ -295,23 +329,7 @@ std::size_t integrate_dense(Stepper& stepper, int order, const System& system, S
     const std::vector<double> rest(times.begin() + static_cast<std::ptrdiff_t>(first), times.end());
     return integrate_dense(stepper, order, system, x, rest, options, observe);
   }
-  const double t0 = times.front(), span = times.back() - t0;
-  if (!(span > 0.0 && span < 1e-3)) {
-    const double dt0 = starting_step(system, x, t0, span, order, options);
-    return integrate_times_capped(stepper, system, x, times, dt0, options, observe, times.back());
-  }
-  const double scale = span;
-  const auto scaled = [&system, t0, scale](const State& xs, State& dxdtau, double tau) {
-    system(xs, dxdtau, t0 + tau * scale);
-    for (auto& v : dxdtau) v *= scale;
-  };
-  std::vector<double> tau(times.size());
-  for (std::size_t i = 0; i < times.size(); ++i) tau[i] = (times[i] - t0) / scale;
-  tau.back() = span / scale;
-  std::size_t next = 0;  // the observer sees the times asked for, not tau
-  auto observe_t = [&](const State& xs, double) { observe(xs, times[next++]); };
-  const double dt0 = starting_step(scaled, x, 0.0, span / scale, order, options);
-  return integrate_times_capped(stepper, scaled, x, tau, dt0, options, observe_t, times.back());
+  return integrate_controlled(stepper, order, system, x, times, options, observe);
 }
 
 // A Verner pair: dense output under the PI controller; with a hook, odeint's
@@ -334,10 +352,8 @@ OdeStats integrate_verner(const System& system, State& x, const std::vector<doub
         odeint::controlled_runge_kutta<Stepper, Checker, PiStepAdjuster>(
             Checker(o.abs_tol, o.rel_tol), PiStepAdjuster(Tableau::kErrorOrder)),
         std::move(after_step));
-    const double span = times.back() - times.front();
-    const double dt0 = starting_step(system, x, times.front(), span, Tableau::kOrder, o);
     const std::size_t steps =
-        integrate_times_capped(stepper, system, x, times, dt0, o, observe, times.back());
+        integrate_controlled(stepper, Tableau::kOrder, system, x, times, o, observe);
     return {steps, stepper.rejected_steps(), evaluations};
   }
 }
@@ -445,7 +461,6 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
   validate_run(options, times, kHasHook);
   detail::require_finite(x0);
   State x = x0;
-  const double span = times.back() - times.front();
   // Every evaluation counted, the starting step's two included: the cost of a run.
   std::size_t evaluations = 0;
   const auto counted = [&system, &evaluations](const State& xs, State& dxdt, double t) {
@@ -464,10 +479,8 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
           odeint::make_controlled(options.abs_tol, options.rel_tol,
                                   odeint::runge_kutta_fehlberg78<State>()),
           std::move(after_step));
-      const double dt0 = detail::starting_step(counted, x0, times.front(), span, 8, options);
       const std::size_t steps =
-          detail::integrate_times_capped(stepper, counted, x, times, dt0, options, observe,
-                                         times.back());
+          detail::integrate_controlled(stepper, 8, counted, x, times, options, observe);
       return {steps, stepper.rejected_steps(), evaluations};
     }
     // the dense-output methods take no hook (validate_run has thrown if given one)
