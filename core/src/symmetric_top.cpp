@@ -72,8 +72,11 @@ PrecessionCheck integrated_precession(double I, double Is, double omega, double 
   const Vec3 axis0 = Vec3::UnitZ();
   const Vec3 quarter = run.samples[1].attitude * Vec3::UnitZ();
   const Vec3 end = run.samples[2].attitude * Vec3::UnitZ();
-  // The turn of 3 about L between t = 0 and a quarter period (about 90 degrees).
-  const Vec3 u = axis0 - axis0.dot(L) * L, v = quarter - quarter.dot(L) * L;
+  // The turn of 3 about L between t = 0 and a quarter period (about 90 degrees); the
+  // parts across L scaled to unit length first, since at alpha ~ 1e-200 their cross
+  // product (~1e-400) underflowed to 0 and the turn read 0
+  const Vec3 u = (axis0 - axis0.dot(L) * L).stableNormalized();
+  const Vec3 v = (quarter - quarter.dot(L) * L).stableNormalized();
   const double turn = std::atan2(u.cross(v).dot(L), u.dot(v));
   PrecessionCheck check;
   check.space_rate = turn / (period / 4) * omega;
