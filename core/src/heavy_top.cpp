@@ -185,13 +185,43 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     through_north_ = std::abs(w2_ - one_minus_u0_) < std::abs(w3_ - one_minus_u0_);
     (through_north_ ? w2_ : w3_) = one_minus_u0_;
   }
+  // 1 + u1 to its own relative accuracy. Near the south pole u0 + w1 holds it only to
+  // roundoff of 1 (a top that barely spins swings through the bottom: 1 + u1 ~ 1e-14
+  // came out wrong by its whole size, and phi_dot = (b + a)/(2 (1 + u)) there by
+  // orders of magnitude: the energy off by 1e16). About u = -1, v = 1 + u, the cubic
+  // is g(v) = v (2 - v)(P - beta v) - (Q - a v)^2 with P = c0 + beta (1 + u0) and
+  // Q = b + a, both formed without cancellation: its small root by Newton's method
+  // from Q^2 / g'(0) (g(0) = -Q^2 <= 0 < g'(0) = 2 (P + a Q)).
+  opu1_ = (1.0 + u0_) + w1_;
+  if (!through_south_ && opu1_ < 1e-3) {
+    const double P = c0 + beta_ * (1.0 + u0_), Q = b_plus_a_;
+    const double c2 = -(2.0 * beta_ + P + a_ * a_), c1 = 2.0 * (P + a_ * Q);
+    const auto g = [&](double v) { return ((beta_ * v + c2) * v + c1) * v - Q * Q; };
+    const auto dg = [&](double v) { return (3.0 * beta_ * v + 2.0 * c2) * v + c1; };
+    double v = c1 > 0.0 ? Q * Q / c1 : opu1_;
+    for (int it = 0; it < 50; ++it) {
+      const double step = g(v) / dg(v);
+      if (!std::isfinite(step)) break;
+      v -= step;
+      if (std::abs(step) <= 4 * kEps * v) break;
+    }
+    if (v > 0.0 && v < 2e-3) {
+      opu1_ = v;
+      w1_ = v - (1.0 + u0_);
+    }
+  }
+
   // A turning circle within roundoff of a pole (a top that barely spins, or a huge g)
   // is the pole: the passage, a turn of phi by pi within a vanishing time, is then
   // exact to roundoff, where the integral of the spike would overflow.
   const double pole_roundoff = 16 * kEps;
-  if (!through_south_ && (1.0 + u0_) + w1_ <= pole_roundoff * (1.0 + u0_)) {
+  // (South: 1 + u1, now known to its own accuracy, against roundoff of the phase: the
+  // passage through the bottom lasts ~sqrt(1 + u1)/lambda, and below that no sample time
+  // resolves it.)
+  if (!through_south_ && !(opu1_ > pole_roundoff * (1.0 + u0_))) {
     through_south_ = true;
     w1_ = -1.0 - u0_;
+    opu1_ = 0.0;
   }
   if (!through_north_ && one_minus_u0_ - w2_ <= pole_roundoff) {
     through_north_ = true;
@@ -218,7 +248,7 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // Started upright (the turning circle u2 = 1 itself): exactly at v0 = -K, leaving.
   if (s.theta == 0.0) v0_ = -K_;
   const double amplitude = w2_ - w1_;
-  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
+  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = opu1_;
   const double one_plus_u2 = (1.0 + u0_) + w2_;
   // Steady: no nodding beyond roundoff, measured against the distance of the
   // circles from the poles (near upright, u moves by theta^2 only).
@@ -311,13 +341,19 @@ HeavyTopExact::Where HeavyTopExact::at(double sn2, double cn2) const {
   if (sn2 <= 0.5) {
     x.w = w1_ + delta * sn2;
     x.omu = (one_minus_u0_ - w1_) - delta * sn2;
-    x.opu = ((1.0 + u0_) + w1_) + delta * sn2;
-    x.numerator = (d0_ - a_ * w1_) - a_ * delta * sn2;
+    x.opu = opu1_ + delta * sn2;
+    // b - a u: near the south pole as (b + a) - a (1 + u), both parts exact there; where
+    // the pole is taken as the turning circle, b + a is roundoff (phi's turn by pi
+    // there stands for its term), and left out
+    x.numerator = through_south_ ? -a_ * x.opu
+                  : opu1_ < 1e-3 ? b_plus_a_ - a_ * x.opu
+                                 : (d0_ - a_ * w1_) - a_ * delta * sn2;
   } else {
     x.w = w2_ - delta * cn2;
     x.omu = (one_minus_u0_ - w2_) + delta * cn2;
     x.opu = ((1.0 + u0_) + w2_) - delta * cn2;
-    x.numerator = (d0_ - a_ * w2_) + a_ * delta * cn2;
+    // likewise b - a u = (b - a) + a (1 - u) at a north pole taken as the turning circle
+    x.numerator = through_north_ ? a_ * x.omu : (d0_ - a_ * w2_) + a_ * delta * cn2;
   }
   x.omu = std::max(x.omu, 0.0);
   x.opu = std::max(x.opu, 0.0);
@@ -377,7 +413,7 @@ TopAngles HeavyTopExact::angles(double t) const {
   out.phi_dot = x.phi_dot;
   out.psi_dot = S - (u0_ + x.w) * out.phi_dot;
   // J+ = int dt/(1 - u), J- = int dt/(1 + u), each an integral of the third kind.
-  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = (1.0 + u0_) + w1_;
+  const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = opu1_;
   const double J_plus = !use_plus_ ? 0.0
                                        : (third_kind(p.v, n_plus_, pi_plus_) - G_plus_0_) /
                                              (one_minus_u1 * lambda_);

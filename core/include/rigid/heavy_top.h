@@ -155,6 +155,7 @@ class HeavyTopExact {
   double u0_ = 1.0, one_minus_u0_ = 0.0;
   double a_ = 0.0, beta_ = 0.0, d0_ = 0.0;  // p_psi/I, 2 mgl/I, phi_dot0 sin^2(theta0)
   double w1_ = 0.0, w2_ = 0.0, w3_ = 0.0;   // the roots, u_i - u0
+  double opu1_ = 0.0;                       // 1 + u1, to its own relative accuracy
   double lambda_ = 0.0, v0_ = 0.0, kp2_ = 1.0, k2_ = 0.0, K_ = 0.0, period_ = 0.0;
   double n_plus_ = 0.0, n_minus_ = 0.0, pi_plus_ = 0.0, pi_minus_ = 0.0;
   double b_minus_a_ = 0.0, b_plus_a_ = 0.0;
