@@ -1265,3 +1265,17 @@ TEST_CASE("labs with motion: --animate writes a short animation of each") {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("top_nutation: the fast-top estimates only for a fast top") {
+  // their relative error is of order 2 m g l I / (Is S)^2: the text's top 0.41, printed;
+  // at S = 30 rad/s 1.24 and at 1e-10 rad/s 1e23 (it read 3e24 deg), none
+  const auto text = rigid::test::run_lab("top_nutation", "--json");
+  REQUIRE(text.status == 0);
+  CHECK(text.json()["results"]["fast_top_nutation_amplitude_deg"].is_number());
+  for (const char* spin : {"30", "1e-10"}) {
+    const auto slow = rigid::test::run_lab("top_nutation", std::string("--json --spin ") + spin);
+    REQUIRE(slow.status == 0);
+    CHECK(slow.json()["results"]["fast_top_nutation_amplitude_deg"].is_null());
+    CHECK(slow.json()["results"]["fast_top_nutation_frequency_rad_s"].is_null());
+  }
+}

@@ -179,12 +179,21 @@ int main(int argc, char** argv) {
                  Vector2d(motion.phi_dot_at_u1(), motion.phi_dot_at_u2()), "rad/s");
       // The fast top (Goldstein 5.7): nodding at Is S / I, by 2 m g l I sin(theta0)/(Is S)^2
       // when released from rest; both to relative order 2 m g l I / (Is S)^2.
-      if (S > 0) {
-        lab.result("fast_top_nutation_frequency_rad_s", "fast-top estimate of 2 pi / period: Is S / I",
-                   Is * S / I, "rad/s");
-        lab.result("fast_top_nutation_amplitude_deg",
-                   "fast-top estimate of theta_max - theta_min from rest: 2 m g l I sin(theta0) / (Is S)^2",
-                   rigid::rad_to_deg(2 * top.mgl * I * std::sin(theta0) / (Is * S * Is * S)), "deg");
+      // Printed where that order is below 1 (the text's top: 0.41); a slower top has no
+      // such estimate (at S = 1e-10 it read 3e24 deg).
+      const std::string frequency_label = "fast-top estimate of 2 pi / period: Is S / I";
+      const std::string amplitude_label =
+          "fast-top estimate of theta_max - theta_min from rest: 2 m g l I sin(theta0) / (Is S)^2";
+      const double order = 2 * top.mgl * I / ((Is * S) * (Is * S));
+      if (S > 0 && order < 1.0) {
+        lab.result("fast_top_nutation_frequency_rad_s", frequency_label, Is * S / I, "rad/s");
+        lab.result("fast_top_nutation_amplitude_deg", amplitude_label,
+                   rigid::rad_to_deg(order * std::sin(theta0)), "deg");
+      } else if (S > 0) {
+        const std::string why =
+            fmt::format("not a fast top: 2 m g l I / (Is S)^2 = {:.3g} is not below 1", order);
+        lab.result_none("fast_top_nutation_frequency_rad_s", frequency_label, "rad/s", why);
+        lab.result_none("fast_top_nutation_amplitude_deg", amplitude_label, "deg", why);
       }
     }
     // The sleeping top's stability a hair from upright, just above and below S_min.
