@@ -1279,3 +1279,18 @@ TEST_CASE("top_nutation: the fast-top estimates only for a fast top") {
     CHECK(slow.json()["results"]["fast_top_nutation_frequency_rad_s"].is_null());
   }
 }
+
+TEST_CASE("figures of extreme valid input are drawn, not an error") {
+  // top_nutation at S = 1e20: theta flat at 30 deg, its axis range lo + 1 == lo (the
+  // ticks threw); lamina_tensor at 1e60: |I n|^2 overflowed and L's arrow had no length
+  const std::string dir = "/tmp/rigid_extreme_figures_" + std::to_string(::getpid());
+  for (const auto& [lab, args] : {std::pair<std::string, std::string>{"top_nutation", "--spin 1e20"},
+                                  {"lamina_tensor", "--a 1e60 --b 1e60 --mass 1e60"},
+                                  {"lamina_tensor", "--a 1e-60 --b 1e-60 --mass 1e-60"}}) {
+    const auto run = rigid::test::run_lab(lab, "--quiet " + args + " --figures " + dir);
+    INFO(lab << " " << args << ": " << run.err);
+    CHECK(run.status == 0);
+    CHECK(run.err.empty());
+  }
+  std::filesystem::remove_all(dir);
+}

@@ -16,7 +16,7 @@ namespace {
 // The lamina with its rotation axis, omega, L and the principal axes.
 render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& principal) {
   const Vec3 n = in.axis.stableNormalized();
-  const Vec3 L_dir = (I * n).normalized();
+  const Vec3 L_dir = (I * n).stableNormalized();  // scaled: |I n|^2 may overflow
   const double size = std::max(in.a, in.b);
   const Vec3 centre = in.origin == "corner" ? Vec3(in.a / 2, in.b / 2, 0) : Vec3::Zero();
 
@@ -40,7 +40,7 @@ render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& p
   // The angle between omega and L, as an arc in their plane (section 1.1).
   const double angle = angle_between(L_dir, n);
   if (angle > 1e-6) {
-    const Vec3 across = (L_dir - n * n.dot(L_dir)).normalized();
+    const Vec3 across = (L_dir - n * n.dot(L_dir)).stableNormalized();
     std::vector<Vec3> arc;
     for (int k = 0; k <= 48; ++k) {
       const double t = angle * k / 48.0;

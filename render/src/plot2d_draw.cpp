@@ -72,7 +72,13 @@ void finish_range(const Axis& axis, Range r, double& lo, double& hi) {
   hi = log ? std::pow(10.0, b) : b;
   if (std::isfinite(axis.min) && (!log || axis.min > 0)) lo = axis.min;
   if (std::isfinite(axis.max) && (!log || axis.max > 0)) hi = axis.max;
-  if (!(hi > lo)) hi = lo + (log ? lo * 9 : 1);
+  // a fixed end past the other, or a span lost to rounding at a huge offset (lo + 1 ==
+  // lo at 1e20): a range of the data's own size
+  if (!(hi > lo)) hi = log ? lo * 10 : lo + std::max(1.0, 0.1 * std::abs(lo));
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo)) {
+    lo = log ? 1 : 0;
+    hi = log ? 10 : 1;
+  }
 }
 
 bool fixed_min(const Axis& a) { return std::isfinite(a.min) && (a.scale == Scale::kLinear || a.min > 0); }
