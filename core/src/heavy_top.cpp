@@ -211,6 +211,46 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     }
   }
 
+  // u2 and u3 near the north pole likewise, from the cubic about u = 1, v = u - 1:
+  // g(v) = beta v^3 + (2 beta - P - a^2) v^2 + 2 (a Q - P) v - Q^2 with P = c0 - beta (1 -
+  // u0) and Q = b - a. Its two small roots (v2 <= 0 <= v3) by the quadratic's stable
+  // formula, polished by Newton's method on g. A top released near upright (theta0 =
+  // 1e-6 deg: 1 - u0 = 1.5e-16) has u3 - u2 ~ 1 - u0, which the roots about u0 held
+  // only to roundoff of 1: k'^2 off by its size, the period by 8 %.
+  omu2_ = one_minus_u0_ - w2_;
+  if (!through_north_ && (omu2_ < 1e-3 || w3_ - one_minus_u0_ < 1e-3)) {
+    const double P = c0 - beta_ * one_minus_u0_, Q = b_minus_a_;
+    const double A2 = 2.0 * beta_ - P - a_ * a_, B2 = 2.0 * (a_ * Q - P), C2 = -Q * Q;
+    const auto g = [&](double v) { return ((beta_ * v + A2) * v + B2) * v + C2; };
+    const auto dg = [&](double v) { return (3.0 * beta_ * v + 2.0 * A2) * v + B2; };
+    const auto polish = [&](double v) {
+      for (int it = 0; it < 50; ++it) {
+        const double step = g(v) / dg(v);
+        if (!std::isfinite(step)) break;
+        v -= step;
+        if (std::abs(step) <= 4 * kEps * std::abs(v)) break;
+      }
+      return v;
+    };
+    const double disc = B2 * B2 - 4.0 * A2 * C2;
+    const double q = -0.5 * (B2 + std::copysign(std::sqrt(std::max(disc, 0.0)), B2));
+    if (A2 > 0.0 && q != 0.0) {
+      const double r1 = polish(q / A2), r2 = polish(C2 / q);
+      const double v3 = std::max(r1, r2), v2 = std::min(r1, r2);
+      if (v3 >= 0.0 && v3 < 1e-3 && !through_south_ && opu1_ >= 1e-3) {
+        // and u1 again from Vieta's relations with this w3 (they held its roundoff)
+        w3_ = one_minus_u0_ + v3;
+        const double product = -C / (beta_ * w3_), sum = (B / beta_ - product) / w3_;
+        const double w2_here = C != 0.0 && v2 <= 0.0 && v2 > -1e-3 ? one_minus_u0_ + v2 : w2_;
+        w1_ = std::max(w2_here != 0.0 ? product / w2_here : sum - w2_here, -1.0 - u0_);
+        opu1_ = (1.0 + u0_) + w1_;
+      }
+      // u2 = u0 exactly when released with theta_dot = 0 (f(u0) = 0): kept
+      if (C != 0.0 && v2 <= 0.0 && v2 > -1e-3) w2_ = one_minus_u0_ + v2;
+      if (v2 <= 0.0 && v2 > -1e-3) omu2_ = C != 0.0 ? -v2 : one_minus_u0_;
+    }
+  }
+
   // A turning circle within roundoff of a pole (a top that barely spins, or a huge g)
   // is the pole: the passage, a turn of phi by pi within a vanishing time, is then
   // exact to roundoff, where the integral of the spike would overflow.
@@ -223,9 +263,14 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     w1_ = -1.0 - u0_;
     opu1_ = 0.0;
   }
-  if (!through_north_ && one_minus_u0_ - w2_ <= pole_roundoff) {
+  // (North: the pole only where phi_dot's spike there, (b - a)/(2 (1 - u2)), is far
+  // beyond the motion's own rates; a top released from rest near upright has phi_dot
+  // -a/2 at the top, no spike, and keeps its 1 - u2.)
+  if (!through_north_ && omu2_ <= pole_roundoff &&
+      std::abs(b_minus_a_) > 1e6 * omu2_ * (std::abs(a_) + std::sqrt(beta_))) {
     through_north_ = true;
     w2_ = one_minus_u0_;
+    omu2_ = 0.0;
   }
 
   // sn^2 of the phase, its modulus and rate.
@@ -260,17 +305,19 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // coefficient is zero is left out (its n may be infinite: the pole is a root).
   n_plus_ = !through_north_ && one_minus_u1 > 0.0 ? amplitude / one_minus_u1 : 0.0;
   n_minus_ = !through_south_ ? -amplitude / one_plus_u1 : 0.0;
+  // 1 - n+ = (1 - u2)/(1 - u1) as such: near upright 1 - n+ rounded to 0
+  one_minus_n_plus_ = n_plus_ != 0.0 ? omu2_ / one_minus_u1 : 1.0;
   // Complete integrals of 1/(1 - n sn^2) over a half period: Pi(n, k) = K + n/3 R_J(0, k'^2, 1, 1 - n).
-  const auto complete = [&](double n) {
-    return n == 0.0 ? K_ : K_ + n / 3.0 * rj(0.0, kp2_, 1.0, 1.0 - n);
+  const auto complete = [&](double n, double one_minus_n) {
+    return n == 0.0 ? K_ : K_ + n / 3.0 * rj(0.0, kp2_, 1.0, one_minus_n);
   };
   // A term with a zero coefficient is left out, whatever its n.
   use_plus_ = !through_north_ && b_minus_a_ != 0.0;
   use_minus_ = !through_south_ && b_plus_a_ != 0.0;
-  pi_plus_ = use_plus_ ? complete(n_plus_) : 0.0;
-  pi_minus_ = use_minus_ ? complete(n_minus_) : 0.0;
-  G_plus_0_ = use_plus_ ? third_kind(v0_, n_plus_, pi_plus_) : 0.0;
-  G_minus_0_ = use_minus_ ? third_kind(v0_, n_minus_, pi_minus_) : 0.0;
+  pi_plus_ = use_plus_ ? complete(n_plus_, one_minus_n_plus_) : 0.0;
+  pi_minus_ = use_minus_ ? complete(n_minus_, 1.0 - n_minus_) : 0.0;
+  G_plus_0_ = use_plus_ ? third_kind(v0_, n_plus_, one_minus_n_plus_, pi_plus_) : 0.0;
+  G_minus_0_ = use_minus_ ? third_kind(v0_, n_minus_, 1.0 - n_minus_, pi_minus_) : 0.0;
   // Over a nutation period (2K in v, 2K / lambda in t): the two integrals, and pi for
   // each pole the axis goes through (phi jumps by pi there, the Euler angles' way
   // of crossing it).
@@ -314,7 +361,7 @@ HeavyTopExact::Phase HeavyTopExact::phase(double t) const {
   return p;
 }
 
-double HeavyTopExact::third_kind(double v, double n, double complete) const {
+double HeavyTopExact::third_kind(double v, double n, double one_minus_n, double complete) const {
   // Reduce v to [-K, K] by whole half-periods 2K: each adds 2 Pi(n, k).
   if (!(K_ > 0.0)) return v;
   const double m = std::isfinite(K_) ? std::round(v / (2.0 * K_)) : 0.0;
@@ -327,9 +374,10 @@ double HeavyTopExact::third_kind(double v, double n, double complete) const {
   } else {
     jacobi_(vr, sn, cn, dn);
   }
-  // Pi(n; am v, k) = v + n/3 sn^3 R_J(cn^2, dn^2, 1, 1 - n sn^2) for |v| <= K.
+  // Pi(n; am v, k) = v + n/3 sn^3 R_J(cn^2, dn^2, 1, 1 - n sn^2) for |v| <= K, its last
+  // argument as cn^2 + (1 - n) sn^2 (no cancellation where n is near 1)
   const double part = n == 0.0 ? vr : vr + n / 3.0 * sn * sn * sn *
-                                             rj(cn * cn, dn * dn, 1.0, 1.0 - n * sn * sn);
+                                             rj(cn * cn, dn * dn, 1.0, cn * cn + one_minus_n * sn * sn);
   return m == 0.0 ? part : part + 2.0 * m * complete;
 }
 
@@ -350,10 +398,13 @@ HeavyTopExact::Where HeavyTopExact::at(double sn2, double cn2) const {
                                  : (d0_ - a_ * w1_) - a_ * delta * sn2;
   } else {
     x.w = w2_ - delta * cn2;
-    x.omu = (one_minus_u0_ - w2_) + delta * cn2;
+    x.omu = omu2_ + delta * cn2;
     x.opu = ((1.0 + u0_) + w2_) - delta * cn2;
-    // likewise b - a u = (b - a) + a (1 - u) at a north pole taken as the turning circle
-    x.numerator = through_north_ ? a_ * x.omu : (d0_ - a_ * w2_) + a_ * delta * cn2;
+    // likewise b - a u = (b - a) + a (1 - u) near the north pole, without b - a where
+    // the pole is taken as the turning circle
+    x.numerator = through_north_ ? a_ * x.omu
+                  : omu2_ < 1e-3 ? b_minus_a_ + a_ * x.omu
+                                 : (d0_ - a_ * w2_) + a_ * delta * cn2;
   }
   x.omu = std::max(x.omu, 0.0);
   x.opu = std::max(x.opu, 0.0);
@@ -415,10 +466,10 @@ TopAngles HeavyTopExact::angles(double t) const {
   // J+ = int dt/(1 - u), J- = int dt/(1 + u), each an integral of the third kind.
   const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = opu1_;
   const double J_plus = !use_plus_ ? 0.0
-                                       : (third_kind(p.v, n_plus_, pi_plus_) - G_plus_0_) /
+                                       : (third_kind(p.v, n_plus_, one_minus_n_plus_, pi_plus_) - G_plus_0_) /
                                              (one_minus_u1 * lambda_);
   const double J_minus = !use_minus_ ? 0.0
-                                        : (third_kind(p.v, n_minus_, pi_minus_) - G_minus_0_) /
+                                        : (third_kind(p.v, n_minus_, 1.0 - n_minus_, pi_minus_) - G_minus_0_) /
                                               (one_plus_u1 * lambda_);
   // Through a pole, phi turns by pi at once and psi by -pi (north: phi + psi is the
   // turn about z there) or +pi (south: phi - psi is); passages at v = K + 2Kj (north,

@@ -318,3 +318,25 @@ TEST_CASE("heavy top: a top that barely spins swings through the bottom with its
     CHECK(exact.theta_max() <= M_PI);
   }
 }
+
+// Released from rest a hair from upright (make_near_upright.py: 60 digits, u0 divided out).
+struct NearUpright {
+  double theta0_deg, spin, period;
+};
+const NearUpright kNearUpright[] = {
+#include "reference_near_upright.inc"
+};
+
+TEST_CASE("heavy top: released a hair from upright, the period keeps 1 - u0 below roundoff of 1") {
+  // 1 - u0 = theta0^2 / 2 from 1.5e-14 down to 1.5e-20: u3 - u2 is of that size, and the
+  // roots about u0 held it only to roundoff of 1 (theta0 = 1e-6 deg, S = 10: 3.3070 s for
+  // 3.0676; and the top was taken as passing through upright). About the north pole its
+  // relative accuracy is kept: the period to ~1e-14 (K ~ ln(4/k') and lambda, a few ulps).
+  for (const NearUpright& c : kNearUpright) {
+    const rigid::HeavyTopExact exact(kText, {c.theta0_deg * M_PI / 180.0, 0.0, 0.0, c.spin});
+    INFO("theta0 " << c.theta0_deg << " deg, S " << c.spin << ": period " << exact.nutation_period()
+                   << " s, reference " << c.period);
+    CHECK(std::abs(exact.nutation_period() - c.period) < 1e-13 * c.period);
+    CHECK(std::abs(exact.theta_min() - c.theta0_deg * M_PI / 180.0) < 1e-15 * c.theta0_deg);
+  }
+}

@@ -147,7 +147,7 @@ class HeavyTopExact {
   Where at(double sn2, double cn2) const;
   double theta_from(const Phase& p) const;
   // The integral of 1/(1 - n sn^2) from 0 to v (v reduced by 2K inside).
-  double third_kind(double v, double n, double complete) const;
+  double third_kind(double v, double n, double one_minus_n, double complete) const;
 
   HeavyTop top_;
   TopStart start_;
@@ -156,8 +156,10 @@ class HeavyTopExact {
   double a_ = 0.0, beta_ = 0.0, d0_ = 0.0;  // p_psi/I, 2 mgl/I, phi_dot0 sin^2(theta0)
   double w1_ = 0.0, w2_ = 0.0, w3_ = 0.0;   // the roots, u_i - u0
   double opu1_ = 0.0;                       // 1 + u1, to its own relative accuracy
+  double omu2_ = 0.0;                       // 1 - u2, likewise
   double lambda_ = 0.0, v0_ = 0.0, kp2_ = 1.0, k2_ = 0.0, K_ = 0.0, period_ = 0.0;
   double n_plus_ = 0.0, n_minus_ = 0.0, pi_plus_ = 0.0, pi_minus_ = 0.0;
+  double one_minus_n_plus_ = 1.0;  // (1 - u2)/(1 - u1), not 1 - n+ rounded (0 near upright)
   double b_minus_a_ = 0.0, b_plus_a_ = 0.0;
   bool through_north_ = false, through_south_ = false;  // a pole is a turning circle
   bool use_plus_ = false, use_minus_ = false;            // the J+ and J- terms of phi, psi
