@@ -38,8 +38,7 @@ std::string too_many_steps(Method m, std::size_t max_steps, double t_end, double
   if (step > 0.0) os << " with step " << format_number(step) << " s";
   os << " needs more than " << max_steps << " steps to reach t = " << format_number(t_end)
      << " s; "
-     << (step > 0.0 ? "lengthen the step" : "loosen the tolerance, lengthen the step,")
-     << " or raise max_steps";
+     << (step > 0.0 ? "lengthen the step" : "loosen the tolerance") << " or shorten the run";
   return os.str();
 }
 
