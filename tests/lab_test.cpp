@@ -249,6 +249,8 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
       {"--tolerance 1e-300", "--tolerance"},
       {"--periods 2 --t-end 3", "--periods"},
       {"--periods 0", "--periods"},
+      // too few numbers before the next option: named as such, not as a bad component
+      {"--omega , --json", "--omega: needs 3 numbers separated by commas; '--json'"},
   };
   rigid::test::check_bad_inputs("poinsot", cases);
 }

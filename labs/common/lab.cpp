@@ -326,6 +326,11 @@ Option& Lab::numbers(const std::string& flag, int count, const std::string& type
         if (option.takes_word(text)) return "";
         double parsed = 0.0;
         if (!CLI::detail::lexical_cast(text, parsed)) {
+          // too few numbers before the next option ("--omega , --json"): CLI11 took it
+          if (text.rfind("--", 0) == 0 && text.size() > 2) {
+            return fmt::format("needs {} numbers separated by commas; '{}' is the next option",
+                               option.count_, text);
+          }
           return "each component must be a number (got '" + text + "')" +
                  (option.words_.empty() ? "" : ", or the value one of " + option.word_list());
         }
