@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "rigid/format.h"
+#include "rigid/periodic_mean.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/units.h"
 
@@ -16,6 +17,18 @@ namespace rigid {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Newton's method on the cubic ((c3 v + c2) v + c1) v + c0 from v, to a step of a few
+// ulps of v (or 50 steps, or a step that is not finite).
+double cubic_root_near(double c3, double c2, double c1, double c0, double v) {
+  for (int it = 0; it < 50; ++it) {
+    const double step = (((c3 * v + c2) * v + c1) * v + c0) / ((3.0 * c3 * v + 2.0 * c2) * v + c1);
+    if (!std::isfinite(step)) break;
+    v -= step;
+    if (std::abs(step) <= 4 * kEps * std::abs(v)) break;
+  }
+  return v;
+}
 
 void require_positive(double value, const char* what) {
   if (!std::isfinite(value) || !(value > 0.0)) {
@@ -196,15 +209,7 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   if (!through_south_ && opu1_ < 1e-3) {
     const double P = c0 + beta_ * (1.0 + u0_), Q = b_plus_a_;
     const double c2 = -(2.0 * beta_ + P + a_ * a_), c1 = 2.0 * (P + a_ * Q);
-    const auto g = [&](double v) { return ((beta_ * v + c2) * v + c1) * v - Q * Q; };
-    const auto dg = [&](double v) { return (3.0 * beta_ * v + 2.0 * c2) * v + c1; };
-    double v = c1 > 0.0 ? Q * Q / c1 : opu1_;
-    for (int it = 0; it < 50; ++it) {
-      const double step = g(v) / dg(v);
-      if (!std::isfinite(step)) break;
-      v -= step;
-      if (std::abs(step) <= 4 * kEps * v) break;
-    }
+    const double v = cubic_root_near(beta_, c2, c1, -Q * Q, c1 > 0.0 ? Q * Q / c1 : opu1_);
     if (v > 0.0 && v < 2e-3) {
       opu1_ = v;
       w1_ = v - (1.0 + u0_);
@@ -221,17 +226,7 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   if (!through_north_ && (omu2_ < 1e-3 || w3_ - one_minus_u0_ < 1e-3)) {
     const double P = c0 - beta_ * one_minus_u0_, Q = b_minus_a_;
     const double A2 = 2.0 * beta_ - P - a_ * a_, B2 = 2.0 * (a_ * Q - P), C2 = -Q * Q;
-    const auto g = [&](double v) { return ((beta_ * v + A2) * v + B2) * v + C2; };
-    const auto dg = [&](double v) { return (3.0 * beta_ * v + 2.0 * A2) * v + B2; };
-    const auto polish = [&](double v) {
-      for (int it = 0; it < 50; ++it) {
-        const double step = g(v) / dg(v);
-        if (!std::isfinite(step)) break;
-        v -= step;
-        if (std::abs(step) <= 4 * kEps * std::abs(v)) break;
-      }
-      return v;
-    };
+    const auto polish = [&](double v) { return cubic_root_near(beta_, A2, B2, C2, v); };
     const double disc = B2 * B2 - 4.0 * A2 * C2;
     const double q = -0.5 * (B2 + std::copysign(std::sqrt(std::max(disc, 0.0)), B2));
     if (A2 > 0.0 && q != 0.0) {
@@ -327,32 +322,15 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   mean_phi_dot_ = term_plus + term_minus;
   // A fast top's two terms are ~a each and cancel to ~mgl/(Is S) (at S = 1e8 rad/s to
   // 3e-3 of it; at 1e10 to 0): then the mean of phi_dot = (d0 - a w)/((1 - u)(1 + u)),
-  // free of that cancellation pointwise, over the phase's period 2K by the trapezoidal
-  // rule (smooth and periodic: geometric convergence, samples doubled to 1e-13).
+  // free of that cancellation pointwise, over a nutation period (periodic_mean).
   if (!through_north_ && !through_south_ && std::isfinite(K_) && K_ > 0.0 &&
       std::abs(term_plus) + std::abs(term_minus) > 1e3 * std::abs(mean_phi_dot_)) {
-    const auto phi_dot_at = [&](double v) {
-      double sn, cn, dn;
-      if (k2_ == 0.0) {
-        sn = std::sin(v), cn = std::cos(v);
-      } else {
-        jacobi_(v, sn, cn, dn);
-      }
-      return at(sn * sn, cn * cn).phi_dot;
-    };
-    const double period = 2.0 * K_;
-    constexpr int kFirst = 64, kMost = 1 << 16;
-    double sum = 0.0;
-    for (int k = 0; k < kFirst; ++k) sum += phi_dot_at(period * k / kFirst);
-    double mean = sum / kFirst;
-    for (int n = kFirst; n < kMost; n *= 2) {
-      for (int k = 0; k < n; ++k) sum += phi_dot_at(period * (k + 0.5) / n);
-      const double refined = sum / (2 * n);
-      const bool converged = std::abs(refined - mean) <= 1e-13 * std::abs(refined) && 2 * n >= 256;
-      mean = refined;
-      if (converged) break;
-    }
-    mean_phi_dot_ = mean;
+    mean_phi_dot_ = periodic_mean(
+        [&](double t) {
+          const Phase p = phase(t);
+          return at(p.sn * p.sn, p.cn * p.cn).phi_dot;
+        },
+        period_);
   }
   if (std::isfinite(period_)) {
     if (through_north_) mean_phi_dot_ += std::copysign(kPi, b_minus_a_) / period_;

@@ -1,5 +1,7 @@
 #include "rigid/poinsot.h"
 
+#include "rigid/periodic_mean.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -75,10 +77,9 @@ double herpolhode_turn_per_period(const FreeBodyExact& motion) {
   // The contact point is omega in space, p = R omega, and dp/dt = R omega_dot (R_dot omega
   // = omega x omega = 0): its azimuth about n = L/|L| turns at n.(p x p_dot) / |n x p|^2,
   // in body axes n_b.(omega x omega_dot) / |n_b x omega|^2, omega_dot from Euler's
-  // equations. That rate is smooth and T-periodic, so the trapezoidal rule over one
-  // period converges geometrically; the samples double until two sums agree to 1e-13
-  // relative (sampling the angle itself instead misses whole turns once the contact
-  // point goes round L many times a period, as near a symmetric body).
+  // equations. That rate is smooth and T-periodic: its mean by periodic_mean (sampling
+  // the angle itself instead missed whole turns once the contact point goes round L many
+  // times a period, as near a symmetric body).
   const Eigen::Vector3d I = motion.moments().vector();
   const double L = I.cwiseProduct(motion.omega_body(0.0)).norm();
   const auto rate = [&](double t) {
@@ -89,22 +90,7 @@ double herpolhode_turn_per_period(const FreeBodyExact& motion) {
     const Eigen::Vector3d n = I.cwiseProduct(w) / L;
     return n.dot(w.cross(w_dot)) / n.cross(w).squaredNorm();
   };
-  // At least 1024 samples, and two doublings in a row that agree: a narrow peak of the
-  // rate (omega passing close to L) missed by two coarse sums alike cannot pass for
-  // convergence.
-  constexpr int kFirst = 256, kMost = 1 << 22;
-  double sum = 0.0;
-  for (int k = 0; k < kFirst; ++k) sum += rate(T * k / kFirst);
-  double turn = sum * T / kFirst;
-  int agreed = 0;
-  for (int n = kFirst; n < kMost && agreed < 2; n *= 2) {
-    // the midpoints of the n intervals: with the n points, the 2n-point rule
-    for (int k = 0; k < n; ++k) sum += rate(T * (k + 0.5) / n);
-    const double refined = sum * T / (2 * n);
-    agreed = std::abs(refined - turn) <= 1e-13 * std::abs(refined) && 2 * n >= 1024 ? agreed + 1 : 0;
-    turn = refined;
-  }
-  return turn;
+  return T * periodic_mean(rate, T);
 }
 
 Eigen::Vector3d omega_on_energy_ellipsoid(const PrincipalMoments& I, double T, double L2) {
