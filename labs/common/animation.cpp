@@ -6,7 +6,6 @@
 // frames while a second thread encodes them (render/video.h), shows progress on
 // stderr, and lists the file in the JSON. Nothing of it loads without --animate.
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
