@@ -13,6 +13,8 @@
 // OUT_DIR/heavy_top_reference.json (for scipy_heavy_top.py).
 //
 // Usage: bench_heavy_top [OUT_DIR] [--quick] [--verbose] [--quiet]
+#include "rigid/heavy_top.h"
+
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
@@ -25,7 +27,6 @@
 #include <vector>
 
 #include "output.h"
-#include "rigid/heavy_top.h"
 #include "rigid/heavy_top_integrate.h"
 #include "timing.h"
 
@@ -51,11 +52,15 @@ struct TopProblem {
 std::vector<TopProblem> problems() {
   const double I = 0.25 * 2.0 * 0.05 * 0.05 + 2.0 * 0.04 * 0.04, Is = 0.5 * 2.0 * 0.05 * 0.05;
   return {
-      {"top_text", "section 8.1's top: 500 rpm, released at 30\\deg, 20 nutation periods",
-       {I, Is, 2.0 * 9.8 * 0.04}, {M_PI / 6, 0.0, 0.0, 500.0 * 2 * M_PI / 60}},
-      {"top_fast", "Simo-Wong fast top: I = 5, I_s = 1, mgl = 20, S = 50, \\theta_0 = 0.05, "
-                   "20 nutation periods",
-       {5.0, 1.0, 20.0}, {0.05, 0.0, 0.0, 50.0}},
+      {"top_text",
+       "section 8.1's top: 500 rpm, released at 30\\deg, 20 nutation periods",
+       {I, Is, 2.0 * 9.8 * 0.04},
+       {M_PI / 6, 0.0, 0.0, 500.0 * 2 * M_PI / 60}},
+      {"top_fast",
+       "Simo-Wong fast top: I = 5, I_s = 1, mgl = 20, S = 50, \\theta_0 = 0.05, "
+       "20 nutation periods",
+       {5.0, 1.0, 20.0},
+       {0.05, 0.0, 0.0, 50.0}},
   };
 }
 
@@ -86,7 +91,8 @@ struct VectorTopRhs {
 
 template <class Stepper>
 RunResult odeint_run(const TopProblem& p, double tol) {
-  const rigid::FreeBodyState x0 = rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
+  const rigid::FreeBodyState x0 =
+      rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
   std::vector<double> x(x0.begin(), x0.end());
   RunResult r;
   const auto steps = odeint::integrate_adaptive(
@@ -111,7 +117,8 @@ RunResult gsl_run(const TopProblem& p, double tol, const gsl_odeiv2_step_type* t
   VectorTopRhs rhs{p.top.I, p.top.Is, p.top.mgl, &r.evaluations};
   gsl_odeiv2_system sys{gsl_rhs, nullptr, 7, &rhs};
   gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, type, 1e-3, tol, tol);
-  const rigid::FreeBodyState x0 = rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
+  const rigid::FreeBodyState x0 =
+      rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
   r.x = x0;
   double t = 0.0;
   const int status = gsl_odeiv2_driver_apply(d, &t, p.t_end, r.x.data());
@@ -152,13 +159,17 @@ std::vector<Solver> solvers() {
                  rigid::fixed_step_order(m),
                  [m](const TopProblem& p, double param) { return rigidlab_run(p, m, param); }});
   }
-  s.push_back({"odeint:dopri5", true, true, 0, odeint_run<odeint::runge_kutta_dopri5<std::vector<double>>>});
-  s.push_back({"odeint:rkf78", true, true, 0, odeint_run<odeint::runge_kutta_fehlberg78<std::vector<double>>>});
+  s.push_back({"odeint:dopri5", true, true, 0,
+               odeint_run<odeint::runge_kutta_dopri5<std::vector<double>>>});
+  s.push_back({"odeint:rkf78", true, true, 0,
+               odeint_run<odeint::runge_kutta_fehlberg78<std::vector<double>>>});
 #ifdef RIGID_BENCH_HAVE_GSL
-  s.push_back({"gsl:rk8pd", true, true, 0,
-               [](const TopProblem& p, double tol) { return gsl_run(p, tol, gsl_odeiv2_step_rk8pd); }});
-  s.push_back({"gsl:rkf45", true, true, 0,
-               [](const TopProblem& p, double tol) { return gsl_run(p, tol, gsl_odeiv2_step_rkf45); }});
+  s.push_back({"gsl:rk8pd", true, true, 0, [](const TopProblem& p, double tol) {
+                 return gsl_run(p, tol, gsl_odeiv2_step_rk8pd);
+               }});
+  s.push_back({"gsl:rkf45", true, true, 0, [](const TopProblem& p, double tol) {
+                 return gsl_run(p, tol, gsl_odeiv2_step_rkf45);
+               }});
 #endif
   return s;
 }
@@ -188,8 +199,8 @@ bool measure(const TopProblem& p, const Solver& s, double param, double theta_ex
   return std::isfinite(m.error);
 }
 
-void sweep(const TopProblem& p, const Solver& s, double theta_exact, double nutation_period, bool quick,
-           std::vector<Measurement>& out) {
+void sweep(const TopProblem& p, const Solver& s, double theta_exact, double nutation_period,
+           bool quick, std::vector<Measurement>& out) {
   Measurement m;
   if (s.adaptive) {
     for (int k = 3; k <= (quick ? 9 : 13); ++k) {
@@ -235,8 +246,10 @@ int main(int argc, char** argv) {
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--quick") quick = true;
-    else if (!bench::output_option(a)) dir = a;
+    if (a == "--quick")
+      quick = true;
+    else if (!bench::output_option(a))
+      dir = a;
   }
   // the work, counted for the progress line: each problem's solver sweeps, their
   // later timing rounds, and the elliptic functions
@@ -258,8 +271,12 @@ int main(int argc, char** argv) {
     const rigid::FreeBodyState x0 = rigid::heavy_top_state(exact.angles(0));
     bench::detail("heavy top work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
     entries.push_back({{"group", "problem"}, {"problem", p.name}, {"title", p.title}});
-    ref["problems"].push_back({{"name", p.name}, {"I", p.top.I}, {"Is", p.top.Is},
-                               {"mgl", p.top.mgl}, {"x0", x0}, {"t_end", p.t_end},
+    ref["problems"].push_back({{"name", p.name},
+                               {"I", p.top.I},
+                               {"Is", p.top.Is},
+                               {"mgl", p.top.mgl},
+                               {"x0", x0},
+                               {"t_end", p.t_end},
                                {"theta_end", theta_exact}});
     std::vector<Measurement> ms;
     bench::measure_in_rounds<Solver, Measurement>(
@@ -271,8 +288,9 @@ int main(int argc, char** argv) {
         },
         [&](const std::string& what) { tick(p.name + ", " + what); });
     for (const Measurement& m : ms) {
-      bench::detail("  %-24s %s %-9.3g theta error %-9.2e %9.3f ms %9lld steps\n", m.solver->name.c_str(),
-                  m.solver->adaptive ? "tol" : "h  ", m.param, m.error, m.seconds * 1e3, m.steps);
+      bench::detail("  %-24s %s %-9.3g theta error %-9.2e %9.3f ms %9lld steps\n",
+                    m.solver->name.c_str(), m.solver->adaptive ? "tol" : "h  ", m.param, m.error,
+                    m.seconds * 1e3, m.steps);
       Json e;
       e["group"] = "work_precision";
       e["problem"] = p.name;
@@ -297,34 +315,44 @@ int main(int argc, char** argv) {
       e["tool"] = tool;
       e["what"] = what;
       e["ns_per_sample"] = seconds / kSamples * 1e9;
-      bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
+      bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what,
+                    e["ns_per_sample"].get<double>());
       entries.push_back(e);
     };
-    add("rigidlab", "theta", bench::best_seconds([&] {
-          double sum = 0;
-          for (int i = 0; i < kSamples; ++i) sum += exact.theta(i * dt);
-          bench::do_not_optimize(sum);
-        }, policy));
-    add("rigidlab", "theta+phi+psi", bench::best_seconds([&] {
-          double sum = 0;
-          for (int i = 0; i < kSamples; ++i) {
-            const rigid::TopAngles a = exact.angles(i * dt);
-            sum += a.theta + a.phi + a.psi;
-          }
-          bench::do_not_optimize(sum);
-        }, policy));
+    add("rigidlab", "theta",
+        bench::best_seconds(
+            [&] {
+              double sum = 0;
+              for (int i = 0; i < kSamples; ++i) sum += exact.theta(i * dt);
+              bench::do_not_optimize(sum);
+            },
+            policy));
+    add("rigidlab", "theta+phi+psi",
+        bench::best_seconds(
+            [&] {
+              double sum = 0;
+              for (int i = 0; i < kSamples; ++i) {
+                const rigid::TopAngles a = exact.angles(i * dt);
+                sum += a.theta + a.phi + a.psi;
+              }
+              bench::do_not_optimize(sum);
+            },
+            policy));
 #ifdef RIGID_BENCH_HAVE_GSL
     const double m2 = (exact.u2() - exact.u1()) / (exact.u3() - exact.u1());
     const double du = 2 * M_PI / kSamples * 20;  // about as many periods as the samples cover
-    add("gsl", "elljac", bench::best_seconds([&] {
-          double sum = 0;
-          for (int i = 0; i < kSamples; ++i) {
-            double s, c, d;
-            gsl_sf_elljac_e(i * du, m2, &s, &c, &d);
-            sum += s + c + d;
-          }
-          bench::do_not_optimize(sum);
-        }, policy));
+    add("gsl", "elljac",
+        bench::best_seconds(
+            [&] {
+              double sum = 0;
+              for (int i = 0; i < kSamples; ++i) {
+                double s, c, d;
+                gsl_sf_elljac_e(i * du, m2, &s, &c, &d);
+                sum += s + c + d;
+              }
+              bench::do_not_optimize(sum);
+            },
+            policy));
 #endif
     std::fflush(stdout);
     tick(p.name + ", elliptic functions");

@@ -159,10 +159,11 @@ void issue12_levels(std::ostream& md, const std::string& problem,
   for (int k = 8; std::pow(10.0, -0.5 * k) > floor * (1 + 1e-9); ++k)
     levels.push_back(std::pow(10.0, -0.5 * k));
   if (floor < 1e-4) levels.push_back(floor);
-  md << fmt::format("\nIssue 12: every level from 1e-4 down to ten times the best error any "
-                    "solver reached ({:.1e}, so {:.1e}), by half decades; evaluations of the "
-                    "loosest measured run that reached the level.\n\n",
-                    best, floor);
+  md << fmt::format(
+      "\nIssue 12: every level from 1e-4 down to ten times the best error any "
+      "solver reached ({:.1e}, so {:.1e}), by half decades; evaluations of the "
+      "loosest measured run that reached the level.\n\n",
+      best, floor);
   md << "| error ≤ | fastest rigidlab | time | evaluations | fastest peer | time | evaluations "
         "| rigidlab / peer |\n|---|---|---|---|---|---|---|---|\n";
   double worst = 0.0;
@@ -172,27 +173,27 @@ void issue12_levels(std::ostream& md, const std::string& problem,
     double s_ours = std::numeric_limits<double>::infinity(), s_peer = s_ours;
     for (const SolverCurve& c : curves) {
       const double t = time_to_reach(c, level);
-      if (c.peer ? t < s_peer : t < s_ours) (c.peer ? peer : ours) = &c, (c.peer ? s_peer : s_ours) = t;
+      if (c.peer ? t < s_peer : t < s_ours)
+        (c.peer ? peer : ours) = &c, (c.peer ? s_peer : s_ours) = t;
     }
     const double ratio = s_ours / s_peer;
     const bool both = ours != nullptr && peer != nullptr;
     md << fmt::format("| {:.1e} | {} | {} | {} | {} | {} | {} | {} |\n", level,
-                      ours ? ours->solver : "—", seconds_text(s_ours),
-                      count_text(ours, level), peer ? peer->solver : "—", seconds_text(s_peer),
-                      count_text(peer, level),
+                      ours ? ours->solver : "—", seconds_text(s_ours), count_text(ours, level),
+                      peer ? peer->solver : "—", seconds_text(s_peer), count_text(peer, level),
                       both ? fmt::format(ratio < 0.01 ? "{:.1e}" : "{:.2f}", ratio)
                            : (ours ? "peers do not reach it" : "not reached by rigidlab"));
     if (both) worst = std::max(worst, ratio);
     if (!ours || (both && ratio > kIssue12Ratio))
-      misses.push_back(fmt::format("{:.1e} ({})", level,
-                                   both ? fmt::format("{:.2f}", ratio) : "not reached"));
+      misses.push_back(
+          fmt::format("{:.1e} ({})", level, both ? fmt::format("{:.2f}", ratio) : "not reached"));
   }
-  targets.add(misses.empty(),
-              fmt::format("{} (issue 12): fastest rigidlab at most {:.2f}× the fastest peer at "
-                          "every level 1e-4..{:.1e} (worst ratio {:.2f}{}{})",
-                          problem, kIssue12Ratio, floor, worst,
-                          misses.empty() ? "" : "; missed at ",
-                          fmt::format("{}", fmt::join(misses, ", "))));
+  targets.add(
+      misses.empty(),
+      fmt::format("{} (issue 12): fastest rigidlab at most {:.2f}× the fastest peer at "
+                  "every level 1e-4..{:.1e} (worst ratio {:.2f}{}{})",
+                  problem, kIssue12Ratio, floor, worst, misses.empty() ? "" : "; missed at ",
+                  fmt::format("{}", fmt::join(misses, ", "))));
 }
 
 // The PI controller against odeint's default one on the same Verner stepper: the
@@ -327,7 +328,6 @@ void work_precision_section(std::ostream& md, const std::string& problem, const 
 #ifdef RIGID_BENCH_HAVE_RENDER
 namespace rr = rigid::render;
 
-
 // One look per solver: the same algorithm has the same colour whoever wrote it
 // (rigidlab solid with circles, peers dashed with squares or triangles), so a
 // method and its peer sit side by side; the Okabe-Ito palette has only eight.
@@ -340,14 +340,20 @@ struct SolverStyle {
 SolverStyle solver_style(const std::string& solver, bool peer) {
   // a method and its projected twin share a colour (the twin dashed); the peers are
   // dashed with squares (odeint) or triangles (GSL; SciPy dash-dot)
-  static const std::map<std::string, rr::Color> colors = {
-      {"rkf78", rr::kBlue},           {"dopri5", rr::kOrange},
-      {"bulirsch-stoer", rr::kReddishPurple}, {"rk4", rr::kVermillion},
-      {"splitting", rr::kGray},       {"splitting4", rr::kBlack},
-      {"vern6", rr::kBluishGreen},    {"vern7", rr::kSkyBlue},
-      {"vern8", rr::kVermillion},     {"vern9", rr::kReddishPurple},
-      {"rk8pd", rr::kBlack},          {"rkf45", rr::kGray},
-      {"DOP853", rr::kReddishPurple}, {"RK45", rr::kVermillion}};
+  static const std::map<std::string, rr::Color> colors = {{"rkf78", rr::kBlue},
+                                                          {"dopri5", rr::kOrange},
+                                                          {"bulirsch-stoer", rr::kReddishPurple},
+                                                          {"rk4", rr::kVermillion},
+                                                          {"splitting", rr::kGray},
+                                                          {"splitting4", rr::kBlack},
+                                                          {"vern6", rr::kBluishGreen},
+                                                          {"vern7", rr::kSkyBlue},
+                                                          {"vern8", rr::kVermillion},
+                                                          {"vern9", rr::kReddishPurple},
+                                                          {"rk8pd", rr::kBlack},
+                                                          {"rkf45", rr::kGray},
+                                                          {"DOP853", rr::kReddishPurple},
+                                                          {"RK45", rr::kVermillion}};
   const std::string method = solver.substr(solver.find(':') + 1);
   const bool projected = method.size() > 5 && method.substr(method.size() - 5) == "+proj";
   SolverStyle style;
@@ -363,7 +369,9 @@ SolverStyle solver_style(const std::string& solver, bool peer) {
   return style;
 }
 
-bool is_verner(const SolverCurve& c) { return c.solver.rfind("rigidlab:vern", 0) == 0; }
+bool is_verner(const SolverCurve& c) {
+  return c.solver.rfind("rigidlab:vern", 0) == 0;
+}
 
 // Two panels on the same axes, each with every peer: rigidlab's other methods on the
 // left, Verner's pairs (issue 12) on the right; fifteen rigidlab curves in one panel
@@ -523,7 +531,7 @@ void reference_section(std::ostream& md, const Json& all) {
 // Groups this report does not know: one generic table each.
 void other_groups(std::ostream& md, const Json& all) {
   const std::set<std::string> known = {"work_precision", "elliptic", "invariants", "reference",
-                                       "problem", "figures", "controller"};
+                                       "problem",        "figures",  "controller"};
   std::map<std::string, std::vector<const Json*>> groups;
   for (const Json& e : all)
     if (!known.count(text(e, "group"))) groups[text(e, "group", "(no group)")].push_back(&e);
@@ -607,11 +615,14 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
       labs.push_back(name);
     } else if (kind == "side_by_side") {
       side_by_side = s;
-      side_by_side_labs = fmt::format("{} labs on {} processors", e.value("labs", Json::array()).size(),
-                                      e.value("processors", 0));
+      side_by_side_labs =
+          fmt::format("{} labs on {} processors", e.value("labs", Json::array()).size(),
+                      e.value("processors", 0));
     } else if (kind == "animation") {
-      if (tool == "rigidlab") animation = &e;
-      else animation_peer = s;
+      if (tool == "rigidlab")
+        animation = &e;
+      else
+        animation_peer = s;
     } else if (kind == "json_run") {
       const std::string lab = name.substr(0, name.find(' '));
       (text(e, "build") == "norender" ? json_norender : json_render)[lab] = s;
@@ -651,8 +662,8 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
     for (const char* phase : kPhases)
       phases += " " + (f.phases.count(phase) ? ms(f.phases.at(phase)) : std::string("—")) + " |";
     if (!f.first && f.phases.size() == std::size(kPhases))
-      floor_later = std::min(floor_later, f.phases.at("setup") + f.phases.at("resolve") +
-                                              f.phases.at("encode"));
+      floor_later = std::min(floor_later,
+                             f.phases.at("setup") + f.phases.at("resolve") + f.phases.at("encode"));
     md << fmt::format("| {}{} | {} |{} {} | {} |\n", name, f.first ? " ¹" : "", ms(f.ours), phases,
                       ms(f.peer), std::isfinite(ratio) ? fmt::format("{:.2f}×", ratio) : "—");
     if (std::isfinite(f.ours)) lab_ours[f.lab] += f.ours;
@@ -711,8 +722,8 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
         "at {} and {:g} fps ({:g} s of video), process wall time, best of 2: **{:.2f} s** ({:.2f}× "
         "real time); matplotlib's FuncAnimation drawing the same scene each frame through its "
         "ffmpeg writer (H.264, the same preset and CRF): {}.\n",
-        number(*animation, "frames"), text(*animation, "size"), number(*animation, "fps"), video,
-        s, s / video,
+        number(*animation, "frames"), text(*animation, "size"), number(*animation, "fps"), video, s,
+        s / video,
         std::isfinite(animation_peer)
             ? fmt::format("{:.1f} s ({:.1f}× rigidlab's)", animation_peer, animation_peer / s)
             : std::string("not measured (ffmpeg not installed)"));
@@ -722,13 +733,15 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
       std::vector<std::string> parts;
       for (const auto& [phase, v] : (*animation)["phases"].items())
         parts.push_back(fmt::format("{} {:.2f} s", phase, v.get<double>()));
-      md << fmt::format("{}", fmt::join(parts, ", ")) << ". Encoding runs on a second thread: "
+      md << fmt::format("{}", fmt::join(parts, ", "))
+         << ". Encoding runs on a second thread: "
             "'encoder_wait' is the time drawing waited for it.\n";
     }
-    targets.add(s <= video,
-                fmt::format("animation (issue 15): rendering and encoding {:g} s of 1280x720 30 fps "
-                            "video in at most {:g} s: {:.2f} s",
-                            video, video, s));
+    targets.add(
+        s <= video,
+        fmt::format("animation (issue 15): rendering and encoding {:g} s of 1280x720 30 fps "
+                    "video in at most {:g} s: {:.2f} s",
+                    video, video, s));
   }
 
   // the targets

@@ -41,8 +41,8 @@ double best_seconds(F&& f, const TimingPolicy& policy = {}) {
 /// a negative number if it failed): the machine is shared, and a burst of load then
 /// spoils one round of a setting, not all. `tick(what)` after each solver's part.
 template <class Solver, class Measurement>
-void measure_in_rounds(const std::vector<Solver>& solvers, std::vector<Measurement>& ms,
-                       int rounds, const std::function<void(const Solver&)>& sweep,
+void measure_in_rounds(const std::vector<Solver>& solvers, std::vector<Measurement>& ms, int rounds,
+                       const std::function<void(const Solver&)>& sweep,
                        const std::function<double(const Measurement&)>& again,
                        const std::function<void(const std::string&)>& tick) {
   for (const Solver& s : solvers) {

@@ -54,7 +54,9 @@ struct Settings {
 };
 
 // Timing rounds over every setting (the first is the sweep itself).
-int rounds(const Settings& cfg) { return cfg.quick ? 1 : 3; }
+int rounds(const Settings& cfg) {
+  return cfg.quick ? 1 : 3;
+}
 
 // The work, counted for the progress line: per problem its reference, each solver's
 // sweep and later rounds, the four controller comparisons, elliptic functions and
@@ -137,7 +139,7 @@ bool measure(const Problem& p, const Solver& s, double param, const rigid::FreeB
     m.seconds = bench::best_seconds([&] { m.result = s.run(p, param); }, kRoundPolicy);
   } catch (const std::exception& e) {
     bench::detail("  %-24s %s %.3g: failed (%s)\n", s.name.c_str(), s.adaptive ? "tol" : "h", param,
-                e.what());
+                  e.what());
     return false;
   }
   m.error = bench::omega_error(m.result.x, exact);
@@ -148,8 +150,8 @@ Json entry(const Problem& p, const Measurement& m, const rigid::FreeBodyState& e
   const Solver& s = *m.solver;
   const double att = bench::attitude_error(m.result.x, exact);
   bench::detail("  %-24s %s %-9.3g error %-9.2e attitude %-9.2e %9.3f ms %9lld steps\n",
-              s.name.c_str(), s.adaptive ? "tol" : "h  ", m.param, m.error, att, m.seconds * 1e3,
-              m.result.steps);
+                s.name.c_str(), s.adaptive ? "tol" : "h  ", m.param, m.error, att, m.seconds * 1e3,
+                m.result.steps);
   Json e;
   e["group"] = "work_precision";
   e["problem"] = p.name;
@@ -239,7 +241,7 @@ rigid::FreeBodyState reference(const Problem& p, const rigid::FreeBodyExact& exa
   l["omega_diff"] = bench::omega_error(xl, x);
   l["attitude_diff"] = bench::attitude_error(xl, x);
   bench::detail("%s: exact vs long-double rkf78(1e-17): omega %.2e, attitude %.2e rad\n",
-              p.name.c_str(), l["omega_diff"].get<double>(), l["attitude_diff"].get<double>());
+                p.name.c_str(), l["omega_diff"].get<double>(), l["attitude_diff"].get<double>());
   out.push_back(l);
   return x;
 }
@@ -331,8 +333,8 @@ Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double 
   };
   rigid::OdeOptions o;
   o.abs_tol = o.rel_tol = tol;
-  const double dt0 = rigid::detail::starting_step(rhs, p.initial_state(), 0.0, p.t_end,
-                                                  Tableau::kOrder, o);
+  const double dt0 =
+      rigid::detail::starting_step(rhs, p.initial_state(), 0.0, p.t_end, Tableau::kOrder, o);
   const std::vector<double> times = {0.0, p.t_end};
   const double seconds = bench::best_seconds(
       [&] {
@@ -340,8 +342,8 @@ Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double 
                                                                                   adjuster);
         evaluations = 0;
         x = p.initial_state();
-        steps = odeint::integrate_times(std::ref(stepper), counted, x, times.begin(),
-                                        times.end(), dt0, [](const auto&, double) {});
+        steps = odeint::integrate_times(std::ref(stepper), counted, x, times.begin(), times.end(),
+                                        dt0, [](const auto&, double) {});
         rejected = stepper.rejected_steps();
       },
       kRoundPolicy);
@@ -356,9 +358,10 @@ Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double 
   e["evaluations"] = evaluations;
   e["error"] = bench::omega_error(x, exact);
   e["seconds"] = seconds;
-  bench::detail("  %-6s %-15s tol %-7.0e %6zu steps %5zu rejected %7lld evaluations error %.2e %8.3f ms\n",
-              e["method"].get<std::string>().c_str(), controller, tol, steps, rejected,
-              evaluations, e["error"].get<double>(), seconds * 1e3);
+  bench::detail(
+      "  %-6s %-15s tol %-7.0e %6zu steps %5zu rejected %7lld evaluations error %.2e %8.3f ms\n",
+      e["method"].get<std::string>().c_str(), controller, tol, steps, rejected, evaluations,
+      e["error"].get<double>(), seconds * 1e3);
   return e;
 }
 
@@ -368,8 +371,8 @@ void controllers(const Problem& p, const rigid::FreeBodyState& exact, Json& out)
   namespace odeint = boost::numeric::odeint;
   for (int k = 4; k <= 12; k += 2) {
     const double tol = std::pow(10.0, -k);
-    out.push_back(controller_run<Tableau>(p, exact, tol, "PI",
-                                          rigid::PiStepAdjuster(Tableau::kErrorOrder)));
+    out.push_back(
+        controller_run<Tableau>(p, exact, tol, "PI", rigid::PiStepAdjuster(Tableau::kErrorOrder)));
     out.push_back(controller_run<Tableau>(p, exact, tol, "odeint default",
                                           odeint::default_step_adjuster<double, double>()));
   }
@@ -440,8 +443,8 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
     raw["L_rel_change"] = std::abs(L.norm() - p.L0_body.norm()) / p.L0_body.norm();
     raw["quaternion_norm_change"] = std::abs(q.norm() - 1.0);
     bench::detail("  %-22s |L| change after %lld steps %.2e, |q| - 1 %.2e\n",
-                raw["solver"].get<std::string>().c_str(), n_long, raw["L_rel_change"].get<double>(),
-                raw["quaternion_norm_change"].get<double>());
+                  raw["solver"].get<std::string>().c_str(), n_long,
+                  raw["L_rel_change"].get<double>(), raw["quaternion_norm_change"].get<double>());
     out.push_back(raw);
   }
 }

@@ -54,7 +54,8 @@ TEST_CASE("balancing: the small-angle m0 agrees with the exact one to first orde
   }
 }
 
-TEST_CASE("balancing: eqs. 60-61 for the text's wheel are 83.4 g and 78.5 g, not its 76 g (errata)") {
+TEST_CASE(
+    "balancing: eqs. 60-61 for the text's wheel are 83.4 g and 78.5 g, not its 76 g (errata)") {
   const CrookedWheel wheel = text_wheel();
   // Eq. 60 solved for m0 and eq. 61, written out here for m = 10 kg, a = 0.18 m,
   // b = 0.05 m, theta = 1 deg: m0 = tan(2 theta) m a^2 / 4 / (4 a b - 2 tan(2 theta)(a^2 - b^2))

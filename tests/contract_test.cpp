@@ -1,10 +1,9 @@
 // The lab contract (design.md) for every lab in the one list, without naming
 // any: --help, the table, the JSON with its units, and exit status 2 with one
 // line naming the option for input no lab accepts.
-#include <catch2/catch.hpp>
-
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 
@@ -181,8 +180,9 @@ TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries ar
   // until the run ends, and the handler removes them; nothing lands.
   for (const char* sig : {"TERM", "INT"}) {
     INFO(sig);
-    run_lab("poinsot", std::string("--json --figure-size 8192x8192 --figures '") + dir.string() +
-                           "'", std::string("timeout -s ") + sig + " 1");
+    run_lab("poinsot",
+            std::string("--json --figure-size 8192x8192 --figures '") + dir.string() + "'",
+            std::string("timeout -s ") + sig + " 1");
     CHECK(fs::is_empty(dir));
   }
   // A temporary a killed run left (its pid gone) is removed by the next writer.
@@ -210,8 +210,8 @@ TEST_CASE("contract: tiny and huge legal inputs give true norms and angles, or a
   for (const char* scale : {"1e-60", "1e60"}) {
     INFO(scale);
     const std::string s = scale;
-    const auto run =
-        run_lab("lamina_tensor", "--json --mass " + s + " --a " + s + " --b " + s + " --omega " + s);
+    const auto run = run_lab("lamina_tensor",
+                             "--json --mass " + s + " --a " + s + " --b " + s + " --omega " + s);
     REQUIRE(run.status == 0);
     const auto j = run.json();
     const auto& r = j["results"];
@@ -235,7 +235,8 @@ TEST_CASE("contract: a step asked for that is longer than the run is refused, no
     INFO(lab);
     const auto run = run_lab(lab, "--json --method rk4 --step 100 --t-end 1");
     CHECK(run.status == 2);
-    CHECK(run.err.rfind(std::string(lab) + ": error: --step: 100 s is longer than the run", 0) == 0);
+    CHECK(run.err.rfind(std::string(lab) + ": error: --step: 100 s is longer than the run", 0) ==
+          0);
   }
 }
 
@@ -264,7 +265,8 @@ TEST_CASE("contract: a missing value is said as such, not as a vector's count") 
   CHECK(vector.err.rfind("poinsot: error: --omega: must be three numbers X,Y,Z", 0) == 0);
 }
 
-TEST_CASE("contract: the JSON says which version ran, the command as given and every file written") {
+TEST_CASE(
+    "contract: the JSON says which version ran, the command as given and every file written") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_prov_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -272,11 +274,13 @@ TEST_CASE("contract: the JSON says which version ran, the command as given and e
   // An upper-case X in the size and a prefix on the figures' names.
   const auto run = run_lab("tire_balancing", "--json --figures '" + dir.string() +
                                                  "' --figure-size 800X600 --figure-prefix book- "
-                                                 "--csv '" + csv + "'");
+                                                 "--csv '" +
+                                                 csv + "'");
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const std::string version = j["version"];
-  CHECK(run_lab("tire_balancing", "--version").out == "tire_balancing (rigidlab) " + version + "\n");
+  CHECK(run_lab("tire_balancing", "--version").out ==
+        "tire_balancing (rigidlab) " + version + "\n");
   // The command as given: the program, then each argument.
   REQUIRE(j["command"].size() == 10);
   CHECK(j["command"][1] == "--json");
@@ -313,7 +317,8 @@ TEST_CASE("contract: the textbook's values as numbers in the result's unit, the 
 }
 
 TEST_CASE("contract: a bad figure prefix or size is refused naming the option") {
-  for (const char* args : {"--figure-prefix ../x", "--figure-prefix .hidden", "--figure-prefix 'a b'"}) {
+  for (const char* args :
+       {"--figure-prefix ../x", "--figure-prefix .hidden", "--figure-prefix 'a b'"}) {
     const auto run = run_lab("poinsot", args);
     CHECK(run.status == 2);
     CHECK(run.err.rfind("poinsot: error: --figure-prefix: ", 0) == 0);

@@ -4,15 +4,15 @@
 // figure with the caption the lab gives it. On a mismatch the actual, expected
 // and difference PNGs are written to build/figure-diff/. To accept new goldens:
 // `cmake --build build --target figures` and commit figures/ and README.md.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstdlib>
-#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "lab_common.h"
 #include "rigid/render/image.h"
@@ -59,7 +59,6 @@ std::vector<std::uint8_t> unmatched(const rigid::render::Image& a, const rigid::
   }
   return out;
 }
-
 
 // The verdict of one comparison: empty when the figure matches.
 std::string mismatch(const rigid::render::Image& actual, const rigid::render::Image& expected) {
@@ -129,7 +128,8 @@ void check_lab_figures(const std::string& lab) {
     // an earlier run's, for a figure that now matches, go.
     const fs::path out = fs::path(RIGID_BINARY_DIR) / "figure-diff" / actual_dir.filename();
     const std::string stem = fs::path(file).stem().string();
-    for (const char* kind : {".actual.png", ".expected.png", ".diff.png"}) fs::remove(out / (stem + kind));
+    for (const char* kind : {".actual.png", ".expected.png", ".diff.png"})
+      fs::remove(out / (stem + kind));
     if (!why.empty()) {
       fs::create_directories(out);
       rigid::render::write_png(actual, (out / (stem + ".actual.png")).string());
@@ -147,15 +147,17 @@ void check_lab_figures(const std::string& lab) {
 
 TEST_CASE("figures: every lab matches its goldens") {
   for (const std::string& lab : all_labs()) {
-    DYNAMIC_SECTION(lab) { check_lab_figures(lab); }
+    DYNAMIC_SECTION(lab) {
+      check_lab_figures(lab);
+    }
   }
 }
 
 TEST_CASE("figures: without a GL context the numbers still print, with one error line") {
   const fs::path dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / "no-context";
   fs::remove_all(dir);
-  const auto run = run_lab("tire_balancing", "--json --figures " + dir.string(),
-                           "RIGID_GL_BACKEND=none");
+  const auto run =
+      run_lab("tire_balancing", "--json --figures " + dir.string(), "RIGID_GL_BACKEND=none");
   CHECK(run.status == 1);
   CHECK(run.one_error_line());
   CHECK(run.err.rfind("tire_balancing: error: --figures:", 0) == 0);
@@ -198,8 +200,8 @@ TEST_CASE("figures: --timing says where each figure's time went and it adds up t
 
 TEST_CASE("figures: the comparison itself fails on what a reader would see changed") {
   using rigid::render::Image;
-  const Image golden =
-      rigid::render::read_png((fs::path(RIGID_SOURCE_DIR) / "figures" / "tire_balancing_mass.png").string());
+  const Image golden = rigid::render::read_png(
+      (fs::path(RIGID_SOURCE_DIR) / "figures" / "tire_balancing_mass.png").string());
   const int W = golden.width, H = golden.height;
   CHECK(mismatch(golden, golden).empty());
   // A copy with a block of pixels taken from elsewhere (text replaced: "83.4 g" by
@@ -221,22 +223,27 @@ TEST_CASE("figures: the comparison itself fails on what a reader would see chang
     const char* what;
     Image image;
   } altered[] = {
-      {"text replaced", copy_block(golden, tx, std::max(ty - 10, 0), tx + 60, std::max(ty - 10, 0), 30, 30)},
-      {"label moved 20 px", copy_block(golden, tx - 40, std::max(ty - 8, 0), tx - 20, std::max(ty - 8, 0), 120, 40)},
-      {"swatch recoloured", [&] {
+      {"text replaced",
+       copy_block(golden, tx, std::max(ty - 10, 0), tx + 60, std::max(ty - 10, 0), 30, 30)},
+      {"label moved 20 px",
+       copy_block(golden, tx - 40, std::max(ty - 8, 0), tx - 20, std::max(ty - 8, 0), 120, 40)},
+      {"swatch recoloured",
+       [&] {
          Image img = golden;
          for (int y = 0; y < 20; ++y)
            for (int x = 0; x < 30; ++x) img.at(W / 2 + x, H / 2 + y)[1] = 0;
          return img;
        }()},
-      {"marker erased", [&] {
+      {"marker erased",
+       [&] {
          Image img = golden;
          for (int y = 0; y < 11; ++y)
            for (int x = 0; x < 11; ++x)
              for (int c = 0; c < 3; ++c) img.at(tx + x, ty + y)[c] = 255;
          return img;
        }()},
-      {"background faint grey", [&] {
+      {"background faint grey",
+       [&] {
          Image img = golden;
          for (auto& v : img.rgb) v = static_cast<std::uint8_t>(v > 245 ? 235 : v);
          return img;
@@ -253,7 +260,9 @@ TEST_CASE("figures: the comparison itself fails on what a reader would see chang
   // The renderer's own variation between backends is nothing: EGL draws it alike.
   const fs::path dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / "comparison-egl";
   fs::remove_all(dir);
-  const auto run = run_lab("tire_balancing", "--json --figures " + dir.string(), "RIGID_GL_BACKEND=egl");
+  const auto run =
+      run_lab("tire_balancing", "--json --figures " + dir.string(), "RIGID_GL_BACKEND=egl");
   REQUIRE(run.status == 0);
-  CHECK(mismatch(rigid::render::read_png((dir / "tire_balancing_mass.png").string()), golden).empty());
+  CHECK(mismatch(rigid::render::read_png((dir / "tire_balancing_mass.png").string()), golden)
+            .empty());
 }

@@ -235,13 +235,18 @@ TEST_CASE("inertia: every primitive with unequal sides is its standard closed fo
       {"thin rod along x", rigid::thin_rod(m, c), {0, m * c * c / 12, m * c * c / 12}},
       {"thin ring in x-y", rigid::thin_ring(m, a), {m * a * a / 2, m * a * a / 2, m * a * a}},
       {"thin disk in x-y", rigid::thin_disk(m, a), {m * a * a / 4, m * a * a / 4, m * a * a / 2}},
-      {"rectangular lamina a x b", rigid::rectangular_lamina(m, a, b),
+      {"rectangular lamina a x b",
+       rigid::rectangular_lamina(m, a, b),
        {m * b * b / 12, m * a * a / 12, m * (a * a + b * b) / 12}},
-      {"solid box a x b x c", rigid::solid_box(m, a, b, c),
+      {"solid box a x b x c",
+       rigid::solid_box(m, a, b, c),
        {m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12}},
-      {"solid ellipsoid a, b, c", rigid::solid_ellipsoid(m, a, b, c),
+      {"solid ellipsoid a, b, c",
+       rigid::solid_ellipsoid(m, a, b, c),
        {m * (b * b + c * c) / 5, m * (a * a + c * c) / 5, m * (a * a + b * b) / 5}},
-      {"solid sphere", rigid::solid_sphere(m, b), {0.4 * m * b * b, 0.4 * m * b * b, 0.4 * m * b * b}},
+      {"solid sphere",
+       rigid::solid_sphere(m, b),
+       {0.4 * m * b * b, 0.4 * m * b * b, 0.4 * m * b * b}},
   };
   for (const auto& k : cases) {
     INFO(k.name);

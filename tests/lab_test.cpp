@@ -1,10 +1,10 @@
 // Each lab's own contract: its JSON keys, the text's numbers at its defaults,
 // and exit status 2 with one line naming the option for its own bad input
 // (what every lab shares is in contract_test.cpp).
-#include <catch2/catch.hpp>
 #include <algorithm>
-#include <filesystem>
+#include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 
 #include "lab_common.h"
 
@@ -298,7 +298,8 @@ TEST_CASE("poinsot: omega is reported at exactly the t_end asked for, by every f
     INFO(c);
     const auto run =
         run_lab("poinsot", std::string("--json --inertia 1.2,2.3,3.1 --omega 0.3,1.7,-0.4 "
-                                       "--t-end 37.5 ") + c);
+                                       "--t-end 37.5 ") +
+                               c);
     REQUIRE(run.status == 0);
     const auto j = run.json();
     CHECK(double(j["results"]["t_end_s"]) == 37.5);
@@ -308,9 +309,9 @@ TEST_CASE("poinsot: omega is reported at exactly the t_end asked for, by every f
 TEST_CASE("poinsot: stress - nearly spherical, flat, fast and near-separatrix bodies") {
   const char* cases[] = {
       "--inertia 1,1.000000001,1.000000002 --omega 1,1,1",  // nearly spherical: k' -> 0
-      "--inertia 1,2,3 --omega 0.3,1,0.2",                   // a lamina, I3 = I1 + I2
-      "--omega 1e6,1e6,1e6",                                 // huge spin
-      "--inertia 3,5,7 --omega 0,0.4,0.00111",               // next to the separatrix
+      "--inertia 1,2,3 --omega 0.3,1,0.2",                  // a lamina, I3 = I1 + I2
+      "--omega 1e6,1e6,1e6",                                // huge spin
+      "--inertia 3,5,7 --omega 0,0.4,0.00111",              // next to the separatrix
       "--inertia 3,5,7 --omega 0,0.4,0.00111 --method rkf78 --project"};
   for (const char* args : cases) {
     INFO(args);
@@ -375,10 +376,9 @@ TEST_CASE("football: the default football is prolate, its body cone rolls outsid
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const auto& r = j["results"];
-  for (const char* key :
-       {"body_precession_rate_rad_s", "space_precession_rate_rad_s", "theta_deg",
-        "body_cone_half_angle_deg", "space_cone_half_angle_deg", "cones_touch",
-        "body_precession_period_s", "space_precession_period_s"})
+  for (const char* key : {"body_precession_rate_rad_s", "space_precession_rate_rad_s", "theta_deg",
+                          "body_cone_half_angle_deg", "space_cone_half_angle_deg", "cones_touch",
+                          "body_precession_period_s", "space_precession_period_s"})
     CHECK(r.contains(key));
   CHECK(r["cones_touch"] == "outside");
   CHECK(double(r["body_precession_rate_rad_s"]) < 0);  // prolate: omega turns clockwise about 3
@@ -453,10 +453,14 @@ TEST_CASE("football: a sphere has no cones and no body period") {
 
 TEST_CASE("football: bad input exits 2 with one line naming the option") {
   const std::pair<const char*, const char*> cases[] = {
-      {"--alpha-deg 0", "--alpha-deg"},   {"--alpha-deg 90", "--alpha-deg"},
-      {"--alpha-deg nan", "--alpha-deg"}, {"--inertia 1,3", "--inertia"},
-      {"--inertia -1,1", "--inertia"},    {"--inertia 1", "--inertia"},
-      {"--preset moon", "--preset"},      {"--omega 0", "--omega"},
+      {"--alpha-deg 0", "--alpha-deg"},
+      {"--alpha-deg 90", "--alpha-deg"},
+      {"--alpha-deg nan", "--alpha-deg"},
+      {"--inertia 1,3", "--inertia"},
+      {"--inertia -1,1", "--inertia"},
+      {"--inertia 1", "--inertia"},
+      {"--preset moon", "--preset"},
+      {"--omega 0", "--omega"},
       {"--preset earth --inertia 1,1", "--inertia"},
   };
   rigid::test::check_bad_inputs("football", cases);
@@ -483,7 +487,8 @@ struct TextRacquet {
   double ma = 0.15, a = 0.13, ml = 0.18, l = 0.38;
   double R = ml * (a + l / 2) / (ma + ml);
   double I1 = ma * a * a / 2;
-  double I2 = ma * a * a / 2 + ma * R * R + ml * l * l / 12 + ml * (a + l / 2 - R) * (a + l / 2 - R);
+  double I2 =
+      ma * a * a / 2 + ma * R * R + ml * l * l / 12 + ml * (a + l / 2 - R) * (a + l / 2 - R);
   double I3 = I1 + I2;
 };
 }  // namespace
@@ -524,7 +529,8 @@ TEST_CASE("tennis_racquet: defaults reproduce eqs. 83-85 and the flip about axis
         Approx(double(r["wobble_frequencies_rad_s"][0])).epsilon(1e-4));
   CHECK(double(r["wobble_frequencies_measured_rad_s"][1]) ==
         Approx(double(r["wobble_frequencies_rad_s"][1])).epsilon(1e-4));
-  // Flips every half-period of omega_2; the first a quarter-period after launch (omega_2 at its peak).
+  // Flips every half-period of omega_2; the first a quarter-period after launch (omega_2 at its
+  // peak).
   const double period = r["polhode_period_s"];
   CHECK(double(r["flip_interval_s"]) == Approx(period / 2).epsilon(1e-15));
   CHECK(double(r["first_flip_s"]) == Approx(period / 4).epsilon(1e-9));
@@ -539,7 +545,8 @@ TEST_CASE("tennis_racquet: defaults reproduce eqs. 83-85 and the flip about axis
   CHECK(double(r["max_error_vs_exact"]) < 1e-7);
   CHECK(double(r["t_end_s"]) == period);
   bool errata = false;
-  for (const auto& note : j["notes"]) errata |= note.get<std::string>().rfind("errata: eq. 92", 0) == 0;
+  for (const auto& note : j["notes"])
+    errata |= note.get<std::string>().rfind("errata: eq. 92", 0) == 0;
   CHECK(errata);
 }
 
@@ -558,8 +565,8 @@ TEST_CASE("tennis_racquet: spins about axes 1 and 3 are stable and do not flip")
     // about 3, out of the plane across L by atan(I1 p / (I3 sqrt(1 - p^2))).
     const TextRacquet t;
     const double p = 0.01, c = std::sqrt(1 - p * p);
-    const double expected = axis[0] == '1' ? std::atan(t.I2 * p / (t.I1 * c))
-                                           : std::atan(t.I1 * p / (t.I3 * c));
+    const double expected =
+        axis[0] == '1' ? std::atan(t.I2 * p / (t.I1 * c)) : std::atan(t.I1 * p / (t.I3 * c));
     CHECK(double(r["handle_excursion_max_deg"]) == Approx(expected * 180 / M_PI).epsilon(1e-9));
     // The run spins about the axis asked: the polhode period is 2 pi over the measured wobble.
     const int k = axis[0] == '1' ? 0 : 1;
@@ -573,12 +580,14 @@ TEST_CASE("tennis_racquet: spins about axes 1 and 3 are stable and do not flip")
 TEST_CASE("tennis_racquet: --csv holds the exact motion and the integrator's omega beside it") {
   const std::string path = "/tmp/rigid_racquet_test_" + std::to_string(::getpid()) + ".csv";
   std::remove(path.c_str());
-  const auto run = run_lab("tennis_racquet", "--json --method rkf78 --tolerance 1e-12 --csv " + path);
+  const auto run =
+      run_lab("tennis_racquet", "--json --method rkf78 --tolerance 1e-12 --csv " + path);
   REQUIRE(run.status == 0);
   const double t_end = run.json()["results"]["t_end_s"];
   const rigid::test::Csv csv = rigid::test::read_csv(path);
-  CHECK(csv.header == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,omega1_integrated,omega2_integrated,"
-                      "omega3_integrated");
+  CHECK(csv.header ==
+        "t_s,omega1,omega2,omega3,qw,qx,qy,qz,omega1_integrated,omega2_integrated,"
+        "omega3_integrated");
   std::size_t rows = 0;
   double last_t = -1, worst = 0, worst_norm = 0;
   for (const std::vector<double>& v : csv.rows) {
@@ -586,7 +595,8 @@ TEST_CASE("tennis_racquet: --csv holds the exact motion and the integrator's ome
     ++rows;
     last_t = v[0];
     // |omega| of a free racquet is not constant, but T and |L| are; the unit quaternion is unit.
-    worst_norm = std::max(worst_norm, std::abs(std::hypot(std::hypot(v[4], v[5]), std::hypot(v[6], v[7])) - 1));
+    worst_norm = std::max(worst_norm,
+                          std::abs(std::hypot(std::hypot(v[4], v[5]), std::hypot(v[6], v[7])) - 1));
     for (int i = 1; i <= 3; ++i) worst = std::max(worst, std::abs(v[i] - v[i + 7]));
   }
   CHECK(rows > 100);
@@ -599,12 +609,18 @@ TEST_CASE("tennis_racquet: --csv holds the exact motion and the integrator's ome
 
 TEST_CASE("tennis_racquet: bad input exits 2 with one line naming the option") {
   const std::pair<const char*, const char*> cases[] = {
-      {"--spin-axis 4", "--spin-axis"},        {"--spin-axis 0", "--spin-axis"},
-      {"--perturbation 0", "--perturbation"},  {"--perturbation 0.5", "--perturbation"},
-      {"--perturbation nan", "--perturbation"}, {"--perturbation -0.1", "--perturbation"},
-      {"--head-mass -1", "--head-mass"},       {"--head-radius 0", "--head-radius"},
-      {"--handle-mass inf", "--handle-mass"},  {"--handle-length x", "--handle-length"},
-      {"--omega 0", "--omega"},                {"--t-end -1", "--t-end"},
+      {"--spin-axis 4", "--spin-axis"},
+      {"--spin-axis 0", "--spin-axis"},
+      {"--perturbation 0", "--perturbation"},
+      {"--perturbation 0.5", "--perturbation"},
+      {"--perturbation nan", "--perturbation"},
+      {"--perturbation -0.1", "--perturbation"},
+      {"--head-mass -1", "--head-mass"},
+      {"--head-radius 0", "--head-radius"},
+      {"--handle-mass inf", "--handle-mass"},
+      {"--handle-length x", "--handle-length"},
+      {"--omega 0", "--omega"},
+      {"--t-end -1", "--t-end"},
       {"--method dopri5 --project", "--project"},
       {"--method rk4 --step 1e-9", "--step"},
   };
@@ -615,7 +631,7 @@ TEST_CASE("tennis_racquet: every integrator cross-checks the exact motion within
   const std::pair<const char*, double> methods[] = {
       // Adaptive at 1e-10 over one period; fixed steps at period/2000: rk4's error
       // (h lambda)^4 ~ 1e-10 per unit time, the splitting's (h lambda)^2 ~ 1e-5.
-      {"dopri5", 1e-7}, {"rkf78", 1e-7}, {"bulirsch-stoer", 1e-6},
+      {"dopri5", 1e-7}, {"rkf78", 1e-7},     {"bulirsch-stoer", 1e-6},
       {"rk4", 1e-7},    {"splitting", 1e-3}, {"splitting4", 1e-7},
   };
   for (const auto& [method, bound] : methods) {
@@ -655,7 +671,8 @@ TEST_CASE("top_nutation: defaults reproduce section 8.1's numbers, exactly, with
   // (c) at 30 deg: the roots of I cos(30) x^2 - Is S x + m g l = 0, by the quadratic formula
   // written out (no cancellation worth a digit here): 7.764 and 26.20 rad/s.
   const double c = std::cos(M_PI / 6), D = Is * Is * S * S - 4 * mgl * I * c;
-  const double slow = (Is * S - std::sqrt(D)) / (2 * I * c), fast = (Is * S + std::sqrt(D)) / (2 * I * c);
+  const double slow = (Is * S - std::sqrt(D)) / (2 * I * c),
+               fast = (Is * S + std::sqrt(D)) / (2 * I * c);
   CHECK(double(r["steady_precession_rates_rad_s"][0]) == Approx(slow).epsilon(1e-12));
   CHECK(double(r["steady_precession_rates_rad_s"][1]) == Approx(fast).epsilon(1e-14));
   CHECK(prints_as(r["steady_precession_rates_rad_s"][1], 26.2, 1));
@@ -682,9 +699,11 @@ TEST_CASE("top_nutation: defaults reproduce section 8.1's numbers, exactly, with
 }
 
 TEST_CASE("top_nutation: integrated runs report their theta error and keep the invariants") {
-  for (const char* method : {"splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"}) {
+  for (const char* method :
+       {"splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"}) {
     INFO(method);
-    const auto run = run_lab("top_nutation", std::string("--json --phidot0 3 --thetadot0 0.5 --method ") + method);
+    const auto run = run_lab("top_nutation",
+                             std::string("--json --phidot0 3 --thetadot0 0.5 --method ") + method);
     REQUIRE(run.status == 0);
     const auto j = run.json();
     const auto& r = j["results"];
@@ -742,7 +761,8 @@ TEST_CASE("top_nutation: --csv holds theta beside the exact theta, and a unit qu
   REQUIRE(run.status == 0);
   const double t_end = run.json()["results"]["t_end_s"];
   const rigid::test::Csv csv = rigid::test::read_csv(path);
-  CHECK(csv.header == "t_s,theta_rad,theta_exact_rad,omega1,omega2,omega3,qw,qx,qy,qz,energy_error_rel");
+  CHECK(csv.header ==
+        "t_s,theta_rad,theta_exact_rad,omega1,omega2,omega3,qw,qx,qy,qz,energy_error_rel");
   std::size_t rows = 0;
   double last_t = -1, worst = 0, worst_norm = 0, lowest = 10, highest = -10;
   for (const std::vector<double>& v : csv.rows) {
@@ -750,7 +770,8 @@ TEST_CASE("top_nutation: --csv holds theta beside the exact theta, and a unit qu
     ++rows;
     last_t = v[0];
     worst = std::max(worst, std::abs(v[1] - v[2]));
-    worst_norm = std::max(worst_norm, std::abs(std::hypot(std::hypot(v[6], v[7]), std::hypot(v[8], v[9])) - 1));
+    worst_norm = std::max(worst_norm,
+                          std::abs(std::hypot(std::hypot(v[6], v[7]), std::hypot(v[8], v[9])) - 1));
     lowest = std::min(lowest, v[2]);
     highest = std::max(highest, v[2]);
   }
@@ -804,7 +825,8 @@ TEST_CASE("labs: extreme but legal inputs end with finite numbers or one line, n
   }
 }
 
-TEST_CASE("lamina_tensor: the paddle and the block at other inputs, against eqs. 40-43 typed here") {
+TEST_CASE(
+    "lamina_tensor: the paddle and the block at other inputs, against eqs. 40-43 typed here") {
   const auto run = run_lab("lamina_tensor", "--json --mass 3 --a 0.4 --b 0.9 --c 0.25 --examples");
   REQUIRE(run.status == 0);
   const auto j = run.json();
@@ -813,7 +835,8 @@ TEST_CASE("lamina_tensor: the paddle and the block at other inputs, against eqs.
   // The model paddle (section 2.1): (1/8, 31/24, 17/12) m a^2 about its centre of mass.
   const double paddle[] = {m * a * a / 8, 31.0 / 24 * m * a * a, 17.0 / 12 * m * a * a};
   // The block a x b x c (eq. 40): m (b^2 + c^2)/12, m (a^2 + c^2)/12, m (a^2 + b^2)/12.
-  const double block[] = {m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12};
+  const double block[] = {m * (b * b + c * c) / 12, m * (a * a + c * c) / 12,
+                          m * (a * a + b * b) / 12};
   for (int i = 0; i < 3; ++i) {
     CHECK(double(r["paddle_principal_moments"][i]) == Approx(paddle[i]).epsilon(1e-14));
     CHECK(double(r["block_principal_moments"][i]) == Approx(block[i]).epsilon(1e-14));
@@ -835,8 +858,8 @@ TEST_CASE("tire_balancing: every CSV row's torque is dL/dt, normal to L, of the 
   for (std::size_t i = 0; i < csv.rows.size(); ++i) {
     const auto& v = csv.rows[i];
     const double L = std::hypot(v[1], v[2], v[3]), N = std::hypot(v[4], v[5], v[6]);
-    CHECK(L == Approx(L0).epsilon(1e-14));                      // L turns, keeps its size
-    CHECK(N == Approx(torque).epsilon(1e-14));                  // the reported torque, every row
+    CHECK(L == Approx(L0).epsilon(1e-14));      // L turns, keeps its size
+    CHECK(N == Approx(torque).epsilon(1e-14));  // the reported torque, every row
     CHECK(std::abs(v[1] * v[4] + v[2] * v[5] + v[3] * v[6]) <= 1e-12 * L * N);  // N normal to L
     if (i > 0 && i + 1 < csv.rows.size()) {
       // N = dL/dt by central differences: error (dt^2 / 6) |d^3 L / dt^3| = (w dt)^2 / 6 of N.
@@ -881,7 +904,9 @@ TEST_CASE("poinsot: the CSV's rows agree with the reported end state and drifts"
 // few operations each, so a few ulps; 1e-13 relative leaves room for libm.
 namespace {
 constexpr double kDeg = M_PI / 180;
-double value(const nlohmann::json& r, const char* key) { return r.at(key).get<double>(); }
+double value(const nlohmann::json& r, const char* key) {
+  return r.at(key).get<double>();
+}
 }  // namespace
 
 TEST_CASE("tire_balancing: another wheel against eqs. 55-61 typed here") {
@@ -929,10 +954,13 @@ TEST_CASE("poinsot: another body's period against Landau's formula and std::comp
   const double rate = std::sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3));
   const double k2 = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1));
   // libstdc++'s K(k) (Carlson's R_F of its own), a second implementation beside Boost's.
-  CHECK(value(r, "polhode_period_s") == Approx(4 * std::comp_ellint_1(std::sqrt(k2)) / rate).epsilon(1e-13));
+  CHECK(value(r, "polhode_period_s") ==
+        Approx(4 * std::comp_ellint_1(std::sqrt(k2)) / rate).epsilon(1e-13));
   for (int i = 0; i < 3; ++i) {
-    CHECK(double(r["energy_ellipsoid_semi_axes"][i]) == Approx(std::sqrt(E2 / I[i])).epsilon(1e-15));
-    CHECK(double(r["momentum_ellipsoid_semi_axes"][i]) == Approx(std::sqrt(L2) / I[i]).epsilon(1e-15));
+    CHECK(double(r["energy_ellipsoid_semi_axes"][i]) ==
+          Approx(std::sqrt(E2 / I[i])).epsilon(1e-15));
+    CHECK(double(r["momentum_ellipsoid_semi_axes"][i]) ==
+          Approx(std::sqrt(L2) / I[i]).epsilon(1e-15));
   }
   // Three periods later (the default t_end) omega is back where it started.
   for (int i = 0; i < 3; ++i) CHECK(double(r["omega_end"][i]) == Approx(w[i]).margin(1e-13));
@@ -952,28 +980,34 @@ TEST_CASE("football: an oblate body at another spin and angle against eqs. 109 a
   CHECK(value(r, "theta_deg") == Approx(theta / kDeg).epsilon(1e-14));
   CHECK(value(r, "space_cone_half_angle_deg") == Approx((alpha - theta) / kDeg).epsilon(1e-12));
   CHECK(r["cones_touch"] == "inside");  // oblate: theta < alpha
-  CHECK(value(r, "body_precession_period_s") == Approx(2 * M_PI * I / (omega * c * (Is - I))).epsilon(1e-14));
+  CHECK(value(r, "body_precession_period_s") ==
+        Approx(2 * M_PI * I / (omega * c * (Is - I))).epsilon(1e-14));
 }
 
 TEST_CASE("tennis_racquet: another racquet against eqs. 83-85 and 94-101 typed here") {
   const double ma = 0.2, a = 0.15, ml = 0.1, l = 0.3, omega = 7;
-  const auto run = run_lab("tennis_racquet", "--json --head-mass 0.2 --head-radius 0.15 "
-                                             "--handle-mass 0.1 --handle-length 0.3 --omega 7");
+  const auto run = run_lab("tennis_racquet",
+                           "--json --head-mass 0.2 --head-radius 0.15 "
+                           "--handle-mass 0.1 --handle-length 0.3 --omega 7");
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const auto& r = j["results"];
   const double R = ml * (a + l / 2) / (ma + ml);  // eq. 83: the centre of mass from the head's
   CHECK(value(r, "cm_offset_m") == Approx(R).epsilon(1e-15));
-  const double I1 = ma * a * a / 2;                                                  // eq. 84
-  const double I2 = ma * a * a / 2 + ma * R * R + ml * l * l / 12 + ml * (a + l / 2 - R) * (a + l / 2 - R);  // eq. 85
+  const double I1 = ma * a * a / 2;  // eq. 84
+  const double I2 = ma * a * a / 2 + ma * R * R + ml * l * l / 12 +
+                    ml * (a + l / 2 - R) * (a + l / 2 - R);  // eq. 85
   const double I3 = I1 + I2;
   CHECK(double(r["principal_moments"][0]) == Approx(I1).epsilon(1e-14));
   CHECK(double(r["principal_moments"][1]) == Approx(I2).epsilon(1e-14));
   CHECK(double(r["principal_moments"][2]) == Approx(I3).epsilon(1e-14));
   // Linearised Euler equations about each axis (eqs. 94-101 without eq. 92's rounding).
-  CHECK(value(r, "growth_rate_per_s") == Approx(omega * std::sqrt((I2 - I1) * (I3 - I2) / (I1 * I3))).epsilon(1e-13));
-  CHECK(double(r["wobble_frequencies_rad_s"][0]) == Approx(omega * std::sqrt((I2 - I1) * (I3 - I1) / (I2 * I3))).epsilon(1e-13));
-  CHECK(double(r["wobble_frequencies_rad_s"][1]) == Approx(omega * std::sqrt((I3 - I1) * (I3 - I2) / (I1 * I2))).epsilon(1e-13));
+  CHECK(value(r, "growth_rate_per_s") ==
+        Approx(omega * std::sqrt((I2 - I1) * (I3 - I2) / (I1 * I3))).epsilon(1e-13));
+  CHECK(double(r["wobble_frequencies_rad_s"][0]) ==
+        Approx(omega * std::sqrt((I2 - I1) * (I3 - I1) / (I2 * I3))).epsilon(1e-13));
+  CHECK(double(r["wobble_frequencies_rad_s"][1]) ==
+        Approx(omega * std::sqrt((I3 - I1) * (I3 - I2) / (I1 * I2))).epsilon(1e-13));
   // The launch: omega = 7 (0, sqrt(1 - p^2), p), p = 0.01 along axis 3; its period by Landau.
   const double p = 0.01, w[3] = {0, omega * std::sqrt(1 - p * p), omega * p}, Is[3] = {I1, I2, I3};
   double E2 = 0, L2 = 0;
@@ -982,27 +1016,33 @@ TEST_CASE("tennis_racquet: another racquet against eqs. 83-85 and 94-101 typed h
   const double rate = std::sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3));
   const double k2 = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1));
   // Near the separatrix (k'^2 ~ p^2) K is conditioned by ~1/k'^2 ~ 1e4: 1e-11.
-  CHECK(value(r, "polhode_period_s") == Approx(4 * std::comp_ellint_1(std::sqrt(k2)) / rate).epsilon(1e-11));
+  CHECK(value(r, "polhode_period_s") ==
+        Approx(4 * std::comp_ellint_1(std::sqrt(k2)) / rate).epsilon(1e-11));
   // The spin flips every half period, the first a quarter period in (launched at sn = 0).
   CHECK(value(r, "flip_interval_s") == Approx(value(r, "polhode_period_s") / 2).epsilon(1e-12));
 }
 
 TEST_CASE("top_nutation: another top against eqs. 185-189 and a quadrature of the period") {
   const double m = 1.5, l = 0.06, rd = 0.04, g = 9.8, S = 1500 * 2 * M_PI / 60, theta0 = 50 * kDeg;
-  const auto run = run_lab("top_nutation", "--json --mass 1.5 --arm 0.06 --disk-radius 0.04 "
-                                           "--spin-rpm 1500 --theta0-deg 50");
+  const auto run = run_lab("top_nutation",
+                           "--json --mass 1.5 --arm 0.06 --disk-radius 0.04 "
+                           "--spin-rpm 1500 --theta0-deg 50");
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const auto& r = j["results"];
   const double Is = m * rd * rd / 2, I = m * rd * rd / 4 + m * l * l, mgl = m * g * l;
   CHECK(value(r, "moment_symmetry_kg_m2") == Approx(Is).epsilon(1e-15));
   CHECK(value(r, "moment_transverse_kg_m2") == Approx(I).epsilon(1e-15));
-  CHECK(value(r, "min_spin_rad_s") == Approx(std::sqrt(4 * mgl * I) / Is).epsilon(1e-14));  // eq. 189
-  CHECK(value(r, "horizontal_precession_rate_rad_s") == Approx(mgl / (Is * S)).epsilon(1e-14));  // eq. 185
+  CHECK(value(r, "min_spin_rad_s") ==
+        Approx(std::sqrt(4 * mgl * I) / Is).epsilon(1e-14));  // eq. 189
+  CHECK(value(r, "horizontal_precession_rate_rad_s") ==
+        Approx(mgl / (Is * S)).epsilon(1e-14));  // eq. 185
   // Eq. 187: I cos(theta) phi_dot^2 - Is S phi_dot + m g l = 0, the two roots.
   const double c = std::cos(theta0), D = std::sqrt(Is * Is * S * S - 4 * mgl * I * c);
-  CHECK(double(r["steady_precession_rates_rad_s"][0]) == Approx((Is * S - D) / (2 * I * c)).epsilon(1e-12));
-  CHECK(double(r["steady_precession_rates_rad_s"][1]) == Approx((Is * S + D) / (2 * I * c)).epsilon(1e-13));
+  CHECK(double(r["steady_precession_rates_rad_s"][0]) ==
+        Approx((Is * S - D) / (2 * I * c)).epsilon(1e-12));
+  CHECK(double(r["steady_precession_rates_rad_s"][1]) ==
+        Approx((Is * S + D) / (2 * I * c)).epsilon(1e-13));
   // Released at rest in theta and phi (a cusp): theta_min = theta0, and the period is
   // 2 int_{u1}^{u2} du / sqrt(f(u)), f = beta (u - u1)(u2 - u)(u3 - u), beta = 2 m g l / I;
   // with u = u1 + (u2 - u1) sin^2(x) it is 4 int_0^{pi/2} dx / sqrt(beta (u3 - u)), an
@@ -1046,7 +1086,8 @@ TEST_CASE("labs: which integrator drifts, answered by the table at equal cost, a
     for (const char* other : {"rk4", "dopri5", "rkf78", "bulirsch_stoer"}) {
       INFO(other);
       CHECK(10 * split <
-            std::abs(value(r, ("equal_cost_energy_drift_per_period_rel_" + std::string(other)).c_str())));
+            std::abs(value(
+                r, ("equal_cost_energy_drift_per_period_rel_" + std::string(other)).c_str())));
     }
     CHECK(value(r, "equal_cost_evaluations_per_period") == 200);
   }
@@ -1057,8 +1098,9 @@ TEST_CASE("labs: which integrator drifts, answered by the table at equal cost, a
 }
 
 TEST_CASE("tire_balancing: a straight axle is a balanced wheel, and the spin comes from the road") {
-  const auto run = run_lab("tire_balancing", "--json --tilt-deg 0 --road-speed-m-s 27.8 "
-                                             "--tyre-radius-m 0.31");
+  const auto run = run_lab("tire_balancing",
+                           "--json --tilt-deg 0 --road-speed-m-s 27.8 "
+                           "--tyre-radius-m 0.31");
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const auto& r = j["results"];
@@ -1095,22 +1137,25 @@ TEST_CASE("lamina_tensor: the plate about its diagonal, or an axis by its angle 
   const double Lx = 4.0 / 3 * n[0] - 0.5 * n[1], Ly = -0.5 * n[0] + 1.0 / 3 * n[1];
   CHECK(double(r["angular_momentum"][0]) == Approx(Lx).epsilon(1e-14));
   CHECK(double(r["angular_momentum"][1]) == Approx(Ly).epsilon(1e-14));
-  CHECK(value(r, "angle_L_omega_deg") ==
-        Approx(std::acos((Lx * n[0] + Ly * n[1]) / std::hypot(Lx, Ly)) * 180 / M_PI).epsilon(1e-12));
+  CHECK(
+      value(r, "angle_L_omega_deg") ==
+      Approx(std::acos((Lx * n[0] + Ly * n[1]) / std::hypot(Lx, Ly)) * 180 / M_PI).epsilon(1e-12));
   CHECK(j["inputs"]["axis"] == "diagonal");
   CHECK(!r.contains("paddle_principal_moments"));  // section 2.1 only when asked
   // About the centre the diagonal is no principal axis either (a != b), but Ixy = 0 there.
   const auto angle = run_lab("lamina_tensor", "--json --axis-deg 30");
   REQUIRE(angle.status == 0);
-  CHECK(double(angle.json()["results"]["axis_unit"][0]) == Approx(std::sqrt(3.0) / 2).epsilon(1e-15));
+  CHECK(double(angle.json()["results"]["axis_unit"][0]) ==
+        Approx(std::sqrt(3.0) / 2).epsilon(1e-15));
   CHECK(value(angle.json()["results"], "axis_angle_from_x_deg") == Approx(30).epsilon(1e-14));
 }
 
 TEST_CASE("labs: an option the method does not use is said so, once the run succeeds") {
   const auto run = run_lab("tennis_racquet", "--json --method rk4 --tolerance 1e-6");
   REQUIRE(run.status == 0);
-  CHECK(run.err == "tennis_racquet: warning: --tolerance: rk4 takes a fixed step; it is not used "
-                   "(--step sets it)\n");
+  CHECK(run.err ==
+        "tennis_racquet: warning: --tolerance: rk4 takes a fixed step; it is not used "
+        "(--step sets it)\n");
   bool noted = false;
   const auto j = run.json();
   for (const auto& note : j["notes"]) noted |= note.get<std::string>().rfind("warning:", 0) == 0;
@@ -1130,16 +1175,17 @@ TEST_CASE("poinsot: the motion in words, with its stability and how near the sep
     const char* stability;
     const char* words;  // a part of the sentence
   };
-  for (const Case& c : {
-           Case{"", "stable", "polhode about the largest axis: stable"},
-           Case{"--inertia 1,2,3 --omega 1,0.1,0.05", "stable", "polhode about the smallest axis"},
-           Case{"--inertia 3,3.75,5 --omega 5,1,3.0001", "unstable", "near the separatrix (k'^2 = 6.5e-05)"},
-           Case{"--inertia 3,3.75,5 --omega 5,1,3", "unstable", "on the separatrix"},
-           Case{"--inertia 1,2,3 --omega 0,1,0", "unstable", "intermediate axis 2: unstable"},
-           Case{"--inertia 1,2,3 --omega 0,0,4", "stable", "largest axis 3: stable"},
-           Case{"--inertia 1,2,3 --omega 4,0,0", "stable", "smallest axis 1: stable"},
-           Case{"--inertia 2,2,3 --omega 1,1,0", "neutral", "plane of two equal moments"},
-           Case{"--inertia 2,2,2 --omega 1,2,3", "neutral", "spherical"}}) {
+  for (const Case& c :
+       {Case{"", "stable", "polhode about the largest axis: stable"},
+        Case{"--inertia 1,2,3 --omega 1,0.1,0.05", "stable", "polhode about the smallest axis"},
+        Case{"--inertia 3,3.75,5 --omega 5,1,3.0001", "unstable",
+             "near the separatrix (k'^2 = 6.5e-05)"},
+        Case{"--inertia 3,3.75,5 --omega 5,1,3", "unstable", "on the separatrix"},
+        Case{"--inertia 1,2,3 --omega 0,1,0", "unstable", "intermediate axis 2: unstable"},
+        Case{"--inertia 1,2,3 --omega 0,0,4", "stable", "largest axis 3: stable"},
+        Case{"--inertia 1,2,3 --omega 4,0,0", "stable", "smallest axis 1: stable"},
+        Case{"--inertia 2,2,3 --omega 1,1,0", "neutral", "plane of two equal moments"},
+        Case{"--inertia 2,2,2 --omega 1,2,3", "neutral", "spherical"}}) {
     INFO(c.args);
     const auto run = run_lab("poinsot", std::string("--json ") + c.args);
     REQUIRE(run.status == 0);
@@ -1286,9 +1332,10 @@ TEST_CASE("figures of extreme valid input are drawn, not an error") {
   // top_nutation at S = 1e20: theta flat at 30 deg, its axis range lo + 1 == lo (the
   // ticks threw); lamina_tensor at 1e60: |I n|^2 overflowed and L's arrow had no length
   const std::string dir = "/tmp/rigid_extreme_figures_" + std::to_string(::getpid());
-  for (const auto& [lab, args] : {std::pair<std::string, std::string>{"top_nutation", "--spin 1e20"},
-                                  {"lamina_tensor", "--a 1e60 --b 1e60 --mass 1e60"},
-                                  {"lamina_tensor", "--a 1e-60 --b 1e-60 --mass 1e-60"}}) {
+  for (const auto& [lab, args] :
+       {std::pair<std::string, std::string>{"top_nutation", "--spin 1e20"},
+        {"lamina_tensor", "--a 1e60 --b 1e60 --mass 1e60"},
+        {"lamina_tensor", "--a 1e-60 --b 1e-60 --mass 1e-60"}}) {
     const auto run = rigid::test::run_lab(lab, "--quiet " + args + " --figures " + dir);
     INFO(lab << " " << args << ": " << run.err);
     CHECK(run.status == 0);

@@ -1,20 +1,23 @@
 // Poinsot's construction (sections 4, 4.1): omega lies on both ellipsoids, the
 // polhode is their intersection, the separatrix passes the intermediate axis.
+#include "rigid/poinsot.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "rigid/free_body.h"
 #include "rigid/integrate.h"
-#include "rigid/poinsot.h"
 
 using namespace rigid;
-using Eigen::Vector3d;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
+using Eigen::Vector3d;
 
 namespace {
 // Sum (w_i / a_i)^2: 1 on the ellipsoid of semi-axes a.
-double on_ellipsoid(const Vector3d& w, const Vector3d& a) { return w.cwiseQuotient(a).squaredNorm(); }
+double on_ellipsoid(const Vector3d& w, const Vector3d& a) {
+  return w.cwiseQuotient(a).squaredNorm();
+}
 
 // Energy and |L| are sums of three O(1) products: a few ulps, times the
 // exact solution's own error along one period (the free-body tests bound it by 64 eps).
@@ -123,8 +126,8 @@ TEST_CASE("poinsot: the herpolhode touches the invariable plane, and its turn a 
   o.method = rigid::Method::kRkf78;
   o.abs_tol = o.rel_tol = 1e-13;
   const auto times = rigid::uniform_times(0.0, T, 257);
-  const auto run = rigid::integrate_free_body(I, rigid::make_state(w0, Eigen::Quaterniond::Identity()),
-                                              times, o);
+  const auto run = rigid::integrate_free_body(
+      I, rigid::make_state(w0, Eigen::Quaterniond::Identity()), times, o);
   const Eigen::Vector3d n = L.normalized(), e1 = n.unitOrthogonal(), e2 = n.cross(e1);
   double turned = 0, previous = 0;
   for (std::size_t k = 0; k < run.samples.size(); ++k) {
@@ -140,7 +143,8 @@ TEST_CASE("poinsot: the herpolhode touches the invariable plane, and its turn a 
   CHECK(std::abs(std::remainder(turn, 2 * M_PI)) > 1e-3);
 }
 
-TEST_CASE("poinsot: a symmetric body's herpolhode turns as the space cone does, many turns a period") {
+TEST_CASE(
+    "poinsot: a symmetric body's herpolhode turns as the space cone does, many turns a period") {
   // I1 = I2 exactly, omega nearly across the symmetry axis: the polhode period
   // 2 pi / |Omega| is long (1257 s) and the contact point goes round L ~200 times in it,
   // at |L| / I1 (section 6). Sampling the angle once per ~1/256 period missed whole
@@ -169,7 +173,8 @@ TEST_CASE("poinsot: near a symmetric body the herpolhode turns as the space cone
   const double L = I.vector().cwiseProduct(w0).norm();
   const double Omega = w0.z() * (I3 - I1) / I1;
   const double expected = L / I1 * 2 * M_PI / std::abs(Omega);
-  INFO("turn " << rigid::herpolhode_turn_per_period(motion) << " rad, symmetric limit " << expected);
+  INFO("turn " << rigid::herpolhode_turn_per_period(motion) << " rad, symmetric limit "
+               << expected);
   // the asymmetry 1e-9 moves both by about that much, relatively
   CHECK(std::abs(std::abs(rigid::herpolhode_turn_per_period(motion)) - expected) < 1e-6 * expected);
 }

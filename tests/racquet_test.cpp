@@ -2,11 +2,12 @@
 // text's eqs. 83-85 and Euler's equations, against the exact free body
 // (free_body_exact.h, which knows nothing of the linear analysis) and against
 // an integrated run (integrate.h).
+#include "rigid/racquet.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "rigid/integrate.h"
-#include "rigid/racquet.h"
 
 using Catch::Matchers::WithinRel;
 
@@ -33,7 +34,9 @@ Written written(const rigid::RacquetModel& m) {
 
 }  // namespace
 
-TEST_CASE("racquet: centre of mass and moments are eqs. 83-85 (and the text's 0.175, 1.27, 11.81, 13.08)") {
+TEST_CASE(
+    "racquet: centre of mass and moments are eqs. 83-85 (and the text's 0.175, 1.27, 11.81, "
+    "13.08)") {
   for (const auto& model : {kText, kOther}) {
     const rigid::Racquet r = rigid::make_racquet(model);
     const Written w = written(model);
@@ -75,7 +78,8 @@ TEST_CASE("racquet: the linear rates from Euler's equations, in full and as eq. 
   const auto s2 = rigid::linear_stability(c, 1, spin);
   CHECK(s2.unstable);
   CHECK_THAT(s2.rate, WithinRel(spin * std::sqrt((I3 - I2) * (I2 - I1) / (I1 * I3)), 1e-14));
-  // Axes 1 and 3 wobble at spin sqrt((I3 - I1)(I2 - I1)/(I2 I3)) and spin sqrt((I3 - I1)(I3 - I2)/(I1 I2)).
+  // Axes 1 and 3 wobble at spin sqrt((I3 - I1)(I2 - I1)/(I2 I3)) and spin sqrt((I3 - I1)(I3 -
+  // I2)/(I1 I2)).
   const auto s1 = rigid::linear_stability(c, 0, spin);
   const auto s3 = rigid::linear_stability(c, 2, -spin);  // the sign of the spin does not matter
   CHECK_FALSE(s1.unstable);
@@ -107,7 +111,8 @@ TEST_CASE("racquet: a launch has |omega| = spin and the asked transverse share")
   }
 }
 
-TEST_CASE("racquet: the exact wobble converges to the linear frequency as the disturbance shrinks") {
+TEST_CASE(
+    "racquet: the exact wobble converges to the linear frequency as the disturbance shrinks") {
   // The exact polhode frequency differs from the linear one by O(p^2): each tenfold
   // smaller p cuts the difference a hundredfold (to within 10 %).
   for (const auto& model : {kText, kOther}) {
@@ -188,7 +193,8 @@ TEST_CASE("racquet: flips found on the exact motion match an integrated run's ze
   CHECK(std::isinf(rigid::first_sign_change(stable, 2)));
 }
 
-TEST_CASE("racquet: the handle's largest tilt out of the plane across L is the closed form at L_2 = 0") {
+TEST_CASE(
+    "racquet: the handle's largest tilt out of the plane across L is the closed form at L_2 = 0") {
   // On the polhode, L_1^2 is largest where L_2 = 0: there L_1^2 + L_3^2 = L^2 and
   // L_1^2/I1 + L_3^2/I3 = 2T, so L_1^2 = I1 (2T I3 - L^2) / (I3 - I1).
   for (const auto& model : {kText, kOther}) {

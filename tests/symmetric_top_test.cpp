@@ -1,12 +1,13 @@
 // The free symmetric top's closed forms (symmetric_top.h) against the exact
 // torque-free motion of free_body_exact.h, which knows nothing of them: it is
 // Jacobi's solution (k = 0 for a symmetric body) and the attitude by R_J.
+#include "rigid/symmetric_top.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "rigid/free_body_exact.h"
 #include "rigid/inertia.h"
-#include "rigid/symmetric_top.h"
 #include "rigid/units.h"
 
 using rigid::Vec3;
@@ -58,8 +59,7 @@ TEST_CASE("symmetric top: Omega is the body-frame rate of omega about 3 (Euler's
     CHECK(dw1 == Approx(-p.body_rate * w(1)).epsilon(1e-7));
     // omega_1 + i omega_2 turns through Omega t, sign and all (eqs. 114-115), within roundoff.
     const Vec3 z = Vec3::UnitZ();
-    CHECK(angle_about(w, z, exact.omega_body(0.0)) ==
-          Approx(p.body_rate * t).margin(1e-10));
+    CHECK(angle_about(w, z, exact.omega_body(0.0)) == Approx(p.body_rate * t).margin(1e-10));
   }
 }
 
@@ -96,8 +96,7 @@ TEST_CASE("symmetric top: 3 and omega turn about L at phi_dot and return after 2
     const double t = 0.21 * p.space_period;
     const auto q = exact.attitude(t);
     CHECK(angle_about(q * Vec3::UnitZ(), n, axis0) == Approx(p.space_rate * t).epsilon(1e-10));
-    CHECK(angle_about(q * exact.omega_body(t), n, w0) ==
-          Approx(p.space_rate * t).epsilon(1e-10));
+    CHECK(angle_about(q * exact.omega_body(t), n, w0) == Approx(p.space_rate * t).epsilon(1e-10));
     // After one period the symmetry axis is back (roundoff of the attitude ~1e-13).
     const Vec3 back = exact.attitude(p.space_period) * Vec3::UnitZ();
     CHECK((back - axis0).norm() < 1e-11);
@@ -106,8 +105,8 @@ TEST_CASE("symmetric top: 3 and omega turn about L at phi_dot and return after 2
     CHECK(p.space_rate ==
           Approx(c.omega * std::sqrt(1 + (r * r - 1) * std::cos(a) * std::cos(a))).epsilon(1e-14));
     // The spin about 3 relative to the precessing frame: psi_dot = omega_3 - phi_dot cos theta.
-    CHECK(p.spin_rate == Approx(c.omega * std::cos(a) - p.space_rate * std::cos(p.theta))
-                             .margin(1e-12 * c.omega));
+    CHECK(p.spin_rate ==
+          Approx(c.omega * std::cos(a) - p.space_rate * std::cos(p.theta)).margin(1e-12 * c.omega));
   }
 }
 
@@ -162,7 +161,8 @@ TEST_CASE("symmetric top: the integrated turn is measured however small alpha is
   for (const double alpha : {1e-8, 1e-100, 1e-200, 1e-300}) {
     const auto p = rigid::free_symmetric_precession(1.0, 0.5, 1.0, alpha);
     const auto check = rigid::integrated_precession(1.0, 0.5, 1.0, alpha);
-    INFO("alpha " << alpha << ": integrated " << check.space_rate << ", closed form " << p.space_rate);
+    INFO("alpha " << alpha << ": integrated " << check.space_rate << ", closed form "
+                  << p.space_rate);
     CHECK(check.space_rate == Approx(p.space_rate).epsilon(1e-9));
   }
 }

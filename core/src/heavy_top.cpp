@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "rigid/format.h"
-#include "rigid/periodic_mean.h"
 #include "rigid/free_body_exact.h"
+#include "rigid/periodic_mean.h"
 #include "rigid/units.h"
 
 namespace rigid {
@@ -37,8 +37,12 @@ void require_positive(double value, const char* what) {
   }
 }
 
-double rf(double x, double y, double z) { return boost::math::ellint_rf(x, y, z); }
-double rj(double x, double y, double z, double p) { return boost::math::ellint_rj(x, y, z, p); }
+double rf(double x, double y, double z) {
+  return boost::math::ellint_rf(x, y, z);
+}
+double rj(double x, double y, double z, double p) {
+  return boost::math::ellint_rj(x, y, z, p);
+}
 
 }  // namespace
 
@@ -58,8 +62,8 @@ void validate_top_body(double I, double Is, double m, double arm) {
   const double I_cm = I - m * arm * arm;
   if (I_cm < 0.5 * Is - 8 * kEps * I) {
     throw std::invalid_argument(
-        "no body has these moments: about the centre of mass I - m arm^2 = " +
-        format_number(I_cm) + " kg m^2 must be at least Is/2 = " + format_number(0.5 * Is));
+        "no body has these moments: about the centre of mass I - m arm^2 = " + format_number(I_cm) +
+        " kg m^2 must be at least Is/2 = " + format_number(0.5 * Is));
   }
 }
 
@@ -141,8 +145,8 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   a_ = Is * s.spin / I;
   beta_ = 2.0 * top.mgl / I;
   d0_ = s.phi_dot * s2;
-  p_psi_ = Is * s.spin;                                                  // eq. 176
-  p_phi_ = I * s.phi_dot * s2 + p_psi_ * u0_;                            // eq. 177
+  p_psi_ = Is * s.spin;                        // eq. 176
+  p_phi_ = I * s.phi_dot * s2 + p_psi_ * u0_;  // eq. 177
   const double c0 = s.theta_dot * s.theta_dot + s.phi_dot * s.phi_dot * s2;
   energy_ = 0.5 * I * c0 + top.mgl * u0_ + 0.5 * Is * s.spin * s.spin;  // eqs. 191-193
 
@@ -293,7 +297,7 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // Steady: no nodding beyond roundoff, measured against the distance of the
   // circles from the poles (near upright, u moves by theta^2 only).
   regime_ = amplitude <= 64 * kEps * std::min(one_minus_u1, one_plus_u2) ? TopRegime::kSteady
-                                                                          : TopRegime::kWavy;
+                                                                         : TopRegime::kWavy;
 
   // phi_dot = (b - a u)/(1 - u^2) = [(b - a)/(1 - u) + (b + a)/(1 + u)] / 2, and
   // 1 - u = (1 - u1)(1 - n+ sn^2), 1 + u = (1 + u1)(1 + n- sn^2). A term whose
@@ -302,7 +306,8 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   n_minus_ = !through_south_ ? -amplitude / one_plus_u1 : 0.0;
   // 1 - n+ = (1 - u2)/(1 - u1) as such: near upright 1 - n+ rounded to 0
   one_minus_n_plus_ = n_plus_ != 0.0 ? omu2_ / one_minus_u1 : 1.0;
-  // Complete integrals of 1/(1 - n sn^2) over a half period: Pi(n, k) = K + n/3 R_J(0, k'^2, 1, 1 - n).
+  // Complete integrals of 1/(1 - n sn^2) over a half period: Pi(n, k) = K + n/3 R_J(0, k'^2, 1, 1 -
+  // n).
   const auto complete = [&](double n, double one_minus_n) {
     return n == 0.0 ? K_ : K_ + n / 3.0 * rj(0.0, kp2_, 1.0, one_minus_n);
   };
@@ -384,8 +389,10 @@ double HeavyTopExact::third_kind(double v, double n, double one_minus_n, double 
   }
   // Pi(n; am v, k) = v + n/3 sn^3 R_J(cn^2, dn^2, 1, 1 - n sn^2) for |v| <= K, its last
   // argument as cn^2 + (1 - n) sn^2 (no cancellation where n is near 1)
-  const double part = n == 0.0 ? vr : vr + n / 3.0 * sn * sn * sn *
-                                             rj(cn * cn, dn * dn, 1.0, cn * cn + one_minus_n * sn * sn);
+  const double part = n == 0.0
+                          ? vr
+                          : vr + n / 3.0 * sn * sn * sn *
+                                     rj(cn * cn, dn * dn, 1.0, cn * cn + one_minus_n * sn * sn);
   return m == 0.0 ? part : part + 2.0 * m * complete;
 }
 
@@ -458,8 +465,8 @@ TopAngles HeavyTopExact::angles(double t) const {
   const double cn_part = through_north_ ? 1.0 : p.cn;
   const double sn_part = through_south_ ? 1.0 : p.sn;
   const double rest = (through_north_ ? delta : x.omu) * (through_south_ ? delta : x.opu);
-  out.theta_dot = rest > 0.0 ? -2.0 * delta * lambda_ * sn_part * cn_part * p.dn / std::sqrt(rest)
-                             : 0.0;
+  out.theta_dot =
+      rest > 0.0 ? -2.0 * delta * lambda_ * sn_part * cn_part * p.dn / std::sqrt(rest) : 0.0;
   if (through_north_ || through_south_) {
     // The sign of the cancelled factor is roundoff at the pole itself: take it from
     // where v is in the period instead. theta grows for half a period after the axis
@@ -473,12 +480,14 @@ TopAngles HeavyTopExact::angles(double t) const {
   out.psi_dot = S - (u0_ + x.w) * out.phi_dot;
   // J+ = int dt/(1 - u), J- = int dt/(1 + u), each an integral of the third kind.
   const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = opu1_;
-  const double J_plus = !use_plus_ ? 0.0
-                                       : (third_kind(p.v, n_plus_, one_minus_n_plus_, pi_plus_) - G_plus_0_) /
-                                             (one_minus_u1 * lambda_);
-  const double J_minus = !use_minus_ ? 0.0
-                                        : (third_kind(p.v, n_minus_, 1.0 - n_minus_, pi_minus_) - G_minus_0_) /
-                                              (one_plus_u1 * lambda_);
+  const double J_plus = !use_plus_
+                            ? 0.0
+                            : (third_kind(p.v, n_plus_, one_minus_n_plus_, pi_plus_) - G_plus_0_) /
+                                  (one_minus_u1 * lambda_);
+  const double J_minus = !use_minus_
+                             ? 0.0
+                             : (third_kind(p.v, n_minus_, 1.0 - n_minus_, pi_minus_) - G_minus_0_) /
+                                   (one_plus_u1 * lambda_);
   // Through a pole, phi turns by pi at once and psi by -pi (north: phi + psi is the
   // turn about z there) or +pi (south: phi - psi is); passages at v = K + 2Kj (north,
   // sn^2 = 1) and v = 2Kj (south, sn = 0) after v0.
@@ -488,12 +497,12 @@ TopAngles HeavyTopExact::angles(double t) const {
             (std::floor((p.v - K_) / (2 * K_)) - std::floor((v0_ - K_) / (2 * K_)));
   }
   if (through_south_ && std::isfinite(K_)) {
-    south = std::copysign(kPi, b_plus_a_) *
-            (std::floor(p.v / (2 * K_)) - std::floor(v0_ / (2 * K_)));
+    south =
+        std::copysign(kPi, b_plus_a_) * (std::floor(p.v / (2 * K_)) - std::floor(v0_ / (2 * K_)));
   }
   out.phi = start_.phi + 0.5 * (b_minus_a_ * J_plus + b_plus_a_ * J_minus) + north + south;
-  out.psi = start_.psi + (S - a_) * t - 0.5 * (b_minus_a_ * J_plus - b_plus_a_ * J_minus) -
-            north + south;
+  out.psi =
+      start_.psi + (S - a_) * t - 0.5 * (b_minus_a_ * J_plus - b_plus_a_ * J_minus) - north + south;
   return out;
 }
 

@@ -78,7 +78,8 @@ class TopRecorder {
       : top_(top), out_(out) {
     measure(omega_body(x0), attitude(x0), E0_, p_phi0_, p_psi0_);
     const Eigen::Vector3d w0 = omega_body(x0);
-    scale_E_ = 0.5 * (top.I * (w0.x() * w0.x() + w0.y() * w0.y()) + top.Is * w0.z() * w0.z()) + top.mgl;
+    scale_E_ =
+        0.5 * (top.I * (w0.x() * w0.x() + w0.y() * w0.y()) + top.Is * w0.z() * w0.z()) + top.mgl;
     const double L0 = Eigen::Vector3d(top.I * w0.x(), top.I * w0.y(), top.Is * w0.z()).norm();
     inv_L0_ = L0 > 0.0 ? 1.0 / L0 : 0.0;
     out_.samples.reserve(n);
@@ -95,7 +96,7 @@ class TopRecorder {
     const Eigen::Vector3d up = up_in_body(q.w(), q.x(), q.y(), q.z());
     const Eigen::Vector3d L(top_.I * w.x(), top_.I * w.y(), top_.Is * w.z());
     E = 0.5 * w.dot(L) + top_.mgl * up.z();  // up.z() = cos(theta)
-    p_phi = L.dot(up);                      // L_z in space
+    p_phi = L.dot(up);                       // L_z in space
     p_psi = L.z();
   }
   void record(double t, const Eigen::Vector3d& w, const Eigen::Quaterniond& q) {
@@ -175,8 +176,8 @@ void measure(TopComparison& c, const TopRun& run, const HeavyTopExact& exact, do
     c.energy_error.push_back(s.energy_error);
     dE.push_back(s.invariant_errors(0));
     // A NaN (a run that blew up) counts as an infinite error.
-    c.max_theta_error = std::isfinite(e) ? std::max(c.max_theta_error, e)
-                                         : std::numeric_limits<double>::infinity();
+    c.max_theta_error =
+        std::isfinite(e) ? std::max(c.max_theta_error, e) : std::numeric_limits<double>::infinity();
   }
   c.energy = invariant_error(c.t, dE, period);
 }
@@ -227,9 +228,9 @@ std::vector<TopComparison> compare_top_methods_at_cost(const HeavyTopExact& exac
           t_end, period, is_adaptive(m) ? 0.0 : settings.step, samples_per_period, max_samples);
       return integrate_heavy_top(exact.top(), x0, times, settings);
     };
-    const OdeOptions o =
-        settings_at_cost(m, period, periods, evaluations_per_period,
-                         [&](const OdeOptions& settings) { return run_with(settings).evaluations; });
+    const OdeOptions o = settings_at_cost(
+        m, period, periods, evaluations_per_period,
+        [&](const OdeOptions& settings) { return run_with(settings).evaluations; });
     TopComparison c;
     c.options = o;
     try {

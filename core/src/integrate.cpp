@@ -231,8 +231,8 @@ void measure(MethodComparison& c, const IntegrationResult& run, const FreeBodyEx
   c.energy_error = energy_errors(run, exact);
   for (double e : c.omega_error) {
     // A NaN (a run that blew up) counts as an infinite error.
-    c.max_omega_error = std::isfinite(e) ? std::max(c.max_omega_error, e)
-                                         : std::numeric_limits<double>::infinity();
+    c.max_omega_error =
+        std::isfinite(e) ? std::max(c.max_omega_error, e) : std::numeric_limits<double>::infinity();
   }
   c.energy = invariant_error(c.t, dT, period);
   c.momentum = invariant_error(c.t, dL, period);
@@ -273,24 +273,23 @@ std::vector<MethodComparison> compare_methods(const FreeBodyExact& exact,
 }
 
 std::vector<MethodComparison> compare_methods_at_cost(const FreeBodyExact& exact, double period,
-                                                      double periods,
-                                                      double evaluations_per_period,
+                                                      double periods, double evaluations_per_period,
                                                       double samples_per_period) {
   const double t_end = periods * period;
   const auto max_samples = static_cast<std::size_t>(std::ceil(periods * samples_per_period)) + 1;
   std::vector<MethodComparison> out;
   for (const Method m : kAllMethods) {
     const auto run_with = [&](const OdeOptions& o) {
-      const std::vector<double> times =
-          sample_times(t_end, period, is_adaptive(m) ? 0.0 : o.step, samples_per_period, max_samples);
+      const std::vector<double> times = sample_times(t_end, period, is_adaptive(m) ? 0.0 : o.step,
+                                                     samples_per_period, max_samples);
       IntegrateOptions io;
       static_cast<OdeOptions&>(io) = o;
       return integrate_free_body(exact.moments(), exact.state(0.0), times, io);
     };
     MethodComparison c;
-    static_cast<OdeOptions&>(c.options) = settings_at_cost(
-        m, period, periods, evaluations_per_period,
-        [&](const OdeOptions& o) { return run_with(o).evaluations; });
+    static_cast<OdeOptions&>(c.options) =
+        settings_at_cost(m, period, periods, evaluations_per_period,
+                         [&](const OdeOptions& o) { return run_with(o).evaluations; });
     try {
       measure(c, run_with(c.options), exact, period);
     } catch (const std::exception&) {

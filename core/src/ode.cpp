@@ -29,15 +29,16 @@ constexpr std::array<MethodFacts, kAllMethods.size()> kFacts = {{
     {"vern9", "adaptive Runge-Kutta (Verner), order 9(8)", 0, 0, true, true},
 }};
 
-const MethodFacts& facts(Method m) { return kFacts[static_cast<std::size_t>(m)]; }
+const MethodFacts& facts(Method m) {
+  return kFacts[static_cast<std::size_t>(m)];
+}
 
 // The one wording of "this run needs too many steps", fixed-step (step > 0) or adaptive.
 std::string too_many_steps(Method m, std::size_t max_steps, double t_end, double step) {
   std::ostringstream os;
   os << method_name(m);
   if (step > 0.0) os << " with step " << format_number(step) << " s";
-  os << " needs more than " << max_steps << " steps to reach t = " << format_number(t_end)
-     << " s; "
+  os << " needs more than " << max_steps << " steps to reach t = " << format_number(t_end) << " s; "
      << (step > 0.0 ? "lengthen the step" : "loosen the tolerance") << " or shorten the run";
   return os.str();
 }
@@ -110,7 +111,10 @@ void validate_run(const OdeOptions& o, const std::vector<double>& times, bool af
 }
 
 TotalStepCap::TotalStepCap(Method m, std::size_t max_steps, double t_end, double max_seconds)
-    : method_(m), max_steps_(max_steps), t_end_(t_end), max_seconds_(max_seconds),
+    : method_(m),
+      max_steps_(max_steps),
+      t_end_(t_end),
+      max_seconds_(max_seconds),
       start_(std::chrono::steady_clock::now()) {}
 
 void TotalStepCap::operator()() {
@@ -152,8 +156,8 @@ std::vector<GridSample> plan_grid(const std::vector<double>& times, const OdeOpt
     }
     // A time within a few ulps of a grid point is that grid point: sample times
     // computed another way (t0 + (t1 - t0) i / n) must not cost a roundoff-sized step.
-    const double snap = 8.0 * std::numeric_limits<double>::epsilon() *
-                        (std::abs(t0) + std::abs(ts));
+    const double snap =
+        8.0 * std::numeric_limits<double>::epsilon() * (std::abs(t0) + std::abs(ts));
     GridSample s{static_cast<std::size_t>(whole), false};
     if (std::abs(grid(s.n + 1) - ts) <= snap) {
       s = {s.n + 1, true};

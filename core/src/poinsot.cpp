@@ -1,13 +1,12 @@
 #include "rigid/poinsot.h"
 
-#include "rigid/periodic_mean.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "rigid/free_body_exact.h"
+#include "rigid/periodic_mean.h"
 #include "rigid/units.h"
 
 namespace rigid {

@@ -41,13 +41,13 @@ Racquet make_racquet(const RacquetModel& model) {
   const Body head = thin_ring(model.head_mass, a);
   const Body handle = shifted(thin_rod(model.handle_mass, l), Vec3(a + l / 2, 0, 0));
   Racquet r;
-  r.body = head + handle;                 // eq. 83 and the parallel-axis theorem (eq. 85)
+  r.body = head + handle;  // eq. 83 and the parallel-axis theorem (eq. 85)
   r.cm_offset = r.body.com.x();
   r.moments = {r.body.I_com(0, 0), r.body.I_com(1, 1), r.body.I_com(2, 2)};
   r.head_centre = -r.body.com;
   r.handle_start = Vec3(a, 0, 0) - r.body.com;
   r.handle_end = Vec3(a + l, 0, 0) - r.body.com;
-  r.body.com = Vec3::Zero();              // body axes have their origin at the centre of mass
+  r.body.com = Vec3::Zero();  // body axes have their origin at the centre of mass
   return r;
 }
 
@@ -100,9 +100,10 @@ GrowthFit measure_growth_rate(const FreeBodyExact& motion, int axis, double shar
                               std::size_t samples) {
   const double share0 = transverse_share(motion.omega_body(0.0), axis);
   if (!(share_limit > share0 && share_limit < 1.0)) {
-    throw std::invalid_argument("the share that ends the fit must lie between the share at "
-                                "launch (" + format_number(share0) + ") and 1, got " +
-                                format_number(share_limit));
+    throw std::invalid_argument(
+        "the share that ends the fit must lie between the share at "
+        "launch (" +
+        format_number(share0) + ") and 1, got " + format_number(share_limit));
   }
   const double flip = first_sign_change(motion, axis);
   if (!std::isfinite(flip)) {
@@ -165,7 +166,8 @@ CosineRange direction_cosine_range(const FreeBodyExact& motion, int axis, double
   const double c0 = cosine_with_L(motion, axis, 0.0);
   CosineRange range{c0, c0};
   if (motion.regime() == FreeMotionRegime::kSteady || !(t_span > 0.0)) return range;
-  if (!std::isfinite(t_span)) throw std::invalid_argument("direction_cosine_range: t_span must be finite");
+  if (!std::isfinite(t_span))
+    throw std::invalid_argument("direction_cosine_range: t_span must be finite");
   // 2048 samples resolve every extremum of a period to within one cell; Brent's
   // method then finds it to ~sqrt(eps) in t, which is eps in the value.
   const int cells = 2048;
@@ -179,9 +181,9 @@ CosineRange direction_cosine_range(const FreeBodyExact& motion, int axis, double
     const double lo = t_span * std::max(i - 1, 0) / cells;
     const double hi = t_span * std::min(i + 1, cells) / cells;
     const auto f = [&](double t) { return sign * cosine_with_L(motion, axis, t); };
-    return sign * boost::math::tools::brent_find_minima(f, lo, hi,
-                                                         std::numeric_limits<double>::digits / 2)
-                      .second;
+    return sign *
+           boost::math::tools::brent_find_minima(f, lo, hi, std::numeric_limits<double>::digits / 2)
+               .second;
   };
   range.min = std::min(range.min, refine(i_min, 1.0));
   range.max = std::max(range.max, refine(i_max, -1.0));

@@ -42,22 +42,24 @@ SymmetricPrecession free_symmetric_precession(double I, double Is, double omega,
   const double s = std::sin(alpha), c = std::cos(alpha);
   SymmetricPrecession p;
   p.body_rate = omega * c * ((Is - I) / I);  // eq. 109; exactly omega cos alpha when Is = 2I
-  p.L = omega * std::hypot(I * s, Is * c);                     // eq. 143
-  p.space_rate = p.L / I;                                      // eqs. 146-147
-  p.theta = std::atan2(I * s, Is * c);                         // eq. 144
-  p.spin_rate = -p.body_rate;                                  // omega_3 - phi_dot cos theta
+  p.L = omega * std::hypot(I * s, Is * c);   // eq. 143
+  p.space_rate = p.L / I;                    // eqs. 146-147
+  p.theta = std::atan2(I * s, Is * c);       // eq. 144
+  p.spin_rate = -p.body_rate;                // omega_3 - phi_dot cos theta
   p.body_cone = alpha;
   const double lead = std::atan2((I - Is) * s * c, Is * c * c + I * s * s);  // theta - alpha
   p.space_cone = std::abs(lead);
-  p.contact = lead > 0 ? ConeContact::kOutside : lead < 0 ? ConeContact::kInside : ConeContact::kNone;
+  p.contact = lead > 0   ? ConeContact::kOutside
+              : lead < 0 ? ConeContact::kInside
+                         : ConeContact::kNone;
   p.body_period = p.body_rate == 0.0 ? std::numeric_limits<double>::infinity()
                                      : 2 * kPi / std::abs(p.body_rate);
   p.space_period = 2 * kPi / p.space_rate;
   return p;
 }
 
-PrecessionCheck integrated_precession(double I, double Is, double omega, double alpha,
-                                      double tol, std::size_t max_steps) {
+PrecessionCheck integrated_precession(double I, double Is, double omega, double alpha, double tol,
+                                      std::size_t max_steps) {
   const SymmetricPrecession p = free_symmetric_precession(I, Is, omega, alpha);
   const double period = p.space_period * omega;  // dimensionless: time in units of 1/omega
   const PrincipalMoments moments{1.0, 1.0, Is / I};

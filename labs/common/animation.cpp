@@ -97,7 +97,9 @@ namespace {
 int frame_count(double duration, double fps) {
   return std::max(1, static_cast<int>(std::lround(duration * fps)));
 }
-double frame_time(double motion_seconds, int k, int frames) { return motion_seconds * k / frames; }
+double frame_time(double motion_seconds, int k, int frames) {
+  return motion_seconds * k / frames;
+}
 }  // namespace
 
 std::vector<double> Lab::animation_times(double motion_seconds) const {
@@ -121,8 +123,8 @@ void Lab::check_animation_path() const {
   if (animation_path_.empty()) throw UsageError("--animate", "needs a file name");
 #if RIGID_HAVE_RENDER
   if (!render::video_format_for(animation_path_)) {
-    throw UsageError("--animate", "the file name must end in .mp4 or .webp (got '" +
-                                      animation_path_ + "')");
+    throw UsageError("--animate",
+                     "the file name must end in .mp4 or .webp (got '" + animation_path_ + "')");
   }
 #endif
   std::error_code ec;
@@ -225,10 +227,10 @@ void Lab::animate(double motion_seconds, const std::string& caption,
                   {"seconds", seconds}};
     if (!still.empty()) animation_["still"] = figure_prefix_ + name_ + "_" + still + ".png";
     if (timing_) {
-      animation_["phases"] = {{"scene", build},          {"setup", phases.setup},
-                              {"layout", phases.layout}, {"draw", phases.draw},
-                              {"resolve", phases.resolve}, {"encoder_wait", handover},
-                              {"finish", finishing}};
+      animation_["phases"] = {
+          {"scene", build},      {"setup", phases.setup},     {"layout", phases.layout},
+          {"draw", phases.draw}, {"resolve", phases.resolve}, {"encoder_wait", handover},
+          {"finish", finishing}};
     }
     progress.finish(fmt::format(
         "wrote {}: {} frames, {}x{} at {:g} fps ({:g} s of video for {:.3g} s of motion), "

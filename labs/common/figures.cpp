@@ -14,7 +14,9 @@
 namespace rigid::lab {
 namespace fs = std::filesystem;
 
-std::string FigureSet::title(const std::string& own) const { return lab_.scene_title(own); }
+std::string FigureSet::title(const std::string& own) const {
+  return lab_.scene_title(own);
+}
 
 std::string Lab::scene_title(const std::string& own) const {
   // The lab's name in text markup: '_' would start a subscript.
@@ -40,8 +42,10 @@ void FigureSet::save(const std::string& name, const std::string& caption, const 
   figure.save(path.string(), lab_.figure_width_, lab_.figure_height_,
               lab_.timing_ ? &phases : nullptr);
   if (lab_.timing_) {
-    lab_.figure_phases_[file] = {{"setup", phases.setup},     {"layout", phases.layout},
-                                 {"draw", phases.draw},       {"resolve", phases.resolve},
+    lab_.figure_phases_[file] = {{"setup", phases.setup},
+                                 {"layout", phases.layout},
+                                 {"draw", phases.draw},
+                                 {"resolve", phases.resolve},
                                  {"encode", phases.encode}};
   }
 #else
@@ -56,8 +60,7 @@ void FigureSet::save(const std::string& name, const std::string& caption, const 
   // each: say so as each is drawn, rather than sit silent (issue 10).
   if (static_cast<double>(lab_.figure_width_) * lab_.figure_height_ > 4.0 * 1600 * 1200) {
     std::cerr << lab_.name_ << ": drew " << file << " (" << lab_.figure_width_ << "x"
-              << lab_.figure_height_ << ") in " << fmt::format("{:.1f}", elapsed.count())
-              << " s\n";
+              << lab_.figure_height_ << ") in " << fmt::format("{:.1f}", elapsed.count()) << " s\n";
   }
 }
 
@@ -76,8 +79,8 @@ void Lab::figures(const std::function<void(FigureSet&)>& draw) {
   std::error_code error;
   fs::create_directories(figures_dir_, error);
   if (error) {
-    throw UsageError("--figures", "cannot create directory '" + figures_dir_ + "': " +
-                                      error.message());
+    throw UsageError("--figures",
+                     "cannot create directory '" + figures_dir_ + "': " + error.message());
   }
   try {
 #if RIGID_HAVE_RENDER

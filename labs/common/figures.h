@@ -19,19 +19,19 @@ namespace rigid::lab {
 /// One colour per concept across every lab's figure (issue 14): what a reader learns
 /// in one figure holds in the next. Okabe-Ito, so colour-blind readers keep it too.
 namespace colors {
-inline constexpr render::Color kOmega = render::kBlue;         ///< omega, and its path
-inline constexpr render::Color kL = render::kVermillion;       ///< L, and what is about L
+inline constexpr render::Color kOmega = render::kBlue;    ///< omega, and its path
+inline constexpr render::Color kL = render::kVermillion;  ///< L, and what is about L
 /// Principal axes 1, 2, 3 (ascending moments, or the body's own numbering).
 inline constexpr render::Color kPrincipal[3] = {render::kBluishGreen, render::kOrange,
                                                 render::kReddishPurple};
 /// A symmetric body's symmetry axis: its principal axis 3.
 inline constexpr render::Color kSymmetryAxis = render::kReddishPurple;
-inline constexpr render::Color kPolhode = kOmega;              ///< the body's polhode: omega's path
+inline constexpr render::Color kPolhode = kOmega;  ///< the body's polhode: omega's path
 inline constexpr render::Color kSeparatrix = render::kBlack;
 inline constexpr render::Color kTorque = render::kYellow;   ///< a torque (apart from the grey axes)
-inline constexpr render::Color kFixedAxis = render::kGray;     ///< an axle, a fixed axis, the vertical
-inline constexpr render::Color kBody = render::kSkyBlue;       ///< a body's surface, translucent
-inline constexpr render::Color kMarker = render::kBlack;       ///< a start, a chosen instant
+inline constexpr render::Color kFixedAxis = render::kGray;  ///< an axle, a fixed axis, the vertical
+inline constexpr render::Color kBody = render::kSkyBlue;    ///< a body's surface, translucent
+inline constexpr render::Color kMarker = render::kBlack;    ///< a start, a chosen instant
 }  // namespace colors
 
 /// A thin translucent body (a plate, a disk) drawn in its flat colour, unshaded, so

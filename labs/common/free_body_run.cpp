@@ -1,14 +1,14 @@
 #include "common/free_body_run.h"
 
-#include "rigid/units.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <utility>
-#include <limits>
+
+#include "rigid/units.h"
 
 namespace rigid::lab {
 
@@ -33,8 +33,8 @@ void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::str
                                  const std::string& step_default, bool offer_project) {
   std::vector<std::string> methods{"exact"};
   for (const Method m : kAllMethods) methods.emplace_back(method_name(m));
-  lab.choice("--method", in.method, methods, method_help + " (exact: the closed form; " +
-                                                  method_help_list() + ")")
+  lab.choice("--method", in.method, methods,
+             method_help + " (exact: the closed form; " + method_help_list() + ")")
       .numerical();
   lab.number("--tolerance", in.tolerance, "relative and absolute tolerance of adaptive methods")
       .open_range(0.0, 1.0)
@@ -54,13 +54,14 @@ bool fixed_step(const IntegrationInputs& in) {
   return in.method != "exact" && !is_adaptive(method_from_name(in.method));
 }
 
-IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in,
-                                     double default_step, std::size_t max_steps) {
+IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in, double default_step,
+                                     std::size_t max_steps) {
   // Below double precision no step meets a tolerance, and odeint's step control
   // then collapses (tolerances under 1e-150 crashed it).
   if (in.tolerance < 1e-16) {
     throw UsageError("--tolerance", fmt::format("must be at least 1e-16, double precision's "
-                                                "reach (got {:g})", in.tolerance));
+                                                "reach (got {:g})",
+                                                in.tolerance));
   }
   IntegrateOptions options;
   options.abs_tol = options.rel_tol = in.tolerance;
@@ -77,7 +78,8 @@ IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in,
     lab.warn(option, why + (in.compared ? "; only the comparison of every method uses it"
                                         : "; it is not used" + instead));
   };
-  if (lab.given("--tolerance") && exact) unused("--tolerance", "--method exact integrates nothing", "");
+  if (lab.given("--tolerance") && exact)
+    unused("--tolerance", "--method exact integrates nothing", "");
   if (lab.given("--step") && exact) unused("--step", "--method exact integrates nothing", "");
   if (lab.given("--tolerance") && !exact && !is_adaptive(options.method)) {
     unused("--tolerance", in.method + " takes a fixed step", " (--step sets it)");
@@ -86,8 +88,10 @@ IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in,
     unused("--step", in.method + " chooses its own steps", " (--tolerance controls them)");
   }
   if (in.project && exact) {
-    throw UsageError("--project", "--method exact integrates nothing to project; use --method "
-                                  "one of " + projecting_methods());
+    throw UsageError("--project",
+                     "--method exact integrates nothing to project; use --method "
+                     "one of " +
+                         projecting_methods());
   }
   return options;
 }
@@ -124,7 +128,8 @@ namespace {
 std::pair<std::string, std::string> steady_in_words(const FreeBodyExact& motion) {
   const Eigen::Vector3d w = motion.omega_body(0.0), I = motion.moments().vector();
   if (w.isZero(0.0)) return {"at rest", "neutral"};
-  if (I.minCoeff() == I.maxCoeff()) return {"steady rotation of a spherical body: every axis is steady", "neutral"};
+  if (I.minCoeff() == I.maxCoeff())
+    return {"steady rotation of a spherical body: every axis is steady", "neutral"};
   Eigen::Index axis = 0;
   w.cwiseAbs().maxCoeff(&axis);
   const bool on_axis = (w.cwiseAbs().array() > 0.0).count() == 1;
@@ -158,8 +163,9 @@ void report_motion(Lab& lab, const FreeBodyExact& motion) {
     std::tie(words, stability) = steady_in_words(motion);
     lab.result_none("complementary_parameter", "  k'^2", "", "a steady spin has no polhode");
   } else if (regime == FreeMotionRegime::kSeparatrix) {
-    words = "on the separatrix: unstable, omega leaves the intermediate axis and only "
-            "approaches it again, never returning";
+    words =
+        "on the separatrix: unstable, omega leaves the intermediate axis and only "
+        "approaches it again, never returning";
     stability = "unstable";
     lab.result("complementary_parameter", "  k'^2 (0: on the separatrix)", 0.0, "");
   } else {
@@ -169,15 +175,15 @@ void report_motion(Lab& lab, const FreeBodyExact& motion) {
     // a spin about that axis, nudged, whose fate a further nudge may change.
     if (kp2 < 0.01) {
       stability = "unstable";
-      words = fmt::format("near the separatrix (k'^2 = {:.2g}): unstable, omega lingers by the "
-                          "intermediate axis and the body flips over every {:.4g} s ({})",
-                          kp2, 0.5 * motion.period(), to_string(regime));
+      words = fmt::format(
+          "near the separatrix (k'^2 = {:.2g}): unstable, omega lingers by the "
+          "intermediate axis and the body flips over every {:.4g} s ({})",
+          kp2, 0.5 * motion.period(), to_string(regime));
     } else {
       stability = "stable";
       words = to_string(regime) + ": stable, omega circles that axis";
     }
-    lab.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2,
-               "");
+    lab.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2, "");
   }
   lab.result_text("motion", "  in words", words);
   lab.result_text("motion_stability", "  stability", stability);
@@ -222,9 +228,9 @@ void report_plan(Lab& lab, const RunPlan& plan) {
   const double whole = std::floor(plan.t_end / h * (1.0 + 8.0 * kEps));
   const double last = plan.t_end - whole * h;
   if (last > 8.0 * kEps * plan.t_end) {
-    lab.result("last_step_s", fmt::format("  the last, shortened to end at t_end ({:g} whole steps)",
-                                          whole),
-               last, "s");
+    lab.result("last_step_s",
+               fmt::format("  the last, shortened to end at t_end ({:g} whole steps)", whole), last,
+               "s");
   }
 }
 
@@ -258,15 +264,19 @@ void report_drifts(Lab& lab, const IntegrationResult& run, double period, bool e
   const double roundoff = exact ? kClosedFormRoundoff : 0.0;
   report_invariant(lab, "energy", "max |T - T0| / T0", t, dT, period, roundoff);
   report_invariant(lab, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period, roundoff);
-  lab.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|",
-                      run.L_space_drift_rel, roundoff, "");
+  lab.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel,
+                      roundoff, "");
 }
 
 void declare_end_time(Lab& lab, double& t_end, double& periods, const std::string& period_name,
                       const std::string& default_text) {
-  lab.number("--t-end", t_end, "end time").unit("s").positive().numerical().lab_default(
-      default_text);
-  lab.number("--periods", periods, "end time as a number of " + period_name + "s (instead of --t-end)")
+  lab.number("--t-end", t_end, "end time")
+      .unit("s")
+      .positive()
+      .numerical()
+      .lab_default(default_text);
+  lab.number("--periods", periods,
+             "end time as a number of " + period_name + "s (instead of --t-end)")
       .positive()
       .numerical()
       .lab_default("--t-end's");
@@ -283,9 +293,10 @@ double end_time(const Lab& lab, double t_end, double periods, double scale, doub
 
 void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
                        double evaluations_per_period, double periods) {
-  lab.section(fmt::format("which method drifts: every method at {:g} evaluations a period, "
-                          "{:g} periods (a symplectic method's energy error stays in a band)",
-                          evaluations_per_period, periods));
+  lab.section(
+      fmt::format("which method drifts: every method at {:g} evaluations a period, "
+                  "{:g} periods (a symplectic method's energy error stays in a band)",
+                  evaluations_per_period, periods));
   lab.result("equal_cost_evaluations_per_period", "evaluations a period (a Strang step: one)",
              evaluations_per_period, "");
   lab.result("equal_cost_periods", "periods run", periods, "");
@@ -293,9 +304,9 @@ void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
   for (const EqualCostRow& row : rows) {
     const std::string name(method_name(row.options.method));
     const std::string key = json_key(name);
-    const std::string setting =
-        is_adaptive(row.options.method) ? fmt::format("tol {:.2g}", row.options.rel_tol)
-                                        : fmt::format("h = {:.3g} s", row.options.step);
+    const std::string setting = is_adaptive(row.options.method)
+                                    ? fmt::format("tol {:.2g}", row.options.rel_tol)
+                                    : fmt::format("h = {:.3g} s", row.options.step);
     const std::string label = fmt::format("{:<15} {:<15} energy drift a period", name, setting);
     if (!row.completed) {
       lab.result_none("equal_cost_energy_drift_per_period_rel_" + key, label, "",
@@ -308,8 +319,8 @@ void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
                row.energy.drift_per_period_rel, "");
     lab.result("equal_cost_energy_error_max_rel_" + key, "  largest energy error",
                row.energy.max_rel, "");
-    if (least == nullptr || std::abs(row.energy.drift_per_period_rel) <
-                                std::abs(least->energy.drift_per_period_rel)) {
+    if (least == nullptr ||
+        std::abs(row.energy.drift_per_period_rel) < std::abs(least->energy.drift_per_period_rel)) {
       least = &row;
     }
   }

@@ -37,8 +37,8 @@ bool fixed_step(const IntegrationInputs& in);
 /// The options of the chosen method: the tolerance, the step (`default_step` unless
 /// --step was given) and at most `max_steps` steps. Warns (Lab::warn) of --step or
 /// --tolerance given where nothing uses them.
-IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in,
-                                     double default_step, std::size_t max_steps);
+IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in, double default_step,
+                                     std::size_t max_steps);
 
 /// Runs the chosen method from exact.state(0) through `times` (the exact motion
 /// sampled, for "exact"), and reports its error against the exact motion
@@ -109,10 +109,10 @@ double end_time(const Lab& lab, double t_end, double periods, double scale, doub
 
 /// One method of a comparison at equal cost, as the table reports it.
 struct EqualCostRow {
-  OdeOptions options;            ///< the method and the step or tolerance that cost the budget
+  OdeOptions options;  ///< the method and the step or tolerance that cost the budget
   bool completed = false;
-  std::size_t evaluations = 0;   ///< of the whole run
-  InvariantError energy;         ///< the energy's largest error and drift per period
+  std::size_t evaluations = 0;  ///< of the whole run
+  InvariantError energy;        ///< the energy's largest error and drift per period
 };
 /// The section that answers "which method drifts": every method at the same
 /// `evaluations_per_period` over `periods` periods, its energy drift per period and

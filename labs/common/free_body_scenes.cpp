@@ -6,9 +6,8 @@
 #include <vector>
 
 #include "common/figures.h"
-#include "rigid/units.h"
-
 #include "rigid/poinsot.h"
+#include "rigid/units.h"
 
 namespace rigid::lab {
 using Eigen::Vector3d;

@@ -25,16 +25,26 @@ struct LineStyle {
 LineStyle line_style(Method m) {
   using render::Dash;
   switch (m) {
-    case Method::kSplitting: return {render::kBlue, Dash::kSolid};
-    case Method::kSplitting4: return {render::kBlue, Dash::kDashed};
-    case Method::kRk4: return {render::kBluishGreen, Dash::kSolid};
-    case Method::kDopri5: return {render::kVermillion, Dash::kDashDot};
-    case Method::kRkf78: return {render::kReddishPurple, Dash::kSolid};
-    case Method::kBulirschStoer: return {render::kSkyBlue, Dash::kDotted};
-    case Method::kVern6: return {render::kOrange, Dash::kSolid};
-    case Method::kVern7: return {render::kOrange, Dash::kDashed};
-    case Method::kVern8: return {render::kBlack, Dash::kDashDot};
-    case Method::kVern9: return {render::kBlack, Dash::kDashed};
+    case Method::kSplitting:
+      return {render::kBlue, Dash::kSolid};
+    case Method::kSplitting4:
+      return {render::kBlue, Dash::kDashed};
+    case Method::kRk4:
+      return {render::kBluishGreen, Dash::kSolid};
+    case Method::kDopri5:
+      return {render::kVermillion, Dash::kDashDot};
+    case Method::kRkf78:
+      return {render::kReddishPurple, Dash::kSolid};
+    case Method::kBulirschStoer:
+      return {render::kSkyBlue, Dash::kDotted};
+    case Method::kVern6:
+      return {render::kOrange, Dash::kSolid};
+    case Method::kVern7:
+      return {render::kOrange, Dash::kDashed};
+    case Method::kVern8:
+      return {render::kBlack, Dash::kDashDot};
+    case Method::kVern9:
+      return {render::kBlack, Dash::kDashed};
   }
   return {render::kGray, Dash::kSolid};
 }

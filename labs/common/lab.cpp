@@ -1,18 +1,18 @@
 #include "lab.h"
 
-#include <fmt/format.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
-#include <regex>
 #include <iostream>
+#include <regex>
 
 #include "rigid/format.h"
 #include "rigid/render/atomic_file.h"
@@ -175,7 +175,8 @@ Lab::Lab(std::string name, std::string title)
     : name_(std::move(name)), title_(std::move(title)), app_(title_, name_) {
   app_.add_flag("--json", json_, "print one JSON object on stdout instead of the table");
   app_.add_flag("--quiet", quiet_, "print no table (files are still written)");
-  app_.add_flag("--timing", timing_, "with --json: the wall time of each figure and where it went, for bench/");
+  app_.add_flag("--timing", timing_,
+                "with --json: the wall time of each figure and where it went, for bench/");
   app_.add_option("--figures", figures_dir_, "write this lab's PNG figures into DIR")
       ->type_name("DIR");
   // The figure style is laid out for 800x600 and up; 8192 bounds memory.
@@ -188,8 +189,7 @@ Lab::Lab(std::string name, std::string title)
             char x = 0, extra = 0;
             const int read = std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
             // 1920x1080 or 1920X1080
-            if (read != 3 || (x != 'x' && x != 'X') || w < 800 || h < 600 || w > 8192 ||
-                h > 8192) {
+            if (read != 3 || (x != 'x' && x != 'X') || w < 800 || h < 600 || w > 8192 || h > 8192) {
               return "must be WxH with 800 <= W <= 8192 and 600 <= H <= 8192 (got '" + text + "')";
             }
             figure_width_ = w;
@@ -208,8 +208,10 @@ Lab::Lab(std::string name, std::string title)
                               return std::isalnum(static_cast<unsigned char>(c)) || c == '-' ||
                                      c == '_' || c == '.';
                             });
-            return ok ? "" : "must be 1 to 64 letters, digits, '-', '_' or '.', not starting "
-                             "with '.' (got '" + text + "')";
+            return ok ? ""
+                      : "must be 1 to 64 letters, digits, '-', '_' or '.', not starting "
+                        "with '.' (got '" +
+                            text + "')";
           },
           ""));
   app_.set_version_flag("--version", name_ + " (rigidlab) " + std::string(RIGID_VERSION),
@@ -226,13 +228,12 @@ Option& Lab::number(const std::string& flag, double& value, const std::string& h
   cli->check(CLI::Validator(
       [&option](std::string& text) -> std::string {
         double parsed = 0.0;
-        if (!CLI::detail::lexical_cast(text, parsed)) return "must be a number (got '" + text + "')";
+        if (!CLI::detail::lexical_cast(text, parsed))
+          return "must be a number (got '" + text + "')";
         return option.broken_rule(parsed, text);
       },
       ""));
-  option.record_ = [&option, &value] {
-    option.lab_.inputs_[option.key_] = value;
-  };
+  option.record_ = [&option, &value] { option.lab_.inputs_[option.key_] = value; };
   return option;
 }
 
@@ -252,19 +253,21 @@ double component(const std::string& text) {
 }  // namespace
 
 Option& Lab::vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help) {
-  Option& option = numbers(flag, 3, "X,Y,Z", fmt::format("{},{},{}", value(0), value(1), value(2)), help);
+  Option& option =
+      numbers(flag, 3, "X,Y,Z", fmt::format("{},{},{}", value(0), value(1), value(2)), help);
   option.store_ = [&option, &value, flag] {
     if (option.texts_.empty()) return;
     if (option.texts_.size() == 1 && option.takes_word(option.texts_[0])) {
       option.word_ = option.texts_[0];
       return;
     }
-    const bool has_word = std::any_of(option.texts_.begin(), option.texts_.end(),
-                                      [&option](const std::string& t) { return option.takes_word(t); });
+    const bool has_word =
+        std::any_of(option.texts_.begin(), option.texts_.end(),
+                    [&option](const std::string& t) { return option.takes_word(t); });
     if (option.texts_.size() != 3 || has_word) {
-      throw UsageError(flag, "expects three numbers X,Y,Z" +
-                                 (option.words_.empty() ? std::string()
-                                                        : " or one of " + option.word_list()));
+      throw UsageError(
+          flag, "expects three numbers X,Y,Z" +
+                    (option.words_.empty() ? std::string() : " or one of " + option.word_list()));
     }
     for (int i = 0; i < 3; ++i) value(i) = component(option.texts_[static_cast<std::size_t>(i)]);
     if (option.nonzero_ && value.isZero(0.0)) throw UsageError(flag, "must not be the zero vector");
@@ -388,7 +391,9 @@ std::optional<std::string> Lab::textbook(const std::string& printed) const {
   return textbook_inputs() ? std::optional<std::string>(printed) : std::nullopt;
 }
 
-void Lab::drop_input(const std::string& key) { inputs_.erase(key); }
+void Lab::drop_input(const std::string& key) {
+  inputs_.erase(key);
+}
 
 // ---- Results ----------------------------------------------------------------
 
@@ -401,8 +406,9 @@ void Lab::store(const std::string& key, Json value, bool finite, const std::stri
   // A NaN or an overflow must never reach the output: JSON would print null.
   if (!finite) {
     // The inputs overflow it: the defaults never do.
-    throw UsageError(blamed_option(), "the result '" + key +
-                                 "' overflows or is undefined for these inputs (out of range)");
+    throw UsageError(
+        blamed_option(),
+        "the result '" + key + "' overflows or is undefined for these inputs (out of range)");
   }
   results_[key] = std::move(value);
   // A pure number has the unit "1", as SI writes it.
@@ -425,8 +431,8 @@ void Lab::result(const std::string& key, const std::string& label, const Eigen::
 
 void Lab::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
                  const std::string& unit, std::optional<std::string> printed) {
-  store(key, Json::array({value(0) + 0.0, value(1) + 0.0, value(2) + 0.0}), value.allFinite(),
-        unit, printed);
+  store(key, Json::array({value(0) + 0.0, value(1) + 0.0, value(2) + 0.0}), value.allFinite(), unit,
+        printed);
   rows_.push_back({label, format_vec3(value), unit, printed.value_or("")});
 }
 
@@ -438,8 +444,8 @@ void Lab::result(const std::string& key, const std::string& label, const Eigen::
   }
   store(key, rows, value.allFinite(), unit, printed);
   for (int i = 0; i < 3; ++i) {
-    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()),
-                     i == 0 ? unit : "", i == 0 ? printed.value_or("") : ""});
+    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()), i == 0 ? unit : "",
+                     i == 0 ? printed.value_or("") : ""});
   }
 }
 
@@ -509,7 +515,8 @@ std::string Lab::title_inputs() const {
 // ---- Running ----------------------------------------------------------------
 
 bool can_create_in(const std::string& dir) {
-  const std::string probe = (fs::path(dir) / fmt::format(".rigidlab-probe-{}", ::getpid())).string();
+  const std::string probe =
+      (fs::path(dir) / fmt::format(".rigidlab-probe-{}", ::getpid())).string();
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (fd < 0) return false;
   ::close(fd);
@@ -551,8 +558,9 @@ void Lab::check_output_paths() const {
         throw UsageError("--csv", "'" + csv_path_ + "' is a directory, not a file");
       }
       if (!fs::is_regular_file(status)) {
-        throw UsageError("--csv", "'" + csv_path_ + "' is not a regular file (a device, pipe or "
-                                  "socket); give a file name");
+        throw UsageError("--csv", "'" + csv_path_ +
+                                      "' is not a regular file (a device, pipe or "
+                                      "socket); give a file name");
       }
     }
     const fs::path parent = path.parent_path();
@@ -594,7 +602,8 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
       }
       const std::size_t dash = what.find("--");
       const std::size_t end = what.find_first_of(" ,:=", dash);
-      throw UsageError(dash == std::string::npos ? "--inputs" : what.substr(dash, end - dash), what);
+      throw UsageError(dash == std::string::npos ? "--inputs" : what.substr(dash, end - dash),
+                       what);
     }
     // The first word CLI11 could not place names the mistake.
     if (const auto extras = app_.remaining(); !extras.empty()) {
@@ -637,8 +646,8 @@ int Lab::run(int argc, char** argv, const std::function<void(Lab&)>& body) {
   // Output that never arrived (stdout closed, a full disk, a closed pipe) is an error.
   std::cout.flush();
   if (!std::cout) {
-    std::cerr << name_ << ": error: stdout: the output could not be written (" << std::strerror(errno)
-              << ")\n";
+    std::cerr << name_ << ": error: stdout: the output could not be written ("
+              << std::strerror(errno) << ")\n";
     return 1;
   }
   return figures_failed_ ? 1 : 0;
@@ -707,14 +716,16 @@ void Lab::emit_json() const {
   out["figures"] = figures_;
   out["captions"] = captions_;
   if (!animation_.is_null()) out["animation"] = animation_;
-  if (timing_) out["timing"] = {{"figure_seconds", figure_seconds_}, {"figure_phases", figure_phases_}};
+  if (timing_)
+    out["timing"] = {{"figure_seconds", figure_seconds_}, {"figure_phases", figure_phases_}};
   out["textbook"] = textbook_;
   out["textbook_values"] = textbook_values();
   // Every file the run wrote, by its absolute path.
   Json outputs = Json::array();
   std::error_code ec;
   for (const std::string& figure : figures_) {
-    outputs.push_back(fs::absolute(fs::path(figures_dir_) / figure, ec).lexically_normal().string());
+    outputs.push_back(
+        fs::absolute(fs::path(figures_dir_) / figure, ec).lexically_normal().string());
   }
   if (!csv_path_.empty() && !series_.columns.empty()) {
     outputs.push_back(fs::absolute(csv_path_, ec).lexically_normal().string());
@@ -778,9 +789,8 @@ void Lab::write_csv() const {
     text += "\n";
   }
   try {
-    render::write_file_atomically(csv_path_, [&](std::FILE* file) {
-      std::fwrite(text.data(), 1, text.size(), file);
-    });
+    render::write_file_atomically(
+        csv_path_, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
   } catch (const std::runtime_error& e) {
     throw UsageError("--csv", e.what());
   }

@@ -23,7 +23,7 @@
 namespace rigid::render {
 class Scene3D;
 class Plot2D;
-}
+}  // namespace rigid::render
 
 namespace rigid::lab {
 
@@ -103,14 +103,20 @@ class Option {
   std::string key_, help_, unit_, symbol_, lab_default_;
   bool physical_ = true, nonzero_ = false;
   double lo_ = -1, hi_ = -1;
-  enum class Rule { kFinite, kPositive, kNonNegative, kOpenRange, kRangeFrom } rule_ = Rule::kFinite;
-  std::vector<std::string> texts_;            // a vector's components (or word) as given
-  std::size_t count_ = 0;                     // how many components it takes
-  std::vector<std::string> words_;            // words it takes instead of numbers
-  std::string word_;                          // the word given, if any
+  enum class Rule {
+    kFinite,
+    kPositive,
+    kNonNegative,
+    kOpenRange,
+    kRangeFrom
+  } rule_ = Rule::kFinite;
+  std::vector<std::string> texts_;  // a vector's components (or word) as given
+  std::size_t count_ = 0;           // how many components it takes
+  std::vector<std::string> words_;  // words it takes instead of numbers
+  std::string word_;                // the word given, if any
   bool takes_word(const std::string& text) const;
   std::string word_list() const;
-  std::function<void()> store_, record_;      // after parsing: into the lab's inputs
+  std::function<void()> store_, record_;  // after parsing: into the lab's inputs
 };
 
 /// One lab program: declare options, then `run` parses, computes and reports.
@@ -127,7 +133,8 @@ class Lab {
   Option& angle_deg(const std::string& flag, double& degrees, const std::string& help);
   /// Three numbers X,Y,Z, each under the number's rules.
   Option& vector(const std::string& flag, Eigen::Vector3d& value, const std::string& help);
-  /// Two numbers A,B (`type_name` shows them in --help, e.g. "I,IS"), each under the number's rules.
+  /// Two numbers A,B (`type_name` shows them in --help, e.g. "I,IS"), each under the number's
+  /// rules.
   Option& pair(const std::string& flag, Eigen::Vector2d& value, const std::string& type_name,
                const std::string& help);
   /// One word out of `choices`.
@@ -169,8 +176,8 @@ class Lab {
               const std::string& unit, std::optional<std::string> printed = std::nullopt);
   /// A result that is zero but for roundoff: when |value| <= `bound` the table prints 0
   /// with the bound beside it (JSON keeps the value computed); else as result().
-  void result_roundoff(const std::string& key, const std::string& label, double value,
-                       double bound, const std::string& unit);
+  void result_roundoff(const std::string& key, const std::string& label, double value, double bound,
+                       const std::string& unit);
   /// A warning: one line on stderr ("lab: warning: option: text") once the run has
   /// succeeded, and a note starting "warning:", for an input the run does not use.
   void warn(const std::string& option, const std::string& text);
@@ -187,8 +194,7 @@ class Lab {
   /// A note under the table and in JSON "notes"; errata start with "errata:".
   void note(const std::string& text);
 
-
-/// The time series written by --csv (if the user asked for it).
+  /// The time series written by --csv (if the user asked for it).
   void series(TimeSeries s) { series_ = std::move(s); }
   /// Draws the figures if --figures DIR was given: `draw` hands each figure to the
   /// set. A drawing failure (no GL context, say) is reported on stderr and sets
@@ -200,8 +206,7 @@ class Lab {
   /// with one camera fitted to the whole motion. `still` names the lab's figure whose
   /// scene frame(0) is, if one is (the JSON says which, and a test holds them together).
   void animate(double motion_seconds, const std::string& caption,
-               const std::function<render::Scene3D(double)>& frame,
-               const std::string& still = {});
+               const std::function<render::Scene3D(double)>& frame, const std::string& still = {});
   /// The same with a strip under the scene: `strip(t)`, a plot at motion time t drawn
   /// across the frame's lower `strip_share`, in the frame's text size.
   void animate(double motion_seconds, const std::string& caption,
@@ -223,7 +228,10 @@ class Lab {
   friend class FigureSet;
   struct Row {
     Row(std::string l, std::string v, std::string u, std::string t, bool h = false)
-        : label(std::move(l)), value(std::move(v)), unit(std::move(u)), textbook(std::move(t)),
+        : label(std::move(l)),
+          value(std::move(v)),
+          unit(std::move(u)),
+          textbook(std::move(t)),
           heading(h) {}
     std::string label, value, unit, textbook;
     bool heading = false;
@@ -270,6 +278,8 @@ class Lab {
 };
 
 /// The text's printed value for a fixed example that does not depend on the inputs.
-inline std::optional<std::string> printed(const std::string& value) { return value; }
+inline std::optional<std::string> printed(const std::string& value) {
+  return value;
+}
 
 }  // namespace rigid::lab

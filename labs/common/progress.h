@@ -22,8 +22,12 @@ class Progress {
   /// `who` starts every line ("poinsot", "bench work_precision"); `total` units of work,
   /// counted in `unit` ("frames", "runs").
   Progress(std::string who, std::string unit, int total, bool quiet)
-      : who_(std::move(who)), unit_(std::move(unit)), total_(total), quiet_(quiet),
-        live_(!quiet && ::isatty(STDERR_FILENO) != 0), start_(Clock::now()) {}
+      : who_(std::move(who)),
+        unit_(std::move(unit)),
+        total_(total),
+        quiet_(quiet),
+        live_(!quiet && ::isatty(STDERR_FILENO) != 0),
+        start_(Clock::now()) {}
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
   ~Progress() { clear(); }

@@ -34,8 +34,8 @@ std::vector<Vec3> circle_about_z(double radius, double z) {
 render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrecession& p,
                             const std::string& prefix, double t) {
   const double widest = std::max(p.theta, p.body_cone);
-  const double magnify = std::max(1.0, std::min(deg_to_rad(22.0) / p.body_cone,
-                                                deg_to_rad(70.0) / widest));
+  const double magnify =
+      std::max(1.0, std::min(deg_to_rad(22.0) / p.body_cone, deg_to_rad(70.0) / widest));
   const double theta = magnify * p.theta, alpha = magnify * p.body_cone;
   const double space = magnify * p.space_cone;
   const double lead = theta - alpha;  // omega's angle from L, towards 3 when > 0
@@ -46,9 +46,10 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   const Vec3 omega = turn * Vec3(std::sin(lead), 0, std::cos(lead));
 
   render::Scene3D scene;
-  scene.title = prefix + fmt::format("Is/I = {:.6g}, \\alpha = {:.3g}\\deg, body cone rolls {} the space cone",
-                            ratio, alpha_deg,
-                            p.contact == ConeContact::kInside ? "round" : "outside");
+  scene.title =
+      prefix +
+      fmt::format("Is/I = {:.6g}, \\alpha = {:.3g}\\deg, body cone rolls {} the space cone", ratio,
+                  alpha_deg, p.contact == ConeContact::kInside ? "round" : "outside");
   if (magnify > 1) scene.title += fmt::format("; angles \\times{:.3g}", magnify);
   scene.camera.eye = Vec3(0.9, -3.6, 1.5);
   scene.camera.target = Vec3(0.15, 0, 0.55);
@@ -58,8 +59,7 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   const char* space_name = "space cone (fixed, about L)";
   const char* body_name = "body cone (about 3, rolls)";
   if (space < deg_to_rad(1.0)) {  // too narrow to see: omega all but along L; say so
-    scene.title += fmt::format("; space cone {:.3g}\\deg, not drawn",
-                               rad_to_deg(p.space_cone));
+    scene.title += fmt::format("; space cone {:.3g}\\deg, not drawn", rad_to_deg(p.space_cone));
   } else {
     // The space cone as lines in L's colour: inside the body cone (an oblate body) two
     // translucent cones would blend into a colour neither swatch shows.
@@ -80,9 +80,9 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   const Eigen::Matrix3d tilt(Eigen::AngleAxisd(theta, Vec3::UnitY()));
   for (int k = 0; k < 8; ++k) {
     const double beta = kPi + 2 * kPi * k / 8 - spin;
-    const Vec3 line = turn * tilt *
-                      Vec3(std::sin(alpha) * std::cos(beta), std::sin(alpha) * std::sin(beta),
-                           std::cos(alpha));
+    const Vec3 line =
+        turn * tilt *
+        Vec3(std::sin(alpha) * std::cos(beta), std::sin(alpha) * std::sin(beta), std::cos(alpha));
     scene.add_polyline({0.15 * slant * line, slant * line}, colors::kSymmetryAxis, 2.5);
   }
   const double r = 0.016;
@@ -124,8 +124,9 @@ render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
       colors::kL;
   panel.add_line(alpha_deg, body, "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
       .color = colors::kSymmetryAxis;
-  panel.add_points({in.alpha_deg, in.alpha_deg}, {p.space_rate / in.omega, p.body_rate / in.omega},
-                   fmt::format("this run, \\alpha = {:.3g}\\deg", in.alpha_deg))
+  panel
+      .add_points({in.alpha_deg, in.alpha_deg}, {p.space_rate / in.omega, p.body_rate / in.omega},
+                  fmt::format("this run, \\alpha = {:.3g}\\deg", in.alpha_deg))
       .color = colors::kMarker;
   return plot;
 }

@@ -23,10 +23,10 @@ namespace {
 // 0.14 m and 0.085 m, 0.42 kg) thrown with a wobble; frisbee: a thin disk
 // (Is = 2I, eq. 148) of 0.175 kg and radius 0.1375 m; earth: Is/I = 1.00327, alpha = 0.2
 // arcsec, one turn per sidereal day (the text's numbers, section 6.1).
-constexpr double kSiderealDay = 86164.0905;  // s
-constexpr double kSolarDay = 86400.0;        // s
+constexpr double kSiderealDay = 86164.0905;   // s
+constexpr double kSolarDay = 86400.0;         // s
 constexpr double kEarthFlattening = 1.00327;  // Is/I, the text's
-constexpr double kEarthI = 8.0e37;            // kg m^2, Earth's transverse moment; cancels in every rate
+constexpr double kEarthI = 8.0e37;  // kg m^2, Earth's transverse moment; cancels in every rate
 
 struct Preset {
   double I, Is, omega, alpha_deg;
@@ -82,13 +82,12 @@ int main(int argc, char** argv) {
     if (!lab.given("--alpha-deg")) in.alpha_deg = preset.alpha_deg;
     const double I = in.inertia(0), Is = in.inertia(1), omega = in.omega;
     const double alpha = rigid::deg_to_rad(in.alpha_deg);
-    const rigid::SymmetricPrecession p = rigid::lab::for_option("--inertia", [&] {
-      return rigid::free_symmetric_precession(I, Is, omega, alpha);
-    });
+    const rigid::SymmetricPrecession p = rigid::lab::for_option(
+        "--inertia", [&] { return rigid::free_symmetric_precession(I, Is, omega, alpha); });
     // The text's printed values of a preset's fixed example: only for that preset
     // with nothing else changed.
-    const bool example = !lab.given("--inertia") && !lab.given("--omega") &&
-                         !lab.given("--alpha-deg");
+    const bool example =
+        !lab.given("--inertia") && !lab.given("--omega") && !lab.given("--alpha-deg");
     const auto text = [&](const char* name, const std::string& value) {
       return example && in.preset == name ? rigid::lab::printed(value) : std::nullopt;
     };
@@ -116,8 +115,9 @@ int main(int argc, char** argv) {
                text("earth", "0.00327"));
     lab.result("space_rate_over_omega", "phi_dot / omega", p.space_rate / omega, "",
                text("earth", "1.00327"));
-    lab.result("spin_rate_rad_s", "psi_dot = omega_3 - phi_dot cos(theta), 3 spins in space about itself",
-               p.spin_rate, "rad/s");
+    lab.result("spin_rate_rad_s",
+               "psi_dot = omega_3 - phi_dot cos(theta), 3 spins in space about itself", p.spin_rate,
+               "rad/s");
     if (p.body_rate != 0.0) {
       lab.result("body_precession_period_s", "2 pi / |Omega|", p.body_period, "s");
     } else {
@@ -127,14 +127,16 @@ int main(int argc, char** argv) {
     lab.result("space_precession_period_s", "2 pi / phi_dot", p.space_period, "s");
     if (in.preset == "earth") {
       if (p.body_rate != 0.0) {
-        lab.result("body_precession_period_days", "2 pi / |Omega|, sidereal omega, in days of 86400 s",
-                   p.body_period / kSolarDay, "d", text("earth", "305"));
+        lab.result("body_precession_period_days",
+                   "2 pi / |Omega|, sidereal omega, in days of 86400 s", p.body_period / kSolarDay,
+                   "d", text("earth", "305"));
       }
       lab.result("space_precession_period_days", "2 pi / phi_dot, in days of 86400 s",
                  p.space_period / kSolarDay, "d", text("earth", "0.997"));
     }
 
-    lab.section("cross-check: Euler's equations integrated (dopri5, tolerance 1e-12) for 2 pi / phi_dot");
+    lab.section(
+        "cross-check: Euler's equations integrated (dopri5, tolerance 1e-12) for 2 pi / phi_dot");
     // Within a step budget (a body whose precession is many orders slower than its
     // spin would need years of steps): beyond it the cross-check is not run.
     constexpr std::size_t kCheckSteps = 2'000'000;
@@ -144,10 +146,9 @@ int main(int argc, char** argv) {
     } catch (const std::runtime_error&) {
     }
     const std::string skipped = fmt::format("not run: needs more than {} steps", kCheckSteps);
-    const char* labels[] = {"phi_dot, 3's turn about L in a quarter period",
-                            "|integrated / closed-form phi_dot - 1|",
-                            "angle of 3 from its start after 2 pi / phi_dot",
-                            "max |L - L0| / |L0| in space"};
+    const char* labels[] = {
+        "phi_dot, 3's turn about L in a quarter period", "|integrated / closed-form phi_dot - 1|",
+        "angle of 3 from its start after 2 pi / phi_dot", "max |L - L0| / |L0| in space"};
     if (check) {
       lab.result("integrated_space_precession_rate_rad_s", labels[0], check->space_rate, "rad/s");
       lab.result("integrated_rate_error_rel", labels[1],
@@ -164,26 +165,32 @@ int main(int argc, char** argv) {
     lab.section("angles and cones (eq. 144, section 6.1)");
     lab.result("theta_deg", "theta, L to 3: tan theta = (I/Is) tan alpha", theta_deg, "deg",
                lab.textbook("> alpha for a prolate body"));
-    lab.result("body_cone_half_angle_deg", "body cone about 3: alpha", rigid::rad_to_deg(p.body_cone),
-               "deg");
+    lab.result("body_cone_half_angle_deg", "body cone about 3: alpha",
+               rigid::rad_to_deg(p.body_cone), "deg");
     lab.result("space_cone_half_angle_deg", "space cone about L: |theta - alpha| (omega to L)",
                rigid::rad_to_deg(p.space_cone), "deg");
     lab.result_text("cones_touch", "the body cone rolls on the space cone's",
                     rigid::to_string(p.contact));
 
-    const std::string numbers =
-        fmt::format("Is/I = {:.6g}, alpha = {:.6g} deg, theta = {:.6g} deg, omega to L = {:.6g} deg",
-                    Is / I, in.alpha_deg, theta_deg, rigid::rad_to_deg(p.space_cone));
+    const std::string numbers = fmt::format(
+        "Is/I = {:.6g}, alpha = {:.6g} deg, theta = {:.6g} deg, omega to L = {:.6g} deg", Is / I,
+        in.alpha_deg, theta_deg, rigid::rad_to_deg(p.space_cone));
     if (p.contact == rigid::ConeContact::kOutside) {
-      lab.note("errata: section 6.1 says the space cone can engulf the body cone for a prolate "
-               "body; it cannot: here (" + numbers + ") theta > alpha, omega lies between L and 3, "
-               "and the body cone rolls on the OUTSIDE of the space cone (neither encloses the "
-               "other). The text's 'alpha < theta for prolate' is right.");
+      lab.note(
+          "errata: section 6.1 says the space cone can engulf the body cone for a prolate "
+          "body; it cannot: here (" +
+          numbers +
+          ") theta > alpha, omega lies between L and 3, "
+          "and the body cone rolls on the OUTSIDE of the space cone (neither encloses the "
+          "other). The text's 'alpha < theta for prolate' is right.");
     } else if (p.contact == rigid::ConeContact::kInside) {
-      lab.note("errata: section 6.1 says the space cone can be outside the body cone for an "
-               "oblate body; it is inside: here (" + numbers + ") theta < alpha, L lies between "
-               "3 and omega, and the body cone surrounds the space cone and rolls on it. The "
-               "text's 'alpha > theta for oblate' is right.");
+      lab.note(
+          "errata: section 6.1 says the space cone can be outside the body cone for an "
+          "oblate body; it is inside: here (" +
+          numbers +
+          ") theta < alpha, L lies between "
+          "3 and omega, and the body cone surrounds the space cone and rolls on it. The "
+          "text's 'alpha > theta for oblate' is right.");
     }
     if (p.contact != rigid::ConeContact::kNone) {
       lab.note(fmt::format(
@@ -200,8 +207,7 @@ int main(int argc, char** argv) {
           "rad/s (3 about L in space), is {:.6g} times the spin of the plate about its own axis, "
           "|psi_dot| = omega cos alpha = {:.6g} rad/s (equal in size to the body-frame rate "
           "Omega = {:.6g} rad/s). The 2:1 is wobble:spin, as the text's eq. 149 says.",
-          p.space_rate, p.space_rate / std::abs(p.spin_rate), std::abs(p.spin_rate),
-          p.body_rate));
+          p.space_rate, p.space_rate / std::abs(p.spin_rate), std::abs(p.spin_rate), p.body_rate));
     }
     if (in.preset == "earth" && example) {
       const double day_ratio = kSolarDay / kSiderealDay;
@@ -212,9 +218,10 @@ int main(int argc, char** argv) {
           "the solar one.",
           p.body_period / kSolarDay, p.space_period / kSolarDay,
           p.body_period / kSolarDay * day_ratio, p.space_period / kSolarDay * day_ratio));
-      lab.note("The observed free wobble of the Earth, the Chandler wobble, has a period of about "
-               "433 days (the text says 440): the Earth is not rigid (its elastic mantle and oceans "
-               "yield to the wobble), which lengthens the rigid-body period.");
+      lab.note(
+          "The observed free wobble of the Earth, the Chandler wobble, has a period of about "
+          "433 days (the text says 440): the Earth is not rigid (its elastic mantle and oceans "
+          "yield to the wobble), which lengthens the rigid-body period.");
     }
 
     // Beside the run, the other kind of body at the same omega and alpha: the frisbee's
@@ -227,15 +234,15 @@ int main(int argc, char** argv) {
         prolate ? "for contrast, an oblate body: its body cone surrounds the space cone"
                 : "for contrast, a prolate body: its body cone rolls outside the space cone"};
     // two turns of 3 about L, a precession period in each 5 s of the default 10 s animation
-    lab.animate(2.0 * p.space_period,
-                "the body cone rolling on the space cone, omega along their line of contact",
-                [&](double t) {
-                  return rigid::lab::football::cones_scene(in.inertia(1) / in.inertia(0),
-                                                           in.alpha_deg, p, "", t);
-                },
-                "cones");
-    lab.figures([&](rigid::lab::FigureSet& set) {
-      rigid::lab::football::draw(set, in, p, contrast);
-    });
+    lab.animate(
+        2.0 * p.space_period,
+        "the body cone rolling on the space cone, omega along their line of contact",
+        [&](double t) {
+          return rigid::lab::football::cones_scene(in.inertia(1) / in.inertia(0), in.alpha_deg, p,
+                                                   "", t);
+        },
+        "cones");
+    lab.figures(
+        [&](rigid::lab::FigureSet& set) { rigid::lab::football::draw(set, in, p, contrast); });
   });
 }

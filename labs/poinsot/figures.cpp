@@ -79,23 +79,26 @@ void draw(FigureSet& set, const Run& run) {
           omega_plot(run.omega0, run.samples));
   std::vector<MethodCurve> curves;
   for (const MethodComparison& m : run.methods) {
-    curves.push_back({m.options.method, method_label(m.options), m.completed && std::isfinite(m.max_omega_error),
-                      m.t, m.omega_error, m.energy_error});
+    curves.push_back({m.options.method, method_label(m.options),
+                      m.completed && std::isfinite(m.max_omega_error), m.t, m.omega_error,
+                      m.energy_error});
   }
   set.add("integrators",
           fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
                       "{} against the exact solution",
                       run.evaluations_per_period, run.periods, run.period_name),
-          integrators_plot(curves,
-                           fmt::format("at equal cost: {:g} evaluations a period",
-                                       run.evaluations_per_period),
-                           {run.period, run.period_name}, "error in \\omega",
-                           "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0"));
+          integrators_plot(
+              curves,
+              fmt::format("at equal cost: {:g} evaluations a period", run.evaluations_per_period),
+              {run.period, run.period_name}, "error in \\omega",
+              "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0"));
 }
 
 Animation::Animation(const FreeBodyExact& motion, const Vector3d& half_extents, bool box,
                      double t_end, StateAt state_at, const std::vector<double>& path_times)
-    : motion_(motion), half_extents_(half_extents), box_(box),
+    : motion_(motion),
+      half_extents_(half_extents),
+      box_(box),
       state_at_(state_at ? std::move(state_at)
                          : StateAt([&motion](double t) { return motion.state(t); })) {
   const PrincipalMoments& I = motion.moments();
@@ -104,7 +107,8 @@ Animation::Animation(const FreeBodyExact& motion, const Vector3d& half_extents, 
   // the space frame turned so that L, fixed in space, points straight down: the energy
   // ellipsoid then rests on the invariable plane like a ball on a table
   const Eigen::Matrix3d attitude0 = motion.attitude(0.0).toRotationMatrix();
-  space_ = Eigen::Quaterniond::FromTwoVectors(attitude0 * L0, -Vector3d::UnitZ()).toRotationMatrix();
+  space_ =
+      Eigen::Quaterniond::FromTwoVectors(attitude0 * L0, -Vector3d::UnitZ()).toRotationMatrix();
   size_ = half_extents.maxCoeff();
   const PoinsotEllipsoids e = poinsot_ellipsoids(I, w0);
   construction_scale_ = size_ / e.energy_semi_axes.maxCoeff();
@@ -141,8 +145,10 @@ render::Scene3D Animation::frame(double t) const {
   const Eigen::Matrix3d a = space_ * attitude(x).toRotationMatrix();
   const Vector3d w = omega_body(x);
   render::Scene3D scene;
-  scene.title = fmt::format("the body turning, L fixed; its energy ellipsoid rolls on the "
-                            "invariable plane: t = {:.2f} s", t);
+  scene.title = fmt::format(
+      "the body turning, L fixed; its energy ellipsoid rolls on the "
+      "invariable plane: t = {:.2f} s",
+      t);
   // from the side and above: the plane and the herpolhode on it show, and the body
   scene.camera.eye = Vector3d(1.5 * size_, -8.0 * size_, 6.0 * size_);
   scene.camera.target = Vector3d(1.5 * size_, 0.0, -0.5 * size_);
@@ -154,8 +160,8 @@ render::Scene3D Animation::frame(double t) const {
   } else {
     scene.add_ellipsoid(Vector3d::Zero(), half_extents_, a, body, "the body");
   }
-  scene.add_arrow(Vector3d::Zero(), -1.9 * size_ * Vector3d::UnitZ(), 0.035 * size_,
-                  {colors::kL}, "L, fixed in space");
+  scene.add_arrow(Vector3d::Zero(), -1.9 * size_ * Vector3d::UnitZ(), 0.035 * size_, {colors::kL},
+                  "L, fixed in space");
   scene.add_arrow(Vector3d::Zero(), omega_scale_ * (a * w), 0.035 * size_, {colors::kOmega},
                   "\\omega");
   // Poinsot's construction: the energy ellipsoid turning with the body, touching the
@@ -177,7 +183,8 @@ render::Scene3D Animation::frame(double t) const {
   }
   const Vector3d contact = to_construction(a, w);
   trace.push_back(contact);
-  if (trace.size() >= 2) scene.add_tube(std::move(trace), 0.012 * size_, {render::kBlack}, "herpolhode");
+  if (trace.size() >= 2)
+    scene.add_tube(std::move(trace), 0.012 * size_, {render::kBlack}, "herpolhode");
   scene.add_arrow(offset_, contact, 0.025 * size_, {colors::kOmega});
   scene.add_sphere(contact, 0.035 * size_, {colors::kOmega});
   return scene;
@@ -190,8 +197,8 @@ render::Scene3D Animation::herpolhode_scene(double periods) const {
     return to_construction(space_ * attitude(x).toRotationMatrix(), omega_body(x));
   };
   render::Scene3D scene;
-  scene.title = fmt::format("the herpolhode over {:g} polhode periods on the invariable plane",
-                            periods);
+  scene.title =
+      fmt::format("the herpolhode over {:g} polhode periods on the invariable plane", periods);
   // the plane face on, from its free side (the ellipsoid rests on the other), a little
   // aslant so the ellipsoid shows as a body behind it
   scene.camera.eye = offset_ + Vector3d(0.0, -3.0 * size_, -12.0 * size_);
@@ -221,7 +228,8 @@ render::Scene3D Animation::herpolhode_scene(double periods) const {
   const Eigen::Matrix3d a0 = space_ * attitude(x0).toRotationMatrix();
   const PoinsotEllipsoids e = poinsot_ellipsoids(motion_.moments(), motion_.omega_body(0.0));
   scene.add_ellipsoid(offset_, construction_scale_ * e.energy_semi_axes, a0,
-                      {render::kLightGray, 1.0f, 0.15f}, "energy ellipsoid at t = 0, behind the plane");
+                      {render::kLightGray, 1.0f, 0.15f},
+                      "energy ellipsoid at t = 0, behind the plane");
   return scene;
 }
 

@@ -18,13 +18,13 @@ namespace rigid::lab::poinsot {
 /// The lab's inputs, with the text's defaults (section 5.1: the solid ellipsoid
 /// x^2/9 + y^2/4 + z^2 = 1 of mass pi, started at omega = (1, 1, 1)).
 struct Inputs {
-  Eigen::Vector3d inertia{1, 1, 1};    ///< used only when --inertia is given
-  Eigen::Vector3d ellipsoid{3, 2, 1};  ///< semi-axes A, B, C
+  Eigen::Vector3d inertia{1, 1, 1};      ///< used only when --inertia is given
+  Eigen::Vector3d ellipsoid{3, 2, 1};    ///< semi-axes A, B, C
   Eigen::Vector3d box{0.2, 0.15, 0.03};  ///< side lengths, used only when --box is given
   double mass = kPi;
   Eigen::Vector3d omega0{1, 1, 1};
-  double t_end = 0.0;    ///< 0: three polhode periods
-  double periods = 0.0;  ///< --periods: t_end as a number of polhode periods
+  double t_end = 0.0;             ///< 0: three polhode periods
+  double periods = 0.0;           ///< --periods: t_end as a number of polhode periods
   IntegrationInputs integration;  ///< "exact" by default; step 0: period / 2000
 };
 
@@ -32,12 +32,12 @@ struct Inputs {
 struct Run {
   const FreeBodyExact& motion;
   Eigen::Vector3d omega0;
-  const std::vector<FreeBodySample>& samples;  ///< the lab's own run (exact or integrated)
+  const std::vector<FreeBodySample>& samples;    ///< the lab's own run (exact or integrated)
   const std::vector<MethodComparison>& methods;  ///< every integrator at the same cost
-  double evaluations_per_period = 0.0;            ///< that cost
-  double periods = 0.0;                           ///< over this many periods
-  double period = 0.0;                            ///< of this length: the time scale, s
-  std::string period_name;                        ///< "polhode periods"
+  double evaluations_per_period = 0.0;           ///< that cost
+  double periods = 0.0;                          ///< over this many periods
+  double period = 0.0;                           ///< of this length: the time scale, s
+  std::string period_name;                       ///< "polhode periods"
 };
 
 /// Hands the lab's figures to the set.
@@ -72,7 +72,7 @@ class Animation {
   StateAt state_at_;
   Eigen::Matrix3d space_;  ///< the motion's space frame turned so that L points down
   double size_, omega_scale_, construction_scale_, plane_depth_, plane_radius_;
-  Eigen::Vector3d offset_;                          ///< where the construction stands
+  Eigen::Vector3d offset_;                             ///< where the construction stands
   std::vector<std::vector<Eigen::Vector3d>> polhode_;  ///< in body axes, rad/s
   std::vector<double> herpolhode_t_;
   std::vector<Eigen::Vector3d> herpolhode_;  ///< the contact point at those times, drawn

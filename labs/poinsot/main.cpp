@@ -4,8 +4,6 @@
 // x^2/9 + y^2/4 + z^2 = 1 (I = pi, 2 pi, 8.168) started at omega = (1, 1, 1),
 // omega(t) follows in closed form from Jacobi's elliptic functions; every
 // integrator is measured against it.
-#include "rigid/poinsot.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,6 +14,7 @@
 #include "common/lab.h"
 #include "figures.h"
 #include "rigid/inertia.h"
+#include "rigid/poinsot.h"
 
 using Eigen::Vector3d;
 using rigid::lab::Lab;
@@ -58,7 +57,10 @@ int main(int argc, char** argv) {
       .positive()
       .lab_default("none: the ellipsoid")
       .symbol("box");
-  lab.number("--mass", in.mass, "mass of the solid ellipsoid or box").unit("kg").positive().symbol("M");
+  lab.number("--mass", in.mass, "mass of the solid ellipsoid or box")
+      .unit("kg")
+      .positive()
+      .symbol("M");
   lab.vector("--omega", in.omega0, "initial angular velocity in body axes")
       .unit("rad/s")
       .nonzero()
@@ -85,12 +87,15 @@ int main(int argc, char** argv) {
     if (moments_given) lab.drop_input("mass");
     const Vector3d moments =
         moments_given ? in.inertia
-        : box ? Vector3d(rigid::solid_box(in.mass, in.box(0), in.box(1), in.box(2)).I_com.diagonal())
-              : Vector3d(rigid::solid_ellipsoid(in.mass, in.ellipsoid(0), in.ellipsoid(1),
-                                                in.ellipsoid(2))
-                             .I_com.diagonal());
+        : box
+            ? Vector3d(rigid::solid_box(in.mass, in.box(0), in.box(1), in.box(2)).I_com.diagonal())
+            : Vector3d(
+                  rigid::solid_ellipsoid(in.mass, in.ellipsoid(0), in.ellipsoid(1), in.ellipsoid(2))
+                      .I_com.diagonal());
     const rigid::PrincipalMoments I{moments(0), moments(1), moments(2)};
-    rigid::lab::for_option(moments_given ? "--inertia" : box ? "--box" : "--ellipsoid",
+    rigid::lab::for_option(moments_given ? "--inertia"
+                           : box         ? "--box"
+                                         : "--ellipsoid",
                            [&] { rigid::validate(I); });
 
     lab.section("5.1 the body and its free motion (eqs. 116-120)");
@@ -120,8 +125,7 @@ int main(int argc, char** argv) {
     lab.section("integration to t_end = " + fmt::format("{:g} s", t_end));
     lab.result_text("method", "method", in.integration.method);
     if (in.integration.method != "exact") {
-      lab.result_text("method_kind", "  its kind",
-                      std::string(rigid::method_kind(options.method)));
+      lab.result_text("method_kind", "  its kind", std::string(rigid::method_kind(options.method)));
     }
     rigid::lab::report_plan(lab, plan);
     const rigid::IntegrationResult run =
@@ -129,8 +133,9 @@ int main(int argc, char** argv) {
     lab.result("omega_end", "omega at t_end", run.samples.back().omega_body, "rad/s");
     rigid::lab::report_drifts(lab, run, scale, in.integration.method == "exact");
 
-    lab.section(fmt::format("every integrator against the exact solution (tolerance {:g}, step {:.4g} s)",
-                            in.integration.tolerance, options.step));
+    lab.section(
+        fmt::format("every integrator against the exact solution (tolerance {:g}, step {:.4g} s)",
+                    in.integration.tolerance, options.step));
     // An aside: a method needing more steps than this is reported as not run.
     const std::vector<rigid::MethodComparison> methods =
         rigid::compare_methods(exact, times, scale, options, kMaxComparisonSteps);
@@ -150,12 +155,12 @@ int main(int argc, char** argv) {
 
     // "Which method drifts" answered at equal cost, over enough periods for a
     // symplectic method's bounded band to tell from a steady drift.
-    const std::vector<rigid::MethodComparison> at_cost = rigid::compare_methods_at_cost(
-        exact, scale, kEqualCostPeriods, kEqualCostEvaluations);
+    const std::vector<rigid::MethodComparison> at_cost =
+        rigid::compare_methods_at_cost(exact, scale, kEqualCostPeriods, kEqualCostEvaluations);
     std::vector<rigid::lab::EqualCostRow> cost_rows;
     for (const rigid::MethodComparison& c : at_cost) {
-      cost_rows.push_back({c.options, c.completed && std::isfinite(c.max_omega_error),
-                           c.evaluations, c.energy});
+      cost_rows.push_back(
+          {c.options, c.completed && std::isfinite(c.max_omega_error), c.evaluations, c.energy});
     }
     rigid::lab::report_equal_cost(lab, cost_rows, kEqualCostEvaluations, kEqualCostPeriods);
 
@@ -167,7 +172,8 @@ int main(int argc, char** argv) {
                ellipsoids.momentum_semi_axes, "rad/s");
     // Poinsot's construction: the energy ellipsoid rolls on the invariable plane, the
     // contact point (omega) tracing the herpolhode there
-    lab.result("invariable_plane_distance", "invariable plane's distance from the fixed point, 2T/|L|",
+    lab.result("invariable_plane_distance",
+               "invariable plane's distance from the fixed point, 2T/|L|",
                2.0 * exact.energy() / exact.angular_momentum_magnitude(), "rad/s");
     const double turn = rigid::herpolhode_turn_per_period(exact);
     if (std::isfinite(turn)) {
@@ -221,12 +227,11 @@ int main(int argc, char** argv) {
     // The body as drawn: as given, or, from its moments alone, the solid ellipsoid with
     // those moments (semi-axes^2 in proportion to I_j + I_k - I_i, eq. 40).
     const Vector3d extents =
-        box ? Vector3d(0.5 * in.box)
-        : moments_given
-            ? Vector3d(std::sqrt(std::max(I.I2 + I.I3 - I.I1, 1e-3 * moments.sum())),
-                       std::sqrt(std::max(I.I1 + I.I3 - I.I2, 1e-3 * moments.sum())),
-                       std::sqrt(std::max(I.I1 + I.I2 - I.I3, 1e-3 * moments.sum())))
-            : in.ellipsoid;
+        box             ? Vector3d(0.5 * in.box)
+        : moments_given ? Vector3d(std::sqrt(std::max(I.I2 + I.I3 - I.I1, 1e-3 * moments.sum())),
+                                   std::sqrt(std::max(I.I1 + I.I3 - I.I2, 1e-3 * moments.sum())),
+                                   std::sqrt(std::max(I.I1 + I.I2 - I.I3, 1e-3 * moments.sum())))
+                        : in.ellipsoid;
     if (lab.animating()) {
       // Frames from the chosen method: the exact solution, or the integrator sampled at
       // exactly the animation's times (never at its own steps)
@@ -235,8 +240,8 @@ int main(int argc, char** argv) {
       std::map<double, rigid::FreeBodyState> states;
       if (in.integration.method != "exact") {
         path_times = lab.animation_times(t_end);
-        const rigid::IntegrationResult frames = rigid::lab::run_free_body(
-            lab, exact, in.integration, options, path_times);
+        const rigid::IntegrationResult frames =
+            rigid::lab::run_free_body(lab, exact, in.integration, options, path_times);
         for (const rigid::FreeBodySample& s : frames.samples)
           states[s.t] = rigid::make_state(s.omega_body, s.attitude);
         state_at = [&states](double t) { return states.at(t); };

@@ -48,7 +48,9 @@ fs::path own_directory() {
   return ec ? fs::current_path() : self.parent_path();
 }
 
-fs::path lab_path(const std::string& lab) { return own_directory() / lab; }
+fs::path lab_path(const std::string& lab) {
+  return own_directory() / lab;
+}
 
 // A lab's title: the first line of its --help.
 std::string title_of(const std::string& lab) {
@@ -90,7 +92,8 @@ pid_t start(const std::string& lab, const std::vector<std::string>& args, int er
     std::FILE* null = std::freopen("/dev/null", "w", stdout);
     (void)null;
     ::execv(path.c_str(), argv.data());
-    std::fprintf(stderr, "rigidlab: error: %s: cannot run (%s)\n", path.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "rigidlab: error: %s: cannot run (%s)\n", path.c_str(),
+                 std::strerror(errno));
     ::_exit(127);
   }
   return pid;
@@ -104,7 +107,8 @@ int run_captured(const std::string& lab, const std::vector<std::string>& args, s
   const pid_t pid = start(lab, args, fds[1]);
   ::close(fds[1]);
   std::array<char, 4096> buffer{};
-  for (ssize_t n; (n = ::read(fds[0], buffer.data(), buffer.size())) > 0;) err.append(buffer.data(), n);
+  for (ssize_t n; (n = ::read(fds[0], buffer.data(), buffer.size())) > 0;)
+    err.append(buffer.data(), n);
   ::close(fds[0]);
   int status = 0;
   ::waitpid(pid, &status, 0);
@@ -130,7 +134,8 @@ int figures(const std::string& out, const std::string& size, const std::string& 
   }
   std::cerr << err;
   int failed = first == 0 ? 0 : 1;
-  std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED") << "\n";
+  std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED")
+            << "\n";
   const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
   std::vector<std::pair<pid_t, std::string>> running;
   const auto wait_one = [&] {
@@ -155,8 +160,7 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     std::cerr << "rigidlab: error: figures: " << failed << " lab(s) failed (their lines above)\n";
     return 1;
   }
-  std::cout << "figures of " << labs.size() << " labs in " << fs::absolute(out).string()
-            << "\n";
+  std::cout << "figures of " << labs.size() << " labs in " << fs::absolute(out).string() << "\n";
   return 0;
 }
 

@@ -32,11 +32,11 @@ render::Plot2D omega_plot(const Figures& f) {
     }
     render::Panel& panel = plot.panel(axis, 0);
     const SpinStability& p = f.predicted[axis];
-    panel.title = p.unstable
-                      ? fmt::format("about 2 ({}): unstable, grows at {:.4g}/s, flips every {:.3g} s",
-                                    kAxisWords[axis], p.rate, 0.5 * f.launches[axis].period())
-                      : fmt::format("about {} ({}): stable, wobbles at {:.4g} rad/s", axis + 1,
-                                    kAxisWords[axis], p.rate);
+    panel.title =
+        p.unstable ? fmt::format("about 2 ({}): unstable, grows at {:.4g}/s, flips every {:.3g} s",
+                                 kAxisWords[axis], p.rate, 0.5 * f.launches[axis].period())
+                   : fmt::format("about {} ({}): stable, wobbles at {:.4g} rad/s", axis + 1,
+                                 kAxisWords[axis], p.rate);
     panel.x = {axis == 2 ? "t (s)" : "", render::Scale::kLinear, 0, f.t_end};
     panel.y.label = "\\omega_i (rad/s)";
     for (int i = 0; i < 3; ++i) {
@@ -74,13 +74,16 @@ render::Plot2D growth_plot(const Figures& f) {
   plot.title = "the disturbance of a spin about 2 grows exponentially";
   render::Panel& panel = plot.panel();
   panel.x = {"t (s)", render::Scale::kLinear, 0, flip};
-  panel.y = {"transverse share |\\omega_\\perp| / |\\omega| = \\sqrt(\\omega_1^2 + \\omega_3^2) / |\\omega|",
-             render::Scale::kLog10, 0.3 * std::min(share.front(), slope_line(f.textbook_rate).second.front()), top};
+  panel.y = {
+      "transverse share |\\omega_\\perp| / |\\omega| = \\sqrt(\\omega_1^2 + \\omega_3^2) / "
+      "|\\omega|",
+      render::Scale::kLog10,
+      0.3 * std::min(share.front(), slope_line(f.textbook_rate).second.front()), top};
   panel.add_span(f.growth->t_begin, f.growth->t_end, true, "fitted interval").color = render::kGray;
   panel.add_line(t, share, "exact motion").color = render::kBlack;
   const auto [xp, yp] = slope_line(f.predicted[1].rate);
-  auto& predicted = panel.add_line(xp, yp, fmt::format("predicted, eqs. 86-88: {:.4g}/s",
-                                                       f.predicted[1].rate));
+  auto& predicted =
+      panel.add_line(xp, yp, fmt::format("predicted, eqs. 86-88: {:.4g}/s", f.predicted[1].rate));
   predicted.color = render::kBlue;
   predicted.dash = render::Dash::kDashed;
   const auto [xm, ym] = slope_line(f.growth->rate);
@@ -179,10 +182,14 @@ render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int ax
   const double I2 = motion.moments().I2, L = motion.angular_momentum_magnitude();
   const double angle2 = std::acos(std::clamp(I2 * omega_body(x)(1) / L, -1.0, 1.0));
   render::Scene3D scene;
-  scene.title = axis == 1 ? fmt::format("spun about axis 2, it turns over and back: t = {:.3f} s, "
-                                       "axis 2 at {:.0f}\\deg from L", t, rad_to_deg(angle2))
-                          : fmt::format("spun about axis {}, it wobbles: t = {:.3f} s, axis 2 at "
-                                        "{:.0f}\\deg from L", axis + 1, t, rad_to_deg(angle2));
+  scene.title = axis == 1 ? fmt::format(
+                                "spun about axis 2, it turns over and back: t = {:.3f} s, "
+                                "axis 2 at {:.0f}\\deg from L",
+                                t, rad_to_deg(angle2))
+                          : fmt::format(
+                                "spun about axis {}, it wobbles: t = {:.3f} s, axis 2 at "
+                                "{:.0f}\\deg from L",
+                                axis + 1, t, rad_to_deg(angle2));
   add_racquet(scene, r, R, Vector3d::Zero(), true);
   scene.add_arrow(Vector3d::Zero(), 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {colors::kL},
                   "L, fixed in space");

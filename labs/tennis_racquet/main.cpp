@@ -33,21 +33,32 @@ const char* const kAxisNames[] = {"1 (the handle)", "2 (in the plane, across the
 }  // namespace
 
 int main(int argc, char** argv) {
-  Lab lab("tennis_racquet", "the tennis racquet theorem: the flip about the intermediate axis "
-                            "(section 4.1)");
+  Lab lab("tennis_racquet",
+          "the tennis racquet theorem: the flip about the intermediate axis "
+          "(section 4.1)");
   rigid::lab::tennis_racquet::Inputs in;
-  lab.number("--head-mass", in.head_mass, "mass m_a of the head, a ring").unit("kg").positive()
+  lab.number("--head-mass", in.head_mass, "mass m_a of the head, a ring")
+      .unit("kg")
+      .positive()
       .symbol("m_a");
-  lab.number("--head-radius", in.head_radius, "radius a of the head").unit("m").positive()
+  lab.number("--head-radius", in.head_radius, "radius a of the head")
+      .unit("m")
+      .positive()
       .symbol("a");
-  lab.number("--handle-mass", in.handle_mass, "mass m_l of the handle, a thin rod").unit("kg")
-      .positive().symbol("m_l");
-  lab.number("--handle-length", in.handle_length, "length l of the handle").unit("m").positive()
+  lab.number("--handle-mass", in.handle_mass, "mass m_l of the handle, a thin rod")
+      .unit("kg")
+      .positive()
+      .symbol("m_l");
+  lab.number("--handle-length", in.handle_length, "length l of the handle")
+      .unit("m")
+      .positive()
       .symbol("l");
   lab.choice("--spin-axis", in.spin_axis, {"1", "2", "3"},
              "principal axis of the spin: 1 handle, 2 in the plane, 3 normal to the face")
       .symbol("axis");
-  lab.number("--omega", in.omega, "the spin |omega| at launch").unit("rad/s").positive()
+  lab.number("--omega", in.omega, "the spin |omega| at launch")
+      .unit("rad/s")
+      .positive()
       .symbol("\\omega");
   lab.number("--perturbation", in.perturbation,
              "transverse share of omega at launch, along the next axis (1->2, 2->3, 3->1)")
@@ -76,8 +87,10 @@ int main(int argc, char** argv) {
     lab.result("perpendicular_axis_ratio", "I3 / (I1 + I2), a lamina's 1", I.I3 / (I.I1 + I.I2),
                "");
 
-    lab.section(fmt::format("4.1.1-4.1.2 a spin omega = {:g} rad/s about each axis, "
-                            "to first order (eqs. 86-103)", in.omega));
+    lab.section(
+        fmt::format("4.1.1-4.1.2 a spin omega = {:g} rad/s about each axis, "
+                    "to first order (eqs. 86-103)",
+                    in.omega));
     const rigid::EulerCoefficients full = rigid::euler_coefficients(I);
     const rigid::EulerCoefficients text = rigid::simplified_racquet_coefficients();
     std::array<rigid::SpinStability, 3> predicted, simplified;
@@ -95,7 +108,8 @@ int main(int argc, char** argv) {
                Vector2d(simplified[0].rate, simplified[2].rate), "rad/s",
                lab.textbook("(omega_1, omega_3) (eq. 95)"));
     const Vector2d ratios(predicted[0].axis_ratio, predicted[2].axis_ratio);
-    const std::string ratios_label = "axes 1, 3: |omega_2|/|omega_3|, |omega_1|/|omega_2| of the wobble";
+    const std::string ratios_label =
+        "axes 1, 3: |omega_2|/|omega_3|, |omega_1|/|omega_2| of the wobble";
     if (ratios.allFinite()) {
       lab.result("ellipse_axis_ratios", ratios_label, ratios, "");
     } else {
@@ -120,27 +134,33 @@ int main(int argc, char** argv) {
         flips ? std::optional(rigid::measure_growth_rate(launches[1], 1, share_limit))
               : std::nullopt;
 
-    lab.section(fmt::format("measured on the exact motion, launched with {:g} of omega along the "
-                            "next axis", in.perturbation));
+    lab.section(
+        fmt::format("measured on the exact motion, launched with {:g} of omega along the "
+                    "next axis",
+                    in.perturbation));
     const char* measured = "axis 2: growth rate fitted to the exact omega_1, omega_3";
     if (growth) {
       lab.result("growth_rate_measured_per_s", measured, growth->rate, "1/s");
-      lab.result("growth_fit_interval_s", "  fitted over t from, to", Vector2d(growth->t_begin, growth->t_end), "s");
+      lab.result("growth_fit_interval_s", "  fitted over t from, to",
+                 Vector2d(growth->t_begin, growth->t_end), "s");
       lab.result("growth_fit_shares", "  transverse share of omega at the interval's ends",
                  Vector2d(growth->share_begin, growth->share_end), "");
     } else {
-      lab.result_none("growth_rate_measured_per_s", measured, "1/s",
-                      "the spin about 2 does not flip: I1, I2, I3 not distinct to double precision");
+      lab.result_none(
+          "growth_rate_measured_per_s", measured, "1/s",
+          "the spin about 2 does not flip: I1, I2, I3 not distinct to double precision");
     }
-    lab.result("wobble_frequencies_measured_rad_s", "axes 1, 3: 2 pi / polhode period",
-               Vector2d(2 * rigid::kPi / launches[0].period(), 2 * rigid::kPi / launches[2].period()),
-               "rad/s");
+    lab.result(
+        "wobble_frequencies_measured_rad_s", "axes 1, 3: 2 pi / polhode period",
+        Vector2d(2 * rigid::kPi / launches[0].period(), 2 * rigid::kPi / launches[2].period()),
+        "rad/s");
 
     const int axis = in.spin_axis[0] - '1';
     const rigid::FreeBodyExact& motion = launches[axis];
     lab.section(fmt::format("the spin about axis {}", kAxisNames[axis]));
-    lab.result_text("stability", "first order",
-                    predicted[axis].unstable ? "unstable: the disturbance grows" : "stable: a wobble");
+    lab.result_text(
+        "stability", "first order",
+        predicted[axis].unstable ? "unstable: the disturbance grows" : "stable: a wobble");
     rigid::lab::report_motion(lab, motion);
     if (std::isfinite(motion.period())) {
       lab.result("polhode_period_s", "polhode period", motion.period(), "s");
@@ -159,18 +179,19 @@ int main(int argc, char** argv) {
     // The handle stays near the plane across L (spins about 2 and 3) or near L (about 1).
     // Over a polhode period, or over the run where there is none (the separatrix).
     const double scale = rigid::lab::time_scale(motion);
-    const double t_end = rigid::lab::end_time(lab, in.t_end, in.periods, scale,
-                                              rigid::lab::time_scale(launches[1]));
+    const double t_end =
+        rigid::lab::end_time(lab, in.t_end, in.periods, scale, rigid::lab::time_scale(launches[1]));
     const rigid::CosineRange handle = rigid::direction_cosine_range(
         motion, 0, std::isfinite(motion.period()) ? motion.period() : t_end);
     const double handle_max = std::max(std::abs(handle.min), std::abs(handle.max));
     const double handle_min = handle.min <= 0 && handle.max >= 0
-                                  ? 0.0 : std::min(std::abs(handle.min), std::abs(handle.max));
-    const double excursion = axis == 0 ? std::acos(std::min(handle_min, 1.0))
-                                       : std::asin(std::min(handle_max, 1.0));
+                                  ? 0.0
+                                  : std::min(std::abs(handle.min), std::abs(handle.max));
+    const double excursion =
+        axis == 0 ? std::acos(std::min(handle_min, 1.0)) : std::asin(std::min(handle_max, 1.0));
     lab.result("handle_excursion_max_deg",
-               axis == 0 ? "largest angle of the handle from L" :
-                           "largest angle of the handle out of the plane across L",
+               axis == 0 ? "largest angle of the handle from L"
+                         : "largest angle of the handle out of the plane across L",
                rigid::rad_to_deg(excursion), "deg");
 
     // Two flips: one polhode period of the spin about 2 (its time scale, if it does not flip).
@@ -196,12 +217,14 @@ int main(int argc, char** argv) {
               : std::string("with omega_3 still (I1 = I2 to double precision)")));
     }
     if (in.perturbation > 0.05) {
-      lab.note(fmt::format("The disturbance at launch ({:g} of omega) is not small: the linear "
-                           "rates describe only its start, and the fit runs to a share of {:g}.",
-                           in.perturbation, share_limit));
+      lab.note(
+          fmt::format("The disturbance at launch ({:g} of omega) is not small: the linear "
+                      "rates describe only its start, and the fit runs to a share of {:g}.",
+                      in.perturbation, share_limit));
     }
-    lab.note("Section 4.1's ratios of the ellipsoids for I1 : I2 : I3 = 5 : 4 : 3 are the poinsot "
-             "lab's (results ratios_*); they are not repeated here.");
+    lab.note(
+        "Section 4.1's ratios of the ellipsoids for I1 : I2 : I3 = 5 : 4 : 3 are the poinsot "
+        "lab's (results ratios_*); they are not repeated here.");
 
     rigid::lab::TimeSeries series{{"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
                                    "omega1_integrated", "omega2_integrated", "omega3_integrated"},
@@ -223,19 +246,19 @@ int main(int argc, char** argv) {
       for (const rigid::FreeBodySample& s : frames.samples)
         states[s.t] = rigid::make_state(s.omega_body, s.attitude);
     }
-    lab.animate(t_end, "the racquet turning in space, omega's components below",
-                [&](double t) {
-                  return rigid::lab::tennis_racquet::spin_scene(
-                      racquet, motion, axis, t,
-                      states.empty() ? std::function<rigid::FreeBodyState(double)>()
-                                     : [&states](double s) { return states.at(s); });
-                },
-                [&](double t) { return rigid::lab::tennis_racquet::omega_strip(motion, t_end, t); },
-                0.3);
+    lab.animate(
+        t_end, "the racquet turning in space, omega's components below",
+        [&](double t) {
+          return rigid::lab::tennis_racquet::spin_scene(
+              racquet, motion, axis, t,
+              states.empty() ? std::function<rigid::FreeBodyState(double)>()
+                             : [&states](double s) { return states.at(s); });
+        },
+        [&](double t) { return rigid::lab::tennis_racquet::omega_strip(motion, t_end, t); }, 0.3);
 
     lab.figures([&](rigid::lab::FigureSet& set) {
-      rigid::lab::tennis_racquet::draw(
-          set, {racquet, launches, predicted, simplified[1].rate, growth ? &*growth : nullptr, t_end, axis});
+      rigid::lab::tennis_racquet::draw(set, {racquet, launches, predicted, simplified[1].rate,
+                                             growth ? &*growth : nullptr, t_end, axis});
     });
   });
 }

@@ -37,9 +37,10 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
   scene.camera.target = Vec3(0.05 * a, 0, 0);
   scene.camera.fov_y_deg = 34;
 
-  scene.add_cylinder(Vec3(-0.012 * a, 0, 0), Vec3(0.012 * a, 0, 0), a, flat_body(colors::kBody, 0.35f),
-                     "disk (symmetry axis x)");
-  scene.add_cylinder(-1.9 * a * axle, 1.9 * a * axle, 0.035 * a, {colors::kFixedAxis}, "crooked axle");
+  scene.add_cylinder(Vec3(-0.012 * a, 0, 0), Vec3(0.012 * a, 0, 0), a,
+                     flat_body(colors::kBody, 0.35f), "disk (symmetry axis x)");
+  scene.add_cylinder(-1.9 * a * axle, 1.9 * a * axle, 0.035 * a, {colors::kFixedAxis},
+                     "crooked axle");
   // A balanced wheel (a straight axle) needs no masses, and L sweeps no cone.
   if (m0 > 0.0) {
     const double r0 = 0.07 * a * std::cbrt(std::max(m0, 1e-6) / (0.01 * wheel.mass));

@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
       .unit("m")
       .positive()
       .symbol("b");
-  lab.angle_deg("--tilt-deg", in.tilt_deg, "angle theta between axle and symmetry axis (0: straight)")
+  lab.angle_deg("--tilt-deg", in.tilt_deg,
+                "angle theta between axle and symmetry axis (0: straight)")
       .range_from(0.0, 45.0)
       .symbol("\\theta");
   lab.number("--omega", in.omega, "spin of the wheel about its axle").unit("rad/s").positive();
@@ -78,9 +79,8 @@ int main(int argc, char** argv) {
                rigid::bearing_torque(wheel, 0.0, omega).stableNorm(), "N m");
 
     lab.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
-    const double m0 = rigid::lab::for_option("--tilt-deg", [&] {
-      return rigid::balance_mass_exact(wheel);
-    });
+    const double m0 =
+        rigid::lab::for_option("--tilt-deg", [&] { return rigid::balance_mass_exact(wheel); });
     const double m0_small = rigid::balance_mass_small_angle(wheel);
     lab.result("balance_mass_kg", "m0, exact from tan 2 theta (eq. 60)", m0, "kg",
                lab.textbook("0.076 (76 g)"));

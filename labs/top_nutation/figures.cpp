@@ -65,14 +65,19 @@ render::Plot2D potential_plot(const HeavyTopExact& m) {
   panel.x = {"\\theta (\\deg)", render::Scale::kLinear, rad_to_deg(a), rad_to_deg(b)};
   panel.y = {"V(\\theta) and E' (J)", render::Scale::kLinear, y_bottom, y_top};
   panel.add_line(x, y, "V(\\theta)").color = render::kBlue;
-  panel.add_ref_line(E_prime, false, fmt::format("E' = {:.5g} J", E_prime)).color = render::kVermillion;
-  panel.add_points({rad_to_deg(lo), rad_to_deg(hi)}, {E_prime, E_prime},
-                   fmt::format("turning points {:.4g}\\deg, {:.4g}\\deg", rad_to_deg(lo), rad_to_deg(hi)))
+  panel.add_ref_line(E_prime, false, fmt::format("E' = {:.5g} J", E_prime)).color =
+      render::kVermillion;
+  panel
+      .add_points(
+          {rad_to_deg(lo), rad_to_deg(hi)}, {E_prime, E_prime},
+          fmt::format("turning points {:.4g}\\deg, {:.4g}\\deg", rad_to_deg(lo), rad_to_deg(hi)))
       .marker_size = 18;
   panel.series.back().color = render::kVermillion;
-  panel.add_points({rad_to_deg(theta_steady)}, {V_min},
-                   fmt::format("minimum: steady precession at {:.4g}\\deg", rad_to_deg(theta_steady)),
-                   render::Marker::kSquare)
+  panel
+      .add_points(
+          {rad_to_deg(theta_steady)}, {V_min},
+          fmt::format("minimum: steady precession at {:.4g}\\deg", rad_to_deg(theta_steady)),
+          render::Marker::kSquare)
       .marker_size = 18;
   panel.series.back().color = render::kBlack;
   return plot;
@@ -88,8 +93,9 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
                                ? std::abs(steady.slow)
                                : (s0.spin > 0 ? top.mgl / (top.Is * s0.spin) : 1.0);
   render::Scene3D scene;
-  scene.title = fmt::format("the symmetry axis on the unit sphere for \\phi-dot_0 = {:.3g}, 0, {:.3g} rad/s",
-                            0.5 * reference, -0.5 * reference);
+  scene.title =
+      fmt::format("the symmetry axis on the unit sphere for \\phi-dot_0 = {:.3g}, 0, {:.3g} rad/s",
+                  0.5 * reference, -0.5 * reference);
   const double gap = 2.6;
   int index = 0;
   for (const double phi_dot0 : {0.5 * reference, 0.0, -0.5 * reference}) {
@@ -112,7 +118,8 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
     scene.add_polyline(circle(motion.theta_min(), c, 1.02), render::kBlack, 2.5,
                        first ? "turning circles \\theta_{min}, \\theta_{max}" : "");
     scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlack, 2.5);
-    scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {colors::kFixedAxis}, first ? "vertical z" : "");
+    scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {colors::kFixedAxis},
+                    first ? "vertical z" : "");
     scene.add_label(c + Vector3d(0, -1.3, 0), to_string(motion.regime()));
     ++index;
   }
@@ -123,7 +130,8 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
   return scene;
 }
 
-// phi_dot from a state: omega_z = phi_dot + psi_dot cos(theta), omega_3 = phi_dot cos(theta) + psi_dot.
+// phi_dot from a state: omega_z = phi_dot + psi_dot cos(theta), omega_3 = phi_dot cos(theta) +
+// psi_dot.
 double phi_dot_of(const TopSample& s) {
   const Vector3d axis = s.attitude * Vector3d::UnitZ();
   const double omega_z = (s.attitude * s.omega_body).z(), c = axis.z();
@@ -222,7 +230,8 @@ render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius
     for (const double s : when) path.push_back(reach * (state(s).attitude * Vector3d::UnitZ()));
     scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0,
                        from > 0 ? fmt::format("path of the symmetry axis, its last {} nutation "
-                                              "periods", kPathPeriods)
+                                              "periods",
+                                              kPathPeriods)
                                 : "path of the symmetry axis");
   }
   const double arrow = 1.6 * size;
@@ -256,23 +265,23 @@ void draw(FigureSet& set, const Figures& f) {
   for (const TopComparison& c : f.methods) {
     std::vector<double> deg;
     for (const double e : c.theta_error) deg.push_back(rad_to_deg(e));
-    curves.push_back({c.options.method, method_label(c.options), c.completed && std::isfinite(c.max_theta_error),
-                      c.t, deg, c.energy_error});
+    curves.push_back({c.options.method, method_label(c.options),
+                      c.completed && std::isfinite(c.max_theta_error), c.t, deg, c.energy_error});
   }
   const bool equal_cost = f.evaluations_per_period > 0.0;
-  set.add("integrators",
-          equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
-                                   "nutation period) over {:g} periods against the exact theta",
-                                   f.evaluations_per_period, f.periods)
-                     : "every integrator against the exact theta",
-          integrators_plot(curves,
-                           equal_cost ? fmt::format("at equal cost: {:g} evaluations a period",
-                                                    f.evaluations_per_period)
-                                      : "integrators against the exact solution",
-                           equal_cost ? TimeAxis{f.motion.nutation_period(), "nutation periods"}
-                                      : TimeAxis{},
-                           "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)",
-                           "|E - E_0| / (T_0 + mgl)"));
+  set.add(
+      "integrators",
+      equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
+                               "nutation period) over {:g} periods against the exact theta",
+                               f.evaluations_per_period, f.periods)
+                 : "every integrator against the exact theta",
+      integrators_plot(
+          curves,
+          equal_cost
+              ? fmt::format("at equal cost: {:g} evaluations a period", f.evaluations_per_period)
+              : "integrators against the exact solution",
+          equal_cost ? TimeAxis{f.motion.nutation_period(), "nutation periods"} : TimeAxis{},
+          "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)"));
 }
 
 }  // namespace rigid::lab::top_nutation

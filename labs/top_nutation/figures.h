@@ -24,27 +24,27 @@ struct Inputs {
   double disk_radius = 0.05;
   Eigen::Vector2d inertia{0.0, 0.0};  ///< (I, Is) about the pivot, used only when given
   double g = 9.8;
-  double spin = 0.0;        ///< rad/s, used only when given
+  double spin = 0.0;  ///< rad/s, used only when given
   double spin_rpm = 500.0;
   double theta0_deg = 30.0;
   double thetadot0 = 0.0;
   double phidot0 = 0.0;
-  double t_end = 0.0;       ///< 0: three nutation periods
-  double periods = 0.0;     ///< --periods: t_end as a number of nutation periods
+  double t_end = 0.0;             ///< 0: three nutation periods
+  double periods = 0.0;           ///< --periods: t_end as a number of nutation periods
   IntegrationInputs integration;  ///< "exact" by default; step 0: nutation period / 2000
 };
 
 /// What the figures show.
 struct Figures {
   const HeavyTopExact& motion;
-  const TopRun& run;                           ///< the lab's run (exact or integrated)
-  const TopRun& integrated;                    ///< an integrated run beside the exact one
-  const std::vector<TopComparison>& methods;   ///< every integrator, at the same cost if
-                                               ///< evaluations_per_period > 0
-  double arm = 0.04, disk_radius = 0.05;       ///< for drawing the top, m
+  const TopRun& run;                          ///< the lab's run (exact or integrated)
+  const TopRun& integrated;                   ///< an integrated run beside the exact one
+  const std::vector<TopComparison>& methods;  ///< every integrator, at the same cost if
+                                              ///< evaluations_per_period > 0
+  double arm = 0.04, disk_radius = 0.05;      ///< for drawing the top, m
   double t_end = 0.0;
-  double evaluations_per_period = 0.0;         ///< the comparison's cost (0: the lab's settings)
-  double periods = 0.0;                        ///< over this many nutation periods
+  double evaluations_per_period = 0.0;  ///< the comparison's cost (0: the lab's settings)
+  double periods = 0.0;                 ///< over this many nutation periods
 };
 
 /// Hands the lab's figures to the set.

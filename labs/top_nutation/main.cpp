@@ -48,24 +48,40 @@ int main(int argc, char** argv) {
   Lab lab("top_nutation", "the heavy symmetric top: precession and nutation (sections 8-9)");
   rigid::lab::top_nutation::Inputs in;
   lab.number("--mass", in.mass, "mass m of the top").unit("kg").positive().symbol("m");
-  lab.number("--arm", in.arm, "distance l from the tip to the centre of mass").unit("m")
-      .positive().symbol("l");
+  lab.number("--arm", in.arm, "distance l from the tip to the centre of mass")
+      .unit("m")
+      .positive()
+      .symbol("l");
   lab.number("--disk-radius", in.disk_radius, "radius of the top's disk (sets I and Is)")
-      .unit("m").positive().symbol("r");
+      .unit("m")
+      .positive()
+      .symbol("r");
   lab.pair("--inertia", in.inertia, "I,IS",
            "moments about the tip: I (transverse) and Is (symmetry axis); not with --disk-radius")
-      .unit("kg m^2").positive().lab_default("a thin disk of --disk-radius at --arm");
+      .unit("kg m^2")
+      .positive()
+      .lab_default("a thin disk of --disk-radius at --arm");
   lab.number("--g", in.g, "gravitational acceleration (9.8, as the text's numbers imply)")
-      .unit("m/s^2").positive().symbol("g");
+      .unit("m/s^2")
+      .positive()
+      .symbol("g");
   lab.number("--spin", in.spin, "spin S about the symmetry axis (instead of --spin-rpm)")
-      .unit("rad/s").non_negative().symbol("S").lab_default("--spin-rpm");
-  lab.number("--spin-rpm", in.spin_rpm, "spin S in revolutions per minute").unit("rpm")
-      .non_negative().symbol("S");
+      .unit("rad/s")
+      .non_negative()
+      .symbol("S")
+      .lab_default("--spin-rpm");
+  lab.number("--spin-rpm", in.spin_rpm, "spin S in revolutions per minute")
+      .unit("rpm")
+      .non_negative()
+      .symbol("S");
   lab.number("--theta0-deg", in.theta0_deg, "initial tilt theta0 of the axis from the vertical")
-      .unit("deg").symbol("\\theta_0");
-  lab.number("--thetadot0", in.thetadot0, "initial theta_dot").unit("rad/s")
+      .unit("deg")
+      .symbol("\\theta_0");
+  lab.number("--thetadot0", in.thetadot0, "initial theta_dot")
+      .unit("rad/s")
       .symbol("\\theta-dot_0");
-  lab.number("--phidot0", in.phidot0, "initial precession rate phi_dot").unit("rad/s")
+  lab.number("--phidot0", in.phidot0, "initial precession rate phi_dot")
+      .unit("rad/s")
       .symbol("\\phi-dot_0");
   rigid::lab::declare_end_time(lab, in.t_end, in.periods, "nutation period",
                                "three nutation periods");
@@ -83,14 +99,15 @@ int main(int argc, char** argv) {
       throw UsageError("--spin", "give the spin once: --spin (rad/s) or --spin-rpm");
     }
     if (!(in.theta0_deg >= 0.0 && in.theta0_deg < 180.0)) {
-      throw UsageError("--theta0-deg", fmt::format("must lie in [0, 180) (got {:g})", in.theta0_deg));
+      throw UsageError("--theta0-deg",
+                       fmt::format("must lie in [0, 180) (got {:g})", in.theta0_deg));
     }
     // The top: a thin disk at the arm's height (parallel-axis theorem), or given moments.
     double I = in.inertia(0), Is = in.inertia(1);
     if (!lab.given("--inertia")) {
       const rigid::Body disk = rigid::thin_disk(in.mass, in.disk_radius);
-      const rigid::Mat3 about_tip =
-          rigid::inertia_about(rigid::shifted(disk, rigid::Vec3(0, 0, in.arm)), rigid::Vec3::Zero());
+      const rigid::Mat3 about_tip = rigid::inertia_about(
+          rigid::shifted(disk, rigid::Vec3(0, 0, in.arm)), rigid::Vec3::Zero());
       I = about_tip(0, 0);
       Is = about_tip(2, 2);
     } else {
@@ -123,8 +140,8 @@ int main(int argc, char** argv) {
     lab.result("spin_rad_s", "spin S", S, "rad/s", lab.textbook("52.4"));
     if (S > 0) {
       const double horizontal = rigid::horizontal_precession_rate(top, S);
-      lab.result("horizontal_precession_rate_rad_s", "phi_dot = m g l / (Is S)", horizontal, "rad/s",
-                 lab.textbook("5.98"));
+      lab.result("horizontal_precession_rate_rad_s", "phi_dot = m g l / (Is S)", horizontal,
+                 "rad/s", lab.textbook("5.98"));
       lab.result("horizontal_precession_rpm", "  in rpm", horizontal / kRpm, "rpm",
                  lab.textbook("57.1"));
       lab.result("horizontal_precession_period_s", "  its period", 2 * rigid::kPi / horizontal, "s",
@@ -134,14 +151,16 @@ int main(int argc, char** argv) {
                       "no spin: a horizontal top just falls");
     }
 
-    lab.section(fmt::format("8.1 (c) steady precession at theta0 = {:g} deg (eq. 187)", in.theta0_deg));
+    lab.section(
+        fmt::format("8.1 (c) steady precession at theta0 = {:g} deg (eq. 187)", in.theta0_deg));
     const rigid::SteadyPrecession steady = rigid::steady_precession_rates(top, S, theta0);
     if (steady.exists && std::isfinite(steady.fast)) {
       lab.result("steady_precession_rates_rad_s", "phi_dot, slow and fast",
                  Vector2d(steady.slow, steady.fast), "rad/s", lab.textbook("(7.75, 26.2)"));
-      lab.result("steady_precession_periods_s", "  their periods",
-                 Vector2d(2 * rigid::kPi / std::abs(steady.slow), 2 * rigid::kPi / std::abs(steady.fast)),
-                 "s", lab.textbook("(0.81, 0.24)"));
+      lab.result(
+          "steady_precession_periods_s", "  their periods",
+          Vector2d(2 * rigid::kPi / std::abs(steady.slow), 2 * rigid::kPi / std::abs(steady.fast)),
+          "s", lab.textbook("(0.81, 0.24)"));
     } else {
       lab.result_none("steady_precession_rates_rad_s", "phi_dot, slow and fast", "rad/s",
                       steady.exists ? "horizontal: the fast rate is infinite"
@@ -156,22 +175,25 @@ int main(int argc, char** argv) {
     lab.result("p_phi", "p_phi = L_z (eq. 177)", motion.p_phi(), "kg m^2/s");
     lab.result("p_psi", "p_psi = Is S (eq. 176)", motion.p_psi(), "kg m^2/s");
     lab.result_text("regime", "the axis's path", rigid::to_string(motion.regime()));
-    lab.result("theta_min_deg", "theta_min (u2 = cos theta_min)", rigid::rad_to_deg(motion.theta_min()),
-               "deg");
-    lab.result("theta_max_deg", "theta_max (u1 = cos theta_max)", rigid::rad_to_deg(motion.theta_max()),
-               "deg");
+    lab.result("theta_min_deg", "theta_min (u2 = cos theta_min)",
+               rigid::rad_to_deg(motion.theta_min()), "deg");
+    lab.result("theta_max_deg", "theta_max (u1 = cos theta_max)",
+               rigid::rad_to_deg(motion.theta_max()), "deg");
     const bool sleeping = motion.regime() == rigid::TopRegime::kSleeping;
     if (sleeping) {
       lab.result_none("nutation_period_s", "nutation period", "s", "upright: no nodding");
-      lab.result_text("sleeping_stability", "upright at S vs S_min",
-                      S >= S_min ? "stable (S >= S_min)" : "unstable (S < S_min): a hair topples it");
+      lab.result_text(
+          "sleeping_stability", "upright at S vs S_min",
+          S >= S_min ? "stable (S >= S_min)" : "unstable (S < S_min): a hair topples it");
     } else {
       lab.result("cubic_roots", "roots u1, u2, u3 of f(u) = 0, u = cos theta",
                  Eigen::Vector3d(motion.u1(), motion.u2(), motion.u3()), "");
       if (std::isfinite(motion.nutation_period())) {
-        lab.result("nutation_period_s", "nutation period 2 K(k) / lambda", motion.nutation_period(), "s");
+        lab.result("nutation_period_s", "nutation period 2 K(k) / lambda", motion.nutation_period(),
+                   "s");
       } else {
-        lab.result_none("nutation_period_s", "nutation period", "s", "on the separatrix: never returns");
+        lab.result_none("nutation_period_s", "nutation period", "s",
+                        "on the separatrix: never returns");
       }
       lab.result("mean_precession_rate_rad_s", "mean phi_dot over a nutation period",
                  motion.mean_precession_rate(), "rad/s");
@@ -238,9 +260,10 @@ int main(int argc, char** argv) {
         }
         worst = std::max(worst, e);
       }
-      rigid::lab::refuse_runaway(option, std::max({run.energy_drift_rel, run.p_phi_drift_rel,
-                                                   run.p_psi_drift_rel}));
-      lab.result("max_theta_error_deg", "max |theta - theta_exact|", rigid::rad_to_deg(worst), "deg");
+      rigid::lab::refuse_runaway(
+          option, std::max({run.energy_drift_rel, run.p_phi_drift_rel, run.p_psi_drift_rel}));
+      lab.result("max_theta_error_deg", "max |theta - theta_exact|", rigid::rad_to_deg(worst),
+                 "deg");
       lab.count("steps", "steps taken", run.steps);
     }
     {
@@ -262,15 +285,16 @@ int main(int argc, char** argv) {
     // Every integrator against the exact motion, each within a step budget.
     const std::vector<rigid::TopComparison> methods =
         rigid::compare_top_methods(motion, times, scale, options, kMaxComparisonSteps);
-    lab.section(fmt::format("every integrator against the exact theta (tolerance {:g}, step {:.4g} s)",
-                            in.integration.tolerance, options.step));
+    lab.section(
+        fmt::format("every integrator against the exact theta (tolerance {:g}, step {:.4g} s)",
+                    in.integration.tolerance, options.step));
     for (const rigid::TopComparison& c : methods) {
       const std::string name(rigid::method_name(c.options.method));
       const std::string key = "max_theta_error_" + rigid::lab::json_key(name) + "_deg";
       const std::string label = fmt::format("{:<15} max |theta - theta_exact|", name);
       if (!c.completed) {
-        lab.result_none(key, label, "deg", fmt::format("not run: needs more than {} steps",
-                                                         kMaxComparisonSteps));
+        lab.result_none(key, label, "deg",
+                        fmt::format("not run: needs more than {} steps", kMaxComparisonSteps));
       } else if (!std::isfinite(c.max_theta_error)) {
         lab.result_none(key, label, "deg", "diverged at this step");
       } else {
@@ -286,8 +310,8 @@ int main(int argc, char** argv) {
                                                    kEqualCostEvaluations);
       std::vector<rigid::lab::EqualCostRow> rows;
       for (const rigid::TopComparison& c : at_cost) {
-        rows.push_back({c.options, c.completed && std::isfinite(c.max_theta_error), c.evaluations,
-                        c.energy});
+        rows.push_back(
+            {c.options, c.completed && std::isfinite(c.max_theta_error), c.evaluations, c.energy});
       }
       rigid::lab::report_equal_cost(lab, rows, kEqualCostEvaluations, kEqualCostPeriods);
     }
@@ -295,7 +319,8 @@ int main(int argc, char** argv) {
     // The text's numbers use S rounded to 52.4 rad/s; the exact ones differ in the last digit.
     if (lab.textbook_inputs()) {
       const double S_text = rounded(S, 3);
-      const rigid::SteadyPrecession text_steady = rigid::steady_precession_rates(top, S_text, theta0);
+      const rigid::SteadyPrecession text_steady =
+          rigid::steady_precession_rates(top, S_text, theta0);
       const double text_horizontal = rigid::horizontal_precession_rate(top, S_text);
       lab.note(fmt::format(
           "errata: section 8.1 rounds S = {:.6g} rad/s to {:g} before using it. With the exact S, "
@@ -310,8 +335,9 @@ int main(int argc, char** argv) {
           "the text's 0.132 s.",
           2 * rigid::kPi / S_min, 2 * rigid::kPi / S_min));
     }
-    lab.note("errata: eq. 186 is misprinted: theta_ddot = 0 in eq. 184 gives m g l = Is S phi_dot - "
-             "I phi_dot^2 cos(theta), with I, not S, in the last term (eq. 187 solves the right one).");
+    lab.note(
+        "errata: eq. 186 is misprinted: theta_ddot = 0 in eq. 184 gives m g l = Is S phi_dot - "
+        "I phi_dot^2 cos(theta), with I, not S, in the last term (eq. 187 solves the right one).");
 
     rigid::lab::TimeSeries series{{"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2",
                                    "omega3", "qw", "qx", "qy", "qz", "energy_error_rel"},
@@ -338,23 +364,24 @@ int main(int argc, char** argv) {
         for (const rigid::TopSample& s : frames.samples) states[s.t] = {s.attitude, s.omega_body};
         state_at = [&states](double t) { return states.at(t); };
       }
-      lab.animate(t_end, "the top precessing and nodding; the path of its axis on the sphere",
-                  [&](double t) {
-                    return rigid::lab::top_nutation::top_scene(motion, in.arm, in.disk_radius, t,
-                                                               state_at, path_times);
-                  },
-                  "top");
+      lab.animate(
+          t_end, "the top precessing and nodding; the path of its axis on the sphere",
+          [&](double t) {
+            return rigid::lab::top_nutation::top_scene(motion, in.arm, in.disk_radius, t, state_at,
+                                                       path_times);
+          },
+          "top");
     }
 
     lab.figures([&](rigid::lab::FigureSet& set) {
-      // Beside the exact motion, an integrated one: the lab's own, or splitting4 at its default step.
+      // Beside the exact motion, an integrated one: the lab's own, or splitting4 at its default
+      // step.
       rigid::TopRun integrated = run;
       if (in.integration.method == "exact") {
         rigid::OdeOptions o = options;
         o.method = rigid::Method::kSplitting4;
-        integrated = rigid::integrate_heavy_top(
-            top, rigid::heavy_top_state(motion.angles(0.0)),
-            rigid::sample_times(t_end, scale, o.step), o);
+        integrated = rigid::integrate_heavy_top(top, rigid::heavy_top_state(motion.angles(0.0)),
+                                                rigid::sample_times(t_end, scale, o.step), o);
       }
       // A sleeping top has no comparison at equal cost: the one at the lab's settings.
       const bool equal_cost = !at_cost.empty();

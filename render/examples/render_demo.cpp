@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
   auto t0 = clock::now();
   const rr::ContextInfo& info = rr::context();
   std::printf("context: %s, %s, %s, samples %d, %.3f s\n", rr::backend_name(info.backend),
-              info.gl_version.c_str(), info.gl_renderer.c_str(), info.samples, info.creation_seconds);
+              info.gl_version.c_str(), info.gl_renderer.c_str(), info.samples,
+              info.creation_seconds);
   (void)t0;
   const rr::Plot2D plot = sample_plot();
   for (int rep = 0; rep < 3; ++rep) {

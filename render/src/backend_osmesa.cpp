@@ -75,8 +75,7 @@ GlProcLoader make_osmesa_context(std::string& error) {
   return &osmesa_proc;
 }
 
-void* open_library(std::initializer_list<const char*> names, const char* what,
-                   std::string& error) {
+void* open_library(std::initializer_list<const char*> names, const char* what, std::string& error) {
   for (const char* name : names) {
     if (void* lib = dlopen(name, RTLD_NOW | RTLD_LOCAL)) return lib;
   }

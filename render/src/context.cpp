@@ -97,9 +97,12 @@ Backend parse_backend(const std::string& name) {
 
 const char* backend_name(Backend backend) {
   switch (backend) {
-    case Backend::kOSMesa: return "osmesa";
-    case Backend::kEGL: return "egl";
-    case Backend::kAuto: break;
+    case Backend::kOSMesa:
+      return "osmesa";
+    case Backend::kEGL:
+      return "egl";
+    case Backend::kAuto:
+      break;
   }
   return "auto";
 }

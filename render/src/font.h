@@ -10,7 +10,8 @@
 
 namespace rigid::render::detail {
 
-/// One glyph placed by layout: pen position of its origin relative to the text's origin (baseline, y up).
+/// One glyph placed by layout: pen position of its origin relative to the text's origin (baseline,
+/// y up).
 struct PlacedGlyph {
   std::uint32_t glyph = 0;  ///< FreeType glyph index
   int size_px = 0;          ///< pixel size it is rasterised at

@@ -9,7 +9,7 @@ namespace rigid::render::detail {
 GlFunctions gl;
 
 std::string load_gl(GlProc (*get_proc)(const char*)) {
-#define RIGID_GL_LOAD(ret, name, params)                                    \
+#define RIGID_GL_LOAD(ret, name, params)                                   \
   gl.name = reinterpret_cast<ret(APIENTRY*) params>(get_proc("gl" #name)); \
   if (gl.name == nullptr) return "gl" #name;
   RIGID_GL_FUNCTIONS(RIGID_GL_LOAD)

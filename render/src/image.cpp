@@ -1,11 +1,10 @@
 // Image comparison for tests and golden figures.
 #include "rigid/render/image.h"
 
-#include <vector>
-
 #include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <vector>
 
 namespace rigid::render {
 
@@ -18,7 +17,8 @@ void check_sizes(const Image& a, const Image& b) {
 
 int pixel_diff(const Image& a, const Image& b, std::size_t i) {
   int d = 0;
-  for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.rgb[3 * i + c]) - int(b.rgb[3 * i + c])));
+  for (int c = 0; c < 3; ++c)
+    d = std::max(d, std::abs(int(a.rgb[3 * i + c]) - int(b.rgb[3 * i + c])));
   return d;
 }
 

@@ -1,10 +1,9 @@
 // Mesh generators for the unit shapes and tubes.
 #include "rigid/render/mesh.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/Geometry>
 
 namespace rigid::render {
 
@@ -32,8 +31,10 @@ void add_cap(Mesh& m, int slices, float z, bool up) {
     add_vertex(m, V3(float(std::cos(a)), float(std::sin(a)), z), n);
   }
   for (int i = 0; i < slices; ++i) {
-    if (up) add_tri(m, c, first + i, first + i + 1);
-    else add_tri(m, c, first + i + 1, first + i);
+    if (up)
+      add_tri(m, c, first + i, first + i + 1);
+    else
+      add_tri(m, c, first + i + 1, first + i);
   }
 }
 
@@ -47,7 +48,8 @@ Mesh make_sphere(int slices) {
     const double th = EIGEN_PI * j / stacks;
     for (int i = 0; i <= slices; ++i) {
       const double ph = 2 * EIGEN_PI * i / slices;
-      const V3 p(float(std::sin(th) * std::cos(ph)), float(std::sin(th) * std::sin(ph)), float(std::cos(th)));
+      const V3 p(float(std::sin(th) * std::cos(ph)), float(std::sin(th) * std::sin(ph)),
+                 float(std::cos(th)));
       add_vertex(m, p, p);
     }
   }
@@ -67,7 +69,8 @@ Mesh make_cone(int slices) {
   // Side normals tilt up by 45° for the unit cone (radius 1, height 1); apex per segment.
   const float k = 1.0f / std::sqrt(2.0f);
   for (int i = 0; i < slices; ++i) {
-    const double a0 = 2 * EIGEN_PI * i / slices, a1 = 2 * EIGEN_PI * (i + 1) / slices, am = 0.5 * (a0 + a1);
+    const double a0 = 2 * EIGEN_PI * i / slices, a1 = 2 * EIGEN_PI * (i + 1) / slices,
+                 am = 0.5 * (a0 + a1);
     const V3 n0(float(std::cos(a0)) * k, float(std::sin(a0)) * k, k);
     const V3 n1(float(std::cos(a1)) * k, float(std::sin(a1)) * k, k);
     const V3 nm(float(std::cos(am)) * k, float(std::sin(am)) * k, k);
@@ -140,7 +143,8 @@ Mesh make_torus(double minor, int major_segments, int minor_segments) {
     const double u = 2 * EIGEN_PI * i / major_segments;
     for (int j = 0; j <= minor_segments; ++j) {
       const double v = 2 * EIGEN_PI * j / minor_segments;
-      const V3 n(float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v)));
+      const V3 n(float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)),
+                 float(std::sin(v)));
       const V3 c(float(std::cos(u)), float(std::sin(u)), 0);
       add_vertex(m, c + float(minor) * n, n);
     }
@@ -214,11 +218,14 @@ Mesh make_tube(const std::vector<Eigen::Vector3d>& path_in, double radius, int s
     const auto first = static_cast<std::uint32_t>(m.positions.size());
     for (int j = 0; j <= sides; ++j) {
       const double a = 2 * EIGEN_PI * j / sides;
-      add_vertex(m, (path[i] + radius * (std::cos(a) * normals[i] + std::sin(a) * b)).cast<float>(), nn);
+      add_vertex(m, (path[i] + radius * (std::cos(a) * normals[i] + std::sin(a) * b)).cast<float>(),
+                 nn);
     }
     for (int j = 0; j < sides; ++j) {
-      if (end == 0) add_tri(m, c, first + j + 1, first + j);
-      else add_tri(m, c, first + j, first + j + 1);
+      if (end == 0)
+        add_tri(m, c, first + j + 1, first + j);
+      else
+        add_tri(m, c, first + j, first + j + 1);
     }
   }
   return m;

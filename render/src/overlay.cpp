@@ -34,18 +34,26 @@ Style figure_style(int width, int height) {
   return st;
 }
 
-double Style::line(double ref) const { return std::max(2.0, ref * s); }
+double Style::line(double ref) const {
+  return std::max(2.0, ref * s);
+}
 
-double Style::marker(double ref) const { return std::max(5.0, ref * s); }
+double Style::marker(double ref) const {
+  return std::max(5.0, ref * s);
+}
 
 DashPattern dash_pattern(Dash d, double width, const Style& st) {
   const double u = st.s;
   switch (d) {
-    case Dash::kSolid: return {};
-    case Dash::kDashed: return {std::max(6.0, 18 * u), std::max(4.0, 11 * u) + width};
-    case Dash::kDotted: return {0.01, std::max(3.0, 2.2 * width)};
+    case Dash::kSolid:
+      return {};
+    case Dash::kDashed:
+      return {std::max(6.0, 18 * u), std::max(4.0, 11 * u) + width};
+    case Dash::kDotted:
+      return {0.01, std::max(3.0, 2.2 * width)};
     case Dash::kDashDot:
-      return {std::max(6.0, 18 * u), std::max(3.0, 8 * u) + width, 0.01, std::max(3.0, 8 * u) + width};
+      return {std::max(6.0, 18 * u), std::max(3.0, 8 * u) + width, 0.01,
+              std::max(3.0, 8 * u) + width};
   }
   return {};
 }
@@ -53,9 +61,14 @@ DashPattern dash_pattern(Dash d, double width, const Style& st) {
 namespace {
 void marker_shape(Painter& p, Marker m, double x, double y, double r, Color c) {
   switch (m) {
-    case Marker::kNone: break;
-    case Marker::kCircle: p.disc({x, y, 0}, r, c); break;
-    case Marker::kSquare: p.rect(x - 0.85 * r, y - 0.85 * r, x + 0.85 * r, y + 0.85 * r, c); break;
+    case Marker::kNone:
+      break;
+    case Marker::kCircle:
+      p.disc({x, y, 0}, r, c);
+      break;
+    case Marker::kSquare:
+      p.rect(x - 0.85 * r, y - 0.85 * r, x + 0.85 * r, y + 0.85 * r, c);
+      break;
     case Marker::kTriangle:
       p.triangle({x, y - 1.15 * r, 0}, {x - r, y + 0.6 * r, 0}, {x + r, y + 0.6 * r, 0}, c);
       break;
@@ -105,8 +118,10 @@ std::vector<std::string> split_title(std::string_view m, double size) {
       if (i + 1 < m.size() && !std::isalpha(static_cast<unsigned char>(m[i + 1]))) ++i;
       continue;
     }
-    if (c == '(' || c == '{' || c == '[') ++depth;
-    else if (c == ')' || c == '}' || c == ']') depth = std::max(0, depth - 1);
+    if (c == '(' || c == '{' || c == '[')
+      ++depth;
+    else if (c == ')' || c == '}' || c == ']')
+      depth = std::max(0, depth - 1);
     else if ((c == ',' || c == ':') && depth == 0 && i + 1 < m.size() && m[i + 1] == ' ')
       marks.push_back(i);
   }
@@ -191,7 +206,8 @@ void draw_legend(Painter& p, const std::vector<LegendEntry>& entries, const Scre
       if (e.marker != Marker::kNone)
         draw_marker(p, e.marker, 0.5 * (x0 + x1), y, st.marker(e.marker_size), e.color);
     }
-    p.text(e.label, x1 + st.swatch_gap, y, st.legend_font, kTextColor, HAlign::kLeft, VAlign::kCenter);
+    p.text(e.label, x1 + st.swatch_gap, y, st.legend_font, kTextColor, HAlign::kLeft,
+           VAlign::kCenter);
     y += z.row;
   }
 }

@@ -62,9 +62,9 @@ double fitting_size(std::string_view markup, double size, double max_width);
 /// A title laid out: one or two lines at a size, in a box.
 struct TitleBlock {
   std::vector<std::string> lines;
-  double size = 0;         ///< font size in pixels after any shrinking
-  double line_step = 0;    ///< baseline-to-baseline distance between lines
-  ScreenRect box;          ///< the lines' extent (empty when there is no title)
+  double size = 0;       ///< font size in pixels after any shrinking
+  double line_step = 0;  ///< baseline-to-baseline distance between lines
+  ScreenRect box;        ///< the lines' extent (empty when there is no title)
 };
 
 /// The two halves of a title split at the top-level ", " or ": " (outside parentheses and

@@ -2,8 +2,8 @@
 #include "painter.h"
 
 #include <algorithm>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -14,7 +14,6 @@
 namespace rigid::render::detail {
 
 namespace {
-
 
 const char* kVertexSrc = R"(#version 330 core
 in vec3 a_pos;
@@ -232,7 +231,9 @@ void Painter::solid_strip(const std::vector<P3>& pts, double hw, Color color, bo
     Eigen::Vector2d d = (p[i + 1].head<2>() - p[i].head<2>()).normalized();
     return Eigen::Vector2d(-d.y(), d.x());
   };
-  auto off = [](const P3& q, const Eigen::Vector2d& o) { return P3(q.x() + o.x(), q.y() + o.y(), q.z()); };
+  auto off = [](const P3& q, const Eigen::Vector2d& o) {
+    return P3(q.x() + o.x(), q.y() + o.y(), q.z());
+  };
   // Offsets at the start of the current segment.
   Eigen::Vector2d n0 = normal(0);
   P3 l = off(p[0], n0 * hw), r = off(p[0], -n0 * hw);
@@ -303,8 +304,10 @@ void Painter::polyline(const std::vector<P3>& pts, double width, Color color,
       left = dash[k];
     }
     left -= seg;
-    if (on) piece.push_back(b);
-    else piece.assign(1, b);
+    if (on)
+      piece.push_back(b);
+    else
+      piece.assign(1, b);
   }
   if (on) solid_strip(piece, hw, color, round_caps);
 }

@@ -28,7 +28,8 @@ class Painter {
   /// Draws everything queued so far.
   void flush();
 
-  /// Restricts the following drawing to a rectangle (x0, y0, x1, y1); empty rect turns clipping off.
+  /// Restricts the following drawing to a rectangle (x0, y0, x1, y1); empty rect turns clipping
+  /// off.
   void clip(double x0, double y0, double x1, double y1);
   void no_clip();
   /// Enables the depth test for the following drawing (3D overlays).

@@ -8,7 +8,8 @@ namespace rigid::render::detail {
 
 using Eigen::Vector2d;
 
-Occupancy::Occupancy(const ScreenRect& area, double cell) : area_(area), cell_(std::max(1.0, cell)) {
+Occupancy::Occupancy(const ScreenRect& area, double cell)
+    : area_(area), cell_(std::max(1.0, cell)) {
   cols_ = std::max(1, static_cast<int>(std::ceil(area.width() / cell_)));
   rows_ = std::max(1, static_cast<int>(std::ceil(area.height() / cell_)));
   w_.assign(static_cast<std::size_t>(cols_) * rows_, 0.0f);
@@ -48,8 +49,10 @@ void Occupancy::add_segment(const Vector2d& a, const Vector2d& b, double half_wi
       continue;
     }
     const double t = q[k] / p[k];
-    if (p[k] < 0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
+    if (p[k] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
     if (t0 > t1) return;
   }
   const Vector2d s = a + t0 * d, e = a + t1 * d;
@@ -57,11 +60,13 @@ void Occupancy::add_segment(const Vector2d& a, const Vector2d& b, double half_wi
   const int n = std::max(1, static_cast<int>(std::ceil((e - s).norm() / (0.5 * cell_))));
   for (int k = 0; k <= n; ++k) {
     const Vector2d c = s + (e - s) * (double(k) / n);
-    add_rect({c.x() - half_width, c.y() - half_width, c.x() + half_width, c.y() + half_width}, weight);
+    add_rect({c.x() - half_width, c.y() - half_width, c.x() + half_width, c.y() + half_width},
+             weight);
   }
 }
 
-void Occupancy::add_triangle(const Vector2d& a, const Vector2d& b, const Vector2d& c, float weight) {
+void Occupancy::add_triangle(const Vector2d& a, const Vector2d& b, const Vector2d& c,
+                             float weight) {
   if (!a.allFinite() || !b.allFinite() || !c.allFinite()) return;
   const double x0 = std::min({a.x(), b.x(), c.x()}), x1 = std::max({a.x(), b.x(), c.x()});
   const double y0 = std::min({a.y(), b.y(), c.y()}), y1 = std::max({a.y(), b.y(), c.y()});
@@ -86,8 +91,10 @@ Cover Occupancy::cover(const ScreenRect& r) const {
   for (int j = row(r.y0); j <= row(r.y1); ++j)
     for (int i = col(r.x0); i <= col(r.x1); ++i) {
       const float w = w_[static_cast<std::size_t>(j) * cols_ + i];
-      if (w >= 1.0f) ++c.hard;
-      else c.soft += w;
+      if (w >= 1.0f)
+        ++c.hard;
+      else
+        c.soft += w;
     }
   return c;
 }
@@ -110,20 +117,22 @@ bool Occupancy::hard_extent(double x0, double x1, double& top, double& bottom) c
 std::vector<ScreenRect> boxes_around(double x, double y, double w, double h, double d) {
   const double r = d / std::sqrt(2.0);  // diagonal boxes touch the circle of radius d
   return {
-      {x + d, y - 0.5 * h, x + d + w, y + 0.5 * h},          // right
-      {x - d - w, y - 0.5 * h, x - d, y + 0.5 * h},          // left
-      {x - 0.5 * w, y - d - h, x + 0.5 * w, y - d},          // above
-      {x - 0.5 * w, y + d, x + 0.5 * w, y + d + h},          // below
-      {x + r, y - r - h, x + r + w, y - r},                  // above right
-      {x - r - w, y - r - h, x - r, y - r},                  // above left
-      {x + r, y + r, x + r + w, y + r + h},                  // below right
-      {x - r - w, y + r, x - r, y + r + h},                  // below left
+      {x + d, y - 0.5 * h, x + d + w, y + 0.5 * h},  // right
+      {x - d - w, y - 0.5 * h, x - d, y + 0.5 * h},  // left
+      {x - 0.5 * w, y - d - h, x + 0.5 * w, y - d},  // above
+      {x - 0.5 * w, y + d, x + 0.5 * w, y + d + h},  // below
+      {x + r, y - r - h, x + r + w, y - r},          // above right
+      {x - r - w, y - r - h, x - r, y - r},          // above left
+      {x + r, y + r, x + r + w, y + r + h},          // below right
+      {x - r - w, y + r, x - r, y + r + h},          // below left
   };
 }
 
 ScreenRect keep_inside(const ScreenRect& box, const ScreenRect& bounds) {
-  const double dx = std::clamp(box.x0, bounds.x0, std::max(bounds.x0, bounds.x1 - box.width())) - box.x0;
-  const double dy = std::clamp(box.y0, bounds.y0, std::max(bounds.y0, bounds.y1 - box.height())) - box.y0;
+  const double dx =
+      std::clamp(box.x0, bounds.x0, std::max(bounds.x0, bounds.x1 - box.width())) - box.x0;
+  const double dy =
+      std::clamp(box.y0, bounds.y0, std::max(bounds.y0, bounds.y1 - box.height())) - box.y0;
   return {box.x0 + dx, box.y0 + dy, box.x1 + dx, box.y1 + dy};
 }
 
@@ -134,7 +143,8 @@ Placement choose_place(const std::vector<ScreenRect>& candidates, const Occupanc
     double area = 0;
     for (const ScreenRect& t : taken)
       if (t.overlaps(c))
-        area += (std::min(c.x1, t.x1) - std::max(c.x0, t.x0)) * (std::min(c.y1, t.y1) - std::max(c.y0, t.y0));
+        area += (std::min(c.x1, t.x1) - std::max(c.x0, t.x0)) *
+                (std::min(c.y1, t.y1) - std::max(c.y0, t.y0));
     return area;
   };
   Placement best;

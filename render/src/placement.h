@@ -7,9 +7,8 @@
 // nothing; if none is clear, the one covering the least.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "rigid/render/rect.h"
 
@@ -34,7 +33,8 @@ class Occupancy {
   /// Marks the cells a rectangle touches.
   void add_rect(const ScreenRect& r, float weight);
   /// Marks the cells within half_width of a segment (clipped to the grid).
-  void add_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width, float weight);
+  void add_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width,
+                   float weight);
   /// Marks the cells a triangle covers (centres inside, and the corners' cells).
   void add_triangle(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                     float weight);

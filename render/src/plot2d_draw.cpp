@@ -81,8 +81,12 @@ void finish_range(const Axis& axis, Range r, double& lo, double& hi) {
   }
 }
 
-bool fixed_min(const Axis& a) { return std::isfinite(a.min) && (a.scale == Scale::kLinear || a.min > 0); }
-bool fixed_max(const Axis& a) { return std::isfinite(a.max) && (a.scale == Scale::kLinear || a.max > 0); }
+bool fixed_min(const Axis& a) {
+  return std::isfinite(a.min) && (a.scale == Scale::kLinear || a.min > 0);
+}
+bool fixed_max(const Axis& a) {
+  return std::isfinite(a.max) && (a.scale == Scale::kLinear || a.max > 0);
+}
 
 Ticks make_ticks(const Axis& axis, double lo, double hi, int target) {
   return axis.scale == Scale::kLog10 ? log_ticks(lo, hi, std::max(2, target + 2))
@@ -94,7 +98,9 @@ enum class Spot { kTopRight, kTopLeft, kBottomLeft, kBottomRight, kRight, kLeft,
 constexpr Spot kSpots[] = {Spot::kTopRight, Spot::kTopLeft, Spot::kBottomLeft, Spot::kBottomRight,
                            Spot::kRight,    Spot::kLeft,    Spot::kBottom,     Spot::kTop};
 
-bool at_top(Spot s) { return s == Spot::kTopRight || s == Spot::kTopLeft || s == Spot::kTop; }
+bool at_top(Spot s) {
+  return s == Spot::kTopRight || s == Spot::kTopLeft || s == Spot::kTop;
+}
 bool at_bottom(Spot s) {
   return s == Spot::kBottomRight || s == Spot::kBottomLeft || s == Spot::kBottom;
 }
@@ -135,8 +141,10 @@ class PanelPlan {
 
   void resolve_colors() {
     std::size_t k = 0;
-    for (const Series& s : pn_.series) series_colors_.push_back(s.color.a < 0 ? palette_color(k++) : s.color);
-    for (const Band& b : pn_.bands) band_colors_.push_back(b.color.a < 0 ? palette_color(k++) : b.color);
+    for (const Series& s : pn_.series)
+      series_colors_.push_back(s.color.a < 0 ? palette_color(k++) : s.color);
+    for (const Band& b : pn_.bands)
+      band_colors_.push_back(b.color.a < 0 ? palette_color(k++) : b.color);
   }
 
   void data_ranges() {
@@ -164,7 +172,8 @@ class PanelPlan {
       add(s.vertical ? pn_.x : pn_.y, s.vertical ? rx : ry, s.lo);
       add(s.vertical ? pn_.x : pn_.y, s.vertical ? rx : ry, s.hi);
     }
-    for (const RefLine& r : pn_.ref_lines) add(r.vertical ? pn_.x : pn_.y, r.vertical ? rx : ry, r.value);
+    for (const RefLine& r : pn_.ref_lines)
+      add(r.vertical ? pn_.x : pn_.y, r.vertical ? rx : ry, r.value);
     for (const Annotation& a : pn_.annotations) {
       add(pn_.x, rx, a.x);
       add(pn_.y, ry, a.y);
@@ -180,14 +189,17 @@ class PanelPlan {
     for (std::size_t k = 0; k < pn_.series.size(); ++k) {
       const Series& s = pn_.series[k];
       if (!s.label.empty())
-        entries_.push_back({s.label, series_colors_[k], false, s.width, s.dash, s.marker, s.marker_size});
+        entries_.push_back(
+            {s.label, series_colors_[k], false, s.width, s.dash, s.marker, s.marker_size});
     }
     for (std::size_t k = 0; k < pn_.bands.size(); ++k)
       if (!pn_.bands[k].label.empty())
-        entries_.push_back(
-            {pn_.bands[k].label, band_colors_[k].with_alpha(std::max(0.35f, pn_.bands[k].opacity)), true});
+        entries_.push_back({pn_.bands[k].label,
+                            band_colors_[k].with_alpha(std::max(0.35f, pn_.bands[k].opacity)),
+                            true});
     for (const Span& s : pn_.spans)
-      if (!s.label.empty()) entries_.push_back({s.label, s.color.with_alpha(std::max(0.3f, s.opacity)), true});
+      if (!s.label.empty())
+        entries_.push_back({s.label, s.color.with_alpha(std::max(0.3f, s.opacity)), true});
     legend_size_ = detail::measure_legend(entries_, st_);
   }
 
@@ -211,11 +223,14 @@ class PanelPlan {
         if (!xm_.valid(a.x) || !ym_.valid(a.y)) continue;
         const TextExtent e = measure_text(a.text, st_.note_font);
         const P3 q = map(a.x, a.y);
-        legend_grid.add_rect({q.x() - 0.5 * e.width, q.y() - e.height(), q.x() + 0.5 * e.width, q.y() + e.height()}, 1.0f);
+        legend_grid.add_rect(
+            {q.x() - 0.5 * e.width, q.y() - e.height(), q.x() + 0.5 * e.width, q.y() + e.height()},
+            1.0f);
       }
       const detail::Placement best = place_legend(legend_grid);
       legend_ = best.box;
-      if (best.cover.hard == 0 || pn_.legend != LegendPlace::kAuto || pass == kMaxHeadroomPasses) break;
+      if (best.cover.hard == 0 || pn_.legend != LegendPlace::kAuto || pass == kMaxHeadroomPasses)
+        break;
       if (!add_headroom(legend_grid)) break;
     }
     place_annotations();
@@ -256,33 +271,41 @@ class PanelPlan {
     // First guess of the rectangle, to choose ticks; then margins from their labels.
     ScreenRect r{cell.x0 + 0.15 * cell.width(), cell.y0 + 0.08 * cell.height(),
                  cell.x1 - 0.04 * cell.width(), cell.y1 - 0.14 * cell.height()};
-    title_ = detail::layout_title(pn_.title, st_.panel_title_font, cell.x0 + st_.pad, cell.x1 - st_.pad,
-                                  0.5 * (cell.x0 + cell.x1), cell.y0 + 0.4 * st_.pad);
+    title_ =
+        detail::layout_title(pn_.title, st_.panel_title_font, cell.x0 + st_.pad, cell.x1 - st_.pad,
+                             0.5 * (cell.x0 + cell.x1), cell.y0 + 0.4 * st_.pad);
     for (int pass = 0; pass < 2; ++pass) {
       xm_.p0 = r.x0, xm_.p1 = r.x1, ym_.p0 = r.y1, ym_.p1 = r.y0;
       const Ticks xt = ticks_fitting(pn_.x, xm_, true);
       const Ticks yt = ticks_fitting(pn_.y, ym_, false);
       const TextExtent xe = tick_extent(xt), ye = tick_extent(yt);
       // Axis labels shrink if longer than their side of the cell.
-      xlabel_size_ = detail::fitting_size(pn_.x.label, st_.axis_label_font, cell.width() - 2 * st_.pad);
-      ylabel_size_ = detail::fitting_size(pn_.y.label, st_.axis_label_font, cell.height() - 2 * st_.pad);
-      const double ylabel_h = pn_.y.label.empty() ? 0 : measure_text(pn_.y.label, ylabel_size_).height() + st_.pad;
-      const double xlabel_h = pn_.x.label.empty() ? 0 : measure_text(pn_.x.label, xlabel_size_).height() + st_.pad;
-      const double title_bottom = pn_.title.empty() ? cell.y0 + st_.pad : title_.box.y1 + 0.8 * st_.pad;
-      const double last_x_half = xt.labels.empty() ? 0 : 0.5 * measure_text(xt.labels.back(), st_.tick_font).width;
+      xlabel_size_ =
+          detail::fitting_size(pn_.x.label, st_.axis_label_font, cell.width() - 2 * st_.pad);
+      ylabel_size_ =
+          detail::fitting_size(pn_.y.label, st_.axis_label_font, cell.height() - 2 * st_.pad);
+      const double ylabel_h =
+          pn_.y.label.empty() ? 0 : measure_text(pn_.y.label, ylabel_size_).height() + st_.pad;
+      const double xlabel_h =
+          pn_.x.label.empty() ? 0 : measure_text(pn_.x.label, xlabel_size_).height() + st_.pad;
+      const double title_bottom =
+          pn_.title.empty() ? cell.y0 + st_.pad : title_.box.y1 + 0.8 * st_.pad;
+      const double last_x_half =
+          xt.labels.empty() ? 0 : 0.5 * measure_text(xt.labels.back(), st_.tick_font).width;
       r.x0 = cell.x0 + st_.pad + ylabel_h + ye.width + st_.tick_len + 0.8 * st_.pad;
       r.x1 = cell.x1 - std::max(1.5 * st_.pad, last_x_half + 0.5 * st_.pad);
       r.y0 = title_bottom + 0.5 * ye.height();
       r.y1 = cell.y1 - (st_.pad + xlabel_h + xe.height() + st_.tick_len + 0.6 * st_.pad);
-      r.x0 = std::round(r.x0), r.x1 = std::round(r.x1), r.y0 = std::round(r.y0), r.y1 = std::round(r.y1);
+      r.x0 = std::round(r.x0), r.x1 = std::round(r.x1), r.y0 = std::round(r.y0),
+      r.y1 = std::round(r.y1);
       if (r.x1 - r.x0 < 20) r.x1 = r.x0 + 20;
       if (r.y1 - r.y0 < 20) r.y1 = r.y0 + 20;
     }
     rect_ = r;
     xm_.p0 = r.x0, xm_.p1 = r.x1, ym_.p0 = r.y1, ym_.p1 = r.y0;
     // The panel title is centred over the plot area, as far as the cell allows.
-    title_ = detail::layout_title(pn_.title, st_.panel_title_font, cell.x0 + st_.pad, cell.x1 - st_.pad,
-                                  0.5 * (r.x0 + r.x1), cell.y0 + 0.4 * st_.pad);
+    title_ = detail::layout_title(pn_.title, st_.panel_title_font, cell.x0 + st_.pad,
+                                  cell.x1 - st_.pad, 0.5 * (r.x0 + r.x1), cell.y0 + 0.4 * st_.pad);
   }
 
   // Equal aspect: widen whichever axis range has more pixels per unit (linear axes only).
@@ -324,8 +347,8 @@ class PanelPlan {
     for (const Band& b : pn_.bands) {
       const std::size_t n = std::min({b.x.size(), b.y_lo.size(), b.y_hi.size()});
       for (std::size_t i = 0; i + 1 < n; ++i) {
-        if (!xm_.valid(b.x[i]) || !xm_.valid(b.x[i + 1]) || !ym_.valid(b.y_lo[i]) || !ym_.valid(b.y_hi[i]) ||
-            !ym_.valid(b.y_lo[i + 1]) || !ym_.valid(b.y_hi[i + 1]))
+        if (!xm_.valid(b.x[i]) || !xm_.valid(b.x[i + 1]) || !ym_.valid(b.y_lo[i]) ||
+            !ym_.valid(b.y_hi[i]) || !ym_.valid(b.y_lo[i + 1]) || !ym_.valid(b.y_hi[i + 1]))
           continue;
         const Vector2d a = xy(b.x[i], b.y_lo[i]), c = xy(b.x[i + 1], b.y_lo[i + 1]);
         const Vector2d d = xy(b.x[i + 1], b.y_hi[i + 1]), e = xy(b.x[i], b.y_hi[i]);
@@ -335,8 +358,10 @@ class PanelPlan {
     }
     for (const RefLine& r : pn_.ref_lines) {
       const double hw = 0.5 * st_.line(r.width);
-      if (r.vertical) grid.add_segment({xm_(r.value), rect_.y0}, {xm_(r.value), rect_.y1}, hw, 0.01f);
-      else grid.add_segment({rect_.x0, ym_(r.value)}, {rect_.x1, ym_(r.value)}, hw, 0.01f);
+      if (r.vertical)
+        grid.add_segment({xm_(r.value), rect_.y0}, {xm_(r.value), rect_.y1}, hw, 0.01f);
+      else
+        grid.add_segment({rect_.x0, ym_(r.value)}, {rect_.x1, ym_(r.value)}, hw, 0.01f);
     }
     for (const Annotation& a : pn_.annotations)
       if (xm_.valid(a.x) && ym_.valid(a.y)) {
@@ -397,14 +422,22 @@ class PanelPlan {
     const double top = rect_.y0 + in, bottom = rect_.y1 - in - h, mid_y = cy - 0.5 * h;
     const auto box = [&](double x, double y) { return ScreenRect{x, y, x + w, y + h}; };
     switch (s) {
-      case Spot::kTopRight: return box(right, top);
-      case Spot::kTopLeft: return box(left, top);
-      case Spot::kBottomLeft: return box(left, bottom);
-      case Spot::kBottomRight: return box(right, bottom);
-      case Spot::kRight: return box(right, mid_y);
-      case Spot::kLeft: return box(left, mid_y);
-      case Spot::kBottom: return box(mid_x, bottom);
-      case Spot::kTop: return box(mid_x, top);
+      case Spot::kTopRight:
+        return box(right, top);
+      case Spot::kTopLeft:
+        return box(left, top);
+      case Spot::kBottomLeft:
+        return box(left, bottom);
+      case Spot::kBottomRight:
+        return box(right, bottom);
+      case Spot::kRight:
+        return box(right, mid_y);
+      case Spot::kLeft:
+        return box(left, mid_y);
+      case Spot::kBottom:
+        return box(mid_x, bottom);
+      case Spot::kTop:
+        return box(mid_x, top);
     }
     return box(right, top);
   }
@@ -412,14 +445,17 @@ class PanelPlan {
   // The user's corner, or the spot covering the least (matplotlib's order on ties).
   detail::Placement place_legend(const detail::Occupancy& grid) const {
     switch (pn_.legend) {
-      case LegendPlace::kTopRight: return {spot_box(Spot::kTopRight), grid.cover(spot_box(Spot::kTopRight)), true};
-      case LegendPlace::kTopLeft: return {spot_box(Spot::kTopLeft), grid.cover(spot_box(Spot::kTopLeft)), true};
+      case LegendPlace::kTopRight:
+        return {spot_box(Spot::kTopRight), grid.cover(spot_box(Spot::kTopRight)), true};
+      case LegendPlace::kTopLeft:
+        return {spot_box(Spot::kTopLeft), grid.cover(spot_box(Spot::kTopLeft)), true};
       case LegendPlace::kBottomRight:
         return {spot_box(Spot::kBottomRight), grid.cover(spot_box(Spot::kBottomRight)), true};
       case LegendPlace::kBottomLeft:
         return {spot_box(Spot::kBottomLeft), grid.cover(spot_box(Spot::kBottomLeft)), true};
       case LegendPlace::kAuto:
-      case LegendPlace::kNone: break;
+      case LegendPlace::kNone:
+        break;
     }
     std::vector<ScreenRect> spots;
     for (Spot s : kSpots) spots.push_back(spot_box(s));
@@ -477,7 +513,8 @@ class PanelPlan {
       // With an arrow the text stands off far enough for the arrow to show.
       std::vector<ScreenRect> c;
       for (double d : a.arrow ? std::vector<double>{3, 6, 10} : std::vector<double>{0.5, 2, 4}) {
-        const std::vector<ScreenRect> ring = detail::boxes_around(q.x(), q.y(), e.width, e.height(), d * st_.pad);
+        const std::vector<ScreenRect> ring =
+            detail::boxes_around(q.x(), q.y(), e.width, e.height(), d * st_.pad);
         c.insert(c.end(), ring.begin(), ring.end());
       }
       const detail::Placement pl = detail::choose_place(c, grid, bounds, taken);
@@ -494,14 +531,18 @@ class PanelPlan {
     p.clip(rect_.x0, rect_.y0, rect_.x1, rect_.y1);
     for (const Span& s : pn_.spans) {
       const Color c = s.color.with_alpha(s.opacity);
-      if (s.vertical) p.rect(xm_(s.lo), rect_.y0, xm_(s.hi), rect_.y1, c);
-      else p.rect(rect_.x0, ym_(s.hi), rect_.x1, ym_(s.lo), c);
+      if (s.vertical)
+        p.rect(xm_(s.lo), rect_.y0, xm_(s.hi), rect_.y1, c);
+      else
+        p.rect(rect_.x0, ym_(s.hi), rect_.x1, ym_(s.lo), c);
     }
     const double gw = st_.grid_width;
     if (pn_.x.grid)
-      for (double v : xt_.values) p.rect(xm_(v) - 0.5 * gw, rect_.y0, xm_(v) + 0.5 * gw, rect_.y1, detail::kGridColor);
+      for (double v : xt_.values)
+        p.rect(xm_(v) - 0.5 * gw, rect_.y0, xm_(v) + 0.5 * gw, rect_.y1, detail::kGridColor);
     if (pn_.y.grid)
-      for (double v : yt_.values) p.rect(rect_.x0, ym_(v) - 0.5 * gw, rect_.x1, ym_(v) + 0.5 * gw, detail::kGridColor);
+      for (double v : yt_.values)
+        p.rect(rect_.x0, ym_(v) - 0.5 * gw, rect_.x1, ym_(v) + 0.5 * gw, detail::kGridColor);
   }
 
   void data(detail::Painter& p) const {
@@ -512,7 +553,8 @@ class PanelPlan {
       const std::size_t n = std::min({band.x.size(), band.y_lo.size(), band.y_hi.size()});
       for (std::size_t i = 0; i + 1 < n; ++i) {
         if (!xm_.valid(band.x[i]) || !xm_.valid(band.x[i + 1]) || !ym_.valid(band.y_lo[i]) ||
-            !ym_.valid(band.y_hi[i]) || !ym_.valid(band.y_lo[i + 1]) || !ym_.valid(band.y_hi[i + 1]))
+            !ym_.valid(band.y_hi[i]) || !ym_.valid(band.y_lo[i + 1]) ||
+            !ym_.valid(band.y_hi[i + 1]))
           continue;
         p.convex({map(band.x[i], band.y_lo[i]), map(band.x[i + 1], band.y_lo[i + 1]),
                   map(band.x[i + 1], band.y_hi[i + 1]), map(band.x[i], band.y_hi[i])},
@@ -522,8 +564,10 @@ class PanelPlan {
     for (const RefLine& r : pn_.ref_lines) {
       const double w = st_.line(r.width);
       const auto dash = detail::dash_pattern(r.dash, w, st_);
-      if (r.vertical) p.polyline({{xm_(r.value), rect_.y1, 0}, {xm_(r.value), rect_.y0, 0}}, w, r.color, dash);
-      else p.polyline({{rect_.x0, ym_(r.value), 0}, {rect_.x1, ym_(r.value), 0}}, w, r.color, dash);
+      if (r.vertical)
+        p.polyline({{xm_(r.value), rect_.y1, 0}, {xm_(r.value), rect_.y0, 0}}, w, r.color, dash);
+      else
+        p.polyline({{rect_.x0, ym_(r.value), 0}, {rect_.x1, ym_(r.value), 0}}, w, r.color, dash);
     }
     for (std::size_t k = 0; k < pn_.series.size(); ++k) {
       const Series& s = pn_.series[k];
@@ -563,8 +607,10 @@ class PanelPlan {
       const RefLine& r = pn_.ref_lines[k];
       const ScreenRect& b = ref_boxes_[k];
       if (r.label.empty()) continue;
-      if (r.vertical) p.text(r.label, b.x1, b.y0, st_.note_font, r.color, HAlign::kRight, VAlign::kBottom, true);
-      else p.text(r.label, b.x0, b.y0, st_.note_font, r.color, HAlign::kLeft, VAlign::kTop);
+      if (r.vertical)
+        p.text(r.label, b.x1, b.y0, st_.note_font, r.color, HAlign::kRight, VAlign::kBottom, true);
+      else
+        p.text(r.label, b.x0, b.y0, st_.note_font, r.color, HAlign::kLeft, VAlign::kTop);
     }
     p.no_clip();
     annotations(p);
@@ -600,27 +646,30 @@ class PanelPlan {
 
   void frame_and_ticks(detail::Painter& p) const {
     const double fw = st_.frame_width;
-    p.rect_outline(rect_.x0 - fw, rect_.y0 - fw, rect_.x1 + fw, rect_.y1 + fw, fw, detail::kAxisColor);
+    p.rect_outline(rect_.x0 - fw, rect_.y0 - fw, rect_.x1 + fw, rect_.y1 + fw, fw,
+                   detail::kAxisColor);
     const double tw = fw, tl = st_.tick_len;
     for (std::size_t i = 0; i < xt_.values.size(); ++i) {
       const double x = xm_(xt_.values[i]);
       p.rect(x - 0.5 * tw, rect_.y1 + fw, x + 0.5 * tw, rect_.y1 + fw + tl, detail::kAxisColor);
-      p.text(xt_.labels[i], x, rect_.y1 + fw + tl + 0.4 * st_.pad, st_.tick_font, detail::kTickTextColor,
-             HAlign::kCenter, VAlign::kTop);
+      p.text(xt_.labels[i], x, rect_.y1 + fw + tl + 0.4 * st_.pad, st_.tick_font,
+             detail::kTickTextColor, HAlign::kCenter, VAlign::kTop);
     }
     for (double v : xt_.minor) {
       const double x = xm_(v);
-      p.rect(x - 0.5 * tw, rect_.y1 + fw, x + 0.5 * tw, rect_.y1 + fw + 0.55 * tl, detail::kAxisColor);
+      p.rect(x - 0.5 * tw, rect_.y1 + fw, x + 0.5 * tw, rect_.y1 + fw + 0.55 * tl,
+             detail::kAxisColor);
     }
     for (std::size_t i = 0; i < yt_.values.size(); ++i) {
       const double y = ym_(yt_.values[i]);
       p.rect(rect_.x0 - fw - tl, y - 0.5 * tw, rect_.x0 - fw, y + 0.5 * tw, detail::kAxisColor);
-      p.text(yt_.labels[i], rect_.x0 - fw - tl - 0.4 * st_.pad, y, st_.tick_font, detail::kTickTextColor,
-             HAlign::kRight, VAlign::kCenter);
+      p.text(yt_.labels[i], rect_.x0 - fw - tl - 0.4 * st_.pad, y, st_.tick_font,
+             detail::kTickTextColor, HAlign::kRight, VAlign::kCenter);
     }
     for (double v : yt_.minor) {
       const double y = ym_(v);
-      p.rect(rect_.x0 - fw - 0.55 * tl, y - 0.5 * tw, rect_.x0 - fw, y + 0.5 * tw, detail::kAxisColor);
+      p.rect(rect_.x0 - fw - 0.55 * tl, y - 0.5 * tw, rect_.x0 - fw, y + 0.5 * tw,
+             detail::kAxisColor);
     }
   }
 
@@ -628,12 +677,14 @@ class PanelPlan {
     if (!pn_.x.label.empty()) {
       const double half = 0.5 * measure_text(pn_.x.label, xlabel_size_).width + st_.pad;
       const double x = clamp_safe(0.5 * (rect_.x0 + rect_.x1), cell_.x0 + half, cell_.x1 - half);
-      p.text(pn_.x.label, x, cell_.y1 - st_.pad, xlabel_size_, kTextColor, HAlign::kCenter, VAlign::kBottom);
+      p.text(pn_.x.label, x, cell_.y1 - st_.pad, xlabel_size_, kTextColor, HAlign::kCenter,
+             VAlign::kBottom);
     }
     if (!pn_.y.label.empty()) {
       const double half = 0.5 * measure_text(pn_.y.label, ylabel_size_).width + st_.pad;
       const double y = clamp_safe(0.5 * (rect_.y0 + rect_.y1), cell_.y0 + half, cell_.y1 - half);
-      p.text(pn_.y.label, cell_.x0 + st_.pad, y, ylabel_size_, kTextColor, HAlign::kCenter, VAlign::kTop, true);
+      p.text(pn_.y.label, cell_.x0 + st_.pad, y, ylabel_size_, kTextColor, HAlign::kCenter,
+             VAlign::kTop, true);
     }
     detail::draw_title(p, title_);
   }
@@ -662,9 +713,11 @@ struct FigurePlan {
 };
 
 FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
-  FigurePlan fp{detail::figure_style(width, plot.style_height > 0 ? plot.style_height : height), {}, {}};
+  FigurePlan fp{
+      detail::figure_style(width, plot.style_height > 0 ? plot.style_height : height), {}, {}};
   const Style& st = fp.st;
-  fp.title = detail::layout_title(plot.title, st.title_font, st.margin, width - st.margin, 0.5 * width, st.margin);
+  fp.title = detail::layout_title(plot.title, st.title_font, st.margin, width - st.margin,
+                                  0.5 * width, st.margin);
   // Panels keep a padding inside their cells, so the cells reach to a padding short of the
   // margin: a panel's outermost text then sits at the margin, as the title does.
   const double edge = st.margin - st.pad;
@@ -673,8 +726,9 @@ FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
   fp.panels.reserve(static_cast<std::size_t>(plot.rows()) * plot.cols());
   for (int r = 0; r < plot.rows(); ++r)
     for (int c = 0; c < plot.cols(); ++c)
-      fp.panels.emplace_back(plot.panel(r, c), st,
-                             ScreenRect{edge + c * cw, top + r * ch, edge + (c + 1) * cw, top + (r + 1) * ch});
+      fp.panels.emplace_back(
+          plot.panel(r, c), st,
+          ScreenRect{edge + c * cw, top + r * ch, edge + (c + 1) * cw, top + (r + 1) * ch});
   return fp;
 }
 

@@ -1,19 +1,18 @@
 // PNG output and input through libpng, written atomically (atomic_file.h).
 #include "rigid/render/png.h"
 
-#include "rigid/render/atomic_file.h"
-
 #include <png.h>
 
 #include <cerrno>
 #include <csetjmp>
-
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "rigid/render/atomic_file.h"
 
 namespace rigid::render {
 
@@ -36,7 +35,9 @@ constexpr int kFilters = PNG_FILTER_NONE;
 
 // libpng reports errors by longjmp; its default handler also prints to stderr,
 // which a caller that catches the exception does not want.
-void on_error(png_structp png, png_const_charp) { png_longjmp(png, 1); }
+void on_error(png_structp png, png_const_charp) {
+  png_longjmp(png, 1);
+}
 void on_warning(png_structp, png_const_charp) {}
 
 // Writes img to an open FILE; returns an error message or nullptr. No C++

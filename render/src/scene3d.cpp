@@ -25,17 +25,24 @@ int torus_ratio_key(Scene3D::Shape shape, double torus_minor) {
 // The unit mesh of a built-in shape with `segments` around (empty for tubes and custom meshes).
 Mesh unit_shape_mesh(Scene3D::Shape shape, int segments, int ratio) {
   switch (shape) {
-    case Scene3D::Shape::kSphere: return make_sphere(segments);
-    case Scene3D::Shape::kCone: return make_cone(segments);
-    case Scene3D::Shape::kCylinder: return make_cylinder(segments);
-    case Scene3D::Shape::kDisk: return make_disk(segments);
-    case Scene3D::Shape::kBox: return make_box();
+    case Scene3D::Shape::kSphere:
+      return make_sphere(segments);
+    case Scene3D::Shape::kCone:
+      return make_cone(segments);
+    case Scene3D::Shape::kCylinder:
+      return make_cylinder(segments);
+    case Scene3D::Shape::kDisk:
+      return make_disk(segments);
+    case Scene3D::Shape::kBox:
+      return make_box();
     case Scene3D::Shape::kTorus:
       return make_torus(ratio / 1000.0, segments,
                         std::max(8, static_cast<int>(segments * ratio / 1000.0) + 8));
-    case Scene3D::Shape::kPlane: return make_plane();
+    case Scene3D::Shape::kPlane:
+      return make_plane();
     case Scene3D::Shape::kTube:
-    case Scene3D::Shape::kCustom: break;
+    case Scene3D::Shape::kCustom:
+      break;
   }
   return {};
 }
@@ -47,16 +54,20 @@ std::pair<Vector3d, double> bounds(const Scene3D::Object& o) {
   const double sx = l.col(0).norm(), sy = l.col(1).norm(), sz = l.col(2).norm();
   const Vector3d t = o.transform.translation();
   switch (o.shape) {
-    case S::kSphere: return {t, std::max({sx, sy, sz})};
-    case S::kBox: return {t, std::sqrt(sx * sx + sy * sy + sz * sz)};
+    case S::kSphere:
+      return {t, std::max({sx, sy, sz})};
+    case S::kBox:
+      return {t, std::sqrt(sx * sx + sy * sy + sz * sz)};
     case S::kCone:
     case S::kCylinder: {
       const Vector3d c = t + 0.5 * l.col(2);
       return {c, std::hypot(std::max(sx, sy), 0.5 * sz)};
     }
     case S::kDisk:
-    case S::kPlane: return {t, std::max(sx, sy) * (o.shape == S::kPlane ? std::sqrt(2.0) : 1.0)};
-    case S::kTorus: return {t, std::max(sx, sy) * (1 + o.torus_minor)};
+    case S::kPlane:
+      return {t, std::max(sx, sy) * (o.shape == S::kPlane ? std::sqrt(2.0) : 1.0)};
+    case S::kTorus:
+      return {t, std::max(sx, sy) * (1 + o.torus_minor)};
     case S::kTube:
     case S::kCustom: {
       Eigen::AlignedBox3d box;
@@ -86,7 +97,8 @@ double normalising_scale(const Scene3D& scene) {
   // GL works in float: a scene of 1e-50 m or 1e30 m is brought to unit size in
   // double first. Perspective and the picture are unchanged by a uniform scale.
   const double extent = scene_extent(scene);
-  return extent > 0.0 && std::isfinite(extent) && (extent < 1e-3 || extent > 1e3) ? 1.0 / extent : 1.0;
+  return extent > 0.0 && std::isfinite(extent) && (extent < 1e-3 || extent > 1e3) ? 1.0 / extent
+                                                                                  : 1.0;
 }
 
 }  // namespace detail
@@ -112,7 +124,8 @@ Affine3d place(const Vector3d& t, const Matrix3d& r, const Vector3d& scale) {
 }
 
 void check_finite(const Vector3d& v, const char* what) {
-  if (!v.allFinite()) throw std::invalid_argument(std::string("Scene3D: ") + what + " is not finite");
+  if (!v.allFinite())
+    throw std::invalid_argument(std::string("Scene3D: ") + what + " is not finite");
 }
 
 Scene3D::Object make_object(Scene3D::Shape shape, const Affine3d& transform, const Material& m,
@@ -137,19 +150,23 @@ void Scene3D::add_sphere(const Vector3d& center, double radius, Material m, std:
   add_ellipsoid(center, Vector3d::Constant(radius), Matrix3d::Identity(), m, std::move(label));
 }
 
-void Scene3D::add_ellipsoid(const Vector3d& center, const Vector3d& semi_axes, const Matrix3d& rotation,
-                            Material m, std::string label) {
+void Scene3D::add_ellipsoid(const Vector3d& center, const Vector3d& semi_axes,
+                            const Matrix3d& rotation, Material m, std::string label) {
   check_finite(center, "ellipsoid centre");
-  if (!(semi_axes.minCoeff() > 0)) throw std::invalid_argument("Scene3D: ellipsoid semi-axes must be > 0");
-  objects_.push_back(make_object(Shape::kSphere, place(center, rotation, semi_axes), resolve(m), std::move(label)));
+  if (!(semi_axes.minCoeff() > 0))
+    throw std::invalid_argument("Scene3D: ellipsoid semi-axes must be > 0");
+  objects_.push_back(make_object(Shape::kSphere, place(center, rotation, semi_axes), resolve(m),
+                                 std::move(label)));
 }
 
 void Scene3D::add_cone(const Vector3d& apex, const Vector3d& base_center, double radius, Material m,
                        std::string label) {
   const Vector3d axis = apex - base_center;
-  if (!(axis.norm() > 0) || !(radius > 0)) throw std::invalid_argument("Scene3D: cone needs height and radius > 0");
-  objects_.push_back(make_object(Shape::kCone, place(base_center, frame_z(axis), {radius, radius, axis.norm()}),
-                      resolve(m), std::move(label)));
+  if (!(axis.norm() > 0) || !(radius > 0))
+    throw std::invalid_argument("Scene3D: cone needs height and radius > 0");
+  objects_.push_back(make_object(Shape::kCone,
+                                 place(base_center, frame_z(axis), {radius, radius, axis.norm()}),
+                                 resolve(m), std::move(label)));
 }
 
 void Scene3D::add_cylinder(const Vector3d& p0, const Vector3d& p1, double radius, Material m,
@@ -157,15 +174,17 @@ void Scene3D::add_cylinder(const Vector3d& p0, const Vector3d& p1, double radius
   const Vector3d axis = p1 - p0;
   if (!(axis.norm() > 0) || !(radius > 0))
     throw std::invalid_argument("Scene3D: cylinder needs length and radius > 0");
-  objects_.push_back(make_object(Shape::kCylinder, place(p0, frame_z(axis), {radius, radius, axis.norm()}),
-                      resolve(m), std::move(label)));
+  objects_.push_back(make_object(Shape::kCylinder,
+                                 place(p0, frame_z(axis), {radius, radius, axis.norm()}),
+                                 resolve(m), std::move(label)));
 }
 
 void Scene3D::add_arrow(const Vector3d& from, const Vector3d& to, double radius, Material m,
                         std::string label) {
   const Vector3d d = to - from;
   const double len = d.norm();
-  if (!(len > 0) || !(radius > 0)) throw std::invalid_argument("Scene3D: arrow needs length and radius > 0");
+  if (!(len > 0) || !(radius > 0))
+    throw std::invalid_argument("Scene3D: arrow needs length and radius > 0");
   m = resolve(m);
   const double head = std::min(0.35 * len, 7.0 * radius);
   const double head_r = std::min(2.6 * radius, 0.5 * head);
@@ -174,34 +193,42 @@ void Scene3D::add_arrow(const Vector3d& from, const Vector3d& to, double radius,
   add_cone(to, base, std::max(head_r, radius * 1.5), m);
 }
 
-void Scene3D::add_box(const Vector3d& center, const Vector3d& half_extents, const Matrix3d& rotation,
-                      Material m, std::string label) {
-  if (!(half_extents.minCoeff() > 0)) throw std::invalid_argument("Scene3D: box half-extents must be > 0");
-  objects_.push_back(make_object(Shape::kBox, place(center, rotation, half_extents), resolve(m), std::move(label)));
+void Scene3D::add_box(const Vector3d& center, const Vector3d& half_extents,
+                      const Matrix3d& rotation, Material m, std::string label) {
+  if (!(half_extents.minCoeff() > 0))
+    throw std::invalid_argument("Scene3D: box half-extents must be > 0");
+  objects_.push_back(make_object(Shape::kBox, place(center, rotation, half_extents), resolve(m),
+                                 std::move(label)));
 }
 
 void Scene3D::add_disk(const Vector3d& center, const Vector3d& normal, double radius, Material m,
                        std::string label) {
-  if (!(normal.norm() > 0) || !(radius > 0)) throw std::invalid_argument("Scene3D: disk needs normal and radius > 0");
-  objects_.push_back(make_object(Shape::kDisk, place(center, frame_z(normal), {radius, radius, radius}), resolve(m),
-                      std::move(label)));
+  if (!(normal.norm() > 0) || !(radius > 0))
+    throw std::invalid_argument("Scene3D: disk needs normal and radius > 0");
+  objects_.push_back(make_object(Shape::kDisk,
+                                 place(center, frame_z(normal), {radius, radius, radius}),
+                                 resolve(m), std::move(label)));
 }
 
 void Scene3D::add_torus(const Vector3d& center, const Vector3d& normal, double major_radius,
                         double minor_radius, Material m, std::string label) {
-  if (!(normal.norm() > 0) || !(major_radius > 0) || !(minor_radius > 0) || minor_radius >= major_radius)
+  if (!(normal.norm() > 0) || !(major_radius > 0) || !(minor_radius > 0) ||
+      minor_radius >= major_radius)
     throw std::invalid_argument("Scene3D: torus needs 0 < minor radius < major radius");
-  Object o = make_object(Shape::kTorus, place(center, frame_z(normal), Vector3d::Constant(major_radius)), resolve(m),
-           std::move(label));
+  Object o =
+      make_object(Shape::kTorus, place(center, frame_z(normal), Vector3d::Constant(major_radius)),
+                  resolve(m), std::move(label));
   o.torus_minor = minor_radius / major_radius;
   objects_.push_back(std::move(o));
 }
 
-void Scene3D::add_plane(const Vector3d& center, const Vector3d& normal, double half_size, Material m,
-                        std::string label) {
-  if (!(normal.norm() > 0) || !(half_size > 0)) throw std::invalid_argument("Scene3D: plane needs normal and size > 0");
-  objects_.push_back(make_object(Shape::kPlane, place(center, frame_z(normal), Vector3d::Constant(half_size)),
-                      resolve(m), std::move(label)));
+void Scene3D::add_plane(const Vector3d& center, const Vector3d& normal, double half_size,
+                        Material m, std::string label) {
+  if (!(normal.norm() > 0) || !(half_size > 0))
+    throw std::invalid_argument("Scene3D: plane needs normal and size > 0");
+  objects_.push_back(make_object(Shape::kPlane,
+                                 place(center, frame_z(normal), Vector3d::Constant(half_size)),
+                                 resolve(m), std::move(label)));
 }
 
 void Scene3D::add_tube(std::vector<Vector3d> path, double radius, Material m, std::string label) {
@@ -218,7 +245,8 @@ void Scene3D::add_mesh(Mesh mesh, const Affine3d& transform, Material m, std::st
   objects_.push_back(std::move(o));
 }
 
-void Scene3D::add_polyline(std::vector<Vector3d> points, Color color, double width, std::string label) {
+void Scene3D::add_polyline(std::vector<Vector3d> points, Color color, double width,
+                           std::string label) {
   if (color.a < 0) color = palette_color(auto_colors_++);
   polylines_.push_back({std::move(points), color, width, std::move(label)});
 }
@@ -237,7 +265,9 @@ void Scene3D::add_axes(const Vector3d& origin, const Matrix3d& rotation, double 
   }
 }
 
-void Scene3D::add_label(Label3D label) { labels_.push_back(std::move(label)); }
+void Scene3D::add_label(Label3D label) {
+  labels_.push_back(std::move(label));
+}
 
 void Scene3D::add_label(const Vector3d& position, std::string text, Color color) {
   Label3D l;

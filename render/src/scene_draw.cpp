@@ -78,16 +78,18 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
     const GpuMesh* g = nullptr;
     if (o.shape == Scene3D::Shape::kTube || o.shape == Scene3D::Shape::kCustom) {
       if (o.shape == Scene3D::Shape::kTube)
-        temporary.push_back(upload(make_tube(thin_path(o.path, view), o.tube_radius,
-                                             std::min(48, segments_for_radius(view.pixels(o.tube_radius, c))))));
+        temporary.push_back(
+            upload(make_tube(thin_path(o.path, view), o.tube_radius,
+                             std::min(48, segments_for_radius(view.pixels(o.tube_radius, c))))));
       else
         temporary.push_back(upload(o.mesh));
       g = &temporary.back();
     } else {
       // Segments from the on-screen radius of the object's round cross-section.
       const Matrix3d l = t.linear();
-      const double round_r = o.shape == Scene3D::Shape::kSphere ? std::max({l.col(0).norm(), l.col(1).norm(), l.col(2).norm()})
-                                                       : std::max(l.col(0).norm(), l.col(1).norm());
+      const double round_r = o.shape == Scene3D::Shape::kSphere
+                                 ? std::max({l.col(0).norm(), l.col(1).norm(), l.col(2).norm()})
+                                 : std::max(l.col(0).norm(), l.col(1).norm());
       g = &unit_mesh(o.shape, segments_for_radius(view.pixels(round_r, c)), o.torus_minor);
     }
     const Eigen::Matrix4d mv = view.view * t.matrix();
@@ -122,14 +124,17 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
       translucent.push_back(&o);
       continue;
     }
-    if (is_open(&o) || o.shape == Scene3D::Shape::kCustom) gl.Disable(GL_CULL_FACE);
-    else gl.Enable(GL_CULL_FACE);
+    if (is_open(&o) || o.shape == Scene3D::Shape::kCustom)
+      gl.Disable(GL_CULL_FACE);
+    else
+      gl.Enable(GL_CULL_FACE);
     draw(o);
   }
   gl.Disable(GL_CULL_FACE);
   gl.FrontFace(GL_CCW);
 
-  // 2. Screen-space polylines, hidden by nearer opaque surfaces (nudged forward to avoid z-fighting).
+  // 2. Screen-space polylines, hidden by nearer opaque surfaces (nudged forward to avoid
+  // z-fighting).
   Painter& p = painter();
   p.begin(width, height);
   p.depth_test(true);
@@ -159,18 +164,28 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
   gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl.DepthMask(GL_FALSE);
   gl.Enable(GL_CULL_FACE);
-  auto far_key = [&](const Scene3D::Object* o) { const auto [c, r] = bounds(*o); return view.depth(c) + r; };
-  auto near_key = [&](const Scene3D::Object* o) { const auto [c, r] = bounds(*o); return view.depth(c) - r; };
+  auto far_key = [&](const Scene3D::Object* o) {
+    const auto [c, r] = bounds(*o);
+    return view.depth(c) + r;
+  };
+  auto near_key = [&](const Scene3D::Object* o) {
+    const auto [c, r] = bounds(*o);
+    return view.depth(c) - r;
+  };
   std::vector<const Scene3D::Object*> order = translucent;
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return far_key(a) > far_key(b); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](auto a, auto b) { return far_key(a) > far_key(b); });
   gl.CullFace(GL_FRONT);
   for (const Scene3D::Object* o : order)
     if (!is_open(o)) draw(*o);
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return near_key(a) > near_key(b); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](auto a, auto b) { return near_key(a) > near_key(b); });
   for (const Scene3D::Object* o : order) {
     // Open surfaces have no back to draw first: both sides go in this pass.
-    if (is_open(o)) gl.Disable(GL_CULL_FACE);
-    else gl.CullFace(GL_BACK);
+    if (is_open(o))
+      gl.Disable(GL_CULL_FACE);
+    else
+      gl.CullFace(GL_BACK);
     draw(*o);
     gl.Enable(GL_CULL_FACE);
   }
@@ -180,7 +195,6 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
   gl.Disable(GL_DEPTH_TEST);
   gl.BindVertexArray(0);
   for (GpuMesh& g : temporary) release(g);
-
 }
 
 // The text overlay: labels where they were placed, the title and the legend.
@@ -206,7 +220,8 @@ Scene3D::Layout Scene3D::layout(int width, int height) const {
   const double k = detail::normalising_scale(*this);
   if (k != 1.0) return scaled(k).layout(width, height);
   const detail::SceneFrame fr = detail::frame_scene(*this, width, height);
-  return {fr.title.box, fr.legend, fr.region, static_cast<int>(fr.title.lines.size()), fr.title.size, fr.labels};
+  return {fr.title.box,  fr.legend, fr.region, static_cast<int>(fr.title.lines.size()),
+          fr.title.size, fr.labels};
 }
 
 Camera Scene3D::fitted_camera(int width, int height) const {

@@ -1,12 +1,11 @@
 // The camera of a 3D scene: projection, and the fit that frames the scene.
 #include "scene_fit.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
-
-#include <Eigen/Geometry>
 
 #include "scene_shapes.h"
 
@@ -40,7 +39,8 @@ View make_view(const Camera& cam, int width, int height, double znear, double zf
   const double tan_half = std::tan(0.5 * cam.fov_y_deg * EIGEN_PI / 180.0);
   v.proj.setZero();
   if (cam.orthographic) {
-    const double h = cam.ortho_height > 0 ? cam.ortho_height : 2 * (cam.target - cam.eye).norm() * tan_half;
+    const double h =
+        cam.ortho_height > 0 ? cam.ortho_height : 2 * (cam.target - cam.eye).norm() * tan_half;
     v.proj(0, 0) = 2 / (h * aspect);
     v.proj(1, 1) = 2 / h;
     v.proj(2, 2) = -2 / (zfar - znear);
@@ -89,7 +89,8 @@ std::vector<FitPoint> fit_points(const Scene3D& scene, double geo) {
     } else if (o.shape == S::kCustom) {
       for (const auto& p : o.mesh.positions) out.push_back({o.transform * p.cast<double>()});
     } else {
-      for (const Vector3d& p : unit_outline(o.shape, o.torus_minor)) out.push_back({o.transform * p});
+      for (const Vector3d& p : unit_outline(o.shape, o.torus_minor))
+        out.push_back({o.transform * p});
     }
   }
   for (const Scene3D::Polyline& pl : scene.polylines()) {

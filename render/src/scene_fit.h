@@ -2,10 +2,9 @@
 // fit that frames the scene in the region the overlay leaves (Camera::fit).
 #pragma once
 
+#include <Eigen/Core>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "rigid/render/rect.h"
 #include "rigid/render/scene3d.h"

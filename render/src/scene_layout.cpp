@@ -76,30 +76,37 @@ Occupancy scene_grid(const Scene3D& scene, const View& view, const Style& st) {
   auto add_mesh = [&](const Mesh& m, const Eigen::Affine3d& t, float w) {
     std::vector<Vector2d> q(m.positions.size());
     std::vector<char> ok(m.positions.size());
-    for (std::size_t i = 0; i < q.size(); ++i) ok[i] = screen(t * m.positions[i].cast<double>(), q[i]);
+    for (std::size_t i = 0; i < q.size(); ++i)
+      ok[i] = screen(t * m.positions[i].cast<double>(), q[i]);
     for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
       const auto a = m.indices[i], b = m.indices[i + 1], c = m.indices[i + 2];
       if (ok[a] && ok[b] && ok[c]) grid.add_triangle(q[a], q[b], q[c], w);
     }
   };
-  auto add_path = [&](const std::vector<Vector3d>& path, double half_width_px, double radius, float w) {
+  auto add_path = [&](const std::vector<Vector3d>& path, double half_width_px, double radius,
+                      float w) {
     Vector2d prev;
     bool have_prev = false;
     for (const Vector3d& p : path) {
       Vector2d cur;
       const bool ok = screen(p, cur);
       const double hw = half_width_px + (radius > 0 ? view.pixels(radius, p) : 0.0);
-      if (ok && have_prev) grid.add_segment(prev, cur, hw, w);
-      else if (ok) grid.add_segment(cur, cur, hw, w);
+      if (ok && have_prev)
+        grid.add_segment(prev, cur, hw, w);
+      else if (ok)
+        grid.add_segment(cur, cur, hw, w);
       prev = cur;
       have_prev = ok;
     }
   };
   for (const Scene3D::Object& o : scene.objects()) {
     const float w = o.material.opacity >= 0.99f ? 1.0f : 0.5f * o.material.opacity;
-    if (o.shape == Scene3D::Shape::kTube) add_path(o.path, 1.0, o.tube_radius, w);
-    else if (o.shape == Scene3D::Shape::kCustom) add_mesh(o.mesh, o.transform, w);
-    else add_mesh(coarse_mesh(o.shape, o.torus_minor), o.transform, w);
+    if (o.shape == Scene3D::Shape::kTube)
+      add_path(o.path, 1.0, o.tube_radius, w);
+    else if (o.shape == Scene3D::Shape::kCustom)
+      add_mesh(o.mesh, o.transform, w);
+    else
+      add_mesh(coarse_mesh(o.shape, o.torus_minor), o.transform, w);
   }
   for (const Scene3D::Polyline& pl : scene.polylines())
     add_path(pl.points, 0.5 * st.line(pl.width) + 1, 0, 1.0f);
@@ -124,13 +131,15 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height) {
   SceneFrame fr;
   fr.st = figure_style(width, height);
   const Style& st = fr.st;
-  fr.title = layout_title(scene.title, st.title_font, st.margin, width - st.margin, 0.5 * width, st.margin);
+  fr.title = layout_title(scene.title, st.title_font, st.margin, width - st.margin, 0.5 * width,
+                          st.margin);
   const double below_title = scene.title.empty() ? 0.0 : fr.title.box.y1;
   fr.region = {st.margin, below_title + st.margin, width - st.margin, height - st.margin};
   if (scene.show_legend) fr.entries = legend_entries(scene);
   if (!fr.entries.empty()) {
     const LegendSize z = measure_legend(fr.entries, st);
-    const double x1 = width - st.margin, y0 = scene.title.empty() ? st.margin : below_title + st.pad;
+    const double x1 = width - st.margin,
+                 y0 = scene.title.empty() ? st.margin : below_title + st.pad;
     fr.legend = {x1 - z.width, y0, x1, y0 + z.height};
   }
 

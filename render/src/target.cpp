@@ -211,7 +211,9 @@ void PhaseClock::lap(double FigureTiming::*phase, bool wait_for_gl) {
   last_ = now;
 }
 
-void Target::recycle(std::vector<std::uint8_t>&& pixels) { spare_ = std::move(pixels); }
+void Target::recycle(std::vector<std::uint8_t>&& pixels) {
+  spare_ = std::move(pixels);
+}
 
 void save_timed(Image img, const std::string& path, FigureTiming* timing) {
   PhaseClock clock(timing);

@@ -25,7 +25,8 @@ namespace rigid::render::detail {
 
 class Target {
  public:
-  /// Makes the context if needed, binds a width × height drawing buffer (with depth if asked) and clears it.
+  /// Makes the context if needed, binds a width × height drawing buffer (with depth if asked) and
+  /// clears it.
   void begin(int width, int height, bool depth, Color clear);
   /// Resolves the samples and reads the image back (rows top to bottom).
   Image finish();

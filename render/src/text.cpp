@@ -26,8 +26,8 @@ constexpr char32_t kDotAbove = 0x02D9;
 
 struct GlyphInfo {
   std::uint32_t index = 0;
-  long advance = 0;                   // font units
-  long ink_x0 = 0, ink_x1 = 0;        // ink extent, font units
+  long advance = 0;             // font units
+  long ink_x0 = 0, ink_x1 = 0;  // ink extent, font units
   long ink_y0 = 0, ink_y1 = 0;
 };
 
@@ -35,7 +35,8 @@ struct GlyphInfo {
 class Font {
  public:
   Font() {
-    if (FT_Init_FreeType(&lib_) != 0) throw std::runtime_error("rigid::render: FreeType init failed");
+    if (FT_Init_FreeType(&lib_) != 0)
+      throw std::runtime_error("rigid::render: FreeType init failed");
     if (FT_New_Face(lib_, RIGID_FONT_PATH, 0, &face_) != 0)
       throw std::runtime_error("rigid::render: cannot load font " RIGID_FONT_PATH);
     units_ = face_->units_per_EM;
@@ -102,30 +103,30 @@ Font& font() {
 // One character of parsed markup with its script level and decorations.
 struct Item {
   char32_t cp = 0;
-  int level = 0;        // 0 normal, >0 superscript depth, <0 subscript depth
-  double shift = 0;     // baseline shift in em of the base size
-  double scale = 1;     // size relative to the base size
-  bool dot = false;     // dot above
+  int level = 0;     // 0 normal, >0 superscript depth, <0 subscript depth
+  double shift = 0;  // baseline shift in em of the base size
+  double scale = 1;  // size relative to the base size
+  bool dot = false;  // dot above
 };
 
 const std::map<std::string, char32_t, std::less<>>& commands() {
   static const std::map<std::string, char32_t, std::less<>> m = {
-      {"alpha", U'α'},   {"beta", U'β'},     {"gamma", U'γ'},   {"delta", U'δ'},
-      {"epsilon", U'ε'}, {"zeta", U'ζ'},     {"eta", U'η'},     {"theta", U'θ'},
-      {"vartheta", U'ϑ'}, {"iota", U'ι'},    {"kappa", U'κ'},   {"lambda", U'λ'},
-      {"mu", U'μ'},      {"nu", U'ν'},       {"xi", U'ξ'},      {"pi", U'π'},
-      {"rho", U'ρ'},     {"sigma", U'σ'},    {"tau", U'τ'},     {"upsilon", U'υ'},
-      {"phi", U'φ'},     {"varphi", U'ϕ'},   {"chi", U'χ'},     {"psi", U'ψ'},
-      {"omega", U'ω'},   {"Gamma", U'Γ'},    {"Delta", U'Δ'},   {"Theta", U'Θ'},
-      {"Lambda", U'Λ'},  {"Xi", U'Ξ'},       {"Pi", U'Π'},      {"Sigma", U'Σ'},
-      {"Upsilon", U'Υ'}, {"Phi", U'Φ'},      {"Psi", U'Ψ'},     {"Omega", U'Ω'},
-      {"deg", U'°'},     {"cdot", U'·'},     {"times", U'×'},   {"pm", U'±'},
-      {"approx", U'≈'},  {"le", U'≤'},       {"ge", U'≥'},      {"to", U'→'},
-      {"infty", U'∞'},   {"perp", U'⊥'},     {"partial", U'∂'}, {"minus", U'−'},
-      {"prime", U'′'},   {"ldots", U'…'},    {"sqrt", U'√'},    {"parallel", U'∥'},
-      {"propto", U'∝'},  {"neq", U'≠'},      {"equiv", U'≡'},   {"hbar", U'ħ'},
-      {",", U'\u2009'},  {"quad", U'\u2003'}, {"\\", U'\\'},    {"_", U'_'},
-      {"^", U'^'},       {"{", U'{'},        {"}", U'}'},       {" ", U' '}};
+      {"alpha", U'α'},    {"beta", U'β'},      {"gamma", U'γ'},   {"delta", U'δ'},
+      {"epsilon", U'ε'},  {"zeta", U'ζ'},      {"eta", U'η'},     {"theta", U'θ'},
+      {"vartheta", U'ϑ'}, {"iota", U'ι'},      {"kappa", U'κ'},   {"lambda", U'λ'},
+      {"mu", U'μ'},       {"nu", U'ν'},        {"xi", U'ξ'},      {"pi", U'π'},
+      {"rho", U'ρ'},      {"sigma", U'σ'},     {"tau", U'τ'},     {"upsilon", U'υ'},
+      {"phi", U'φ'},      {"varphi", U'ϕ'},    {"chi", U'χ'},     {"psi", U'ψ'},
+      {"omega", U'ω'},    {"Gamma", U'Γ'},     {"Delta", U'Δ'},   {"Theta", U'Θ'},
+      {"Lambda", U'Λ'},   {"Xi", U'Ξ'},        {"Pi", U'Π'},      {"Sigma", U'Σ'},
+      {"Upsilon", U'Υ'},  {"Phi", U'Φ'},       {"Psi", U'Ψ'},     {"Omega", U'Ω'},
+      {"deg", U'°'},      {"cdot", U'·'},      {"times", U'×'},   {"pm", U'±'},
+      {"approx", U'≈'},   {"le", U'≤'},        {"ge", U'≥'},      {"to", U'→'},
+      {"infty", U'∞'},    {"perp", U'⊥'},      {"partial", U'∂'}, {"minus", U'−'},
+      {"prime", U'′'},    {"ldots", U'…'},     {"sqrt", U'√'},    {"parallel", U'∥'},
+      {"propto", U'∝'},   {"neq", U'≠'},       {"equiv", U'≡'},   {"hbar", U'ħ'},
+      {",", U'\u2009'},   {"quad", U'\u2003'}, {"\\", U'\\'},     {"_", U'_'},
+      {"^", U'^'},        {"{", U'{'},         {"}", U'}'},       {" ", U' '}};
   return m;
 }
 

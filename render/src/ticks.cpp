@@ -1,11 +1,11 @@
 // Axis ticks: the 1-2-5 rule for linear axes and decades for log axes.
 #include "rigid/render/ticks.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace rigid::render {
 
@@ -15,7 +15,10 @@ double nice_step(double range, int target_count) {
   const double mag = std::pow(10.0, std::floor(std::log10(raw)));
   const double f = raw / mag;
   // Round the raw step to the nearest of 1, 2, 5, 10 on a log scale.
-  const double nice = f < std::sqrt(2.0) ? 1 : f < std::sqrt(10.0) ? 2 : f < std::sqrt(50.0) ? 5 : 10;
+  const double nice = f < std::sqrt(2.0)    ? 1
+                      : f < std::sqrt(10.0) ? 2
+                      : f < std::sqrt(50.0) ? 5
+                                            : 10;
   return nice * mag;
 }
 
@@ -23,8 +26,10 @@ std::string format_tick(double v, int decimals) {
   std::string s = fmt::format("{:.{}f}", v, std::max(0, decimals));
   // "-0.0" reads as zero; otherwise use a true minus sign.
   if (s.front() == '-') {
-    if (s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
-    else s.replace(0, 1, "\u2212");
+    if (s.find_first_not_of("-0.") == std::string::npos)
+      s.erase(0, 1);
+    else
+      s.replace(0, 1, "\u2212");
   }
   return s;
 }

@@ -93,7 +93,8 @@ const WebpApi& webp_api() {
                     bind(webp, "WebPPictureInitInternal", a.picture_init) &&
                     bind(webp, "WebPPictureImportRGB", a.import_rgb) &&
                     bind(webp, "WebPPictureFree", a.picture_free) && bind(webp, "WebPFree", a.free);
-    if (!ok) throw std::runtime_error("libwebp is too old: an entry point of WebPAnimEncoder is missing");
+    if (!ok)
+      throw std::runtime_error("libwebp is too old: an entry point of WebPAnimEncoder is missing");
     return a;
   }();
   return api;
@@ -191,7 +192,8 @@ struct AvApi {
 const AvApi& av_api() {
   static const AvApi api = [] {
     std::string error;
-    void* util = detail::open_library({"libavutil.so.57"}, "libavutil (Debian package libavutil57)", error);
+    void* util =
+        detail::open_library({"libavutil.so.57"}, "libavutil (Debian package libavutil57)", error);
     void* codec = util ? detail::open_library({"libavcodec.so.59"},
                                               "libavcodec (Debian package libavcodec59)", error)
                        : nullptr;
@@ -225,12 +227,12 @@ const AvApi& av_api() {
         bind(util, "av_frame_get_buffer", a.frame_get_buffer) &&
         bind(util, "av_frame_make_writable", a.frame_make_writable) &&
         bind(util, "av_frame_free", a.frame_free) && bind(util, "av_malloc", a.malloc) &&
-        bind(util, "av_freep", a.freep) &&
-        bind(util, "av_opt_set", a.opt_set) && bind(util, "av_strerror", a.strerror) &&
-        bind(util, "av_log_set_level", a.log_set_level) &&
+        bind(util, "av_freep", a.freep) && bind(util, "av_opt_set", a.opt_set) &&
+        bind(util, "av_strerror", a.strerror) && bind(util, "av_log_set_level", a.log_set_level) &&
         bind(scale, "sws_getContext", a.sws_get) && bind(scale, "sws_scale", a.scale) &&
         bind(scale, "sws_freeContext", a.sws_free);
-    if (!ok) throw std::runtime_error("FFmpeg's libraries are not the 5.1 series this was built for");
+    if (!ok)
+      throw std::runtime_error("FFmpeg's libraries are not the 5.1 series this was built for");
     // libx264's statistics and FFmpeg's notices would spill over the lab's output;
     // failures come back as return codes, said here in one line
     a.log_set_level(AV_LOG_QUIET);
@@ -301,8 +303,8 @@ class Mp4Encoder final : public Encoder {
 
     constexpr int kBuffer = 1 << 16;
     auto* buffer = static_cast<unsigned char*>(api_.malloc(kBuffer));
-    io_ = api_.avio_alloc(buffer, kBuffer, 1, &file_, nullptr, &MemoryFile::write,
-                          &MemoryFile::seek);
+    io_ =
+        api_.avio_alloc(buffer, kBuffer, 1, &file_, nullptr, &MemoryFile::write, &MemoryFile::seek);
     format_->pb = io_;
     format_->flags |= AVFMT_FLAG_CUSTOM_IO;
     check(api_.write_header(format_, nullptr), "cannot write the MP4 header");
@@ -312,8 +314,8 @@ class Mp4Encoder final : public Encoder {
     frame_->width = s.width;
     frame_->height = s.height;
     check(api_.frame_get_buffer(frame_, 0), "frame buffer");
-    sws_ = api_.sws_get(s.width, s.height, AV_PIX_FMT_RGB24, s.width, s.height,
-                        AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr);
+    sws_ = api_.sws_get(s.width, s.height, AV_PIX_FMT_RGB24, s.width, s.height, AV_PIX_FMT_YUV420P,
+                        SWS_BILINEAR, nullptr, nullptr, nullptr);
     packet_ = api_.packet_alloc();
     if (!sws_ || !packet_) throw std::runtime_error("libswscale or libavcodec: out of memory");
   }
@@ -443,8 +445,7 @@ struct VideoWriter::Impl {
   }
 };
 
-VideoWriter::VideoWriter(const std::string& path, VideoFormat format,
-                         const VideoSettings& settings)
+VideoWriter::VideoWriter(const std::string& path, VideoFormat format, const VideoSettings& settings)
     : impl_(std::make_unique<Impl>()) {
   if (settings.width <= 0 || settings.height <= 0 || !(settings.fps > 0.0) ||
       !std::isfinite(settings.fps))
@@ -484,6 +485,8 @@ std::size_t VideoWriter::finish() {
   return bytes.size();
 }
 
-int VideoWriter::frames() const { return impl_->added; }
+int VideoWriter::frames() const {
+  return impl_->added;
+}
 
 }  // namespace rigid::render

@@ -1,7 +1,6 @@
 // The exact torque-free motion (free_body_exact.h) against an mpmath reference
 // computed offline (make_reference.py: 30-digit Taylor integration of the ODE
 // from the same double inputs), and its limits.
-#include "rigid/units.h"
 #include "rigid/free_body_exact.h"
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "rigid/rotation.h"
+#include "rigid/units.h"
 
 using namespace rigid;
 
@@ -126,7 +126,8 @@ TEST_CASE("exact free body: omega and the attitude at 10 to 1000 periods match t
     for (const LongPoint& p : c.points) {
       const FreeBodyState x = exact.state(p.t);
       const double budget = 64 * kEps * (1.0 + w_scale * p.t) * conditioning;
-      const double err_w = (omega_body(x) - Eigen::Vector3d(p.y[0], p.y[1], p.y[2])).norm() / w_scale;
+      const double err_w =
+          (omega_body(x) - Eigen::Vector3d(p.y[0], p.y[1], p.y[2])).norm() / w_scale;
       const double err_q = attitude_distance(attitude(x), quat(p.y + 3));
       INFO(p.periods << " periods, t = " << p.t << ": |dw|/|w| = " << err_w << ", attitude "
                      << err_q << ", budget " << budget);
@@ -158,8 +159,8 @@ TEST_CASE("exact free body: k'^2 and the period a few ulps from the separatrix")
   for (const NearSeparatrix& c : kNearSeparatrix) {
     const rigid::FreeBodyExact motion({c.I[0], c.I[1], c.I[2]},
                                       Eigen::Vector3d(c.w0[0], c.w0[1], c.w0[2]));
-    INFO("I = (" << c.I[0] << ", " << c.I[1] << ", " << c.I[2] << "), omega0 = (" << c.w0[0]
-                 << ", " << c.w0[1] << ", " << c.w0[2] << ")");
+    INFO("I = (" << c.I[0] << ", " << c.I[1] << ", " << c.I[2] << "), omega0 = (" << c.w0[0] << ", "
+                 << c.w0[1] << ", " << c.w0[2] << ")");
     CHECK(std::abs(motion.complementary_parameter() - c.kp2) < 1e-12 * c.kp2);
     CHECK(std::abs(motion.period() - c.period) < 1e-13 * c.period);
   }

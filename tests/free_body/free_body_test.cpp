@@ -1,5 +1,4 @@
 // Euler's equations, diagnostics, validation and Euler angles (free_body.h, rotation.h).
-#include "rigid/units.h"
 #include "rigid/free_body.h"
 
 #include <catch2/catch.hpp>
@@ -7,12 +6,12 @@
 #include <stdexcept>
 
 #include "rigid/rotation.h"
+#include "rigid/units.h"
 
 using namespace rigid;
 using Catch::Matchers::Contains;
 
-namespace {
-}
+namespace {}
 
 TEST_CASE("free body: moments must be positive, finite and obey the triangle inequality") {
   CHECK_NOTHROW(validate({kPi, 2 * kPi, 13 * kPi / 5}));

@@ -1,6 +1,5 @@
 // The integrators (integrate.h, splitting.h): order by step halving, invariants,
 // agreement with the exact motion within their tolerance, and bad input.
-#include "rigid/units.h"
 #include "rigid/integrate.h"
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include "rigid/free_body_exact.h"
 #include "rigid/rotation.h"
 #include "rigid/splitting.h"
+#include "rigid/units.h"
 
 using namespace rigid;
 using Catch::Matchers::Contains;
@@ -92,12 +92,11 @@ TEST_CASE("integrate: projection keeps T and |L| to roundoff and rk4 at order 4"
   CHECK(std::abs(std::log2(errors[0] / errors[1]) - 4) <= 0.2);
   CHECK(std::abs(std::log2(errors[1] / errors[2]) - 4) <= 0.2);
 
-  for (const Method m : {Method::kRkf78, Method::kVern6, Method::kVern7, Method::kVern8,
-                         Method::kVern9}) {
+  for (const Method m :
+       {Method::kRkf78, Method::kVern6, Method::kVern7, Method::kVern8, Method::kVern9}) {
     o.method = m;
     o.abs_tol = o.rel_tol = 1e-10;
-    const IntegrationResult r =
-        integrate_free_body(kEllipsoid, make_state(kOmega0, kQ0), times, o);
+    const IntegrationResult r = integrate_free_body(kEllipsoid, make_state(kOmega0, kQ0), times, o);
     INFO(method_name(m));
     CHECK(r.energy_drift_rel < 1e-13);
     CHECK(r.momentum_drift_rel < 1e-13);
@@ -313,8 +312,8 @@ TEST_CASE("integrate: the exact motion sampled as a run has roundoff drift and n
   IntegrateOptions o;
   o.method = Method::kRkf78;
   o.abs_tol = o.rel_tol = 1e-13;
-  const IntegrationResult check = integrate_free_body(kEllipsoid, exact.state(0.0),
-                                                      uniform_times(0.0, 30.0, 301), o);
+  const IntegrationResult check =
+      integrate_free_body(kEllipsoid, exact.state(0.0), uniform_times(0.0, 30.0, 301), o);
   for (std::size_t i = 0; i < r.samples.size(); ++i) {
     CHECK(r.samples[i].t == check.samples[i].t);
     CHECK((r.samples[i].omega_body - check.samples[i].omega_body).norm() < 1e-9);
@@ -426,8 +425,9 @@ TEST_CASE("integrate: evaluations are counted: 4 a step for rk4, 1 and 5 for the
 TEST_CASE("integrate: at equal cost the splittings' energy does not drift, the others' does") {
   // The text's ellipsoid and a near-separatrix body, 200 evaluations a period, 100 periods.
   const double pi = M_PI;
-  for (const auto& [I, w] : {std::pair{PrincipalMoments{pi, 2 * pi, 13 * pi / 5}, Eigen::Vector3d(1, 1, 1)},
-                             std::pair{PrincipalMoments{1, 2, 3}, Eigen::Vector3d(0.5, 1.0, 0.45)}}) {
+  for (const auto& [I, w] :
+       {std::pair{PrincipalMoments{pi, 2 * pi, 13 * pi / 5}, Eigen::Vector3d(1, 1, 1)},
+        std::pair{PrincipalMoments{1, 2, 3}, Eigen::Vector3d(0.5, 1.0, 0.45)}}) {
     const FreeBodyExact exact(I, w);
     const std::vector<MethodComparison> runs =
         compare_methods_at_cost(exact, exact.period(), 100, 200);

@@ -193,13 +193,14 @@ TEST_CASE("ode: rk4 through the generic layer converges at order 4 when the step
     errors[k] = seen.worst;
   }
   const double p1 = std::log2(errors[0] / errors[1]), p2 = std::log2(errors[1] / errors[2]);
-  INFO("errors " << errors[0] << ", " << errors[1] << ", " << errors[2] << "; orders " << p1
-                 << ", " << p2);
+  INFO("errors " << errors[0] << ", " << errors[1] << ", " << errors[2] << "; orders " << p1 << ", "
+                 << p2);
   CHECK(std::abs(p1 - fixed_step_order(Method::kRk4)) <= 0.1);
   CHECK(std::abs(p2 - fixed_step_order(Method::kRk4)) <= 0.1);
 }
 
-TEST_CASE("ode: the after-step hook keeps the energy of rk4, rkf78 and Verner's pairs to roundoff") {
+TEST_CASE(
+    "ode: the after-step hook keeps the energy of rk4, rkf78 and Verner's pairs to roundoff") {
   // Rescale (x, v / w) back to the unit circle after each step.
   const auto onto_energy = [](State& x) {
     const double r = std::hypot(x[0], x[1] / kW);
@@ -218,15 +219,15 @@ TEST_CASE("ode: the after-step hook keeps the energy of rk4, rkf78 and Verner's 
     CHECK(std::abs(std::hypot(end[0], end[1] / kW) - 1.0) < 1e-15);
   }
   // dense output interpolates between steps the hook never sees: refused
-  CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, times,
-                                      options_for(Method::kDopri5, 1e-8),
-                                      [](const State&, double) {}, onto_energy),
+  CHECK_THROWS_WITH(integrate_sampled(
+                        Oscillator{}, State{1, 0}, times, options_for(Method::kDopri5, 1e-8),
+                        [](const State&, double) {}, onto_energy),
                     Contains("cannot apply an after-step projection"));
   // the free body's splittings need no right-hand side: not here
-  CHECK_THROWS_AS(integrate_sampled(Oscillator{}, State{1, 0}, times,
-                                    options_for(Method::kSplitting, 0.1),
-                                    [](const State&, double) {}),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(Method::kSplitting, 0.1),
+                        [](const State&, double) {}),
+      std::invalid_argument);
 }
 
 TEST_CASE("ode: the step cap counts the whole run and stops it at once") {
@@ -240,16 +241,16 @@ TEST_CASE("ode: the step cap counts the whole run and stops it at once") {
     CHECK_THROWS_AS(integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
                                       [](const State&, double) {}),
                     std::runtime_error);
-    CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, times,
-                                        options_for(m, 1e-10, 50), [](const State&, double) {}),
-                      Contains(std::string(method_name(m))) &&
-                          Contains("more than 50 steps") && Contains("t = 100 s"));
+    CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
+                                        [](const State&, double) {}),
+                      Contains(std::string(method_name(m))) && Contains("more than 50 steps") &&
+                          Contains("t = 100 s"));
   }
   // A fixed step is refused before the first step: 1e5 steps asked, 1000 allowed.
-  CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 100.0},
-                                      options_for(Method::kRk4, 1e-3, 1000),
-                                      [](const State&, double) {}),
-                    Contains("rk4") && Contains("more than 1000 steps") && Contains("t = 100 s"));
+  CHECK_THROWS_WITH(
+      integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 100.0},
+                        options_for(Method::kRk4, 1e-3, 1000), [](const State&, double) {}),
+      Contains("rk4") && Contains("more than 1000 steps") && Contains("t = 100 s"));
   // Exactly the cap is allowed: 1000 steps of 0.1 to t = 100.
   CHECK_NOTHROW(integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 100.0},
                                   options_for(Method::kRk4, 0.1, 1000),

@@ -177,9 +177,9 @@ void check_order_conditions(const std::string& name) {
     }
   }
   INFO(name << ": " << checked << " conditions of b, largest residual "
-              << static_cast<double>(b_held) << ", one order up " << static_cast<double>(b_next)
-              << "; of e " << static_cast<double>(e_held) << ", one order up "
-              << static_cast<double>(e_next));
+            << static_cast<double>(b_held) << ", one order up " << static_cast<double>(b_next)
+            << "; of e " << static_cast<double>(e_held) << ", one order up "
+            << static_cast<double>(e_next));
   CHECK(checked == static_cast<int>(std::count_if(trees.begin(), trees.end(), [](const Tree& t) {
           return t.order <= T::kOrder;
         })));
@@ -203,8 +203,8 @@ void check_order_conditions(const std::string& name) {
 
 // Hairer, Lubich & Wanner's free body (GNI I.5.3): I = (2, 1, 2/3), L0 = (cos 1.1, 0, sin 1.1).
 const PrincipalMoments kHlw{2.0, 1.0, 2.0 / 3.0};
-const Eigen::Vector3d kOmega0 = Eigen::Vector3d(std::cos(1.1), 0.0, std::sin(1.1))
-                                    .cwiseQuotient(kHlw.vector());
+const Eigen::Vector3d kOmega0 =
+    Eigen::Vector3d(std::cos(1.1), 0.0, std::sin(1.1)).cwiseQuotient(kHlw.vector());
 
 double state_error(const FreeBodyState& x, const FreeBodyState& exact) {
   double worst = 0.0;
@@ -250,16 +250,20 @@ TEST_CASE("verner: the rooted trees are counted as OEIS A000081") {
   CHECK(count == std::array<int, 11>{0, 1, 1, 2, 4, 9, 20, 48, 115, 286, 719});
 }
 
-TEST_CASE("verner: every coefficient of the 6(5) pair and its interpolant meets its order conditions") {
+TEST_CASE(
+    "verner: every coefficient of the 6(5) pair and its interpolant meets its order conditions") {
   check_order_conditions<verner::Vern6>("vern6");
 }
-TEST_CASE("verner: every coefficient of the 7(6) pair and its interpolant meets its order conditions") {
+TEST_CASE(
+    "verner: every coefficient of the 7(6) pair and its interpolant meets its order conditions") {
   check_order_conditions<verner::Vern7>("vern7");
 }
-TEST_CASE("verner: every coefficient of the 8(7) pair and its interpolant meets its order conditions") {
+TEST_CASE(
+    "verner: every coefficient of the 8(7) pair and its interpolant meets its order conditions") {
   check_order_conditions<verner::Vern8>("vern8");
 }
-TEST_CASE("verner: every coefficient of the 9(8) pair and its interpolant meets its order conditions") {
+TEST_CASE(
+    "verner: every coefficient of the 9(8) pair and its interpolant meets its order conditions") {
   check_order_conditions<verner::Vern9>("vern9");
 }
 
@@ -311,13 +315,12 @@ TEST_CASE("verner: the PI controller holds the error with fewer rejections than 
   const std::vector<double> times = {0.0, 100.0};
   for (const double tol : {1e-6, 1e-10}) {
     VernerDenseOutput<verner::Vern7, FreeBodyState> pi(tol, tol);
-    VernerDenseOutput<verner::Vern7, FreeBodyState,
-                      odeint::default_step_adjuster<double, double>>
+    VernerDenseOutput<verner::Vern7, FreeBodyState, odeint::default_step_adjuster<double, double>>
         elementary(tol, tol, odeint::default_step_adjuster<double, double>());
     FreeBodyState x1 = exact.state(0.0), x2 = x1;
     const auto none = [](const FreeBodyState&, double) {};
-    const std::size_t s1 = odeint::integrate_times(std::ref(pi), EulerRhs{kHlw}, x1,
-                                                   times.begin(), times.end(), 0.01, none);
+    const std::size_t s1 = odeint::integrate_times(std::ref(pi), EulerRhs{kHlw}, x1, times.begin(),
+                                                   times.end(), 0.01, none);
     const std::size_t s2 = odeint::integrate_times(std::ref(elementary), EulerRhs{kHlw}, x2,
                                                    times.begin(), times.end(), 0.01, none);
     const double e1 = state_error(x1, exact.state(100.0)), e2 = state_error(x2, exact.state(100.0));
@@ -331,7 +334,8 @@ TEST_CASE("verner: the PI controller holds the error with fewer rejections than 
   }
 }
 
-TEST_CASE("verner: through integrate_sampled every pair lands on the samples, with or without a hook") {
+TEST_CASE(
+    "verner: through integrate_sampled every pair lands on the samples, with or without a hook") {
   const FreeBodyExact exact(kHlw, kOmega0, Eigen::Quaterniond::Identity(),
                             MomentsRule::kPositiveOnly);
   std::vector<double> times;

@@ -3,12 +3,13 @@
 // (make_reference.py, which knows nothing of the cubic or the elliptic
 // functions), its conserved quantities, turning points, regimes and limits,
 // the steady rates of section 8.1, and the integrators' orders and invariants.
-#include <catch2/catch.hpp>
+#include "rigid/heavy_top.h"
+
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "reference_heavy_top.inc"
-#include "rigid/heavy_top.h"
 #include "rigid/heavy_top_integrate.h"
 #include "rigid/integrate.h"
 
@@ -112,7 +113,7 @@ TEST_CASE("heavy top: the regime follows phi_dot at the turning circles") {
       {0.0, -4.0, rigid::TopRegime::kLooping},  // pushed back: phi_dot changes sign
       {0.0, 20.0, rigid::TopRegime::kWavy},     // pushed forward beyond the steady rate
       {0.5, 3.0, rigid::TopRegime::kWavy},
-      {0.0, slow, rigid::TopRegime::kSteady},   // the slow steady rate of eq. 187
+      {0.0, slow, rigid::TopRegime::kSteady},  // the slow steady rate of eq. 187
   };
   for (const auto& c : cases) {
     INFO("theta_dot0 " << c.theta_dot << ", phi_dot0 " << c.phi_dot);
@@ -134,8 +135,7 @@ TEST_CASE("heavy top: eq. 187's steady rates solve eq. 184 with theta_ddot = 0")
     const rigid::SteadyPrecession p = rigid::steady_precession_rates(kText, kS500, theta);
     REQUIRE(p.exists);
     const auto residual = [&](double phi_dot) {  // mgl - Is S phi_dot + I phi_dot^2 cos theta
-      return kText.mgl - kText.Is * kS500 * phi_dot +
-             kText.I * phi_dot * phi_dot * std::cos(theta);
+      return kText.mgl - kText.Is * kS500 * phi_dot + kText.I * phi_dot * phi_dot * std::cos(theta);
     };
     // Each term is at most ~mgl (or Is S phi_dot); their sum vanishes to a few ulps of it.
     CHECK(std::abs(residual(p.slow)) <= 1e-14 * (kText.mgl + kText.Is * kS500 * std::abs(p.slow)));
@@ -187,7 +187,8 @@ TEST_CASE("heavy top: a fast top nods at Is S / I with amplitude 2 mgl I sin(the
     const double a = top.Is * S / top.I;
     const double f_err = std::abs(2 * M_PI / exact.nutation_period() / a - 1);
     const double amp = exact.theta_max() - exact.theta_min();
-    const double a_err = std::abs(amp / (2 * top.mgl * top.I * std::sin(0.05) / std::pow(top.Is * S, 2)) - 1);
+    const double a_err =
+        std::abs(amp / (2 * top.mgl * top.I * std::sin(0.05) / std::pow(top.Is * S, 2)) - 1);
     if (previous_f > 0) {
       CHECK(f_err / previous_f == Approx(0.01).epsilon(0.2));
       CHECK(a_err / previous_a == Approx(0.01).epsilon(0.2));
@@ -234,9 +235,9 @@ TEST_CASE("heavy top: the splittings' observed orders are 2 and 4 by step halvin
   // steps from lambda h ~ 0.08 down, where every method is in its asymptotic range.
   const double T = 0.512;
   const std::vector<double> times = rigid::uniform_times(0.0, T, 9);
-  for (const auto& [m, order] : {std::pair{rigid::Method::kSplitting, 2},
-                                 std::pair{rigid::Method::kSplitting4, 4},
-                                 std::pair{rigid::Method::kRk4, 4}}) {
+  for (const auto& [m, order] :
+       {std::pair{rigid::Method::kSplitting, 2}, std::pair{rigid::Method::kSplitting4, 4},
+        std::pair{rigid::Method::kRk4, 4}}) {
     INFO(rigid::method_name(m));
     double previous = 0;
     for (const double h : {4e-3, 2e-3, 1e-3}) {

@@ -1,13 +1,12 @@
 // Tests of the atomic file writer: complete files or none, never a temporary left.
-#include <catch2/catch.hpp>
+#include "rigid/render/atomic_file.h"
 
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-
-#include "rigid/render/atomic_file.h"
 
 using rigid::render::write_file_atomically;
 namespace fs = std::filesystem;
@@ -60,7 +59,8 @@ TEST_CASE("atomic file: the content arrives whole and no temporary is left", "[r
   fs::remove_all(dir);
 }
 
-TEST_CASE("atomic file: a writer that throws leaves the old file and no temporary", "[render][atomic]") {
+TEST_CASE("atomic file: a writer that throws leaves the old file and no temporary",
+          "[render][atomic]") {
   const fs::path dir = fresh_dir("throws");
   const fs::path file = dir / "t.csv";
   write_file_atomically(file.string(), [](std::FILE* f) { std::fputs("old\n", f); });
@@ -79,7 +79,8 @@ TEST_CASE("atomic file: a failed rename removes the temporary", "[render][atomic
   // The target is a directory: the temporary is written, rename() fails.
   const fs::path dir = fresh_dir("rename");
   fs::create_directories(dir / "taken");
-  const std::string msg = message_of((dir / "taken").string(), [](std::FILE* f) { std::fputs("x", f); });
+  const std::string msg =
+      message_of((dir / "taken").string(), [](std::FILE* f) { std::fputs("x", f); });
   CHECK(msg.rfind("cannot write '" + (dir / "taken").string() + "': ", 0) == 0);
   CHECK(entries(dir) == 1);  // just the directory that was in the way
   fs::remove_all(dir);

@@ -1,15 +1,15 @@
 // Tests of the GL context: lazy creation, both backends, thread-count independence.
-#include <catch2/catch.hpp>
+#include "rigid/render/context.h"
 
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <string>
 
 #include "render_fixtures.h"
-#include "rigid/render/context.h"
 
 using namespace rigid::render;
 namespace fs = std::filesystem;
@@ -37,12 +37,12 @@ TEST_CASE("context: each backend and sample count asked for is the one made, GL 
     const char* backend;
     int samples;
   };
-  for (const Case& c : {Case{"RIGID_GL_BACKEND=", "osmesa", 4},
-                        Case{"RIGID_GL_BACKEND=osmesa", "osmesa", 4},
-                        Case{"RIGID_GL_BACKEND=egl", "egl", 4},
-                        Case{"RIGID_GL_BACKEND=egl RIGID_GL_SAMPLES=2", "egl", 2},
-                        Case{"RIGID_GL_BACKEND=osmesa RIGID_GL_SAMPLES=0", "osmesa", 0},
-                        Case{"RIGID_GL_BACKEND=osmesa RIGID_GL_SAMPLES=1", "osmesa", 0}}) {
+  for (const Case& c :
+       {Case{"RIGID_GL_BACKEND=", "osmesa", 4}, Case{"RIGID_GL_BACKEND=osmesa", "osmesa", 4},
+        Case{"RIGID_GL_BACKEND=egl", "egl", 4},
+        Case{"RIGID_GL_BACKEND=egl RIGID_GL_SAMPLES=2", "egl", 2},
+        Case{"RIGID_GL_BACKEND=osmesa RIGID_GL_SAMPLES=0", "osmesa", 0},
+        Case{"RIGID_GL_BACKEND=osmesa RIGID_GL_SAMPLES=1", "osmesa", 0}}) {
     INFO(c.env);
     std::istringstream facts(test::context_in_child(c.env, tmp("context.txt").string()));
     std::string backend, version;
@@ -92,8 +92,8 @@ TEST_CASE("context: supersampling fallback draws the same plot closely", "[rende
 TEST_CASE("context: an impossible backend throws Unavailable in one line", "[render][context]") {
   // RIGID_GL_BACKEND with a bad name fails at creation; run it in a child so
   // this process's context is untouched.
-  const int rc = std::system(("RIGID_GL_BACKEND=nonsense '" + test::self_path() + "' --render-child '" +
-                              tmp("never.png").string() + "' 2>/dev/null")
+  const int rc = std::system(("RIGID_GL_BACKEND=nonsense '" + test::self_path() +
+                              "' --render-child '" + tmp("never.png").string() + "' 2>/dev/null")
                                  .c_str());
   CHECK(rc != 0);
   CHECK_FALSE(fs::exists(tmp("never.png")));

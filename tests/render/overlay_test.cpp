@@ -2,7 +2,6 @@
 // scenes, long titles kept inside the margin, legends, annotations and labels
 // that keep clear of the data and of each other.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <string>
 #include <vector>
@@ -17,13 +16,19 @@ using namespace rigid::render;
 namespace {
 
 // The figure style's outer margin at 1600×1200 and 800×600: two paddings of 14 px × f.
-double margin_at(int w, int h) { return 28 * std::pow(std::min(w / 1600.0, h / 1200.0), 0.7); }
+double margin_at(int w, int h) {
+  return 28 * std::pow(std::min(w / 1600.0, h / 1200.0), 0.7);
+}
 
 // A data point's pixel in a panel's layout (linear axes).
 struct Mapper {
   Plot2D::PanelLayout p;
-  double x(double v) const { return p.frame.x0 + (v - p.x_lo) / (p.x_hi - p.x_lo) * p.frame.width(); }
-  double y(double v) const { return p.frame.y1 - (v - p.y_lo) / (p.y_hi - p.y_lo) * p.frame.height(); }
+  double x(double v) const {
+    return p.frame.x0 + (v - p.x_lo) / (p.x_hi - p.x_lo) * p.frame.width();
+  }
+  double y(double v) const {
+    return p.frame.y1 - (v - p.y_lo) / (p.y_hi - p.y_lo) * p.frame.height();
+  }
 };
 
 // Points along every segment of every series, in pixels (what "covers data" means).
@@ -74,7 +79,8 @@ long pixels_of(const Image& img, const ScreenRect& r, Color c, int tol = 40) {
 
 }  // namespace
 
-TEST_CASE("overlay: a plot's and a scene's legend and title come from one style", "[render][overlay]") {
+TEST_CASE("overlay: a plot's and a scene's legend and title come from one style",
+          "[render][overlay]") {
   const std::vector<std::string> labels = {"\\omega_1 against t", "energy ellipsoid 2T",
                                            "principal axis 1: I_1 = 0.1262 kg m^2"};
   const std::string title = "poinsot: I = (1, 2, 3) kg m^2";
@@ -111,8 +117,10 @@ TEST_CASE("overlay: a long title wraps at a top-level separator, keeping the mar
     scene.title = long_title;
     scene.add_sphere({0, 0, 0}, 1, {kBlue});
     for (const auto& [lines, size, box] :
-         {std::tuple{plot.layout(w, h).title_lines, plot.layout(w, h).title_size, plot.layout(w, h).title},
-          std::tuple{scene.layout(w, h).title_lines, scene.layout(w, h).title_size, scene.layout(w, h).title}}) {
+         {std::tuple{plot.layout(w, h).title_lines, plot.layout(w, h).title_size,
+                     plot.layout(w, h).title},
+          std::tuple{scene.layout(w, h).title_lines, scene.layout(w, h).title_size,
+                     scene.layout(w, h).title}}) {
       CHECK(lines == 2);
       CHECK(box.x0 >= margin - 1e-9);
       CHECK(box.x1 <= w - margin + 1e-9);
@@ -129,14 +137,16 @@ TEST_CASE("overlay: a long title wraps at a top-level separator, keeping the mar
   const Image img = plot.render(1600, 1200);
   const ScreenRect band = plot.layout(1600, 1200).title;
   CHECK(pixels_of(img, {0, band.y0, margin_at(1600, 1200) - 1, band.y1}, kTextColor, 120) == 0);
-  CHECK(pixels_of(img, {1600 - margin_at(1600, 1200) + 1, band.y0, 1600, band.y1}, kTextColor, 120) == 0);
+  CHECK(pixels_of(img, {1600 - margin_at(1600, 1200) + 1, band.y0, 1600, band.y1}, kTextColor,
+                  120) == 0);
 }
 
 TEST_CASE("overlay: the wrap never splits inside parentheses; a title without a separator shrinks",
           "[render][overlay]") {
   // The only top-level separator is the first ": "; the commas in the middle are inside ( ).
   std::string inner = "(";
-  for (int k = 1; k <= 24; ++k) inner += (k > 1 ? ", " : "") + std::string("x_{") + std::to_string(k) + "}";
+  for (int k = 1; k <= 24; ++k)
+    inner += (k > 1 ? ", " : "") + std::string("x_{") + std::to_string(k) + "}";
   inner += ") end";
   Plot2D plot;
   plot.title = "A: " + inner;
@@ -198,7 +208,8 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
       // style's inner padding and swatch, 0.8 × 14 + 52 reference px scaled by f).
       const Image img = plot.render(w, h);
       const double f = std::pow(std::min(w / 1600.0, h / 1200.0), 0.7);
-      const ScreenRect text_part{l.legend.x0 + (0.8 * 14 + 52) * f + 2, l.legend.y0, l.legend.x1, l.legend.y1};
+      const ScreenRect text_part{l.legend.x0 + (0.8 * 14 + 52) * f + 2, l.legend.y0, l.legend.x1,
+                                 l.legend.y1};
       CHECK(pixels_of(img, text_part, palette_color(0)) == 0);
       CHECK(pixels_of(img, text_part, palette_color(1)) == 0);
     }
@@ -240,7 +251,8 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
   }
 }
 
-TEST_CASE("annotation: placed texts overlap no data, no legend and no other text", "[render][annotation]") {
+TEST_CASE("annotation: placed texts overlap no data, no legend and no other text",
+          "[render][annotation]") {
   // A damped wave with notes crowded about its first peaks, one at the frame's corner, and
   // a legend and a reference-line label competing for the same room.
   Plot2D plot;
@@ -254,9 +266,13 @@ TEST_CASE("annotation: placed texts overlap no data, no legend and no other text
   p.add_line(t, y, "x(t)");
   p.add_line(t, z, "envelope").dash = Dash::kDashed;
   p.add_ref_line(0.0, false, "rest");
-  const std::vector<std::pair<double, double>> notes = {
-      {0.0, 1.0}, {0.5, y[10]}, {3.14159, -std::exp(-0.15 * 3.14159)}, {3.6, y[72]}, {15.0, y[300]}};
-  for (const auto& [nx, ny] : notes) p.annotate(nx, ny, "note at t = " + std::to_string(nx).substr(0, 4));
+  const std::vector<std::pair<double, double>> notes = {{0.0, 1.0},
+                                                        {0.5, y[10]},
+                                                        {3.14159, -std::exp(-0.15 * 3.14159)},
+                                                        {3.6, y[72]},
+                                                        {15.0, y[300]}};
+  for (const auto& [nx, ny] : notes)
+    p.annotate(nx, ny, "note at t = " + std::to_string(nx).substr(0, 4));
   for (const auto& [w, h] : {std::pair{1600, 1200}, std::pair{800, 600}}) {
     CAPTURE(w, h);
     const Plot2D::PanelLayout l = plot.layout(w, h).panels.at(0);
@@ -285,7 +301,8 @@ TEST_CASE("label3d: labels at one point spread out, clear of each other, the leg
   scene.camera.eye = {0, -10, 2};
   // An opaque bar that runs on past the labels' point: text must not sit on it.
   scene.add_box({0, 0, 0}, {2.5, 0.1, 0.1}, Eigen::Matrix3d::Identity(), {kVermillion}, "bar");
-  for (const char* t : {"first", "second", "third", "fourth"}) scene.add_label({1.5, 0, 0}, t, kBlack);
+  for (const char* t : {"first", "second", "third", "fourth"})
+    scene.add_label({1.5, 0, 0}, t, kBlack);
   scene.add_label({-2.5, 0, 0}, "end", kBlack);
   for (const auto& [w, h] : {std::pair{1600, 1200}, std::pair{800, 600}}) {
     CAPTURE(w, h);

@@ -1,10 +1,10 @@
 // Tests of 2D plots by their pixels.
-#include <catch2/catch.hpp>
+#include "rigid/render/plot2d.h"
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 
 #include "rigid/render/palette.h"
-#include "rigid/render/plot2d.h"
 #include "rigid/render/text.h"
 
 using namespace rigid::render;
@@ -101,9 +101,11 @@ TEST_CASE("plot2d: drawn text has about its measured extent", "[render][plot2d]"
   CHECK(k.x1 <= box.x1 + 1);
 }
 
-TEST_CASE("plot2d: nothing is drawn outside the image at 800x600 with long labels", "[render][plot2d]") {
+TEST_CASE("plot2d: nothing is drawn outside the image at 800x600 with long labels",
+          "[render][plot2d]") {
   Plot2D plot(2, 2);
-  plot.title = "A long title that has to shrink to fit: \\omega_1, \\omega_2, \\omega_3, I_1 < I_2 < I_3";
+  plot.title =
+      "A long title that has to shrink to fit: \\omega_1, \\omega_2, \\omega_3, I_1 < I_2 < I_3";
   for (int r = 0; r < 2; ++r)
     for (int c = 0; c < 2; ++c) {
       Panel& p = plot.panel(r, c);

@@ -1,10 +1,9 @@
 // Tests of PNG writing: round trip, atomic rename, failure leaves nothing.
-#include <catch2/catch.hpp>
+#include "rigid/render/png.h"
 
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <stdexcept>
-
-#include "rigid/render/png.h"
 
 using namespace rigid::render;
 namespace fs = std::filesystem;

@@ -46,7 +46,8 @@ inline Plot2D reference_plot() {
 /// Absolute path of this test executable (for re-invoking it as a child).
 std::string self_path();
 
-/// Runs this executable as a child with extra environment settings, drawing reference_plot() to a PNG; returns it.
+/// Runs this executable as a child with extra environment settings, drawing reference_plot() to a
+/// PNG; returns it.
 Image render_in_child(const std::string& env, const std::string& png_path);
 /// The context a child process makes with `env`: "backend samples GL_VERSION".
 std::string context_in_child(const std::string& env, const std::string& path);

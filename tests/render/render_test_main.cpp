@@ -4,10 +4,9 @@
 // context is one per process, so tests that need another backend, sample count
 // or thread count use a child.
 #define CATCH_CONFIG_RUNNER
-#include <catch2/catch.hpp>
-
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>

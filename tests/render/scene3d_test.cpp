@@ -1,14 +1,14 @@
 // Tests of 3D scenes by their pixels.
-#include <catch2/catch.hpp>
+#include "rigid/render/scene3d.h"
 
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
 
 #include "rigid/render/image.h"
 #include "rigid/render/mesh.h"
 #include "rigid/render/palette.h"
-#include "rigid/render/scene3d.h"
 
 using namespace rigid::render;
 
@@ -25,7 +25,8 @@ Camera front_camera() {
 
 }  // namespace
 
-TEST_CASE("scene3d: an opaque sphere is shaded in its colour, background white", "[render][scene3d]") {
+TEST_CASE("scene3d: an opaque sphere is shaded in its colour, background white",
+          "[render][scene3d]") {
   Scene3D scene;
   scene.camera = front_camera();
   scene.add_sphere({0, 0, 0}, 1.0, {kBlue});
@@ -80,7 +81,8 @@ TEST_CASE("mesh: unit shapes are closed and sized by on-screen radius", "[render
   std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> by_position;
   const auto key = [&](unsigned v) {
     const auto& p = s.positions[v];
-    return std::array<float, 3>{std::round(p.x() * 1e5f), std::round(p.y() * 1e5f), std::round(p.z() * 1e5f)};
+    return std::array<float, 3>{std::round(p.x() * 1e5f), std::round(p.y() * 1e5f),
+                                std::round(p.z() * 1e5f)};
   };
   for (const auto& [e, n] : edges) {
     if (key(e.first) == key(e.second)) continue;  // degenerate at a pole
@@ -205,7 +207,9 @@ TEST_CASE("scene3d: the fit keeps the viewing direction and up", "[render][scene
   Scene3D scene;
   scene.camera.eye = {0, -10, 0};
   SECTION("perspective") {}
-  SECTION("orthographic") { scene.camera.orthographic = true; }
+  SECTION("orthographic") {
+    scene.camera.orthographic = true;
+  }
   scene.add_sphere({0, 0, 0}, 1.0, {kVermillion});
   const Scene3D::Layout layout = scene.layout(800, 600);
   const Placement p = place_of(scene.render(800, 600), layout);

@@ -1,7 +1,7 @@
 // Tests of text measurement and the markup.
-#include <catch2/catch.hpp>
-
 #include "rigid/render/text.h"
+
+#include <catch2/catch.hpp>
 
 using namespace rigid::render;
 

@@ -1,9 +1,8 @@
 // Tests of axis tick selection: the 1-2-5 rule and log decades.
-#include <catch2/catch.hpp>
-
-#include <cmath>
-
 #include "rigid/render/ticks.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
 
 using namespace rigid::render;
 
@@ -11,7 +10,7 @@ TEST_CASE("ticks: nice_step follows the 1-2-5 rule", "[render][ticks]") {
   CHECK(nice_step(10, 5) == Approx(2));
   CHECK(nice_step(1, 5) == Approx(0.2));
   CHECK(nice_step(7.3, 6) == Approx(1));
-  CHECK(nice_step(100, 4) == Approx(20));   // 25 rounds to 20 (closer on a log scale than 50)
+  CHECK(nice_step(100, 4) == Approx(20));  // 25 rounds to 20 (closer on a log scale than 50)
   CHECK(nice_step(3e-4, 3) == Approx(1e-4));
   CHECK(nice_step(0.9, 2) == Approx(0.5));
 }

@@ -8,12 +8,12 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -79,10 +79,9 @@ ReadBack read_mp4(const std::string& path, int keep = 1) {
       if (r.frames++ < keep) {
         Image rgb{frame->width, frame->height,
                   std::vector<std::uint8_t>(3 * frame->width * frame->height)};
-        SwsContext* sws = sws_getContext(frame->width, frame->height,
-                                         static_cast<AVPixelFormat>(frame->format), frame->width,
-                                         frame->height, AV_PIX_FMT_RGB24, SWS_BILINEAR, nullptr,
-                                         nullptr, nullptr);
+        SwsContext* sws = sws_getContext(
+            frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,
+            frame->height, AV_PIX_FMT_RGB24, SWS_BILINEAR, nullptr, nullptr, nullptr);
         std::uint8_t* dst[] = {rgb.rgb.data()};
         const int stride[] = {3 * frame->width};
         sws_scale(sws, frame->data, frame->linesize, 0, frame->height, dst, stride);
@@ -178,7 +177,8 @@ TEST_CASE("video: the format comes from the extension") {
 }
 
 TEST_CASE("video: MP4 and WebP hold the frames, size, rate and duration asked for") {
-  const fs::path dir = fs::temp_directory_path() / ("rigid_video_test_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("rigid_video_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const VideoSettings settings{320, 240, 12.5};
   constexpr int kFrames = 25;  // 2 s at 12.5 fps
@@ -209,7 +209,8 @@ TEST_CASE("video: MP4 and WebP hold the frames, size, rate and duration asked fo
 }
 
 TEST_CASE("video: a writer that is not finished, or is given a wrong frame, leaves no file") {
-  const fs::path dir = fs::temp_directory_path() / ("rigid_video_test2_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("rigid_video_test2_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string path = (dir / "b.mp4").string();
   {
@@ -244,17 +245,18 @@ TEST_CASE("video: a lab's first frame is its still figure's scene") {
   // Each lab with motion draws its animation at the still figure's size with the
   // camera fitted to the first frame alone, as the still's is (RIGID_ANIMATION_FIT);
   // the animation's first frame, decoded, is then the still figure but for the codec.
-  const fs::path dir = fs::temp_directory_path() / ("rigid_video_test3_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("rigid_video_test3_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   int stills = 0;
   for (const std::string& lab : rigid::test::all_labs()) {
     const std::string movie = (dir / (lab + ".mp4")).string();
     // 4 frames at a quarter of the motion apart: the second shows the motion moved on
-    const auto run = rigid::test::run_lab(
-        lab,
-        "--quiet --json --figures " + dir.string() + " --animate " + movie +
-            " --animation-size 1600x1200 --duration 0.4 --fps 10",
-        "RIGID_ANIMATION_FIT=first");
+    const auto run =
+        rigid::test::run_lab(lab,
+                             "--quiet --json --figures " + dir.string() + " --animate " + movie +
+                                 " --animation-size 1600x1200 --duration 0.4 --fps 10",
+                             "RIGID_ANIMATION_FIT=first");
     if (run.status == 2) continue;  // a lab without motion has no --animate
     REQUIRE(run.status == 0);
     const nlohmann::json animation = run.json()["animation"];

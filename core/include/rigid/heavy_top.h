@@ -162,7 +162,7 @@ class HeavyTopExact {
   double one_minus_n_plus_ = 1.0;  // (1 - u2)/(1 - u1), not 1 - n+ rounded (0 near upright)
   double b_minus_a_ = 0.0, b_plus_a_ = 0.0;
   bool through_north_ = false, through_south_ = false;  // a pole is a turning circle
-  bool use_plus_ = false, use_minus_ = false;            // the J+ and J- terms of phi, psi
+  bool use_plus_ = false, use_minus_ = false;           // the J+ and J- terms of phi, psi
   double G_plus_0_ = 0.0, G_minus_0_ = 0.0;
   double mean_phi_dot_ = 0.0, phi_dot_u1_ = 0.0, phi_dot_u2_ = 0.0;
   double energy_ = 0.0, p_phi_ = 0.0, p_psi_ = 0.0;

@@ -16,8 +16,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "rigid/free_body.h"
 #include "rigid/drift.h"
+#include "rigid/free_body.h"
 #include "rigid/heavy_top.h"
 #include "rigid/ode.h"
 
@@ -60,7 +60,7 @@ double tilt_of(const Eigen::Quaterniond& q);
 /// One sample of an integrated run.
 struct TopSample {
   double t = 0.0;
-  double theta = 0.0;  ///< rad
+  double theta = 0.0;         ///< rad
   double energy_error = 0.0;  ///< |E - E0| / (T0 + mgl)
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  ///< unit

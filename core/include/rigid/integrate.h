@@ -20,8 +20,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "rigid/free_body.h"
 #include "rigid/drift.h"
+#include "rigid/free_body.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/ode.h"
 
@@ -47,8 +47,8 @@ struct FreeBodySample {
   double t = 0.0;
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  ///< unit, body to space
-  double energy_error = 0.0;    ///< (T - T0) / T0, signed
-  double momentum_error = 0.0;  ///< (|L| - |L0|) / |L0|, signed
+  double energy_error = 0.0;                                     ///< (T - T0) / T0, signed
+  double momentum_error = 0.0;                                   ///< (|L| - |L0|) / |L0|, signed
 };
 
 /// The samples of one run and what it cost and kept.
@@ -61,7 +61,7 @@ struct IntegrationResult {
   double quaternion_norm_drift = 0.0;  ///< max over samples of ||q| - 1| before normalising
   std::size_t steps = 0;               ///< accepted steps (shortened ones included)
   std::size_t rejected_steps = 0;      ///< steps rejected by the error control (where known)
-  std::size_t evaluations = 0;         ///< right-hand-side evaluations (ode.h's evaluations_per_step)
+  std::size_t evaluations = 0;  ///< right-hand-side evaluations (ode.h's evaluations_per_step)
 };
 
 /// Integrates from the state x0 at t = times.front() and samples at every entry
@@ -121,8 +121,7 @@ std::vector<MethodComparison> compare_methods(const FreeBodyExact& exact,
 /// `periods` periods of length `period`, each run sampled `samples_per_period` times a
 /// period (a fixed step's on its grid). A method that cannot finish is not completed.
 std::vector<MethodComparison> compare_methods_at_cost(const FreeBodyExact& exact, double period,
-                                                      double periods,
-                                                      double evaluations_per_period,
+                                                      double periods, double evaluations_per_period,
                                                       double samples_per_period = 8.0);
 
 }  // namespace rigid

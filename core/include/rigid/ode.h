@@ -54,6 +54,7 @@
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+
 #include "rigid/verner.h"
 // odeint's Eigen support must follow its own headers (it specialises their templates).
 #include <boost/numeric/odeint/external/eigen/eigen.hpp>
@@ -76,9 +77,8 @@ enum class Method {
 
 /// Every method, in the order of `method_name`.
 inline constexpr std::array<Method, 10> kAllMethods = {
-    Method::kSplitting, Method::kSplitting4,     Method::kRk4,   Method::kDopri5,
-    Method::kRkf78,     Method::kBulirschStoer, Method::kVern6, Method::kVern7,
-    Method::kVern8,     Method::kVern9};
+    Method::kSplitting,     Method::kSplitting4, Method::kRk4,   Method::kDopri5, Method::kRkf78,
+    Method::kBulirschStoer, Method::kVern6,      Method::kVern7, Method::kVern8,  Method::kVern9};
 
 /// The command-line name: "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer",
 /// "vern6", "vern7", "vern8", "vern9".
@@ -258,8 +258,8 @@ double starting_step(const System& system, const State& x0, double t0, double sp
   system(x1, f1, t0 + h0);
   const double d2 = norm([&](std::size_t i) { return f1[i] - f0[i]; }) / h0;
   const double d = std::max(d1, d2);
-  const double h1 = d <= 1e-15 ? std::max(1e-6 * span, 1e-3 * h0)
-                               : std::pow(0.01 / d, 1.0 / (order + 1));
+  const double h1 =
+      d <= 1e-15 ? std::max(1e-6 * span, 1e-3 * h0) : std::pow(0.01 / d, 1.0 / (order + 1));
   return std::min({100.0 * h0, h1, span});
 }
 
@@ -325,7 +325,8 @@ std::size_t integrate_dense(Stepper& stepper, int order, const System& system, S
   // output would interpolate a step it has not taken yet (dopri5 returned garbage there)
   if (times.size() > 1 && times[1] == times.front()) {
     std::size_t first = 0;
-    while (first + 1 < times.size() && times[first + 1] == times.front()) observe(x, times[first++]);
+    while (first + 1 < times.size() && times[first + 1] == times.front())
+      observe(x, times[first++]);
     const std::vector<double> rest(times.begin() + static_cast<std::ptrdiff_t>(first), times.end());
     return integrate_dense(stepper, order, system, x, rest, options, observe);
   }
@@ -341,8 +342,8 @@ OdeStats integrate_verner(const System& system, State& x, const std::vector<doub
   namespace odeint = boost::numeric::odeint;
   if constexpr (std::is_same_v<AfterStep, NoAfterStep>) {
     VernerDenseOutput<Tableau, State> stepper(o.abs_tol, o.rel_tol);
-    const std::size_t steps = integrate_dense(stepper, Tableau::kOrder, system, x, times, o,
-                                              observe);
+    const std::size_t steps =
+        integrate_dense(stepper, Tableau::kOrder, system, x, times, o, observe);
     return {steps, stepper.rejected_steps(), evaluations};
   } else {
     using Stepper = VernerStepper<Tableau, State>;
@@ -432,8 +433,8 @@ OdeOptions options_at_cost(OdeOptions options, double period, double evaluations
 /// `evaluations_of(options)`, which returns its evaluations; a trial that throws
 /// (past its step cap: 4x the budget, each step costing at least one) costs infinity.
 template <class Evaluations>
-OdeOptions settings_at_cost(Method m, double period, double periods,
-                            double evaluations_per_period, Evaluations evaluations_of) {
+OdeOptions settings_at_cost(Method m, double period, double periods, double evaluations_per_period,
+                            Evaluations evaluations_of) {
   OdeOptions o;
   o.method = m;
   o.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
@@ -475,10 +476,9 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
       return stats;
     }
     case Method::kRkf78: {
-      AfterStepStepper stepper(
-          odeint::make_controlled(options.abs_tol, options.rel_tol,
-                                  odeint::runge_kutta_fehlberg78<State>()),
-          std::move(after_step));
+      AfterStepStepper stepper(odeint::make_controlled(options.abs_tol, options.rel_tol,
+                                                       odeint::runge_kutta_fehlberg78<State>()),
+                               std::move(after_step));
       const std::size_t steps =
           detail::integrate_controlled(stepper, 8, counted, x, times, options, observe);
       return {steps, stepper.rejected_steps(), evaluations};

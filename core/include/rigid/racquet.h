@@ -30,20 +30,20 @@ namespace rigid {
 
 /// The model of Figure 5, with the text's numbers.
 struct RacquetModel {
-  double head_mass = 0.15;     ///< m_a, kg (the ring)
-  double head_radius = 0.13;   ///< a, m
-  double handle_mass = 0.18;   ///< m_l, kg (the rod)
-  double handle_length = 0.38; ///< l, m
+  double head_mass = 0.15;      ///< m_a, kg (the ring)
+  double head_radius = 0.13;    ///< a, m
+  double handle_mass = 0.18;    ///< m_l, kg (the rod)
+  double handle_length = 0.38;  ///< l, m
 };
 
 /// The racquet as a rigid body, in the body axes of the header comment.
 struct Racquet {
-  Body body;                   ///< mass, centre of mass (the origin) and tensor about it
-  double cm_offset = 0.0;      ///< R, centre of mass from the head's centre along 1, m (eq. 83)
-  PrincipalMoments moments;    ///< I1 (handle), I2 (in the plane), I3 (normal), kg m^2 (eqs. 84-85)
-  Eigen::Vector3d head_centre = Eigen::Vector3d::Zero();  ///< (-R, 0, 0), m
-  Eigen::Vector3d handle_start = Eigen::Vector3d::Zero(); ///< where the handle meets the rim, m
-  Eigen::Vector3d handle_end = Eigen::Vector3d::Zero();   ///< the handle's far end, m
+  Body body;                 ///< mass, centre of mass (the origin) and tensor about it
+  double cm_offset = 0.0;    ///< R, centre of mass from the head's centre along 1, m (eq. 83)
+  PrincipalMoments moments;  ///< I1 (handle), I2 (in the plane), I3 (normal), kg m^2 (eqs. 84-85)
+  Eigen::Vector3d head_centre = Eigen::Vector3d::Zero();   ///< (-R, 0, 0), m
+  Eigen::Vector3d handle_start = Eigen::Vector3d::Zero();  ///< where the handle meets the rim, m
+  Eigen::Vector3d handle_end = Eigen::Vector3d::Zero();    ///< the handle's far end, m
 };
 
 /// Builds the racquet from core's thin ring and thin rod and the parallel-axis
@@ -84,10 +84,10 @@ double transverse_share(const Eigen::Vector3d& omega_body, int axis);
 
 /// A growth rate measured from the exact motion.
 struct GrowthFit {
-  double rate = 0.0;          ///< 1/s
-  double t_begin = 0.0;       ///< the fitted interval, s
+  double rate = 0.0;     ///< 1/s
+  double t_begin = 0.0;  ///< the fitted interval, s
   double t_end = 0.0;
-  double share_begin = 0.0;   ///< the transverse share at its ends
+  double share_begin = 0.0;  ///< the transverse share at its ends
   double share_end = 0.0;
   double rms_residual = 0.0;  ///< of the fit, relative to the largest fitted value
   std::size_t samples = 0;

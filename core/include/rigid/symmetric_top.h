@@ -29,13 +29,13 @@ std::string to_string(ConeContact contact);
 
 /// The closed-form free precession of a symmetric body (all angles in radians).
 struct SymmetricPrecession {
-  double body_rate = 0.0;    ///< Omega, rad/s, signed (eq. 109)
-  double space_rate = 0.0;   ///< phi_dot = |L| / I, rad/s (eqs. 146-147)
-  double spin_rate = 0.0;    ///< psi_dot = omega_3 - phi_dot cos theta = -Omega, rad/s
-  double theta = 0.0;        ///< angle between L and the symmetry axis (eq. 144)
-  double body_cone = 0.0;    ///< half-angle of the body cone about 3: alpha
-  double space_cone = 0.0;   ///< half-angle of the space cone about L: |theta - alpha|
-  double L = 0.0;            ///< |L|, kg m^2/s
+  double body_rate = 0.0;   ///< Omega, rad/s, signed (eq. 109)
+  double space_rate = 0.0;  ///< phi_dot = |L| / I, rad/s (eqs. 146-147)
+  double spin_rate = 0.0;   ///< psi_dot = omega_3 - phi_dot cos theta = -Omega, rad/s
+  double theta = 0.0;       ///< angle between L and the symmetry axis (eq. 144)
+  double body_cone = 0.0;   ///< half-angle of the body cone about 3: alpha
+  double space_cone = 0.0;  ///< half-angle of the space cone about L: |theta - alpha|
+  double L = 0.0;           ///< |L|, kg m^2/s
   ConeContact contact = ConeContact::kNone;
   double body_period = 0.0;   ///< 2 pi / |Omega|, s (+inf for a sphere)
   double space_period = 0.0;  ///< 2 pi / phi_dot, s
@@ -54,10 +54,11 @@ SymmetricPrecession free_symmetric_precession(double I, double Is, double omega,
 
 /// A cross-check of the closed form by integration (integrate.h, dopri5).
 struct PrecessionCheck {
-  double space_rate = 0.0;        ///< phi_dot measured: the turn of 3 about L over a quarter period, rad/s
-  double axis_return = 0.0;       ///< angle between 3 at t = 0 and at t = 2 pi / phi_dot, rad
-  double L_space_drift_rel = 0.0; ///< max |L_space - L_space0| / |L0| over the run
-  double energy_drift_rel = 0.0;  ///< max |T - T0| / T0 over the run
+  double space_rate =
+      0.0;  ///< phi_dot measured: the turn of 3 about L over a quarter period, rad/s
+  double axis_return = 0.0;        ///< angle between 3 at t = 0 and at t = 2 pi / phi_dot, rad
+  double L_space_drift_rel = 0.0;  ///< max |L_space - L_space0| / |L0| over the run
+  double energy_drift_rel = 0.0;   ///< max |T - T0| / T0 over the run
   std::size_t steps = 0;
 };
 

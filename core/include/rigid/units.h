@@ -4,7 +4,8 @@
 
 namespace rigid {
 
-inline constexpr double kPi = 3.141592653589793238462643383279502884;  // the one pi of core and labs
+inline constexpr double kPi =
+    3.141592653589793238462643383279502884;  // the one pi of core and labs
 
 /// Degrees from radians.
 constexpr double rad_to_deg(double rad) {

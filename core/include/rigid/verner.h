@@ -22,12 +22,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <cstddef>
-#include <functional>
-#include <type_traits>
-#include <utility>
-
 #include <boost/numeric/odeint/algebra/algebra_dispatcher.hpp>
 #include <boost/numeric/odeint/algebra/operations_dispatcher.hpp>
 #include <boost/numeric/odeint/integrate/max_step_checker.hpp>
@@ -35,6 +29,11 @@
 #include <boost/numeric/odeint/stepper/base/explicit_error_stepper_fsal_base.hpp>
 #include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
 #include <boost/numeric/odeint/stepper/stepper_categories.hpp>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <type_traits>
+#include <utility>
 
 #include "rigid/verner_tableaus.h"
 
@@ -57,7 +56,7 @@ template <class T>
 struct DoubleTableau {
   static constexpr int kTotal = T::kTotalStages;
   static constexpr int kDegree = T::kInterpolantOrder > 0 ? sizeof(T::r[0]) / sizeof(T::r[0][0])
-                                                           : 0;
+                                                          : 0;
   using Row = std::array<double, kTotal>;
   static constexpr std::array<Row, kTotal> a_() {
     std::array<Row, kTotal> out{};
@@ -120,22 +119,23 @@ class VernerStepper
   /// odeint's error stepper (non-FSAL): out, and the error estimate in xerr.
   template <class System, class StateIn, class DerivIn, class StateOut, class Err>
   RIGID_FLATTEN void do_step_impl(System system, const StateIn& in, const DerivIn& dxdt, double t,
-                    StateOut& out, double dt, Err& xerr) {
+                                  StateOut& out, double dt, Err& xerr) {
     static_assert(!Tableau::kFsal, "an FSAL pair steps through the FSAL overload");
     stages(system, in, dxdt, t, dt, std::make_index_sequence<kS - 1>{});
     finish(in, out, dt, xerr, std::make_index_sequence<kS>{});
   }
   template <class System, class StateIn, class DerivIn, class StateOut>
-  void do_step_impl(System system, const StateIn& in, const DerivIn& dxdt, double t,
-                    StateOut& out, double dt) {
+  void do_step_impl(System system, const StateIn& in, const DerivIn& dxdt, double t, StateOut& out,
+                    double dt) {
     State err;
     do_step_impl(system, in, dxdt, t, out, dt, err);
   }
 
   /// odeint's FSAL error stepper: out, f(out) in dxdt_out, the error estimate in xerr.
   template <class System, class StateIn, class DerivIn, class StateOut, class DerivOut, class Err>
-  RIGID_FLATTEN void do_step_impl(System system, const StateIn& in, const DerivIn& dxdt_in, double t,
-                    StateOut& out, DerivOut& dxdt_out, double dt, Err& xerr) {
+  RIGID_FLATTEN void do_step_impl(System system, const StateIn& in, const DerivIn& dxdt_in,
+                                  double t, StateOut& out, DerivOut& dxdt_out, double dt,
+                                  Err& xerr) {
     static_assert(Tableau::kFsal, "only an FSAL pair steps through the FSAL overload");
     // the last stage is f(out): out from the others, then that stage, then the error
     stages(system, in, dxdt_in, t, dt, std::make_index_sequence<kS - 2>{});
@@ -175,8 +175,7 @@ class VernerStepper
     system(xi, k_[I], t + D::c[I] * dt);
   }
   template <class StateIn, class StateOut, class Err, std::size_t... Js>
-  void finish(const StateIn& in, StateOut& out, double dt, Err& xerr,
-              std::index_sequence<Js...>) {
+  void finish(const StateIn& in, StateOut& out, double dt, Err& xerr, std::index_sequence<Js...>) {
     for (std::size_t n = 0; n < static_cast<std::size_t>(in.size()); ++n) {
       double b = 0.0, e = 0.0;
       ((D::b[Js] != 0.0 ? void(b += D::b[Js] * k_[Js][n]) : void()), ...);
@@ -360,8 +359,8 @@ class VernerDenseOutput {
   }
 
   Stepper stepper_;
-  boost::numeric::odeint::default_error_checker<
-      double, typename Stepper::algebra_type, typename Stepper::operations_type>
+  boost::numeric::odeint::default_error_checker<double, typename Stepper::algebra_type,
+                                                typename Stepper::operations_type>
       checker_;
   Adjuster adjuster_;
   State x_{}, x_new_{}, x_old_{}, dxdt_{}, dxdt_new_{};

@@ -18,7 +18,8 @@
 namespace rigid::render {
 
 /// Writes a file through `write` (which fills the stream, and may throw) and renames it to `path`;
-/// on any failure removes the temporary and throws std::runtime_error "cannot write 'PATH': REASON" (one line).
+/// on any failure removes the temporary and throws std::runtime_error "cannot write 'PATH': REASON"
+/// (one line).
 void write_file_atomically(const std::string& path, const std::function<void(std::FILE*)>& write);
 
 /// Holds back the renames of write_file_atomically until commit() (one at a time).

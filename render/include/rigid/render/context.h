@@ -37,7 +37,8 @@ struct ContextInfo {
   double creation_seconds = 0;
 };
 
-/// The process's context, made on first call (throws Unavailable if impossible) and current afterwards.
+/// The process's context, made on first call (throws Unavailable if impossible) and current
+/// afterwards.
 const ContextInfo& context(const ContextOptions& options = {});
 
 /// True once context() has succeeded in this process (no context is made by asking).

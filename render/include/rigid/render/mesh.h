@@ -4,10 +4,9 @@
 // outwards; triangles wind counter-clockwise seen from outside.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace rigid::render {
 
@@ -35,7 +34,8 @@ Mesh make_plane();
 /// Tube of a given radius along a polyline (parallel-transport frames), capped at both ends.
 Mesh make_tube(const std::vector<Eigen::Vector3d>& path, double radius, int sides);
 
-/// Segment count around a circle of the given on-screen radius in pixels (chord error under 0.2 px, 12..160).
+/// Segment count around a circle of the given on-screen radius in pixels (chord error under 0.2
+/// px, 12..160).
 int segments_for_radius(double radius_px);
 
 }  // namespace rigid::render

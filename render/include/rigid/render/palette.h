@@ -40,11 +40,13 @@ inline constexpr Color kTextColor = rgb8(25, 25, 25);
 /// Marks "pick the next palette colour" in series and materials.
 inline constexpr Color kAutoColor = {0, 0, 0, -1};
 
-inline constexpr Color kOkabeIto[] = {kBlue,      kOrange,   kBluishGreen, kVermillion,
+inline constexpr Color kOkabeIto[] = {kBlue,          kOrange,  kBluishGreen, kVermillion,
                                       kReddishPurple, kSkyBlue, kYellow,      kBlack};
 inline constexpr std::size_t kOkabeItoSize = sizeof(kOkabeIto) / sizeof(kOkabeIto[0]);
 
 /// The i-th automatic colour (cycling through Okabe–Ito).
-constexpr Color palette_color(std::size_t i) { return kOkabeIto[i % kOkabeItoSize]; }
+constexpr Color palette_color(std::size_t i) {
+  return kOkabeIto[i % kOkabeItoSize];
+}
 
 }  // namespace rigid::render

@@ -147,9 +147,9 @@ class Plot2D {
 
   /// Where one panel's parts land at a size, in pixels.
   struct PanelLayout {
-    ScreenRect frame;   ///< the plot area inside the axes
-    ScreenRect title;   ///< the panel title (empty when none)
-    ScreenRect legend;  ///< the legend box (empty when none is drawn)
+    ScreenRect frame;                     ///< the plot area inside the axes
+    ScreenRect title;                     ///< the panel title (empty when none)
+    ScreenRect legend;                    ///< the legend box (empty when none is drawn)
     std::vector<ScreenRect> annotations;  ///< each annotation's text, in the panel's order
     std::vector<ScreenRect> ref_labels;   ///< each labelled reference line's label, in order
     double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;  ///< the axis ranges drawn

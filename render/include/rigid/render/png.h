@@ -9,7 +9,8 @@
 
 namespace rigid::render {
 
-/// Writes img to path as 8-bit RGB PNG; on any failure removes the temporary file and throws std::runtime_error.
+/// Writes img to path as 8-bit RGB PNG; on any failure removes the temporary file and throws
+/// std::runtime_error.
 void write_png(const Image& img, const std::string& path);
 
 /// Reads an 8-bit RGB or RGBA PNG (alpha dropped); throws std::runtime_error if it cannot.

@@ -15,11 +15,10 @@
 // (rigid::render_gl) and exist only in builds with the renderer.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <array>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "rigid/render/image.h"
 #include "rigid/render/mesh.h"
@@ -33,7 +32,7 @@ struct Camera {
   Eigen::Vector3d eye{4.0, 3.0, 2.5};
   Eigen::Vector3d target{0.0, 0.0, 0.0};
   Eigen::Vector3d up{0.0, 0.0, 1.0};
-  double fov_y_deg = 30.0;    ///< perspective only
+  double fov_y_deg = 30.0;  ///< perspective only
   bool orthographic = false;
   double ortho_height = 0.0;  ///< world height seen; 0 matches the perspective view at the target
   /// Frame the scene tightly: keeping the viewing direction (eye - target) and up, move the eye
@@ -66,11 +65,12 @@ struct Label3D {
 class Scene3D {
  public:
   Camera camera;
-  std::string title;           ///< drawn at the top (text.h markup)
-  bool show_legend = true;     ///< a legend of labelled objects in the top-right corner
+  std::string title;        ///< drawn at the top (text.h markup)
+  bool show_legend = true;  ///< a legend of labelled objects in the top-right corner
 
   /// Sphere of a radius about a centre.
-  void add_sphere(const Eigen::Vector3d& center, double radius, Material m = {}, std::string label = {});
+  void add_sphere(const Eigen::Vector3d& center, double radius, Material m = {},
+                  std::string label = {});
   /// Ellipsoid with semi-axes a (columns of rotation give their directions).
   void add_ellipsoid(const Eigen::Vector3d& center, const Eigen::Vector3d& semi_axes,
                      const Eigen::Matrix3d& rotation, Material m = {}, std::string label = {});
@@ -80,7 +80,8 @@ class Scene3D {
   /// Capped cylinder of a radius from p0 to p1.
   void add_cylinder(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, double radius,
                     Material m = {}, std::string label = {});
-  /// Arrow from `from` to `to`: a shaft of the given radius and a cone head (2.5× radius, ≤ 35% of length).
+  /// Arrow from `from` to `to`: a shaft of the given radius and a cone head (2.5× radius, ≤ 35% of
+  /// length).
   void add_arrow(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double radius,
                  Material m = {}, std::string label = {});
   /// Box with half-extents along the columns of rotation.
@@ -96,13 +97,16 @@ class Scene3D {
   void add_plane(const Eigen::Vector3d& center, const Eigen::Vector3d& normal, double half_size,
                  Material m = {}, std::string label = {});
   /// Tube of a radius along a polyline (e.g. a polhode on an ellipsoid).
-  void add_tube(std::vector<Eigen::Vector3d> path, double radius, Material m = {}, std::string label = {});
+  void add_tube(std::vector<Eigen::Vector3d> path, double radius, Material m = {},
+                std::string label = {});
   /// Arbitrary mesh placed by a transform.
-  void add_mesh(Mesh mesh, const Eigen::Affine3d& transform, Material m = {}, std::string label = {});
+  void add_mesh(Mesh mesh, const Eigen::Affine3d& transform, Material m = {},
+                std::string label = {});
   /// Thick screen-space polyline (width in reference pixels) that is hidden by nearer surfaces.
   void add_polyline(std::vector<Eigen::Vector3d> points, Color color, double width = 3.5,
                     std::string label = {});
-  /// Axis triad at origin along the columns of rotation, arrows of a length, tips labelled (e.g. "1","2","3").
+  /// Axis triad at origin along the columns of rotation, arrows of a length, tips labelled (e.g.
+  /// "1","2","3").
   void add_axes(const Eigen::Vector3d& origin, const Eigen::Matrix3d& rotation, double length,
                 const std::array<std::string, 3>& labels = {"x", "y", "z"}, double radius = 0);
   /// Text anchored at a 3D point.
@@ -143,8 +147,8 @@ class Scene3D {
     Eigen::Affine3d transform = Eigen::Affine3d::Identity();
     Material material;
     std::string label;
-    double torus_minor = 0.25;  ///< minor/major radius ratio for kTorus
-    Mesh mesh;                  ///< kCustom only
+    double torus_minor = 0.25;          ///< minor/major radius ratio for kTorus
+    Mesh mesh;                          ///< kCustom only
     std::vector<Eigen::Vector3d> path;  ///< kTube only (world coordinates)
     double tube_radius = 0;             ///< kTube only
   };

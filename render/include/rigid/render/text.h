@@ -37,7 +37,8 @@ struct TextExtent {
 /// Measures markup text at a font size in pixels (the em size); needs no GL context.
 TextExtent measure_text(std::string_view markup, double size_px);
 
-/// Converts markup to plain UTF-8 (Greek names to letters, sub/superscripts inline), e.g. for CSV headers.
+/// Converts markup to plain UTF-8 (Greek names to letters, sub/superscripts inline), e.g. for CSV
+/// headers.
 std::string plain_text(std::string_view markup);
 
 }  // namespace rigid::render

@@ -21,7 +21,8 @@ double nice_step(double range, int target_count);
 /// Linear ticks at multiples of nice_step inside [lo, hi], labelled with just enough decimals.
 Ticks linear_ticks(double lo, double hi, int target_count = 6);
 
-/// Log10 ticks at decades 10^k inside [lo, hi] (lo > 0), labelled "10^{k}", thinned to at most max_count; under two decades it falls back to linear 1-2-5 ticks.
+/// Log10 ticks at decades 10^k inside [lo, hi] (lo > 0), labelled "10^{k}", thinned to at most
+/// max_count; under two decades it falls back to linear 1-2-5 ticks.
 Ticks log_ticks(double lo, double hi, int max_count = 8);
 
 /// Formats v with `decimals` digits after the point, a true minus sign, and "−0" avoided.
