@@ -1,22 +1,21 @@
 // The figure layer of the labs: a lab's figures.cpp builds each figure as a
-// render description (a Plot2D or a Scene3D) and hands it to the set with a
-// name and a caption. The set owns everything else: whether this build can draw
-// at all, the GL context, the title (the lab's name and its inputs, then the
-// figure's own title), the size asked for with --figure-size, atomic saving as
-// <lab>_<name>.png in the --figures directory, the timing, and the listing in
-// the JSON "figures" and "captions". Figure code never sees a path, a context
-// or a pixel offset.
+// render description (a Plot2D or a Scene3D) and hands it to a sink with a name
+// and a caption; a lab with motion describes it as an Animation. The sink owns
+// everything else (the command line's: the GL context, the title, the size,
+// atomic saving, the timing, the JSON listing). Figure code never sees a path,
+// a context or a pixel offset.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
 
-#include "common/lab.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
 
 namespace rigid::lab {
 
-/// One colour per concept across every lab's figure (issue 14): what a reader learns
+/// One colour per concept across every lab's figure : what a reader learns
 /// in one figure holds in the next. Okabe-Ito, so colour-blind readers keep it too.
 namespace colors {
 inline constexpr render::Color kOmega = render::kBlue;    ///< omega, and its path
@@ -45,20 +44,36 @@ inline render::Material flat_body(render::Color color, float opacity) {
   return m;
 }
 
-class FigureSet {
+/// Where a lab's figures go: each figure as a render description with a name and a
+/// caption. The command line saves them as PNGs (<lab>_<name>.png); a live view
+/// shows them. A figure's title, if any, is what the figure itself shows after
+/// the lab's name and inputs; the sink adds those.
+class FigureSink {
  public:
-  /// A 2D plot; its title, if any, follows the lab's name and inputs after a colon.
-  void add(const std::string& name, const std::string& caption, render::Plot2D plot);
-  /// A 3D scene; titled likewise.
-  void add(const std::string& name, const std::string& caption, render::Scene3D scene);
-
- private:
-  friend class Lab;
-  explicit FigureSet(Lab& lab) : lab_(lab) {}
-  std::string title(const std::string& own) const;
-  template <class Figure>
-  void save(const std::string& name, const std::string& caption, const Figure& figure);
-  Lab& lab_;
+  virtual ~FigureSink() = default;
+  /// A 2D plot.
+  virtual void add(const std::string& name, const std::string& caption, render::Plot2D plot) = 0;
+  /// A 3D scene.
+  virtual void add(const std::string& name, const std::string& caption,
+                   render::Scene3D scene) = 0;
 };
+
+/// What a lab with motion shows moving (--animate, a live view): the scene, and
+/// optionally a strip plot under it, at any time of the motion, in any order.
+struct Animation {
+  double seconds = 0.0;  ///< the span of the motion shown, from t = 0
+  std::string caption;
+  /// The lab's figure whose scene is scene(0), if one is (named in the JSON).
+  std::string still;
+  std::function<render::Scene3D(double)> scene;
+  /// A plot at time t drawn across the frame's lower `strip_share` (none if empty).
+  std::function<render::Plot2D(double)> strip;
+  double strip_share = 0.0;
+};
+
+/// The times, sorted, at which an animation of `seconds` of motion asks for its
+/// scene (its frames and the camera's fit): a lab that draws from an integrator
+/// samples it at exactly these.
+using FrameTimes = std::function<std::vector<double>(double seconds)>;
 
 }  // namespace rigid::lab

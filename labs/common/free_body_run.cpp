@@ -29,66 +29,71 @@ std::string projecting_methods() {
 }
 }  // namespace
 
-void declare_integration_options(Lab& lab, IntegrationInputs& in, const std::string& method_help,
-                                 const std::string& step_default, bool offer_project) {
+InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,
+                                                const std::string& step_default,
+                                                bool offer_project) {
+  InputTable<IntegrationInputs> t;
   std::vector<std::string> methods{"exact"};
   for (const Method m : kAllMethods) methods.emplace_back(method_name(m));
-  lab.choice("--method", in.method, methods,
-             method_help + " (exact: the closed form; " + method_help_list() + ")")
+  t.choice("--method", &IntegrationInputs::method, methods,
+           method_help + " (exact: the closed form; " + method_help_list() + ")")
       .numerical();
-  lab.number("--tolerance", in.tolerance, "relative and absolute tolerance of adaptive methods")
+  t.number("--tolerance", &IntegrationInputs::tolerance,
+           "relative and absolute tolerance of adaptive methods")
       .open_range(0.0, 1.0)
       .numerical();
-  lab.number("--step", in.step, "step of fixed-step methods")
+  t.number("--step", &IntegrationInputs::step, "step of fixed-step methods")
       .unit("s")
       .positive()
       .numerical()
       .lab_default(step_default);
-  if (!offer_project) return;
-  lab.flag("--project", in.project,
-           projecting_methods() + ": project omega back onto T and |L| after each step")
+  if (!offer_project) return t;
+  t.flag("--project", &IntegrationInputs::project,
+         projecting_methods() + ": project omega back onto T and |L| after each step")
       .numerical();
+  return t;
 }
 
 bool fixed_step(const IntegrationInputs& in) {
   return in.method != "exact" && !is_adaptive(method_from_name(in.method));
 }
 
-IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in, double default_step,
-                                     std::size_t max_steps) {
+IntegrateOptions integration_options(Report& report, const IntegrationInputs& in, bool compared,
+                                     double default_step, std::size_t max_steps) {
   // Below double precision no step meets a tolerance, and odeint's step control
   // then collapses (tolerances under 1e-150 crashed it).
   if (in.tolerance < 1e-16) {
-    throw UsageError("--tolerance", fmt::format("must be at least 1e-16, double precision's "
+    throw InputError("--tolerance", fmt::format("must be at least 1e-16, double precision's "
                                                 "reach (got {:g})",
                                                 in.tolerance));
   }
   IntegrateOptions options;
   options.abs_tol = options.rel_tol = in.tolerance;
-  options.step = lab.given("--step") ? in.step : default_step;
+  options.step = in.step.value_or(default_step);
   options.max_steps = max_steps;
-  // Every lab finishes or refuses within seconds, whatever the step count (issue 10).
+  // Every lab finishes or refuses within seconds, whatever the step count.
   options.max_seconds = kMaxRunSeconds;
   options.method = in.method == "exact" ? Method::kDopri5 : method_from_name(in.method);
   options.project_invariants = in.project;
   // Never silent: an option nothing uses is said to be unused.
   const bool exact = in.method == "exact";
+  const bool tolerance_set = in.tolerance != IntegrationInputs{}.tolerance;
   const auto unused = [&](const std::string& option, const std::string& why,
                           const std::string& instead) {
-    lab.warn(option, why + (in.compared ? "; only the comparison of every method uses it"
+    report.warn(option, why + (compared ? "; only the comparison of every method uses it"
                                         : "; it is not used" + instead));
   };
-  if (lab.given("--tolerance") && exact)
+  if (tolerance_set && exact)
     unused("--tolerance", "--method exact integrates nothing", "");
-  if (lab.given("--step") && exact) unused("--step", "--method exact integrates nothing", "");
-  if (lab.given("--tolerance") && !exact && !is_adaptive(options.method)) {
+  if (in.step && exact) unused("--step", "--method exact integrates nothing", "");
+  if (tolerance_set && !exact && !is_adaptive(options.method)) {
     unused("--tolerance", in.method + " takes a fixed step", " (--step sets it)");
   }
-  if (lab.given("--step") && !exact && is_adaptive(options.method)) {
+  if (in.step && !exact && is_adaptive(options.method)) {
     unused("--step", in.method + " chooses its own steps", " (--tolerance controls them)");
   }
   if (in.project && exact) {
-    throw UsageError("--project",
+    throw InputError("--project",
                      "--method exact integrates nothing to project; use --method "
                      "one of " +
                          projecting_methods());
@@ -96,29 +101,29 @@ IntegrateOptions integration_options(Lab& lab, const IntegrationInputs& in, doub
   return options;
 }
 
-IntegrationResult run_free_body(Lab& lab, const FreeBodyExact& exact, const IntegrationInputs& in,
+IntegrationResult run_free_body(Report& report, const FreeBodyExact& exact, const IntegrationInputs& in,
                                 const IntegrateOptions& options, const std::vector<double>& times) {
   if (in.method == "exact") return sample_exact(exact, times);
   if (in.project && !can_project(options.method)) {
-    throw UsageError("--project", "works with --method " + projecting_methods() + " only");
+    throw InputError("--project", "works with --method " + projecting_methods() + " only");
   }
   const char* option = fixed_step(in) ? "--step" : "--tolerance";
   IntegrationResult run;
   try {
     run = integrate_free_body(exact.moments(), exact.state(0.0), times, options);
   } catch (const std::exception& e) {
-    throw UsageError(option, e.what());
+    throw InputError(option, e.what());
   }
   const std::vector<double> errors = omega_errors(run, exact);
   // A step beyond the method's stability region blows omega up.
   if (!std::all_of(errors.begin(), errors.end(), [](double e) { return std::isfinite(e); })) {
-    throw UsageError(option, "the integration diverged (omega overflowed); shorten the step");
+    throw InputError(option, "the integration diverged (omega overflowed); shorten the step");
   }
   // A run whose energy or |L| moved by more than itself has no digit left to print.
   refuse_runaway(option, std::max(run.energy_drift_rel, run.momentum_drift_rel));
-  lab.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
+  report.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
              *std::max_element(errors.begin(), errors.end()), "");
-  lab.count("steps", "steps taken", run.steps);
+  report.count("steps", "steps taken", run.steps);
   return run;
 }
 
@@ -155,19 +160,19 @@ std::pair<std::string, std::string> steady_in_words(const FreeBodyExact& motion)
 
 }  // namespace
 
-void report_motion(Lab& lab, const FreeBodyExact& motion) {
+void report_motion(Report& report, const FreeBodyExact& motion) {
   const FreeMotionRegime regime = motion.regime();
-  lab.result_text("regime", "motion", to_string(regime));
+  report.result_text("regime", "motion", to_string(regime));
   std::string words, stability;
   if (regime == FreeMotionRegime::kSteady) {
     std::tie(words, stability) = steady_in_words(motion);
-    lab.result_none("complementary_parameter", "  k'^2", "", "a steady spin has no polhode");
+    report.result_none("complementary_parameter", "  k'^2", "", "a steady spin has no polhode");
   } else if (regime == FreeMotionRegime::kSeparatrix) {
     words =
         "on the separatrix: unstable, omega leaves the intermediate axis and only "
         "approaches it again, never returning";
     stability = "unstable";
-    lab.result("complementary_parameter", "  k'^2 (0: on the separatrix)", 0.0, "");
+    report.result("complementary_parameter", "  k'^2 (0: on the separatrix)", 0.0, "");
   } else {
     const double kp2 = motion.complementary_parameter();
     // k'^2 measures the distance to the separatrix; below 0.01 the period grows as
@@ -183,10 +188,10 @@ void report_motion(Lab& lab, const FreeBodyExact& motion) {
       stability = "stable";
       words = to_string(regime) + ": stable, omega circles that axis";
     }
-    lab.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2, "");
+    report.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2, "");
   }
-  lab.result_text("motion", "  in words", words);
-  lab.result_text("motion_stability", "  stability", stability);
+  report.result_text("motion", "  in words", words);
+  report.result_text("motion_stability", "  stability", stability);
 }
 
 double time_scale(const FreeBodyExact& motion) {
@@ -196,21 +201,21 @@ double time_scale(const FreeBodyExact& motion) {
 
 void check_phase_digits(double t_end, double scale) {
   if (t_end > 1e9 * scale) {
-    throw UsageError("--t-end", fmt::format("at most 1e9 periods ({:g} s) for these inputs: "
+    throw InputError("--t-end", fmt::format("at most 1e9 periods ({:g} s) for these inputs: "
                                             "beyond, the phase of the motion loses its digits",
                                             1e9 * scale));
   }
 }
 
-RunPlan plan_run(Lab& lab, const IntegrationInputs& in, double t_end, double scale,
-                 std::size_t max_steps) {
+RunPlan plan_run(Report& report, const IntegrationInputs& in, bool compared, double t_end,
+                 double scale, std::size_t max_steps) {
   check_phase_digits(t_end, scale);
   RunPlan plan;
-  plan.options = integration_options(lab, in, scale / 2000.0, max_steps);
+  plan.options = integration_options(report, in, compared, scale / 2000.0, max_steps);
   plan.fixed = fixed_step(in);
   // A step asked for that is longer than the whole run would be silently cut to it.
-  if (plan.fixed && lab.given("--step") && plan.options.step > t_end) {
-    throw UsageError("--step", fmt::format("{:g} s is longer than the run itself (t_end = {:g} s)",
+  if (plan.fixed && in.step && plan.options.step > t_end) {
+    throw InputError("--step", fmt::format("{:g} s is longer than the run itself (t_end = {:g} s)",
                                            plan.options.step, t_end));
   }
   plan.times = sample_times(t_end, scale, plan.fixed ? plan.options.step : 0.0);
@@ -218,17 +223,17 @@ RunPlan plan_run(Lab& lab, const IntegrationInputs& in, double t_end, double sca
   return plan;
 }
 
-void report_plan(Lab& lab, const RunPlan& plan) {
-  lab.result("t_end_s", "end time t_end", plan.t_end, "s");
+void report_plan(Report& report, const RunPlan& plan) {
+  report.result("t_end_s", "end time t_end", plan.t_end, "s");
   if (!plan.fixed) return;
   const double h = plan.options.step;
-  lab.result("step_s", "step h", h, "s");
+  report.result("step_s", "step h", h, "s");
   // t_end is reached exactly: a last step shortened to it when t_end / h is not whole
   // (to roundoff, as the grid decides it).
   const double whole = std::floor(plan.t_end / h * (1.0 + 8.0 * kEps));
   const double last = plan.t_end - whole * h;
   if (last > 8.0 * kEps * plan.t_end) {
-    lab.result("last_step_s",
+    report.result("last_step_s",
                fmt::format("  the last, shortened to end at t_end ({:g} whole steps)", whole), last,
                "s");
   }
@@ -236,24 +241,24 @@ void report_plan(Lab& lab, const RunPlan& plan) {
 
 void refuse_runaway(const std::string& option, double drift) {
   if (!(drift <= kMaxDrift)) {
-    throw UsageError(option, fmt::format("the run ran away: its conserved quantities drifted by "
+    throw InputError(option, fmt::format("the run ran away: its conserved quantities drifted by "
                                          "{:.3g} of themselves (more than {:g}); shorten the step "
                                          "or tighten the tolerance",
                                          drift, kMaxDrift));
   }
 }
 
-void report_invariant(Lab& lab, const std::string& key, const std::string& error_label,
+void report_invariant(Report& report, const std::string& key, const std::string& error_label,
                       const std::vector<double>& t, const std::vector<double>& e, double period,
                       double roundoff) {
   const InvariantError error = invariant_error(t, e, period);
-  lab.result_roundoff(key + "_error_max_rel", error_label, error.max_rel, roundoff, "");
-  lab.result_roundoff(key + "_drift_per_period_rel", "  its drift: the fitted trend a period",
+  report.result_roundoff(key + "_error_max_rel", error_label, error.max_rel, roundoff, "");
+  report.result_roundoff(key + "_drift_per_period_rel", "  its drift: the fitted trend a period",
                       error.drift_per_period_rel, roundoff, "");
-  lab.alias(key + "_drift_rel", key + "_error_max_rel");  // the maximum's old name
+  report.alias(key + "_drift_rel", key + "_error_max_rel");  // the maximum's old name
 }
 
-void report_drifts(Lab& lab, const IntegrationResult& run, double period, bool exact) {
+void report_drifts(Report& report, const IntegrationResult& run, double period, bool exact) {
   // Relative to the start; roundoff for the exact motion.
   std::vector<double> t, dT, dL;
   for (const FreeBodySample& s : run.samples) {
@@ -262,44 +267,28 @@ void report_drifts(Lab& lab, const IntegrationResult& run, double period, bool e
     dL.push_back(s.momentum_error);
   }
   const double roundoff = exact ? kClosedFormRoundoff : 0.0;
-  report_invariant(lab, "energy", "max |T - T0| / T0", t, dT, period, roundoff);
-  report_invariant(lab, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period, roundoff);
-  lab.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel,
+  report_invariant(report, "energy", "max |T - T0| / T0", t, dT, period, roundoff);
+  report_invariant(report, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period, roundoff);
+  report.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel,
                       roundoff, "");
 }
 
-void declare_end_time(Lab& lab, double& t_end, double& periods, const std::string& period_name,
-                      const std::string& default_text) {
-  lab.number("--t-end", t_end, "end time")
-      .unit("s")
-      .positive()
-      .numerical()
-      .lab_default(default_text);
-  lab.number("--periods", periods,
-             "end time as a number of " + period_name + "s (instead of --t-end)")
-      .positive()
-      .numerical()
-      .lab_default("--t-end's");
-}
-
-double end_time(const Lab& lab, double t_end, double periods, double scale, double default_t_end) {
-  if (lab.given("--periods") && lab.given("--t-end")) {
-    throw UsageError("--periods", "give --t-end or --periods, not both");
-  }
-  if (lab.given("--t-end")) return t_end;
-  if (lab.given("--periods")) return periods * scale;
+double end_time(const std::optional<double>& t_end, const std::optional<double>& periods,
+                double scale, double default_t_end) {
+  if (t_end) return *t_end;
+  if (periods) return *periods * scale;
   return default_t_end;
 }
 
-void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
+void report_equal_cost(Report& report, const std::vector<EqualCostRow>& rows,
                        double evaluations_per_period, double periods) {
-  lab.section(
+  report.section(
       fmt::format("which method drifts: every method at {:g} evaluations a period, "
                   "{:g} periods (a symplectic method's energy error stays in a band)",
                   evaluations_per_period, periods));
-  lab.result("equal_cost_evaluations_per_period", "evaluations a period (a Strang step: one)",
+  report.result("equal_cost_evaluations_per_period", "evaluations a period (a Strang step: one)",
              evaluations_per_period, "");
-  lab.result("equal_cost_periods", "periods run", periods, "");
+  report.result("equal_cost_periods", "periods run", periods, "");
   const EqualCostRow* least = nullptr;
   for (const EqualCostRow& row : rows) {
     const std::string name(method_name(row.options.method));
@@ -309,15 +298,15 @@ void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
                                     : fmt::format("h = {:.3g} s", row.options.step);
     const std::string label = fmt::format("{:<15} {:<15} energy drift a period", name, setting);
     if (!row.completed) {
-      lab.result_none("equal_cost_energy_drift_per_period_rel_" + key, label, "",
+      report.result_none("equal_cost_energy_drift_per_period_rel_" + key, label, "",
                       "could not finish at this cost");
-      lab.result_none("equal_cost_energy_error_max_rel_" + key, "  max |T - T0| / T0", "",
+      report.result_none("equal_cost_energy_error_max_rel_" + key, "  max |T - T0| / T0", "",
                       "could not finish at this cost");
       continue;
     }
-    lab.result("equal_cost_energy_drift_per_period_rel_" + key, label,
+    report.result("equal_cost_energy_drift_per_period_rel_" + key, label,
                row.energy.drift_per_period_rel, "");
-    lab.result("equal_cost_energy_error_max_rel_" + key, "  largest energy error",
+    report.result("equal_cost_energy_error_max_rel_" + key, "  largest energy error",
                row.energy.max_rel, "");
     if (least == nullptr ||
         std::abs(row.energy.drift_per_period_rel) < std::abs(least->energy.drift_per_period_rel)) {
@@ -326,9 +315,9 @@ void report_equal_cost(Lab& lab, const std::vector<EqualCostRow>& rows,
   }
   if (least != nullptr) {
     const Method m = least->options.method;
-    lab.result_text("least_energy_drift", "least energy drift at equal cost",
+    report.result_text("least_energy_drift", "least energy drift at equal cost",
                     std::string(method_name(m)));
-    lab.result_text("least_energy_drift_kind", "  its kind", std::string(method_kind(m)));
+    report.result_text("least_energy_drift_kind", "  its kind", std::string(method_kind(m)));
   }
 }
 

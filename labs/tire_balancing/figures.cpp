@@ -1,6 +1,6 @@
 // tire_balancing's figures: the wheel on its crooked axle with the cone L
 // sweeps; the balancing mass against the tilt, exact and small-angle.
-#include "figures.h"
+#include "tire_balancing/tire_balancing.h"
 
 #include <fmt/format.h>
 
@@ -99,9 +99,10 @@ render::Plot2D mass_plot(const CrookedWheel& wheel, double m0) {
 
 }  // namespace
 
-void draw(FigureSet& set, const Inputs& in, double m0) {
-  set.add("scene", "the crooked axle and the cone L sweeps", scene_of(in.wheel, m0, in.omega));
-  set.add("mass", "balancing mass, exact against small-angle", mass_plot(in.wheel, m0));
+void figures(const Report& report, FigureSink& sink) {
+  sink.add("scene", "the crooked axle and the cone L sweeps",
+           scene_of(report.wheel, report.m0, report.omega));
+  sink.add("mass", "balancing mass, exact against small-angle", mass_plot(report.wheel, report.m0));
 }
 
 }  // namespace rigid::lab::tire_balancing

@@ -1,0 +1,716 @@
+#include "common/command.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <list>
+
+#include "common/output_paths.h"
+#include "common/writers.h"
+#include "rigid/render/atomic_file.h"
+
+#if RIGID_HAVE_RENDER
+#include "common/progress.h"
+#include "rigid/render/context.h"
+#include "rigid/render/video.h"
+#endif
+
+namespace rigid::lab {
+namespace fs = std::filesystem;
+namespace {
+
+// A message as one printable line: user input may carry a line break or an escape
+// sequence, which would forge a second error line or colour the terminal.
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (u < 0x20 || u == 0x7f) {
+      out += fmt::format("\\x{:02x}", u);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// A component the validator has accepted, as a number.
+double component(const std::string& text) {
+  double value = 0.0;
+  CLI::detail::lexical_cast(text, value);
+  return value;
+}
+
+// "1280x720" into width and height within the limits; the rule broken, or "".
+std::string parse_size(const std::string& text, int min_w, int min_h, int max_w, int max_h,
+                       bool even, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  const int read = std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
+  // 1920x1080 or 1920X1080
+  if (read != 3 || (x != 'x' && x != 'X') || w < min_w || h < min_h || w > max_w || h > max_h ||
+      (even && (w % 2 != 0 || h % 2 != 0))) {
+    return fmt::format("must be WxH{} with {} <= W <= {} and {} <= H <= {} (got '{}')",
+                       even ? ", both even," : "", min_w, max_w, min_h, max_h, text);
+  }
+  width = w;
+  height = h;
+  return "";
+}
+
+// Frame k at k/frames of the motion (the last frame one short of its end, so a periodic
+// motion loops without a repeated frame), the camera fitted at kFitSamples more.
+constexpr int kFitSamples = 16;
+int frame_count(double duration, double fps) {
+  return std::max(1, static_cast<int>(std::lround(duration * fps)));
+}
+double frame_time(double motion_seconds, int k, int frames) { return motion_seconds * k / frames; }
+
+// One lab input as a CLI11 option: where CLI11 stores what was typed.
+struct OptionSlot {
+  const BoundInput* input = nullptr;
+  CLI::Option* cli = nullptr;
+  double number = 0.0;
+  std::string word;
+  bool on = false;
+  std::vector<std::string> texts;  // a vector's or pair's components (or word) as given
+};
+
+class Command {
+ public:
+  Command(const std::string& name, const std::string& title,
+          const std::vector<BoundInput>& inputs, bool csv, bool animation);
+  int run(int argc, char** argv, const std::function<Computed()>& compute);
+
+ private:
+  class FigureFiles;
+  void bind(const BoundInput& input);
+  void parse(int argc, char** argv);
+  void store();
+  void check_pairings() const;
+  void check_output_paths() const;
+  void check_animation_path() const;
+  std::string blamed_option() const;
+  bool given(const std::string& flag) const { return app_.count(flag) > 0; }
+  void draw_figures(const Computed& computed);
+  void animate(const Computed& computed);
+  std::vector<double> animation_times(double motion_seconds) const;
+
+  std::string name_, title_;
+  CLI::App app_;
+  std::list<OptionSlot> slots_;
+  bool json_ = false, quiet_ = false, timing_ = false, csv_enabled_, animation_enabled_;
+  bool figures_failed_ = false;
+  std::string figures_dir_, figure_size_ = "1600x1200", figure_prefix_, csv_path_;
+  int figure_width_ = 1600, figure_height_ = 1200;
+  std::string animation_path_, animation_size_ = "1280x720";
+  double animation_fps_ = 30.0, animation_duration_ = 10.0;
+  int animation_width_ = 1280, animation_height_ = 720;
+  RunOutputs outputs_;
+  Json figure_seconds_ = Json::object(), figure_phases_ = Json::object();
+};
+
+Command::Command(const std::string& name, const std::string& title,
+                 const std::vector<BoundInput>& inputs, bool csv, bool animation)
+    : name_(name),
+      title_(title),
+      app_(title, name),
+      csv_enabled_(csv),
+      animation_enabled_(animation) {
+  app_.add_flag("--json", json_, "print one JSON object on stdout instead of the table");
+  app_.add_flag("--quiet", quiet_, "print no table (files are still written)");
+  app_.add_flag("--timing", timing_,
+                "with --json: the wall time of each figure and where it went, for bench/");
+  app_.add_option("--figures", figures_dir_, "write this lab's PNG figures into DIR")
+      ->type_name("DIR");
+  // The figure style is laid out for 800x600 and up; 8192 bounds memory.
+  app_.add_option("--figure-size", figure_size_, "figure size in pixels, 800x600 to 8192x8192")
+      ->type_name("WxH")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [this](std::string& text) -> std::string {
+            return parse_size(text, 800, 600, 8192, 8192, false, figure_width_,
+                              figure_height_);
+          },
+          ""));
+  app_.add_option("--figure-prefix", figure_prefix_,
+                  "prefix of the figure files, e.g. 'book-' for book-poinsot_omega.png (letters, "
+                  "digits, '-', '_' and '.')")
+      ->type_name("TEXT")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            const bool ok = !text.empty() && text.size() <= 64 && text.front() != '.' &&
+                            std::all_of(text.begin(), text.end(), [](char c) {
+                              return std::isalnum(static_cast<unsigned char>(c)) || c == '-' ||
+                                     c == '_' || c == '.';
+                            });
+            return ok ? ""
+                      : "must be 1 to 64 letters, digits, '-', '_' or '.', not starting "
+                        "with '.' (got '" +
+                            text + "')";
+          },
+          ""));
+  app_.set_version_flag("--version", name_ + " (rigidlab) " + std::string(RIGID_VERSION),
+                        "print the version and exit");
+  for (const BoundInput& input : inputs) bind(input);
+  if (csv_enabled_) {
+    app_.add_option("--csv", csv_path_, "write the lab's time series to FILE as CSV")
+        ->type_name("FILE");
+  }
+  if (animation_enabled_) {
+    app_.add_option("--animate", animation_path_,
+                    "write the motion as an animation to FILE: .mp4 (H.264, for players and "
+                    "slides) or .webp (animated WebP, for browsers and READMEs)")
+        ->type_name("FILE");
+    // a number in [lo, hi] or the rule, as the options' errors say it
+    const auto in_range = [](double lo, double hi, std::string what) {
+      return CLI::Validator(
+          [=](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !(v >= lo && v <= hi))
+              return fmt::format("must be {} from {:g} to {:g} (got '{}')", what, lo, hi, text);
+            return "";
+          },
+          "");
+    };
+    app_.add_option("--fps", animation_fps_, "frames a second of the animation, 1 to 120")
+        ->type_name("NUMBER")
+        ->capture_default_str()
+        ->check(in_range(1.0, 120.0, "a number"));
+    app_.add_option("--duration", animation_duration_,
+                    "length of the animation in seconds, 0.1 to 600 (the motion to --t-end is "
+                    "shown in it)")
+        ->type_name("NUMBER")
+        ->capture_default_str()
+        ->check(in_range(0.1, 600.0, "a number of seconds"));
+    // H.264's 4:2:0 chroma needs even sizes; the figure style is laid out from 320x240 up
+    app_.add_option("--animation-size", animation_size_,
+                    "animation size in pixels, even, 320x240 to 3840x2160")
+        ->type_name("WxH")
+        ->capture_default_str()
+        ->check(CLI::Validator(
+            [this](std::string& text) -> std::string {
+              return parse_size(text, 320, 240, 3840, 2160, true, animation_width_,
+                                animation_height_);
+            },
+            ""));
+  }
+}
+
+void Command::bind(const BoundInput& input) {
+  const InputRule& rule = *input.rule;
+  OptionSlot& slot = slots_.emplace_back();
+  slot.input = &input;
+  const bool lab_default = !rule.lab_default_text().empty();
+  switch (rule.kind()) {
+    case InputKind::kNumber: {
+      if (const auto* x = std::get_if<double>(&input.default_value)) slot.number = *x;
+      slot.cli = app_.add_option(rule.flag(), slot.number)
+                     ->type_name(rule.unit_text() == "deg" ? "DEG" : "NUMBER")
+                     ->capture_default_str();
+      slot.cli->check(CLI::Validator(
+          [&rule](std::string& text) -> std::string {
+            double parsed = 0.0;
+            if (!CLI::detail::lexical_cast(text, parsed)) {
+              return "must be a number (got '" + text + "')";
+            }
+            return rule.broken(parsed, text);
+          },
+          ""));
+      break;
+    }
+    case InputKind::kPair:
+    case InputKind::kVector: {
+      // CLI11 splits the value at the commas, insists on `count` values and checks each.
+      const bool vector = rule.kind() == InputKind::kVector;
+      const int count = vector ? 3 : 2;
+      std::string default_text;
+      if (const auto* v = std::get_if<Eigen::Vector3d>(&input.default_value)) {
+        default_text = fmt::format("{},{},{}", (*v)(0), (*v)(1), (*v)(2));
+      } else if (const auto* v = std::get_if<Eigen::Vector2d>(&input.default_value)) {
+        default_text = fmt::format("{},{}", (*v)(0), (*v)(1));
+      }
+      std::string type_name = vector ? "X,Y,Z" : rule.value_name();
+      slot.cli = app_.add_option(rule.flag(), slot.texts)
+                     ->delimiter(',')
+                     ->expected(count)
+                     ->type_name(type_name)
+                     ->default_str(default_text);
+      if (!rule.word_names().empty()) {
+        slot.cli->expected(1, count);
+        slot.cli->type_name(type_name + "|" + rule.word_list());
+      }
+      slot.cli->check(CLI::Validator(
+          [&rule, count](std::string& text) -> std::string {
+            if (rule.takes_word(text)) return "";
+            double parsed = 0.0;
+            if (!CLI::detail::lexical_cast(text, parsed)) {
+              // too few numbers before the next option ("--omega , --json"): CLI11 took it
+              if (text.rfind("--", 0) == 0 && text.size() > 2) {
+                return fmt::format("needs {} numbers separated by commas; '{}' is the next option",
+                                   count, text);
+              }
+              return "each component must be a number (got '" + text + "')" +
+                     (rule.word_names().empty() ? "" : ", or the value one of " + rule.word_list());
+            }
+            return rule.broken(parsed, text);
+          },
+          ""));
+      break;
+    }
+    case InputKind::kChoice: {
+      if (const auto* w = std::get_if<std::string>(&input.default_value)) slot.word = *w;
+      slot.cli = app_.add_option(rule.flag(), slot.word)->type_name("WORD")->capture_default_str();
+      slot.cli->check(CLI::IsMember(rule.choices()).description(""));
+      break;
+    }
+    case InputKind::kFlag:
+      slot.cli = app_.add_flag(rule.flag(), slot.on);
+      break;
+  }
+  if (lab_default) slot.cli->default_str("");
+  slot.cli->description(rule.description());
+}
+
+// The values given, into the lab's inputs.
+void Command::store() {
+  for (OptionSlot& slot : slots_) {
+    if (slot.cli->count() == 0) continue;
+    const InputRule& rule = *slot.input->rule;
+    switch (rule.kind()) {
+      case InputKind::kNumber:
+        slot.input->set(slot.number);
+        break;
+      case InputKind::kPair:
+        slot.input->set(Eigen::Vector2d(component(slot.texts[0]), component(slot.texts[1])));
+        break;
+      case InputKind::kVector: {
+        const auto& texts = slot.texts;
+        if (texts.size() == 1 && rule.takes_word(texts[0])) {
+          slot.input->set(texts[0]);
+          break;
+        }
+        const bool has_word = std::any_of(texts.begin(), texts.end(),
+                                          [&rule](const std::string& t) { return rule.takes_word(t); });
+        if (texts.size() != 3 || has_word) {
+          throw InputError(rule.flag(), "expects three numbers X,Y,Z" +
+                                            (rule.word_names().empty()
+                                                 ? std::string()
+                                                 : " or one of " + rule.word_list()));
+        }
+        const Eigen::Vector3d value(component(texts[0]), component(texts[1]),
+                                    component(texts[2]));
+        if (rule.is_nonzero() && value.isZero(0.0)) {
+          throw InputError(rule.flag(), "must not be the zero vector");
+        }
+        slot.input->set(value);
+        break;
+      }
+      case InputKind::kChoice:
+        slot.input->set(slot.word);
+        break;
+      case InputKind::kFlag:
+        slot.input->set(slot.on);
+        break;
+    }
+  }
+}
+
+// Alternatives given together, and inputs given without the one they go with.
+void Command::check_pairings() const {
+  for (const OptionSlot& slot : slots_) {
+    if (slot.cli->count() == 0) continue;
+    const InputRule& rule = *slot.input->rule;
+    for (const auto& pairing : rule.exclusions()) {
+      if (given(pairing.other)) throw InputError(rule.flag(), pairing.rule);
+    }
+    for (const auto& pairing : rule.requirements()) {
+      if (!given(pairing.other)) throw InputError(rule.flag(), pairing.rule);
+    }
+  }
+}
+
+std::string Command::blamed_option() const {
+  for (const OptionSlot& s : slots_) {
+    if (s.input->rule->physical() && s.cli->count() > 0) return s.cli->get_name();
+  }
+  for (const OptionSlot& s : slots_) {  // then a numerical one
+    if (s.cli->count() > 0) return s.cli->get_name();
+  }
+  return "--inputs";
+}
+
+void Command::check_animation_path() const {
+  if (!animation_enabled_ || app_.count("--animate") == 0) {
+    for (const char* flag : {"--fps", "--duration", "--animation-size"}) {
+      if (animation_enabled_ && app_.count(flag) > 0)
+        throw InputError(flag, "sets the animation: give --animate FILE too");
+    }
+    return;
+  }
+  if (animation_path_.empty()) throw InputError("--animate", "needs a file name");
+#if RIGID_HAVE_RENDER
+  if (!render::video_format_for(animation_path_)) {
+    throw InputError("--animate",
+                     "the file name must end in .mp4 or .webp (got '" + animation_path_ + "')");
+  }
+#endif
+  check_animation_file("--animate", animation_path_);
+}
+
+void Command::check_output_paths() const {
+  check_animation_path();
+  if (app_.count("--figures") > 0 && figures_dir_.empty()) {
+    throw InputError("--figures", "needs a directory name");
+  }
+  if (!figures_dir_.empty()) check_output_dir("--figures", figures_dir_);
+  if (csv_enabled_ && app_.count("--csv") > 0) {
+    if (csv_path_.empty()) throw InputError("--csv", "needs a file name");
+    check_output_file("--csv", csv_path_);
+  }
+}
+
+void Command::parse(int argc, char** argv) {
+  app_.allow_extras();
+  for (int i = 0; i < argc; ++i) outputs_.command.emplace_back(argv[i]);
+  try {
+    app_.parse(argc, argv);
+  } catch (const CLI::ArgumentMismatch& e) {
+    // A wrong count of values: say it in the student's terms.
+    const std::string what = e.what();
+    const std::string name = what.substr(0, what.find(':'));
+    const CLI::Option* option = app_.get_option_no_throw(name);
+    const int count = option != nullptr ? option->get_items_expected_max() : 1;
+    const std::string rule = count == 3   ? "must be three numbers X,Y,Z"
+                             : count == 2 ? "must be two numbers"
+                                          : "needs a value";
+    throw InputError(name, rule + " (" + what.substr(what.find(':') + 2) + ")");
+  } catch (const CLI::CallForHelp&) {
+    throw;
+  } catch (const CLI::CallForVersion&) {
+    throw;
+  } catch (const CLI::ParseError& e) {
+    // The option's own rules speak as "--option: rule"; anything else (CLI11's
+    // wording) is said as it is, under the option it names first.
+    const std::string what = e.what();
+    const std::size_t colon = what.find(": ");
+    if (what.rfind("--", 0) == 0 && colon != std::string::npos) {
+      throw InputError(what.substr(0, colon), what.substr(colon + 2));
+    }
+    const std::size_t dash = what.find("--");
+    const std::size_t end = what.find_first_of(" ,:=", dash);
+    throw InputError(dash == std::string::npos ? "--inputs" : what.substr(dash, end - dash), what);
+  }
+  // The first word CLI11 could not place names the mistake.
+  if (const auto extras = app_.remaining(); !extras.empty()) {
+    const std::string& word = extras.front();
+    if (word.rfind("-", 0) == 0) throw InputError(word, "unknown option (see --help)");
+    throw InputError(word, "unexpected argument (options take the form --name VALUE)");
+  }
+}
+
+int Command::run(int argc, char** argv, const std::function<Computed()>& compute) {
+  // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  const Report* report = nullptr;
+  try {
+    try {
+      parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app_.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+      return app_.exit(e);
+    }
+    store();
+    check_output_paths();
+    check_pairings();
+    // The run's files (figures, CSV, animation) land together or not at all.
+    render::FileTransaction files;
+    const Computed computed = compute();
+    report = computed.report;
+    if (computed.animation) animate(computed);
+    if (!figures_dir_.empty()) draw_figures(computed);
+    if (!csv_path_.empty() && !report->time_series().columns.empty()) {
+      const std::string text = csv_text(report->time_series());
+      try {
+        render::write_file_atomically(csv_path_, [&](std::FILE* file) {
+          std::fwrite(text.data(), 1, text.size(), file);
+        });
+      } catch (const std::runtime_error& e) {
+        throw InputError("--csv", e.what());
+      }
+    }
+    try {
+      files.commit();
+    } catch (const std::runtime_error& e) {
+      throw InputError(csv_path_.empty() ? "--figures" : "--csv", e.what());
+    }
+  } catch (const InputError& e) {
+    const std::string what = e.input.empty() ? blamed_option() + ": " + e.rule : e.what();
+    std::cerr << name_ << ": error: " << escaped(what) << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    // A rule of core's broken where the lab named no input (or a failure it did
+    // not foresee): the inputs given are to blame, the first physical one named.
+    std::cerr << name_ << ": error: " << escaped(blamed_option() + ": " + e.what()) << '\n';
+    return 2;
+  }
+  for (const std::string& warning : report->warnings()) {
+    std::cerr << name_ << ": warning: " << escaped(warning) << '\n';
+  }
+  outputs_.figures_dir = figures_dir_;
+  outputs_.csv_path = csv_path_;
+  outputs_.animation_path = animation_path_;
+  if (timing_) {
+    outputs_.timing = {{"figure_seconds", figure_seconds_}, {"figure_phases", figure_phases_}};
+  }
+  if (json_) {
+    write_json(std::cout, *report, outputs_, RIGID_VERSION);
+  } else if (!quiet_) {
+    write_table(std::cout, *report, outputs_);
+  }
+  // Output that never arrived (stdout closed, a full disk, a closed pipe) is an error.
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << name_ << ": error: stdout: the output could not be written ("
+              << std::strerror(errno) << ")\n";
+    return 1;
+  }
+  return figures_failed_ ? 1 : 0;
+}
+
+// ---- Figures ----------------------------------------------------------------
+
+// The figures as PNG files <prefix><lab>_<name>.png in the --figures directory.
+class Command::FigureFiles : public FigureSink {
+ public:
+  FigureFiles(Command& command, const Report& report) : command_(command), report_(report) {}
+  void add(const std::string& name, const std::string& caption, render::Plot2D plot) override {
+    plot.title = report_.figure_title(plot.title);
+    save(name, caption, plot);
+  }
+  void add(const std::string& name, const std::string& caption, render::Scene3D scene) override {
+    scene.title = report_.figure_title(scene.title);
+    save(name, caption, scene);
+  }
+
+ private:
+  template <class Figure>
+  void save(const std::string& name, const std::string& caption, const Figure& figure);
+  Command& command_;
+  const Report& report_;
+};
+
+template <class Figure>
+void Command::FigureFiles::save(const std::string& name, const std::string& caption,
+                                const Figure& figure) {
+  Command& c = command_;
+  const std::string file = c.figure_prefix_ + c.name_ + "_" + name + ".png";
+  const fs::path path = fs::path(c.figures_dir_) / file;
+  if (fs::is_directory(path)) {
+    throw InputError("--figures", "'" + path.string() + "' is a directory, not a figure");
+  }
+  const auto start = std::chrono::steady_clock::now();
+#if RIGID_HAVE_RENDER
+  // --timing: where each figure's time went (the phases wait for the GL to finish each)
+  render::FigureTiming phases;
+  figure.save(path.string(), c.figure_width_, c.figure_height_, c.timing_ ? &phases : nullptr);
+  if (c.timing_) {
+    c.figure_phases_[file] = {{"setup", phases.setup},
+                              {"layout", phases.layout},
+                              {"draw", phases.draw},
+                              {"resolve", phases.resolve},
+                              {"encode", phases.encode}};
+  }
+#else
+  (void)figure;
+  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
+#endif
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  c.outputs_.figures.push_back(file);
+  c.outputs_.captions[file] = caption;
+  c.figure_seconds_[file] = elapsed.count();
+  // A figure the user made very large (past 4x the default's pixels) takes seconds
+  // each: say so as each is drawn, rather than sit silent.
+  if (static_cast<double>(c.figure_width_) * c.figure_height_ > 4.0 * 1600 * 1200) {
+    std::cerr << c.name_ << ": drew " << file << " (" << c.figure_width_ << "x"
+              << c.figure_height_ << ") in " << fmt::format("{:.1f}", elapsed.count()) << " s\n";
+  }
+}
+
+void Command::draw_figures(const Computed& computed) {
+  std::error_code error;
+  fs::create_directories(figures_dir_, error);
+  if (error) {
+    throw InputError("--figures",
+                     "cannot create directory '" + figures_dir_ + "': " + error.message());
+  }
+  try {
+#if RIGID_HAVE_RENDER
+    // The GL context is made once per process, before any figure is drawn and
+    // timed (bench/ reports it on its own, like matplotlib's import).
+    render::context();
+#else
+    throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
+#endif
+    FigureFiles sink(*this, *computed.report);
+    computed.figures(sink);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    figures_failed_ = true;
+    std::cerr << name_ << ": error: --figures: " << e.what() << '\n';
+  }
+}
+
+// ---- Animation --------------------------------------------------------------
+
+std::vector<double> Command::animation_times(double motion_seconds) const {
+  const int frames = frame_count(animation_duration_, animation_fps_);
+  std::vector<double> times;
+  for (int k = 0; k < frames; ++k) times.push_back(frame_time(motion_seconds, k, frames));
+  for (int k = 0; k < kFitSamples; ++k) times.push_back(frame_time(motion_seconds, k, kFitSamples));
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+// --animate FILE: the lab's motion as an animated WebP or an H.264 MP4 (by the
+// file's extension). The frames are drawn at their own times with one camera
+// fitted to the whole motion, while a second thread encodes them (render/video.h).
+void Command::animate(const Computed& computed) {
+  if (animation_path_.empty()) return;
+  const Animation motion =
+      computed.animation([this](double seconds) { return animation_times(seconds); });
+  const double motion_seconds = motion.seconds;
+  if (!(motion_seconds > 0.0) || !std::isfinite(motion_seconds)) {
+    throw InputError("--animate", "there is no motion to show (its span is not positive)");
+  }
+  const Report& report = *computed.report;
+#if RIGID_HAVE_RENDER
+  const auto start = std::chrono::steady_clock::now();
+  const int frames = frame_count(animation_duration_, animation_fps_);
+  const auto motion_time = [&](int k) { return frame_time(motion_seconds, k, frames); };
+  const int w = animation_width_, h = animation_height_;
+  // the scene above, the strip (if any) below: both even, for H.264
+  const int h_strip =
+      motion.strip ? 2 * static_cast<int>(std::lround(0.5 * motion.strip_share * h)) : 0;
+  const int h_scene = h - h_strip;
+  try {
+    render::context();
+    // one camera for every frame, fitted to the union of frames spread over the motion
+    render::Scene3D envelope = motion.scene(0.0);
+    envelope.title = report.figure_title(envelope.title);
+    for (int k = 1; k < kFitSamples; ++k)
+      envelope.merge(motion.scene(frame_time(motion_seconds, k, kFitSamples)));
+    const render::Camera camera = envelope.fitted_camera(w, h_scene);
+
+    render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
+                               {w, h, animation_fps_});
+    Progress progress(name_, "animation frames", frames, quiet_);
+    // --timing: where the frames' time went (the GL phases waited for, as for figures)
+    render::FigureTiming phases;
+    double build = 0.0, handover = 0.0;
+    const auto lap = [](std::chrono::steady_clock::time_point& t0) {
+      const auto t1 = std::chrono::steady_clock::now();
+      const double s = std::chrono::duration<double>(t1 - t0).count();
+      t0 = t1;
+      return s;
+    };
+    const auto add_phases = [&phases](const render::FigureTiming& f) {
+      phases.setup += f.setup, phases.layout += f.layout, phases.draw += f.draw,
+          phases.resolve += f.resolve;
+    };
+    for (int k = 0; k < frames; ++k) {
+      auto t0 = std::chrono::steady_clock::now();
+      render::Scene3D scene = motion.scene(motion_time(k));
+      scene.title = report.figure_title(scene.title);
+      scene.camera = camera;
+      build += lap(t0);
+      render::FigureTiming f;
+      render::Image image = scene.render(w, h_scene, timing_ ? &f : nullptr);
+      add_phases(f);
+      if (motion.strip) {
+        render::Plot2D plot = motion.strip(motion_time(k));
+        plot.style_height = h;
+        const render::Image below = plot.render(w, h_strip, timing_ ? &f : nullptr);
+        add_phases(f);
+        image.height = h;
+        image.rgb.insert(image.rgb.end(), below.rgb.begin(), below.rgb.end());
+      }
+      lap(t0);
+      writer.add(std::move(image));  // waits while two frames are still being encoded
+      handover += lap(t0);
+      progress.update(k + 1);
+    }
+    auto t_finish = std::chrono::steady_clock::now();
+    const std::size_t bytes = writer.finish();
+    const double finishing = lap(t_finish);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::error_code ec;
+    Json& animation = outputs_.animation;
+    animation = {{"path", fs::absolute(animation_path_, ec).lexically_normal().string()},
+                 {"caption", motion.caption},
+                 {"frames", frames},
+                 {"fps", animation_fps_},
+                 {"duration_s", frames / animation_fps_},
+                 {"motion_s", motion_seconds},
+                 {"width", w},
+                 {"height", h},
+                 {"bytes", bytes},
+                 {"seconds", seconds}};
+    if (!motion.still.empty()) {
+      animation["still"] = figure_prefix_ + name_ + "_" + motion.still + ".png";
+    }
+    if (timing_) {
+      animation["phases"] = {{"scene", build},          {"setup", phases.setup},
+                             {"layout", phases.layout}, {"draw", phases.draw},
+                             {"resolve", phases.resolve}, {"encoder_wait", handover},
+                             {"finish", finishing}};
+    }
+    progress.finish(fmt::format(
+        "wrote {}: {} frames, {}x{} at {:g} fps ({:g} s of video for {:.3g} s of motion), "
+        "{:.1f} MB, in {:.1f} s",
+        animation_path_, frames, w, h, animation_fps_, frames / animation_fps_, motion_seconds,
+        bytes / 1e6, seconds));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--animate", e.what());
+  } catch (const std::exception& e) {
+    figures_failed_ = true;
+    std::cerr << name_ << ": error: --animate: " << e.what() << '\n';
+  }
+#else
+  (void)report;
+  figures_failed_ = true;
+  std::cerr << name_
+            << ": error: --animate: this build has no renderer (RIGID_BUILD_RENDER=OFF)\n";
+#endif
+}
+
+}  // namespace
+
+int run_command(const std::string& name, const std::string& title,
+                const std::vector<BoundInput>& inputs, bool csv, bool animation, int argc,
+                char** argv, const std::function<Computed()>& compute) {
+  Command command(name, title, inputs, csv, animation);
+  return command.run(argc, argv, compute);
+}
+
+}  // namespace rigid::lab

@@ -1,0 +1,179 @@
+#include "common/inputs.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigid::lab {
+
+namespace {
+// Every result is a product of at most five inputs (m a^2 omega^2, say); inside
+// this range of magnitudes no such product overflows or underflows a double.
+constexpr double kSmallest = 1e-60, kLargest = 1e60;
+}  // namespace
+
+std::string json_key(const std::string& name) {
+  std::string key = name.substr(name.find_first_not_of('-'));
+  for (char& c : key) {
+    if (c == '-') c = '_';
+  }
+  return key;
+}
+
+InputRule::InputRule(InputKind kind, std::string flag, std::string help)
+    : kind_(kind), flag_(std::move(flag)), key_(json_key(flag_)), help_(std::move(help)) {}
+
+InputRule& InputRule::unit(const std::string& unit) {
+  unit_ = unit;
+  return *this;
+}
+InputRule& InputRule::positive() {
+  bound_ = Bound::kPositive;
+  return *this;
+}
+InputRule& InputRule::non_negative() {
+  bound_ = Bound::kNonNegative;
+  return *this;
+}
+InputRule& InputRule::open_range(double lo, double hi) {
+  bound_ = Bound::kOpenRange;
+  lo_ = lo;
+  hi_ = hi;
+  return *this;
+}
+InputRule& InputRule::range_from(double lo, double hi) {
+  bound_ = Bound::kRangeFrom;
+  lo_ = lo;
+  hi_ = hi;
+  return *this;
+}
+InputRule& InputRule::nonzero() {
+  nonzero_ = true;
+  return *this;
+}
+InputRule& InputRule::symbol(const std::string& markup) {
+  symbol_ = markup;
+  return *this;
+}
+InputRule& InputRule::numerical() {
+  physical_ = false;
+  return *this;
+}
+InputRule& InputRule::lab_default(const std::string& what) {
+  lab_default_ = what;
+  return *this;
+}
+InputRule& InputRule::words(const std::vector<std::string>& names, const std::string& meaning) {
+  words_ = names;
+  help_ += " (" + meaning + ")";
+  return *this;
+}
+InputRule& InputRule::choices(const std::vector<std::string>& names) {
+  choices_ = names;
+  std::string list;
+  for (const auto& choice : names) list += (list.empty() ? "" : "|") + choice;
+  help_ += " (" + list + ")";
+  return *this;
+}
+InputRule& InputRule::excludes(const std::string& other, const std::string& rule) {
+  excludes_.push_back({other, rule});
+  return *this;
+}
+InputRule& InputRule::requires_input(const std::string& other, const std::string& rule) {
+  requires_.push_back({other, rule});
+  return *this;
+}
+
+std::string InputRule::description() const {
+  std::string text = help_;
+  if (!unit_.empty()) text += " [" + unit_ + "]";
+  if (!lab_default_.empty()) text += " (default: " + lab_default_ + ")";
+  return text;
+}
+
+bool InputRule::takes_word(const std::string& text) const {
+  return std::find(words_.begin(), words_.end(), text) != words_.end();
+}
+
+std::string InputRule::word_list() const {
+  std::string list;
+  for (const std::string& w : words_) list += (list.empty() ? "" : "|") + w;
+  return list;
+}
+
+std::string InputRule::broken(double value, const std::string& text) const {
+  const auto fail = [&](const std::string& rule) { return rule + " (got " + text + ")"; };
+  if (!std::isfinite(value)) return fail("must be finite");
+  switch (bound_) {
+    case Bound::kPositive:
+      if (!(value > 0.0)) return fail("must be positive");
+      break;
+    case Bound::kNonNegative:
+      if (value < 0.0) return fail("must not be negative");
+      break;
+    case Bound::kOpenRange:
+      if (!(value > lo_ && value < hi_)) {
+        return fail(fmt::format("must be between {} and {}{}, exclusive", lo_, hi_,
+                                unit_.empty() ? "" : " " + unit_));
+      }
+      break;
+    case Bound::kRangeFrom:
+      if (!(value >= lo_ && value < hi_)) {
+        return fail(fmt::format("must be at least {} and below {}{}", lo_, hi_,
+                                unit_.empty() ? "" : " " + unit_));
+      }
+      break;
+    case Bound::kFinite:
+      break;
+  }
+  const double magnitude = std::abs(value);
+  if (bound_ != Bound::kOpenRange && magnitude != 0.0 &&
+      (magnitude < kSmallest || magnitude > kLargest)) {
+    return fail(bound_ == Bound::kPositive ? "must be between 1e-60 and 1e60"
+                                           : "must be 0 or between 1e-60 and 1e60 in magnitude");
+  }
+  return "";
+}
+
+std::string InputRule::broken(const InputValue& value) const {
+  const auto each = [this](const auto& v) -> std::string {
+    for (Eigen::Index i = 0; i < v.size(); ++i) {
+      if (std::string why = broken(v(i), fmt::format("{:g}", v(i))); !why.empty()) return why;
+    }
+    return "";
+  };
+  if (const auto* x = std::get_if<double>(&value)) return broken(*x, fmt::format("{:g}", *x));
+  if (const auto* v = std::get_if<Eigen::Vector2d>(&value)) return each(*v);
+  if (const auto* v = std::get_if<Eigen::Vector3d>(&value)) {
+    if (std::string why = each(*v); !why.empty()) return why;
+    if (nonzero_ && v->isZero(0.0)) return "must not be the zero vector";
+    return "";
+  }
+  if (const auto* w = std::get_if<std::string>(&value)) {
+    if (kind_ == InputKind::kChoice &&
+        std::find(choices_.begin(), choices_.end(), *w) == choices_.end()) {
+      std::string list;
+      for (const auto& c : choices_) list += (list.empty() ? "" : ",") + c;
+      return *w + " not in {" + list + "}";
+    }
+    if (kind_ == InputKind::kVector && !takes_word(*w)) {
+      return "expects three numbers X,Y,Z" +
+             (words_.empty() ? std::string() : " or one of " + word_list());
+    }
+  }
+  return "";
+}
+
+Json to_json(const InputValue& value) {
+  if (const auto* x = std::get_if<double>(&value)) return *x;
+  if (const auto* v = std::get_if<Eigen::Vector2d>(&value)) return Json::array({(*v)(0), (*v)(1)});
+  if (const auto* v = std::get_if<Eigen::Vector3d>(&value)) {
+    return Json::array({(*v)(0), (*v)(1), (*v)(2)});
+  }
+  if (const auto* w = std::get_if<std::string>(&value)) return *w;
+  if (const auto* b = std::get_if<bool>(&value)) return *b;
+  return nullptr;
+}
+
+}  // namespace rigid::lab

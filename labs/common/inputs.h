@@ -1,0 +1,338 @@
+// A lab's inputs as data: every input's name, unit, symbol, help and rule in one
+// table, which the command line (command.h) turns into options and a live view
+// into widgets, and which compute() checks before it computes. The table binds
+// each rule to a field of the lab's `Inputs` aggregate, so a caller that sets the
+// aggregate directly (a test, the explorer) is held to the same rules as one
+// that types options.
+//
+//   InputTable<Inputs> t;
+//   t.number("--mass", &Inputs::mass, "mass m of the disk").unit("kg").positive().symbol("m");
+//   t.number("--spin", &Inputs::spin, "spin S").lab_default("--spin-rpm");  // std::optional
+//
+// A field that is a std::optional is an input "used only when given": its
+// default is the lab's choice (lab_default says which), and it is recorded
+// among the inputs only when it has a value.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace rigid::lab {
+
+using Json = nlohmann::ordered_json;
+
+/// Bad input: names the input (by its option, "--mass") and the rule it breaks.
+/// An empty `input` blames no input in particular (a result that overflows for the
+/// inputs given); the command line then names the first input given.
+struct InputError : std::runtime_error {
+  InputError(const std::string& input, const std::string& rule)
+      : std::runtime_error(input.empty() ? rule : input + ": " + rule), input(input), rule(rule) {}
+  std::string input, rule;
+};
+
+/// Runs `compute`; an std::invalid_argument from core (a physics rule broken by
+/// the inputs) becomes an InputError naming `input`.
+template <class Compute>
+auto for_input(const std::string& input, Compute&& compute) -> decltype(compute()) {
+  try {
+    return compute();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(input, e.what());
+  }
+}
+
+/// A name as a JSON key: "--tilt-deg" is "tilt_deg", "bulirsch-stoer" is "bulirsch_stoer".
+std::string json_key(const std::string& name);
+
+/// The kinds of input a lab takes.
+enum class InputKind {
+  kNumber,  ///< one number (an angle is a number whose unit is "deg")
+  kPair,    ///< two numbers A,B
+  kVector,  ///< three numbers X,Y,Z, or one of `words`
+  kChoice,  ///< one word of `choices`
+  kFlag,    ///< a switch
+};
+
+/// An input's value: absent (an optional input not given), a number, two, three,
+/// a word (a choice, or a vector's word) or a switch.
+using InputValue =
+    std::variant<std::monostate, double, Eigen::Vector2d, Eigen::Vector3d, std::string, bool>;
+
+/// One input's rule and description: what --help, the table's inputs line, a
+/// figure's title and a live view's widget show, and what a value must satisfy.
+class InputRule {
+ public:
+  enum class Bound { kFinite, kPositive, kNonNegative, kOpenRange, kRangeFrom };
+
+  InputRule(InputKind kind, std::string flag, std::string help);
+
+  /// The SI unit shown in --help, the inputs and figure titles ("deg" for an angle).
+  InputRule& unit(const std::string& unit);
+  /// Values must be > 0.
+  InputRule& positive();
+  /// Values must be >= 0.
+  InputRule& non_negative();
+  /// Values must lie strictly between lo and hi.
+  InputRule& open_range(double lo, double hi);
+  /// Values must satisfy lo <= value < hi.
+  InputRule& range_from(double lo, double hi);
+  /// A vector must not be (0, 0, 0).
+  InputRule& nonzero();
+  /// The symbol (text markup) that names this input in figure titles, e.g. "\\theta".
+  InputRule& symbol(const std::string& markup);
+  /// How to compute (method, tolerance, step, end time), not what is computed:
+  /// setting it keeps "the inputs are the textbook's" true.
+  InputRule& numerical();
+  /// The default is the lab's choice from the other inputs (`what` says how, in --help).
+  InputRule& lab_default(const std::string& what);
+  /// A vector also takes one of `names` instead of its numbers (`meaning` goes to --help).
+  InputRule& words(const std::vector<std::string>& names, const std::string& meaning);
+  /// This input and `other` (an option) are alternatives: giving both breaks `rule`.
+  InputRule& excludes(const std::string& other, const std::string& rule);
+  /// This input means something only with `other` (an option) given; else `rule` is broken.
+  InputRule& requires_input(const std::string& other, const std::string& rule);
+
+  InputKind kind() const { return kind_; }
+  const std::string& flag() const { return flag_; }  ///< "--tilt-deg"
+  const std::string& key() const { return key_; }    ///< "tilt_deg", the JSON key
+  /// The help text as --help shows it: help, [unit], (default: ...).
+  std::string description() const;
+  const std::string& help() const { return help_; }
+  const std::string& unit_text() const { return unit_; }
+  const std::string& symbol_text() const { return symbol_; }
+  const std::string& lab_default_text() const { return lab_default_; }
+  bool physical() const { return physical_; }
+  bool is_nonzero() const { return nonzero_; }
+  Bound bound() const { return bound_; }
+  double lo() const { return lo_; }
+  double hi() const { return hi_; }
+  const std::vector<std::string>& choices() const { return choices_; }
+  const std::vector<std::string>& word_names() const { return words_; }
+  /// "a|b|c"
+  std::string word_list() const;
+  bool takes_word(const std::string& text) const;
+  struct Pairing {
+    std::string other, rule;
+  };
+  const std::vector<Pairing>& exclusions() const { return excludes_; }
+  const std::vector<Pairing>& requirements() const { return requires_; }
+
+  /// The rule a number (one component, as `text` was given) breaks, "" if none.
+  /// Every number is finite, and nonzero ones lie between 1e-60 and 1e60 in
+  /// magnitude: every result is a product of at most five inputs, which then
+  /// neither overflows nor underflows a double.
+  std::string broken(double value, const std::string& text) const;
+  /// The rule a whole value breaks (each component, a vector's nonzero rule, a
+  /// choice's words), "" if none.
+  std::string broken(const InputValue& value) const;
+
+  /// For choices: the words it takes.
+  InputRule& choices(const std::vector<std::string>& names);
+  /// How --help names a pair's two numbers, e.g. "I,IS" (default "A,B").
+  InputRule& value_name(const std::string& name) {
+    value_name_ = name;
+    return *this;
+  }
+  const std::string& value_name() const { return value_name_; }
+
+ private:
+  InputKind kind_;
+  std::string flag_, key_, help_, unit_, symbol_, lab_default_, value_name_ = "A,B";
+  bool physical_ = true, nonzero_ = false;
+  Bound bound_ = Bound::kFinite;
+  double lo_ = -1, hi_ = -1;
+  std::vector<std::string> choices_, words_;
+  std::vector<Pairing> excludes_, requires_;
+};
+
+/// An input value as JSON: a number, an array, a word or a switch (null if absent).
+Json to_json(const InputValue& value);
+
+/// One input of a lab's Inputs: its rule and how to read and write it.
+template <class In>
+struct InputField {
+  InputRule rule;
+  std::function<InputValue(const In&)> get;
+  /// Sets the field; an absent value (std::monostate) resets an optional one.
+  std::function<void(In&, const InputValue&)> set;
+};
+
+/// The table of a lab's inputs, in the order --help and the inputs line list them.
+template <class In>
+class InputTable {
+ public:
+  /// A number, or an optional one (used only when given).
+  template <class Field>
+  InputRule& number(const std::string& flag, Field field, const std::string& help) {
+    return add<double>(InputKind::kNumber, flag, field, help);
+  }
+  /// An angle in degrees: a number with the unit "deg".
+  template <class Field>
+  InputRule& angle_deg(const std::string& flag, Field field, const std::string& help) {
+    return number(flag, field, help).unit("deg");
+  }
+  /// Two numbers A,B.
+  template <class Field>
+  InputRule& pair(const std::string& flag, Field field, const std::string& help) {
+    return add<Eigen::Vector2d>(InputKind::kPair, flag, field, help);
+  }
+  /// Three numbers X,Y,Z.
+  template <class Field>
+  InputRule& vector(const std::string& flag, Field field, const std::string& help) {
+    return add<Eigen::Vector3d>(InputKind::kVector, flag, field, help);
+  }
+  /// Three numbers X,Y,Z, or one word (stored in `word`, "" when numbers were given).
+  template <class Field, class WordField>
+  InputRule& vector_or_word(const std::string& flag, Field field, WordField word,
+                            const std::string& help) {
+    InputRule& rule = vector(flag, field, help);
+    InputField<In>& f = fields_.back();
+    auto vec = f.get;
+    auto set_vec = f.set;
+    f.get = [vec, word](const In& in) -> InputValue {
+      const std::string& w = access(const_cast<In&>(in), word);
+      return w.empty() ? vec(in) : InputValue(w);
+    };
+    f.set = [set_vec, word](In& in, const InputValue& v) {
+      if (const auto* w = std::get_if<std::string>(&v)) {
+        access(in, word) = *w;
+      } else {
+        access(in, word).clear();
+        set_vec(in, v);
+      }
+    };
+    return rule;
+  }
+  /// One word of `choices`.
+  template <class Field>
+  InputRule& choice(const std::string& flag, Field field, const std::vector<std::string>& names,
+                    const std::string& help) {
+    return add<std::string>(InputKind::kChoice, flag, field, help).choices(names);
+  }
+  /// A switch.
+  template <class Field>
+  InputRule& flag(const std::string& flag, Field field, const std::string& help) {
+    return add<bool>(InputKind::kFlag, flag, field, help);
+  }
+  /// The inputs of a part of In (e.g. its integration settings), from that part's own table.
+  template <class Part, class Field>
+  void include(const InputTable<Part>& part, Field field) {
+    for (const InputField<Part>& p : part.fields()) {
+      fields_.push_back({p.rule,
+                         [get = p.get, field](const In& in) {
+                           return get(access(const_cast<In&>(in), field));
+                         },
+                         [set = p.set, field](In& in, const InputValue& v) {
+                           set(access(in, field), v);
+                         }});
+    }
+  }
+
+  const std::vector<InputField<In>>& fields() const { return fields_; }
+  /// The field of `flag` (nullptr if none).
+  const InputField<In>* find(const std::string& flag) const {
+    for (const auto& f : fields_) {
+      if (f.rule.flag() == flag) return &f;
+    }
+    return nullptr;
+  }
+
+ private:
+  template <class Field>
+  static decltype(auto) access(In& in, Field field) {
+    if constexpr (std::is_member_object_pointer_v<Field>) {
+      return (in.*field);
+    } else {
+      return field(in);
+    }
+  }
+  template <class T, class Field>
+  InputRule& add(InputKind kind, const std::string& flag, Field field, const std::string& help) {
+    using Stored = std::decay_t<decltype(access(std::declval<In&>(), field))>;
+    InputField<In> f{InputRule(kind, flag, help), {}, {}};
+    f.get = [field](const In& in) -> InputValue {
+      const Stored& value = access(const_cast<In&>(in), field);
+      if constexpr (std::is_same_v<Stored, std::optional<T>>) {
+        return value ? InputValue(*value) : InputValue();
+      } else {
+        return InputValue(value);
+      }
+    };
+    f.set = [field](In& in, const InputValue& v) {
+      Stored& value = access(in, field);
+      if constexpr (std::is_same_v<Stored, std::optional<T>>) {
+        if (std::holds_alternative<std::monostate>(v)) {
+          value.reset();
+        } else {
+          value = std::get<T>(v);
+        }
+      } else {
+        value = std::get<T>(v);
+      }
+    };
+    fields_.push_back(std::move(f));
+    if constexpr (std::is_same_v<Stored, std::optional<T>>) {
+      // an optional field is the lab's default until given; lab_default() says how
+      fields_.back().rule.lab_default("the lab's");
+    }
+    return fields_.back().rule;
+  }
+
+  std::vector<InputField<In>> fields_;
+};
+
+/// The first rule `in` breaks, thrown as an InputError naming its input: each
+/// value's own rule, and two optional alternatives both given.
+template <class In>
+void check_inputs(const InputTable<In>& table, const In& in) {
+  for (const InputField<In>& f : table.fields()) {
+    const InputValue value = f.get(in);
+    if (const std::string why = f.rule.broken(value); !why.empty()) {
+      throw InputError(f.rule.flag(), why);
+    }
+  }
+  for (const InputField<In>& f : table.fields()) {
+    if (std::holds_alternative<std::monostate>(f.get(in)) || f.rule.lab_default_text().empty()) {
+      continue;
+    }
+    for (const InputRule::Pairing& p : f.rule.exclusions()) {
+      const InputField<In>* other = table.find(p.other);
+      if (other != nullptr && !other->rule.lab_default_text().empty() &&
+          !std::holds_alternative<std::monostate>(other->get(in))) {
+        throw InputError(f.rule.flag(), p.rule);
+      }
+    }
+  }
+}
+
+/// The inputs a run records (JSON "inputs", the table's inputs line): every input
+/// in the table's order but the optional ones not given.
+template <class In>
+Json record_inputs(const InputTable<In>& table, const In& in) {
+  Json inputs = Json::object();
+  for (const InputField<In>& f : table.fields()) {
+    const InputValue value = f.get(in);
+    if (!std::holds_alternative<std::monostate>(value)) inputs[f.rule.key()] = to_json(value);
+  }
+  return inputs;
+}
+
+/// True when every physical input is the textbook's (the default's): the text's
+/// printed values then stand beside the results.
+template <class In>
+bool textbook_inputs(const InputTable<In>& table, const In& in) {
+  const In defaults{};
+  for (const InputField<In>& f : table.fields()) {
+    if (f.rule.physical() && !(f.get(in) == f.get(defaults))) return false;
+  }
+  return true;
+}
+
+}  // namespace rigid::lab

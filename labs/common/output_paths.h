@@ -1,0 +1,22 @@
+// Checks of the paths a lab will write, made before any work: a bad path is an
+// InputError naming the option, never a failure after the results are computed.
+#pragma once
+
+#include <string>
+
+namespace rigid::lab {
+
+/// True if a file can be created in directory `dir`: tried (a probe file made with
+/// O_EXCL and removed), since permission bits do not tell (root may write anywhere by
+/// them, yet not into /proc or a read-only mount).
+bool can_create_in(const std::string& dir);
+
+/// The directory `dir` (--figures) exists and can be written, or can be created.
+void check_output_dir(const std::string& option, const std::string& dir);
+/// `path` (--csv) can be written as a regular file by rename.
+void check_output_file(const std::string& option, const std::string& path);
+/// `path` (--animate) is not something other than a regular file, and its directory
+/// can be written.
+void check_animation_file(const std::string& option, const std::string& path);
+
+}  // namespace rigid::lab

@@ -1,0 +1,29 @@
+// A lab as one program: its name, its inputs' table, compute(), figures() and, if
+// it moves, its animation. The command line (command.h), the tests and a live
+// view all take a lab by this one description, as Box2D's samples register
+// themselves with their host.
+#pragma once
+
+#include <string>
+
+#include "common/figures.h"
+#include "common/inputs.h"
+#include "common/report.h"
+
+namespace rigid::lab {
+
+/// A lab, as the command line, the tests and a live view call it.
+template <class In, class Rep>
+struct LabProgram {
+  std::string name;   ///< the executable and JSON "lab"
+  std::string title;  ///< heads the table and --help
+  const InputTable<In>& inputs;
+  Rep (*compute)(const In&) = nullptr;
+  void (*figures)(const Rep&, FigureSink&) = nullptr;
+  /// The motion (nullptr for a lab without one); `frame_times` are the times the
+  /// animation will ask for, at which an integrated motion is best sampled.
+  Animation (*animation)(const Rep&, const FrameTimes& frame_times) = nullptr;
+  bool csv = false;  ///< the lab writes a time series with --csv
+};
+
+}  // namespace rigid::lab

@@ -1,0 +1,128 @@
+#include "common/writers.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "rigid/format.h"
+
+namespace rigid::lab {
+namespace fs = std::filesystem;
+
+namespace {
+
+// A JSON input as the table shows it.
+std::string text_of(const Json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";
+  if (value.is_number()) return format_number(value.get<double>(), 6);
+  const auto part = [&](int i) { return format_number(value[i].get<double>(), 5); };
+  if (value.is_array() && value.size() == 3 && value[0].is_number()) {
+    return fmt::format("({}, {}, {})", part(0), part(1), part(2));
+  }
+  if (value.is_array() && value.size() == 2 && value[0].is_number()) {
+    return fmt::format("({}, {})", part(0), part(1));
+  }
+  return value.dump();
+}
+
+// The widest value that sets the value column's width; longer ones (sentences) overflow it.
+constexpr std::size_t kValueColumnMax = 40;
+
+}  // namespace
+
+void write_table(std::ostream& out, const Report& report, const RunOutputs& outputs) {
+  out << report.lab() << " - " << report.title() << "\n";
+  std::string inputs;
+  for (const auto& [key, value] : report.inputs().items()) {
+    inputs += (inputs.empty() ? "" : ", ") + key + " = " + text_of(value);
+  }
+  out << "inputs: " << inputs << "\n";
+  size_t label_width = 8, value_width = 5, unit_width = 4;
+  bool any_textbook = false;
+  for (const auto& row : report.rows()) {
+    if (row.heading) continue;
+    label_width = std::max(label_width, row.label.size());
+    // A sentence (the motion in words) runs past the column instead of widening it.
+    if (row.value.size() <= kValueColumnMax) value_width = std::max(value_width, row.value.size());
+    unit_width = std::max(unit_width, row.unit.size());
+    any_textbook = any_textbook || !row.textbook.empty();
+  }
+  out << "\n"
+      << fmt::format("{:<{}}  {:<{}}  {:<{}}{}", "quantity", label_width, "value", value_width,
+                     "unit", unit_width, any_textbook ? "  textbook" : "")
+      << "\n";
+  for (const auto& row : report.rows()) {
+    if (row.heading) {
+      out << "\n[" << row.label << "]\n";
+      continue;
+    }
+    std::string line = fmt::format("{:<{}}  {:<{}}  {:<{}}", row.label, label_width, row.value,
+                                   value_width, row.unit, unit_width);
+    if (!row.textbook.empty()) line += "  " + row.textbook;
+    if (!row.remark.empty()) line += "  " + row.remark;
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out << line << "\n";
+  }
+  if (!report.notes().empty()) {
+    out << "\nnotes:\n";
+    for (const auto& note : report.notes()) out << "  - " << note << "\n";
+  }
+  if (!outputs.animation.is_null()) {
+    out << "\nanimation: " << outputs.animation_path << "  "
+        << outputs.animation["caption"].get<std::string>() << "\n";
+  }
+  if (!outputs.figures.empty()) {
+    out << "\nfigures in " << outputs.figures_dir << ":\n";
+    for (const auto& figure : outputs.figures) {
+      out << "  " << figure << "  " << outputs.captions[figure].get<std::string>() << "\n";
+    }
+  }
+}
+
+void write_json(std::ostream& out, const Report& report, const RunOutputs& outputs,
+                const std::string& version) {
+  Json json;
+  json["lab"] = report.lab();
+  json["version"] = version;
+  json["command"] = outputs.command;
+  json["inputs"] = report.inputs();
+  json["results"] = report.results();
+  json["units"] = report.units();
+  json["figures"] = outputs.figures;
+  json["captions"] = outputs.captions;
+  if (!outputs.animation.is_null()) json["animation"] = outputs.animation;
+  if (!outputs.timing.is_null()) json["timing"] = outputs.timing;
+  json["textbook"] = report.textbook_printed();
+  json["textbook_values"] = report.textbook_values();
+  // Every file the run wrote, by its absolute path.
+  Json files = Json::array();
+  std::error_code ec;
+  for (const std::string& figure : outputs.figures) {
+    files.push_back(
+        fs::absolute(fs::path(outputs.figures_dir) / figure, ec).lexically_normal().string());
+  }
+  if (!outputs.csv_path.empty() && !report.time_series().columns.empty()) {
+    files.push_back(fs::absolute(outputs.csv_path, ec).lexically_normal().string());
+  }
+  if (!outputs.animation.is_null()) files.push_back(outputs.animation["path"]);
+  json["outputs"] = files;
+  json["notes"] = report.notes();
+  out << json.dump(2) << "\n";
+}
+
+std::string csv_text(const TimeSeries& series) {
+  std::string text;
+  for (size_t i = 0; i < series.columns.size(); ++i) {
+    text += (i ? "," : "") + series.columns[i];
+  }
+  text += "\n";
+  for (const auto& row : series.rows) {
+    for (size_t i = 0; i < row.size(); ++i) text += fmt::format("{}{:.17g}", i ? "," : "", row[i]);
+    text += "\n";
+  }
+  return text;
+}
+
+}  // namespace rigid::lab

@@ -1,0 +1,148 @@
+#include "tire_balancing/tire_balancing.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "rigid/units.h"
+
+namespace rigid::lab::tire_balancing {
+
+const InputTable<Inputs>& input_table() {
+  static const InputTable<Inputs> table = [] {
+    InputTable<Inputs> t;
+    t.number("--mass", &Inputs::mass, "mass m of the disk").unit("kg").positive().symbol("m");
+    t.number("--radius", &Inputs::radius, "radius a of the disk").unit("m").positive().symbol("a");
+    t.number("--offset", &Inputs::offset, "distance b of each balancing mass from the disk")
+        .unit("m")
+        .positive()
+        .symbol("b");
+    t.angle_deg("--tilt-deg", &Inputs::tilt_deg,
+                "angle theta between axle and symmetry axis (0: straight)")
+        .range_from(0.0, 45.0)
+        .symbol("\\theta");
+    t.number("--omega", &Inputs::omega, "spin of the wheel about its axle")
+        .unit("rad/s")
+        .positive();
+    t.number("--road-speed-m-s", &Inputs::road_speed,
+             "road speed of the car, for the spin omega = speed / tyre radius (instead of "
+             "--omega)")
+        .unit("m/s")
+        .positive()
+        .lab_default("--omega's")
+        .excludes("--omega", "give --omega or --road-speed-m-s, not both");
+    t.number("--tyre-radius-m", &Inputs::tyre_radius,
+             "rolling radius of the tyre, with --road-speed-m-s (at least --radius)")
+        .unit("m")
+        .positive()
+        .requires_input("--road-speed-m-s", "sets the spin only with --road-speed-m-s");
+    return t;
+  }();
+  return table;
+}
+
+Report compute(const Inputs& in) {
+  Report report("tire_balancing",
+                "dynamic balancing of a wheel on a crooked axle (sections 2.2-2.3)");
+  report.start(input_table(), in);
+  CrookedWheel& wheel = report.wheel;
+  wheel.mass = in.mass;
+  wheel.radius = in.radius;
+  wheel.offset = in.offset;
+  wheel.tilt = deg_to_rad(in.tilt_deg);
+  // The spin from the road: a tyre of rolling radius R at speed v turns at v / R.
+  const double tyre_radius = in.tyre_radius;
+  if (in.road_speed) {
+    if (tyre_radius < wheel.radius) {
+      throw InputError("--tyre-radius-m", fmt::format("must be at least the disk's radius "
+                                                      "--radius = {:g} m (got {:g})",
+                                                      wheel.radius, tyre_radius));
+    }
+    report.omega = *in.road_speed / tyre_radius;
+    report.drop_input("omega");
+  } else {
+    report.omega = in.omega;
+    report.drop_input("tyre_radius_m");
+  }
+  const double omega = report.omega;
+
+  if (in.road_speed) {
+    report.section("the spin from the road");
+    report.result("omega_rad_s", "omega = road speed / tyre radius", omega, "rad/s");
+    report.result("road_speed_km_h", "  the road speed in km/h", 3.6 * *in.road_speed, "km/h");
+  }
+  report.section("2.2 before balancing: L is off the axle");
+  const Vec3 axle = axle_direction(wheel);
+  const Vec3 L0 = angular_momentum_at(wheel, 0.0, omega, 0.0);
+  report.result("angle_L_axle_deg", "angle between L and the axle",
+                rad_to_deg(angle_between(L0, axle)), "deg");
+  report.result("torque_unbalanced_n_m", "bearing torque |omega x I omega|",
+                bearing_torque(wheel, 0.0, omega).stableNorm(), "N m");
+
+  report.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
+  const double m0 = for_input("--tilt-deg", [&] { return balance_mass_exact(wheel); });
+  report.m0 = m0;
+  const double m0_small = balance_mass_small_angle(wheel);
+  report.result("balance_mass_kg", "m0, exact from tan 2 theta (eq. 60)", m0, "kg",
+                report.textbook("0.076 (76 g)"));
+  report.result("balance_mass_small_angle_kg", "m0, small angle theta = 8 b m0 / (a m) (eq. 61)",
+                m0_small, "kg", report.textbook("0.076 (76 g)"));
+  // Roundoff of the exact balance: the eigen-solver's axis to ~eps |I| / gap (the
+  // gap between the axle's moment and the others), the torque to ~eps omega^2 |I|;
+  // 64 eps bounds both.
+  const Mat3 I_balanced = wheel_body(wheel, m0).I_com;
+  const Vec3 moments = principal_axes(I_balanced).moments;
+  const double I_axle = moment_about_axis(I_balanced, axle);
+  double gap = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(moments(i) - I_axle) > 1e-9 * moments.maxCoeff()) {
+      gap = std::min(gap, std::abs(moments(i) - I_axle));
+    }
+  }
+  constexpr double kRoundoff = 64 * std::numeric_limits<double>::epsilon();
+  report.result_roundoff("residual_tilt_exact_deg", "principal axis to axle, exact m0",
+                         rad_to_deg(principal_axis_misalignment(wheel, m0)),
+                         rad_to_deg(kRoundoff * moments.maxCoeff() / gap), "deg");
+  report.result("residual_tilt_small_angle_deg", "principal axis to axle, small-angle m0",
+                rad_to_deg(principal_axis_misalignment(wheel, m0_small)), "deg");
+  report.result_roundoff("torque_balanced_n_m", "bearing torque after balancing",
+                         bearing_torque(wheel, m0, omega).stableNorm(),
+                         kRoundoff * omega * omega * moments.maxCoeff(), "N m");
+  // The old names (read "nm" as nanometres), kept one release (the schema says so).
+  report.alias("torque_unbalanced_nm", "torque_unbalanced_n_m");
+  report.alias("torque_balanced_nm", "torque_balanced_n_m");
+  if (report.textbook_inputs()) {
+    report.note(fmt::format(
+        "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "
+        "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
+        "b = {:g} cm, theta = {:g} deg",
+        1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset,
+        in.tilt_deg));
+  }
+
+  // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.
+  TimeSeries turn{{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"}, {}};
+  const int samples = 361;
+  const double period = 2.0 * kPi / omega;
+  for (int k = 0; k < samples; ++k) {
+    const double t = period * k / (samples - 1);
+    const Vec3 L = angular_momentum_at(wheel, 0.0, omega, t);
+    const Vec3 N = bearing_torque_at(wheel, 0.0, omega, t);
+    turn.rows.push_back({t, L(0), L(1), L(2), N(0), N(1), N(2)});
+  }
+  report.series(std::move(turn));
+  return report;
+}
+
+LabProgram<Inputs, Report> program() {
+  LabProgram<Inputs, Report> p{"tire_balancing",
+                               "dynamic balancing of a wheel on a crooked axle (sections 2.2-2.3)",
+                               input_table()};
+  p.compute = compute;
+  p.figures = figures;
+  p.csv = true;
+  return p;
+}
+
+}  // namespace rigid::lab::tire_balancing
