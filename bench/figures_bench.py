@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""rigidlab's side of the figure-speed benchmark (issues 3 and 11, "Speed").
+"""rigidlab's side of the figure-speed benchmark.
 
 Runs the labs as a user does and times them from outside and inside:
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""matplotlib peer for the figure-speed benchmark (issue 3, "Speed").
+"""matplotlib peer for the figure-speed benchmark.
 
 Draws the same figures as the labs (same data or data of the same size and
 shape, 1600x1200 pixels: figsize 16x12 inches at 100 dpi, similar elements:

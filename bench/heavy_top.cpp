@@ -1,4 +1,4 @@
-// bench_heavy_top: run time against error for the heavy symmetric top (issue 9),
+// bench_heavy_top: run time against error for the heavy symmetric top,
 // in one run, on two problems:
 //  - "top_text": section 8.1's top (a 2.00 kg disk of radius 5 cm, 4 cm above the
 //    tip, g = 9.8) at 500 rpm released from rest at 30 deg;
@@ -256,7 +256,7 @@ int main(int argc, char** argv) {
   const std::vector<TopProblem> all_problems = problems();
   const std::vector<Solver> all = solvers();
   const int rounds = quick ? 1 : 3;
-  rigid::lab::Progress progress(
+  rigid::support::Progress progress(
       "bench heavy_top", "parts",
       static_cast<int>(all_problems.size()) * (rounds * static_cast<int>(all.size()) + 1),
       bench::output().quiet);
@@ -361,7 +361,7 @@ int main(int argc, char** argv) {
   write_json(dir / "heavy_top_reference.json", ref);
   progress.finish(fmt::format("{} problems, {} solvers: {} entries in {}; wrote {}",
                               all_problems.size(), all.size(), entries.size(),
-                              rigid::lab::Progress::duration(progress.seconds()),
+                              rigid::support::Progress::duration(progress.seconds()),
                               (dir / "heavy_top.json").string()));
   return 0;
 }

@@ -1,5 +1,5 @@
 // What a bench program prints: a progress line on stderr while it works and one
-// final line (labs/common/progress.h: live on a terminal, the final line alone
+// final line (rigid/support/progress.h: live on a terminal, the final line alone
 // otherwise, nothing with --quiet), and with --verbose a line per measurement on
 // stdout. The numbers themselves go to the JSON, and from there to results.md.
 #pragma once
@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "common/progress.h"
+#include "rigid/support/progress.h"
 
 namespace bench {
 

@@ -1,5 +1,5 @@
-// The two free-body test problems of the work-precision benchmark (issue 4,
-// item 6) and how an integrated end state is scored against the exact one.
+// The two free-body test problems of the work-precision benchmark and how an
+// integrated end state is scored against the exact one.
 //
 //  - "hlw": Hairer, Lubich & Wanner, Geometric Numerical Integration, the free
 //    rigid body of section I.5.3 / VII.5: I = (2, 1, 2/3), body angular

@@ -1,5 +1,5 @@
 """A progress line on stderr for the bench's Python stages: the contract of
-labs/common/progress.h. On a terminal one line rewritten in place (what is done of
+support/include/rigid/support/progress.h. On a terminal one line rewritten in place (what is done of
 how much, the time left, what is under way), quiet for the first half second and at
 most ten times a second; finish() replaces it with the final line. When stderr is
 not a terminal only the final line is written, and with quiet nothing at all.

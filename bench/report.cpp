@@ -190,7 +190,7 @@ void issue12_levels(std::ostream& md, const std::string& problem,
   }
   targets.add(
       misses.empty(),
-      fmt::format("{} (issue 12): fastest rigidlab at most {:.2f}× the fastest peer at "
+      fmt::format("{}: fastest rigidlab at most {:.2f}× the fastest peer at "
                   "every level 1e-4..{:.1e} (worst ratio {:.2f}{}{})",
                   problem, kIssue12Ratio, floor, worst, misses.empty() ? "" : "; missed at ",
                   fmt::format("{}", fmt::join(misses, ", "))));
@@ -214,7 +214,7 @@ void controller_section(std::ostream& md, const Json& all) {
         static_cast<long long>(number(e, "rejected", 0));
   }
   if (curves.empty()) return;
-  md << "\n## Step-size control: PI against odeint's default (issue 12)\n\n"
+  md << "\n## Step-size control: PI against odeint's default\n\n"
         "The same Verner stepper and starting step, run directly on the free body's "
         "right-hand side to t_end at tolerances 1e-4, 1e-6, .., 1e-12: rigidlab's PI "
         "controller (Gustafsson; Hairer & Wanner II, IV.2: α = 0.7/k, β = 0.4/k, factor in "
@@ -374,7 +374,7 @@ bool is_verner(const SolverCurve& c) {
 }
 
 // Two panels on the same axes, each with every peer: rigidlab's other methods on the
-// left, Verner's pairs (issue 12) on the right; fifteen rigidlab curves in one panel
+// left, Verner's pairs on the right; fifteen rigidlab curves in one panel
 // would hide each other.
 void draw_work_precision(const std::string& problem, const std::string& title,
                          const std::vector<SolverCurve>& curves, const std::string& path) {
@@ -566,13 +566,13 @@ void other_groups(std::ostream& md, const Json& all) {
   }
 }
 
-// Figure speed (issues 3 and 11): rigidlab against matplotlib per figure with
+// Figure speed: rigidlab against matplotlib per figure with
 // where rigidlab's time went, the context, the import, each lab's whole figure
 // set, every lab's set side by side, and a run without figures against a build
 // without the renderer; the issues' targets.
 constexpr double kFigureSpeedup = 4.0;   // matplotlib / rigidlab, per figure
-constexpr double kSetBudget = 0.5;       // s, lamina_tensor + tire_balancing figure sets (issue 3)
-constexpr double kAllSetsBudget = 1.0;   // s, every lab's figure set side by side (issue 11)
+constexpr double kSetBudget = 0.5;       // s, lamina_tensor + tire_balancing figure sets
+constexpr double kAllSetsBudget = 1.0;   // s, every lab's figure set side by side
 constexpr double kNoFigureSlack = 1.05;  // renderer linked / not, --json run (timer noise)
 constexpr const char* kPhases[] = {"setup", "layout", "draw", "resolve", "encode"};
 
@@ -718,7 +718,7 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
   if (animation != nullptr) {
     const double s = number(*animation, "seconds"), video = number(*animation, "video_seconds");
     md << fmt::format(
-        "\n**An animation** (issue 15): `poinsot --animate FILE.mp4` with its defaults, {} frames "
+        "\n**An animation**: `poinsot --animate FILE.mp4` with its defaults, {} frames "
         "at {} and {:g} fps ({:g} s of video), process wall time, best of 2: **{:.2f} s** ({:.2f}× "
         "real time); matplotlib's FuncAnimation drawing the same scene each frame through its "
         "ffmpeg writer (H.264, the same preset and CRF): {}.\n",
@@ -737,24 +737,23 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
          << ". Encoding runs on a second thread: "
             "'encoder_wait' is the time drawing waited for it.\n";
     }
-    targets.add(
-        s <= video,
-        fmt::format("animation (issue 15): rendering and encoding {:g} s of 1280x720 30 fps "
-                    "video in at most {:g} s: {:.2f} s",
-                    video, video, s));
+    targets.add(s <= video,
+                fmt::format("animation: rendering and encoding {:g} s of 1280x720 30 fps "
+                            "video in at most {:g} s: {:.2f} s",
+                            video, video, s));
   }
 
   // the targets
   if (std::isfinite(worst))
     targets.add(misses.empty(),
-                fmt::format("figures (issues 3, 11): every figure at least {:.0f}× faster than "
+                fmt::format("figures: every figure at least {:.0f}× faster than "
                             "matplotlib, PNG encoding included (worst {:.2f}×{}{})",
                             kFigureSpeedup, worst, misses.empty() ? "" : "; below: ",
                             fmt::format("{}", fmt::join(misses, ", "))));
   if (set_wall.count("lamina_tensor") && set_wall.count("tire_balancing")) {
     const double both = set_wall["lamina_tensor"] + set_wall["tire_balancing"];
     targets.add(both < kSetBudget,
-                fmt::format("figures (issue 3): whole figure set of lamina_tensor + "
+                fmt::format("figures: whole figure set of lamina_tensor + "
                             "tire_balancing under {:.1f} s: {:.3f} s (process wall time, "
                             "{:.3f} s + {:.3f} s; figures alone {:.3f} s)",
                             kSetBudget, both, set_wall["lamina_tensor"], set_wall["tire_balancing"],
@@ -762,14 +761,14 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets) {
   }
   if (std::isfinite(side_by_side))
     targets.add(side_by_side < kAllSetsBudget,
-                fmt::format("figures (issue 11): every lab's whole figure set, side by side, "
+                fmt::format("figures: every lab's whole figure set, side by side, "
                             "under {:.1f} s: {:.3f} s ({})",
                             kAllSetsBudget, side_by_side, side_by_side_labs));
   for (const auto& [lab, s] : json_render) {
     if (!json_norender.count(lab)) continue;
     const double r = s / json_norender[lab];
     targets.add(r <= kNoFigureSlack,
-                fmt::format("figures (issue 3): {} --json with the renderer linked no slower "
+                fmt::format("figures: {} --json with the renderer linked no slower "
                             "than without ({} against {}, ratio {:.2f}; ≤ {:.2f} allowed for "
                             "timer noise)",
                             lab, ms(s), ms(json_norender[lab]), r, kNoFigureSlack));
@@ -861,7 +860,7 @@ int main(int argc, char** argv) {
   figures_section(md, all, targets);
   other_groups(md, all);
 
-  md << "\n## Targets (issues 4, 9 and 12: work-precision; issues 3 and 11: figures)\n\n";
+  md << "\n## Targets\n\n";
   for (const auto& line : targets.lines) md << line << "\n";
 
   const std::string path = out_dir + "/results.md";

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""SciPy peers for the heavy-top work-precision benchmark (issue 9).
+"""SciPy peers for the heavy-top work-precision benchmark.
 
 Integrates the same 7-dimensional system as bench_heavy_top (Euler's equations
 about the pivot with the gravity torque -mgl e3 x (R^T z), and the body-to-space

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""SciPy peers for the free-body work-precision benchmark (issue 4, item 6).
+"""SciPy peers for the free-body work-precision benchmark.
 
 Integrates the same 7-dimensional system as the C++ bench (Euler's equations
 for omega_body plus the body-to-space quaternion kinematics) with

@@ -1,5 +1,5 @@
-// bench_work_precision: run time against error for the torque-free rigid body
-// (issue 4, item 6), in one run:
+// bench_work_precision: run time against error for the torque-free rigid body,
+// in one run:
 //  - every rigidlab integrator through rigid::integrate_free_body, and the
 //    peers of peers.h, on the two problems of problems.h, scored at t_end
 //    against the exact solution rigid::FreeBodyExact;
@@ -365,7 +365,7 @@ Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double 
   return e;
 }
 
-// The PI controller against odeint's default one on the same stepper (issue 12).
+// The PI controller against odeint's default one on the same stepper.
 template <class Tableau>
 void controllers(const Problem& p, const rigid::FreeBodyState& exact, Json& out) {
   namespace odeint = boost::numeric::odeint;
@@ -474,7 +474,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   const std::vector<Solver> all_solvers = solvers();
   const std::vector<Problem> problems = bench::problems();
-  rigid::lab::Progress progress(
+  rigid::support::Progress progress(
       "bench work_precision", "parts",
       static_cast<int>(problems.size()) * units_per_problem(all_solvers.size(), cfg),
       bench::output().quiet);
@@ -541,7 +541,7 @@ int main(int argc, char** argv) {
   write_json(dir / "work_precision.json", entries);
   progress.finish(fmt::format("{} problems, {} solvers: {} entries in {}; wrote {}",
                               problems.size(), all_solvers.size(), entries.size(),
-                              rigid::lab::Progress::duration(progress.seconds()),
+                              rigid::support::Progress::duration(progress.seconds()),
                               (dir / "work_precision.json").string()));
   return 0;
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""A deterministic random-input driver for one lab (issue 10, item 6).
+"""A deterministic random-input driver for one lab.
 
 Reads the lab's options from its --help (so a new lab is covered without new
 code), then runs it many times with random values for one to three of them:

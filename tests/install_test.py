@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The installed tree works on its own (issue 14, item 6): `cmake --install` into a
+"""The installed tree works on its own: `cmake --install` into a
 staging prefix, then from there, with nothing of the build tree on PATH:
 `rigidlab --version`, `rigidlab list`, a lab run through rigidlab and directly,
 and `rigidlab figures --out DIR --figure-size 1920x1080`, every figure of every

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The Debian package (issue 11, item 3): `cpack -G DEB` builds
+"""The Debian package: `cpack -G DEB` builds
 rigidlab_VERSION_amd64.deb from this build; its control file names the run-time
 dependencies (the linked libraries found by dpkg-shlibdeps, and OSMesa and the
 font, which are opened at run time and so must be named by hand), it holds every

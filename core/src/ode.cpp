@@ -128,7 +128,7 @@ void TotalStepCap::operator()() {
       std::ostringstream os;
       os << method_name(method_) << " would take more than " << format_number(max_seconds_)
          << " s to reach t = " << format_number(t_end_) << " s (" << steps_
-         << " steps so far); shorten --t-end, or loosen the tolerance or lengthen the step";
+         << " steps so far); shorten the run, or loosen the tolerance or lengthen the step";
       throw std::runtime_error(os.str());
     }
   }

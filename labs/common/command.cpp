@@ -21,7 +21,7 @@
 #include "rigid/render/atomic_file.h"
 
 #if RIGID_HAVE_RENDER
-#include "common/progress.h"
+#include "rigid/support/progress.h"
 #include "rigid/render/context.h"
 #include "rigid/render/video.h"
 #endif
@@ -621,7 +621,7 @@ void Command::animate(const Computed& computed) {
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
                                {w, h, animation_fps_});
-    Progress progress(name_, "animation frames", frames, quiet_);
+    support::Progress progress(name_, "animation frames", frames, quiet_);
     // --timing: where the frames' time went (the GL phases waited for, as for figures)
     render::FigureTiming phases;
     double build = 0.0, handover = 0.0;

@@ -1,7 +1,7 @@
 // Internal: the OSMesa backend (Mesa's software off-screen library, llvmpipe).
 // libOSMesa is opened with dlopen on the first figure, not linked: it pulls in
 // LLVM, whose loading and relocation would otherwise cost every run of a lab,
-// with or without --figures, some 15 ms before main().
+// with or without --figures, before main().
 #include <GL/osmesa.h>
 #include <dlfcn.h>
 

@@ -18,16 +18,10 @@ namespace rigid::render {
 
 namespace {
 
-// Compression chosen by measurement: three of the labs' 1600x1200 figures,
-// encoded in memory by libpng 1.6 and zlib 1.2.13, Release, this 2-core
-// machine (best of 5; ms / kB):
-//                          tire scene    poinsot errors   top paths
-//   zlib 2, UP (until now)  13.0 / 168   12.4 / 160       16.1 / 290
-//   zlib 1, UP              12.7 / 176   12.2 / 162       15.6 / 302
-//   zlib 1, RLE, UP         12.7 / 221   12.0 / 213       14.8 / 311
-//   zlib 1, RLE, NONE       15.5 / 602   10.3 / 251       11.4 / 338
-//   zlib 1, NONE             9.8 / 157    9.8 / 164       13.1 / 319   <- chosen
-// (libpng's default, zlib 6 with every filter, took 4-5 times as long.) The
+// Compression chosen by measurement on the labs' figures (zlib levels 1 and 2,
+// with and without PNG's row filters, and RLE): zlib 1 without filters was the
+// fastest at about the same size, and libpng's default (zlib 6, every filter)
+// several times slower; bench/ reports the encode time of every figure. The
 // figures are mostly flat colour: deflate's matches find the repeats that a
 // filter would, and skipping the filter saves a pass over every row.
 constexpr int kZlibLevel = 1;

@@ -2,10 +2,10 @@
 // multisampled texture resolved by a shader of our own (averaging the samples
 // of each pixel); without, a 2×-size FBO filtered down by glBlitFramebuffer
 // (supersampling). The shader, not glBlitFramebuffer, resolves the samples
-// because llvmpipe builds its blit shaders afresh in every process (about 30
-// ms before the first figure, measured), while ours is found in Mesa's shader
-// cache like the other programs, and runs faster too (11-12 ms against 13-18
-// ms at 1600x1200, 4 samples, this 2-core machine). Reused between figures of the same size: the
+// because llvmpipe builds its blit shaders afresh in every process, before the
+// first figure, while ours is found in Mesa's shader cache like the other
+// programs (bench/'s figure timings show the difference). Reused between
+// figures of the same size: the
 // colour buffer is shared by a colour-only FBO (2D plots) and a colour+depth
 // FBO (3D scenes) whose depth buffer is made only when a scene first needs it,
 // so a plot after a scene reallocates nothing and a 2D-only process never
@@ -31,7 +31,7 @@ class Target {
   /// Resolves the samples and reads the image back (rows top to bottom).
   Image finish();
   /// Takes back a finished image's pixels for the next finish() to fill: a 1600x1200
-  /// image is 1400 fresh pages (1-4 ms of page faults measured) when allocated anew.
+  /// image is 1400 fresh pages, each faulted in on first touch, when allocated anew.
   void recycle(std::vector<std::uint8_t>&& pixels);
   /// Physical pixels per logical pixel (2 with supersampling, else 1).
   int scale() const { return scale_; }

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Long-time reference for the exact free body (issue 13, item 4): omega and the
+"""Long-time reference for the exact free body: omega and the
 attitude at 10, 100 and 1000 polhode periods, at 30 digits, by a route that
 shares nothing with the C++ closed form.
 

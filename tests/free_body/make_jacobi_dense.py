@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Dense reference for sn, cn, dn (issue 13, item 4): mpmath.ellipfun at 80 digits
+"""Dense reference for sn, cn, dn: mpmath.ellipfun at 80 digits
 over k'^2 = 1, 10^-0.5, ..., 1e-30 (and 0) and, for each, arguments across the
 first period 4K (including the quarter points), negative ones, and far out to
 1e3 periods, where the argument itself carries its own rounding. The arguments

@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-namespace rigid::lab {
+namespace rigid::support {
 
 class Progress {
  public:
@@ -85,4 +85,4 @@ class Progress {
   Clock::time_point start_;
 };
 
-}  // namespace rigid::lab
+}  // namespace rigid::support
