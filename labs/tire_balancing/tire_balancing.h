@@ -7,9 +7,9 @@
 
 #include <optional>
 
-#include "common/program.h"
 #include "common/figures.h"
 #include "common/inputs.h"
+#include "common/program.h"
 #include "common/report.h"
 #include "rigid/balancing.h"
 
@@ -25,7 +25,7 @@ struct Inputs {
   /// rad/s; 90 rad/s is a wheel of 0.31 m rolling radius at about 100 km/h.
   double omega = 90.0;
   std::optional<double> road_speed;  ///< m/s: if set, omega = road_speed / tyre_radius
-  double tyre_radius = 0.31;  ///< m, the tyre's rolling radius, used with road_speed
+  double tyre_radius = 0.31;         ///< m, the tyre's rolling radius, used with road_speed
 };
 
 /// What the lab reports, and what its figures draw.

@@ -24,6 +24,8 @@ class NamesInput : public Catch::MatcherBase<rigid::lab::InputError> {
  private:
   std::string input_;
 };
-inline NamesInput names_input(const std::string& input) { return NamesInput(input); }
+inline NamesInput names_input(const std::string& input) {
+  return NamesInput(input);
+}
 
 }  // namespace rigid::test

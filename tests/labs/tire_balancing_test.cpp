@@ -48,8 +48,8 @@ TEST_CASE("tire_balancing: every row's torque is dL/dt, normal to L, of the repo
     // with 360 rows a turn: (2 pi / 360)^2 / 6 = 5e-5 of |N|)
     const auto& a = rows[k - 1];
     const auto& b = rows[k + 1];
-    const Eigen::Vector3d dL = (Eigen::Vector3d(b[1], b[2], b[3]) - Eigen::Vector3d(a[1], a[2], a[3])) /
-                               (b[0] - a[0]);
+    const Eigen::Vector3d dL =
+        (Eigen::Vector3d(b[1], b[2], b[3]) - Eigen::Vector3d(a[1], a[2], a[3])) / (b[0] - a[0]);
     CHECK((dL - N).norm() <= 1e-4 * torque);
   }
 }
@@ -111,8 +111,7 @@ TEST_CASE("tire_balancing: a straight axle is a balanced wheel, and the spin com
 TEST_CASE("tire_balancing: a broken rule is an InputError naming the input") {
   Inputs in;
   in.tilt_deg = 45;
-  CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError,
-                       rigid::test::names_input("--tilt-deg"));
+  CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError, rigid::test::names_input("--tilt-deg"));
   in = Inputs{};
   in.tyre_radius = 0.1, in.road_speed = 10;  // smaller than the disk
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError,
