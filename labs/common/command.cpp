@@ -21,9 +21,9 @@
 #include "rigid/render/atomic_file.h"
 
 #if RIGID_HAVE_RENDER
-#include "rigid/support/progress.h"
 #include "rigid/render/context.h"
 #include "rigid/render/video.h"
+#include "rigid/support/progress.h"
 #endif
 
 namespace rigid::lab {
@@ -77,12 +77,15 @@ constexpr int kFitSamples = 16;
 int frame_count(double duration, double fps) {
   return std::max(1, static_cast<int>(std::lround(duration * fps)));
 }
-double frame_time(double motion_seconds, int k, int frames) { return motion_seconds * k / frames; }
+double frame_time(double motion_seconds, int k, int frames) {
+  return motion_seconds * k / frames;
+}
 
 // One lab input as a CLI11 option: where CLI11 stores what was typed.
 struct OptionSlot {
   const BoundInput* input = nullptr;
   CLI::Option* cli = nullptr;
+  CLI::Option* old = nullptr;  // the input's old name, still taken for one release
   double number = 0.0;
   std::string word;
   bool on = false;
@@ -91,8 +94,8 @@ struct OptionSlot {
 
 class Command {
  public:
-  Command(const std::string& name, const std::string& title,
-          const std::vector<BoundInput>& inputs, bool csv, bool animation);
+  Command(const std::string& name, const std::string& title, const std::vector<BoundInput>& inputs,
+          bool csv, bool animation);
   int run(int argc, char** argv, const std::function<Computed()>& compute);
 
  private:
@@ -104,7 +107,10 @@ class Command {
   void check_output_paths() const;
   void check_animation_path() const;
   std::string blamed_option() const;
-  bool given(const std::string& flag) const { return app_.count(flag) > 0; }
+  bool given(const std::string& flag) const;
+  static bool given(const OptionSlot& slot) {
+    return slot.cli->count() > 0 || (slot.old != nullptr && slot.old->count() > 0);
+  }
   void draw_figures(const Computed& computed);
   void animate(const Computed& computed);
   std::vector<double> animation_times(double motion_seconds) const;
@@ -120,6 +126,7 @@ class Command {
   double animation_fps_ = 30.0, animation_duration_ = 10.0;
   int animation_width_ = 1280, animation_height_ = 720;
   RunOutputs outputs_;
+  std::vector<std::string> warnings_;  // the command's own (an old option name used)
   Json figure_seconds_ = Json::object(), figure_phases_ = Json::object();
 };
 
@@ -142,8 +149,7 @@ Command::Command(const std::string& name, const std::string& title,
       ->capture_default_str()
       ->check(CLI::Validator(
           [this](std::string& text) -> std::string {
-            return parse_size(text, 800, 600, 8192, 8192, false, figure_width_,
-                              figure_height_);
+            return parse_size(text, 800, 600, 8192, 8192, false, figure_width_, figure_height_);
           },
           ""));
   app_.add_option("--figure-prefix", figure_prefix_,
@@ -284,56 +290,90 @@ void Command::bind(const BoundInput& input) {
   }
   if (lab_default) slot.cli->default_str("");
   slot.cli->description(rule.description());
+  if (!rule.old_flag().empty()) {
+    // the same storage under the old name, hidden from --help
+    if (rule.kind() == InputKind::kNumber) {
+      slot.old = app_.add_option(rule.old_flag(), slot.number);
+    } else if (rule.kind() == InputKind::kPair || rule.kind() == InputKind::kVector) {
+      slot.old = app_.add_option(rule.old_flag(), slot.texts)->delimiter(',');
+    } else if (rule.kind() == InputKind::kChoice) {
+      slot.old = app_.add_option(rule.old_flag(), slot.word);
+    } else {
+      slot.old = app_.add_flag(rule.old_flag(), slot.on);
+    }
+    slot.old->group("");
+  }
+}
+
+bool Command::given(const std::string& flag) const {
+  for (const OptionSlot& slot : slots_) {
+    if (slot.input->rule->flag() == flag) return given(slot);
+  }
+  return app_.count(flag) > 0;
 }
 
 // The values given, into the lab's inputs.
 void Command::store() {
   for (OptionSlot& slot : slots_) {
-    if (slot.cli->count() == 0) continue;
+    if (!given(slot)) continue;
     const InputRule& rule = *slot.input->rule;
+    InputValue value;
     switch (rule.kind()) {
       case InputKind::kNumber:
-        slot.input->set(slot.number);
+        value = slot.number;
         break;
       case InputKind::kPair:
-        slot.input->set(Eigen::Vector2d(component(slot.texts[0]), component(slot.texts[1])));
+        if (slot.texts.size() != 2) throw InputError(rule.flag(), "must be two numbers");
+        value = Eigen::Vector2d(component(slot.texts[0]), component(slot.texts[1]));
         break;
       case InputKind::kVector: {
         const auto& texts = slot.texts;
         if (texts.size() == 1 && rule.takes_word(texts[0])) {
-          slot.input->set(texts[0]);
+          value = texts[0];
           break;
         }
-        const bool has_word = std::any_of(texts.begin(), texts.end(),
-                                          [&rule](const std::string& t) { return rule.takes_word(t); });
+        const bool has_word =
+            std::any_of(texts.begin(), texts.end(),
+                        [&rule](const std::string& t) { return rule.takes_word(t); });
         if (texts.size() != 3 || has_word) {
-          throw InputError(rule.flag(), "expects three numbers X,Y,Z" +
-                                            (rule.word_names().empty()
-                                                 ? std::string()
-                                                 : " or one of " + rule.word_list()));
+          throw InputError(
+              rule.flag(),
+              "expects three numbers X,Y,Z" +
+                  (rule.word_names().empty() ? std::string() : " or one of " + rule.word_list()));
         }
-        const Eigen::Vector3d value(component(texts[0]), component(texts[1]),
-                                    component(texts[2]));
-        if (rule.is_nonzero() && value.isZero(0.0)) {
+        const Eigen::Vector3d v(component(texts[0]), component(texts[1]), component(texts[2]));
+        if (rule.is_nonzero() && v.isZero(0.0)) {
           throw InputError(rule.flag(), "must not be the zero vector");
         }
-        slot.input->set(value);
+        value = v;
         break;
       }
       case InputKind::kChoice:
-        slot.input->set(slot.word);
+        value = slot.word;
         break;
       case InputKind::kFlag:
-        slot.input->set(slot.on);
+        value = slot.on;
         break;
     }
+    if (slot.old != nullptr && slot.old->count() > 0) {
+      if (slot.cli->count() > 0) {
+        throw InputError(rule.flag(), "give it once: " + rule.old_flag() + " is its old name");
+      }
+      // CLI11 checked the new name's values; the old name's are checked here
+      if (const std::string why = rule.broken(value); !why.empty()) {
+        throw InputError(rule.old_flag(), why);
+      }
+      warnings_.push_back(rule.old_flag() + ": renamed " + rule.flag() +
+                          "; the old name is taken until the next release");
+    }
+    slot.input->set(value);
   }
 }
 
 // Alternatives given together, and inputs given without the one they go with.
 void Command::check_pairings() const {
   for (const OptionSlot& slot : slots_) {
-    if (slot.cli->count() == 0) continue;
+    if (!given(slot)) continue;
     const InputRule& rule = *slot.input->rule;
     for (const auto& pairing : rule.exclusions()) {
       if (given(pairing.other)) throw InputError(rule.flag(), pairing.rule);
@@ -346,10 +386,10 @@ void Command::check_pairings() const {
 
 std::string Command::blamed_option() const {
   for (const OptionSlot& s : slots_) {
-    if (s.input->rule->physical() && s.cli->count() > 0) return s.cli->get_name();
+    if (s.input->rule->physical() && given(s)) return s.input->rule->flag();
   }
   for (const OptionSlot& s : slots_) {  // then a numerical one
-    if (s.cli->count() > 0) return s.cli->get_name();
+    if (given(s)) return s.input->rule->flag();
   }
   return "--inputs";
 }
@@ -447,9 +487,8 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     if (!csv_path_.empty() && !report->time_series().columns.empty()) {
       const std::string text = csv_text(report->time_series());
       try {
-        render::write_file_atomically(csv_path_, [&](std::FILE* file) {
-          std::fwrite(text.data(), 1, text.size(), file);
-        });
+        render::write_file_atomically(
+            csv_path_, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
       } catch (const std::runtime_error& e) {
         throw InputError("--csv", e.what());
       }
@@ -468,6 +507,9 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     // not foresee): the inputs given are to blame, the first physical one named.
     std::cerr << name_ << ": error: " << escaped(blamed_option() + ": " + e.what()) << '\n';
     return 2;
+  }
+  for (const std::string& warning : warnings_) {
+    std::cerr << name_ << ": warning: " << escaped(warning) << '\n';
   }
   for (const std::string& warning : report->warnings()) {
     std::cerr << name_ << ": warning: " << escaped(warning) << '\n';
@@ -547,8 +589,8 @@ void Command::FigureFiles::save(const std::string& name, const std::string& capt
   // A figure the user made very large (past 4x the default's pixels) takes seconds
   // each: say so as each is drawn, rather than sit silent.
   if (static_cast<double>(c.figure_width_) * c.figure_height_ > 4.0 * 1600 * 1200) {
-    std::cerr << c.name_ << ": drew " << file << " (" << c.figure_width_ << "x"
-              << c.figure_height_ << ") in " << fmt::format("{:.1f}", elapsed.count()) << " s\n";
+    std::cerr << c.name_ << ": drew " << file << " (" << c.figure_width_ << "x" << c.figure_height_
+              << ") in " << fmt::format("{:.1f}", elapsed.count()) << " s\n";
   }
 }
 
@@ -678,10 +720,10 @@ void Command::animate(const Computed& computed) {
       animation["still"] = figure_prefix_ + name_ + "_" + motion.still + ".png";
     }
     if (timing_) {
-      animation["phases"] = {{"scene", build},          {"setup", phases.setup},
-                             {"layout", phases.layout}, {"draw", phases.draw},
-                             {"resolve", phases.resolve}, {"encoder_wait", handover},
-                             {"finish", finishing}};
+      animation["phases"] = {
+          {"scene", build},      {"setup", phases.setup},     {"layout", phases.layout},
+          {"draw", phases.draw}, {"resolve", phases.resolve}, {"encoder_wait", handover},
+          {"finish", finishing}};
     }
     progress.finish(fmt::format(
         "wrote {}: {} frames, {}x{} at {:g} fps ({:g} s of video for {:.3g} s of motion), "
@@ -699,8 +741,7 @@ void Command::animate(const Computed& computed) {
 #else
   (void)report;
   figures_failed_ = true;
-  std::cerr << name_
-            << ": error: --animate: this build has no renderer (RIGID_BUILD_RENDER=OFF)\n";
+  std::cerr << name_ << ": error: --animate: this build has no renderer (RIGID_BUILD_RENDER=OFF)\n";
 #endif
 }
 

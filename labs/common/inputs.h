@@ -135,6 +135,13 @@ class InputRule {
 
   /// For choices: the words it takes.
   InputRule& choices(const std::vector<std::string>& names);
+  /// The input was named `old_flag` before: the command line still takes the old
+  /// name for one release, with a warning, and --help shows only the new one.
+  InputRule& renamed_from(const std::string& old_flag) {
+    old_flag_ = old_flag;
+    return *this;
+  }
+  const std::string& old_flag() const { return old_flag_; }
   /// How --help names a pair's two numbers, e.g. "I,IS" (default "A,B").
   InputRule& value_name(const std::string& name) {
     value_name_ = name;
@@ -144,7 +151,7 @@ class InputRule {
 
  private:
   InputKind kind_;
-  std::string flag_, key_, help_, unit_, symbol_, lab_default_, value_name_ = "A,B";
+  std::string flag_, key_, help_, unit_, symbol_, lab_default_, value_name_ = "A,B", old_flag_;
   bool physical_ = true, nonzero_ = false;
   Bound bound_ = Bound::kFinite;
   double lo_ = -1, hi_ = -1;
@@ -225,13 +232,10 @@ class InputTable {
   template <class Part, class Field>
   void include(const InputTable<Part>& part, Field field) {
     for (const InputField<Part>& p : part.fields()) {
-      fields_.push_back({p.rule,
-                         [get = p.get, field](const In& in) {
-                           return get(access(const_cast<In&>(in), field));
-                         },
-                         [set = p.set, field](In& in, const InputValue& v) {
-                           set(access(in, field), v);
-                         }});
+      fields_.push_back(
+          {p.rule,
+           [get = p.get, field](const In& in) { return get(access(const_cast<In&>(in), field)); },
+           [set = p.set, field](In& in, const InputValue& v) { set(access(in, field), v); }});
     }
   }
 

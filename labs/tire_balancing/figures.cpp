@@ -1,7 +1,5 @@
 // tire_balancing's figures: the wheel on its crooked axle with the cone L
 // sweeps; the balancing mass against the tilt, exact and small-angle.
-#include "tire_balancing/tire_balancing.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 #include <vector>
 
 #include "rigid/units.h"
+#include "tire_balancing/tire_balancing.h"
 
 namespace rigid::lab::tire_balancing {
 namespace {

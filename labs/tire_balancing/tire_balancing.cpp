@@ -25,18 +25,21 @@ const InputTable<Inputs>& input_table() {
     t.number("--omega", &Inputs::omega, "spin of the wheel about its axle")
         .unit("rad/s")
         .positive();
-    t.number("--road-speed-m-s", &Inputs::road_speed,
-             "road speed of the car, for the spin omega = speed / tyre radius (instead of "
+    // SI inputs carry no unit in their names (angles in degrees end in -deg)
+    t.number("--road-speed", &Inputs::road_speed,
+             "road speed of the car, for the spin omega = speed / tire radius (instead of "
              "--omega)")
         .unit("m/s")
         .positive()
         .lab_default("--omega's")
-        .excludes("--omega", "give --omega or --road-speed-m-s, not both");
-    t.number("--tyre-radius-m", &Inputs::tyre_radius,
-             "rolling radius of the tyre, with --road-speed-m-s (at least --radius)")
+        .excludes("--omega", "give --omega or --road-speed, not both")
+        .renamed_from("--road-speed-m-s");
+    t.number("--tire-radius", &Inputs::tire_radius,
+             "rolling radius of the tire, with --road-speed (at least --radius)")
         .unit("m")
         .positive()
-        .requires_input("--road-speed-m-s", "sets the spin only with --road-speed-m-s");
+        .requires_input("--road-speed", "sets the spin only with --road-speed")
+        .renamed_from("--tyre-radius-m");
     return t;
   }();
   return table;
@@ -51,25 +54,25 @@ Report compute(const Inputs& in) {
   wheel.radius = in.radius;
   wheel.offset = in.offset;
   wheel.tilt = deg_to_rad(in.tilt_deg);
-  // The spin from the road: a tyre of rolling radius R at speed v turns at v / R.
-  const double tyre_radius = in.tyre_radius;
+  // The spin from the road: a tire of rolling radius R at speed v turns at v / R.
+  const double tire_radius = in.tire_radius;
   if (in.road_speed) {
-    if (tyre_radius < wheel.radius) {
-      throw InputError("--tyre-radius-m", fmt::format("must be at least the disk's radius "
-                                                      "--radius = {:g} m (got {:g})",
-                                                      wheel.radius, tyre_radius));
+    if (tire_radius < wheel.radius) {
+      throw InputError("--tire-radius", fmt::format("must be at least the disk's radius "
+                                                    "--radius = {:g} m (got {:g})",
+                                                    wheel.radius, tire_radius));
     }
-    report.omega = *in.road_speed / tyre_radius;
+    report.omega = *in.road_speed / tire_radius;
     report.drop_input("omega");
   } else {
     report.omega = in.omega;
-    report.drop_input("tyre_radius_m");
+    report.drop_input("tire_radius");
   }
   const double omega = report.omega;
 
   if (in.road_speed) {
     report.section("the spin from the road");
-    report.result("omega_rad_s", "omega = road speed / tyre radius", omega, "rad/s");
+    report.result("omega_rad_s", "omega = road speed / tire radius", omega, "rad/s");
     report.result("road_speed_km_h", "  the road speed in km/h", 3.6 * *in.road_speed, "km/h");
   }
   report.section("2.2 before balancing: L is off the axle");
@@ -117,8 +120,7 @@ Report compute(const Inputs& in) {
         "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "
         "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
         "b = {:g} cm, theta = {:g} deg",
-        1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset,
-        in.tilt_deg));
+        1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset, in.tilt_deg));
   }
 
   // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.

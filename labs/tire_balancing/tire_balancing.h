@@ -24,8 +24,8 @@ struct Inputs {
   double tilt_deg = 1.0;
   /// rad/s; 90 rad/s is a wheel of 0.31 m rolling radius at about 100 km/h.
   double omega = 90.0;
-  std::optional<double> road_speed;  ///< m/s: if set, omega = road_speed / tyre_radius
-  double tyre_radius = 0.31;         ///< m, the tyre's rolling radius, used with road_speed
+  std::optional<double> road_speed;  ///< m/s: if set, omega = road_speed / tire_radius
+  double tire_radius = 0.31;         ///< m, the tire's rolling radius, used with road_speed
 };
 
 /// What the lab reports, and what its figures draw.

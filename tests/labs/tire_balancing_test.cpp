@@ -82,7 +82,7 @@ TEST_CASE("tire_balancing: another wheel against eqs. 55-61 typed here") {
 
 TEST_CASE("tire_balancing: a straight axle is a balanced wheel, and the spin comes from the road") {
   Inputs in;
-  in.tilt_deg = 0, in.road_speed = 27.8, in.tyre_radius = 0.31;
+  in.tilt_deg = 0, in.road_speed = 27.8, in.tire_radius = 0.31;
   const auto report = compute(in);
   const auto& r = report.results();
   CHECK(value(r, "omega_rad_s") == Approx(27.8 / 0.31).epsilon(1e-15));
@@ -95,7 +95,7 @@ TEST_CASE("tire_balancing: a straight axle is a balanced wheel, and the spin com
   CHECK(!report.inputs().contains("omega"));
   // A road speed gives the same wheel as its omega.
   Inputs road, direct;
-  road.road_speed = 27.9, road.tyre_radius = 0.31;
+  road.road_speed = 27.9, road.tire_radius = 0.31;
   direct.omega = 27.9 / 0.31;
   CHECK(value(compute(road).results(), "torque_unbalanced_nm") ==
         Approx(value(compute(direct).results(), "torque_unbalanced_nm")).epsilon(1e-12));
@@ -113,9 +113,9 @@ TEST_CASE("tire_balancing: a broken rule is an InputError naming the input") {
   in.tilt_deg = 45;
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError, rigid::test::names_input("--tilt-deg"));
   in = Inputs{};
-  in.tyre_radius = 0.1, in.road_speed = 10;  // smaller than the disk
+  in.tire_radius = 0.1, in.road_speed = 10;  // smaller than the disk
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError,
-                       rigid::test::names_input("--tyre-radius-m"));
+                       rigid::test::names_input("--tire-radius"));
   in = Inputs{};
   in.mass = -1;
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError, rigid::test::names_input("--mass"));
