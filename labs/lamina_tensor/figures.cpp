@@ -1,24 +1,26 @@
 // lamina_tensor's figures: the lamina with its rotation axis, omega, L and the
 // principal axes; the moment about an in-plane axis against its angle.
-#include "figures.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "lamina_tensor/lamina_tensor.h"
 #include "rigid/units.h"
 
 namespace rigid::lab::lamina_tensor {
 namespace {
 
 // The lamina with its rotation axis, omega, L and the principal axes.
-render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& principal) {
-  const Vec3 n = in.axis.stableNormalized();
+render::Scene3D scene_of(const Report& report) {
+  const Vec3& n = report.n;
+  const Mat3& I = report.I;
+  const PrincipalAxes& principal = report.principal;
+  const double a = report.a, b = report.b;
   const Vec3 L_dir = (I * n).stableNormalized();  // scaled: |I n|^2 may overflow
-  const double size = std::max(in.a, in.b);
-  const Vec3 centre = in.origin == "corner" ? Vec3(in.a / 2, in.b / 2, 0) : Vec3::Zero();
+  const double size = std::max(a, b);
+  const Vec3 centre = report.corner ? Vec3(a / 2, b / 2, 0) : Vec3::Zero();
 
   render::Scene3D scene;
   scene.title = fmt::format("angle(L, \\omega) = {:.1f}\\deg", rad_to_deg(angle_between(I * n, n)));
@@ -26,7 +28,7 @@ render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& p
   scene.camera.target = centre + Vec3(0, 0, 0.1 * size);
   scene.camera.fov_y_deg = 38;
 
-  scene.add_box(centre, Vec3(in.a / 2, in.b / 2, 0.01 * size), Mat3::Identity(),
+  scene.add_box(centre, Vec3(a / 2, b / 2, 0.01 * size), Mat3::Identity(),
                 flat_body(colors::kBody, 0.35f), "lamina");
   // The fixed rotation axis runs through the origin both ways.
   scene.add_cylinder(-0.4 * size * n, 1.15 * size * n, 0.006 * size, {colors::kFixedAxis},
@@ -68,7 +70,7 @@ render::Scene3D scene_of(const Inputs& in, const Mat3& I, const PrincipalAxes& p
 
 // The moment n.I.n about an in-plane axis at angle alpha from x: the principal
 // axes are its extremes (section 2.3).
-render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
+render::Plot2D moment_plot(const Mat3& I, const Vec3& n) {
   std::vector<double> alpha_deg, moment;
   for (int k = 0; k <= 360; ++k) {
     const double alpha = deg_to_rad(-90.0 + 0.5 * k);
@@ -93,7 +95,6 @@ render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
         .color = colors::kPrincipal[index];
     panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
   }
-  const Vec3 n = in.axis.stableNormalized();
   if (std::abs(n.z()) < 1e-12) {
     double deg = rad_to_deg(std::atan2(n.y(), n.x()));
     if (deg > 90) deg -= 180;
@@ -106,9 +107,10 @@ render::Plot2D moment_plot(const Inputs& in, const Mat3& I) {
 
 }  // namespace
 
-void draw(FigureSet& set, const Inputs& in, const Mat3& I, const PrincipalAxes& principal) {
-  set.add("scene", "L is not along omega; the principal axes", scene_of(in, I, principal));
-  set.add("moment", "the moment n.I.n is extreme on the principal axes", moment_plot(in, I));
+void figures(const Report& report, FigureSink& sink) {
+  sink.add("scene", "L is not along omega; the principal axes", scene_of(report));
+  sink.add("moment", "the moment n.I.n is extreme on the principal axes",
+           moment_plot(report.I, report.n));
 }
 
 }  // namespace rigid::lab::lamina_tensor

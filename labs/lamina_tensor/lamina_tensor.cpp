@@ -1,0 +1,167 @@
+#include "lamina_tensor/lamina_tensor.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "rigid/units.h"
+
+namespace rigid::lab::lamina_tensor {
+namespace {
+constexpr const char* kName = "lamina_tensor";
+constexpr const char* kTitle = "inertia tensor of a rectangular lamina (sections 1-3.1)";
+}  // namespace
+
+const InputTable<Inputs>& input_table() {
+  static const InputTable<Inputs> table = [] {
+    InputTable<Inputs> t;
+    t.number("--mass", &Inputs::mass, "mass m of the lamina").unit("kg").positive().symbol("m");
+    t.number("--a", &Inputs::a, "side a along x").unit("m").positive().symbol("a");
+    t.number("--b", &Inputs::b, "side b along y").unit("m").positive().symbol("b");
+    t.number("--c", &Inputs::c, "third side c of the section 2.1 block (a x b x c)")
+        .unit("m")
+        .positive();
+    t.choice("--origin", &Inputs::origin, {"corner", "center"},
+             "origin of the axes: x along side a, y along side b, z normal to the plate; "
+             "corner: the plate spans 0 <= x <= a, 0 <= y <= b; center: its middle")
+        .symbol("origin");
+    t.vector_or_word("--axis", &Inputs::axis, &Inputs::axis_word,
+                     "rotation axis n through the origin (normalised)")
+        .nonzero()
+        .words({"diagonal"}, "diagonal: along the plate's diagonal, (a, b, 0)");
+    t.angle_deg("--axis-deg", &Inputs::axis_deg,
+                "rotation axis in the plate's plane, at this angle from x toward y (instead of "
+                "--axis)")
+        .lab_default("--axis's")
+        .excludes("--axis", "give --axis or --axis-deg, not both");
+    t.number("--omega", &Inputs::omega, "angular speed about the axis").unit("rad/s").positive();
+    t.flag("--examples", &Inputs::examples,
+           "also section 2.1's paddle, block and cube (always with the textbook's inputs)")
+        .numerical();
+    return t;
+  }();
+  return table;
+}
+
+Report compute(const Inputs& in) {
+  Report report(kName, kTitle);
+  report.start(input_table(), in);
+  const double m = in.mass, a = in.a, ma2 = m * a * a;
+  report.a = a;
+  report.b = in.b;
+  report.corner = in.origin == "corner";
+  // The axis: by its components, the plate's diagonal, or an angle in the plane.
+  Vec3 axis = in.axis_word == "diagonal" ? Vec3(a, in.b, 0.0) : in.axis;
+  if (in.axis_deg) {
+    const double t = deg_to_rad(*in.axis_deg);
+    axis = Vec3(std::cos(t), std::sin(t), 0.0);
+    report.drop_input("axis");
+  }
+  const Vec3 n = report.n = axis.stableNormalized();
+  const Vec3 omega = in.omega * n;
+
+  report.section("1. inertia tensor about the " + in.origin +
+                 " (eqs. 6-11, 20, 70): x along a, y along b, z normal; " +
+                 (report.corner ? "the plate fills 0 <= x <= a, 0 <= y <= b"
+                                : "the plate's centre at the origin"));
+  report.result("axis_unit", "rotation axis n (unit)", n, "");
+  report.result("axis_angle_from_x_deg", "  its angle from x toward y",
+                rad_to_deg(std::atan2(n.y(), n.x())), "deg", report.textbook("37 (3-4-5)"));
+  const Mat3& I = report.I = rigid::lamina_tensor({in.mass, a, in.b, report.corner});
+  report.result("inertia_tensor", "inertia tensor I", I, "kg m^2",
+                report.textbook("(4/3, -1/2, 0; -1/2, 1/3, 0; 0, 0, 5/3) ma^2"));
+  report.result("scalar_moment", "moment about n, n.I.n (eq. 21)", moment_about_axis(I, n),
+                "kg m^2", report.textbook("0.493 ma^2"));
+
+  report.section("1.1 angular momentum (eq. 28)");
+  const Vec3 L = angular_momentum(I, omega);
+  report.result("angular_momentum", "L = I omega", L, "kg m^2/s",
+                report.textbook("(0.767, -0.20, 0) ma^2 omega"));
+  report.result("angular_momentum_magnitude", "|L|", L.stableNorm(), "kg m^2/s",
+                report.textbook("0.793 ma^2 omega"));
+  report.result("angle_L_omega_deg", "angle between L and omega",
+                rad_to_deg(angle_between(L, omega)), "deg", report.textbook("51"));
+  if (report.textbook_inputs()) {
+    report.note(fmt::format(
+        "errata: |L| = {:.4f} ma^2 omega exactly; the text's 0.793 comes from rounding L_x "
+        "to 0.767 before taking the norm",
+        L.stableNorm() / (ma2 * in.omega)));
+  }
+
+  report.section("1.2 kinetic energy (eqs. 33-34)");
+  report.result("kinetic_energy", "T = omega.I omega / 2", kinetic_energy(I, omega), "J",
+                report.textbook("(1/2)(0.493) ma^2 omega^2"));
+
+  // Section 2.1's examples do not depend on the plate's orientation: shown with the
+  // textbook's inputs, or when asked for.
+  if (report.textbook_inputs() || in.examples) {
+    report.section("2.1 symmetric bodies about their centre of mass, built from primitives");
+    const Body paddle = model_paddle(m, a);
+    report.result("paddle_principal_moments", "model paddle I1, I2, I3 (eqs. 41-43)",
+                  Vec3(paddle.I_com.diagonal()), "kg m^2", printed("(1/8, 31/24, 17/12) ma^2"));
+    report.result("block_principal_moments", "block a x b x c (eq. 40)",
+                  Vec3(solid_box(m, a, in.b, in.c).I_com.diagonal()), "kg m^2",
+                  printed("m/12 (b^2+c^2, a^2+c^2, a^2+b^2)"));
+    const Mat3 cube = solid_box(m, a, a, a).I_com;
+    report.result("cube_moment_about_axis", "cube of side a, moment about n",
+                  moment_about_axis(cube, n), "kg m^2", printed("ma^2/6"));
+    report.result("cube_moment_about_diagonal", "cube, moment about its body diagonal",
+                  moment_about_axis(cube, Vec3(1, 1, 1)), "kg m^2", printed("ma^2/6"));
+  }
+
+  report.section("2.3 principal axes in the x-y plane from tan 2 theta (eqs. 53-56)");
+  const InPlaneAxes plane = in_plane_principal_axes(I);
+  report.result("two_theta_deg", "2 theta, tan 2 theta = 2 Ixy / (Ixx - Iyy)",
+                rad_to_deg(plane.two_theta), "deg", report.textbook("-45 (tan 2 theta = -1)"));
+  report.result("principal_angle_deg", "axis angle from x", rad_to_deg(plane.theta), "deg",
+                report.textbook("-22.5"));
+  report.result("principal_angle_moment", "  moment about that axis (eq. 50)", plane.moment,
+                "kg m^2");
+  report.result("principal_angle_other_deg", "other in-plane axis", rad_to_deg(plane.theta_other),
+                "deg", report.textbook("67.5"));
+  report.result("principal_angle_other_moment", "  moment about that axis", plane.moment_other,
+                "kg m^2");
+  report.result("body_diagonal_deg", "body diagonal, for contrast", rad_to_deg(std::atan2(in.b, a)),
+                "deg", report.textbook("63.4"));
+  if (report.textbook_inputs()) {
+    report.note(fmt::format(
+        "errata: the text calls the axis at {:.1f} deg 'the 1-axis', but its moment is "
+        "{:.3f} ma^2 (I2 when moments ascend, as in its section 2.4); the axis at {:.1f} deg "
+        "carries I1 = {:.3f} ma^2",
+        rad_to_deg(plane.theta), plane.moment / ma2, rad_to_deg(plane.theta_other),
+        plane.moment_other / ma2));
+  }
+
+  report.section("2.4 principal moments and axes by diagonalisation (eqs. 62-69)");
+  const PrincipalAxes& principal = report.principal = principal_axes(I);
+  report.result("principal_moments", "principal moments I1, I2, I3", principal.moments, "kg m^2",
+                report.textbook("(0.126, 1.540, 1.667) ma^2"));
+  report.result("principal_axes", "principal axes e1; e2; e3 (rows)", principal.axes, "",
+                report.textbook("(-0.3827, -0.9239, 0); (0.9239, -0.3827, 0); (0, 0, 1)"));
+
+  report.section("3.1 torque to turn about a fixed axis at constant omega (eqs. 74-76)");
+  const Vec3 N = fixed_axis_torque(I, omega);
+  report.result("fixed_axis_torque", "N = omega x (I omega) about n, x-y-z frame", N, "N m");
+  report.result("fixed_axis_torque_principal", "  the same in the principal frame",
+                Vec3(principal.axes * N), "N m");
+  // The section's own example turns the lamina about x, whatever --axis says.
+  const Vec3 N_x = principal.axes * fixed_axis_torque(I, in.omega * Vec3::UnitX());
+  report.result("fixed_axis_torque_x_principal", "N1, N2, N3 for rotation about x", N_x, "N m",
+                report.textbook("(0, 0, 0.500) ma^2 omega^2"));
+  if (report.textbook_inputs()) {
+    report.note(fmt::format(
+        "errata: for rotation about +x, N3 = omega1 omega2 (I2 - I1) = {:.3f} ma^2 omega^2; "
+        "the text prints +0.500 (right size, wrong sign): the axle pushes along -z",
+        N_x(2) / (ma2 * in.omega * in.omega)));
+  }
+  return report;
+}
+
+LabProgram<Inputs, Report> program() {
+  LabProgram<Inputs, Report> p{kName, kTitle, input_table()};
+  p.compute = compute;
+  p.figures = figures;
+  return p;
+}
+
+}  // namespace rigid::lab::lamina_tensor
