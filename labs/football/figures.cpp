@@ -1,13 +1,13 @@
-// football's figures: the body cone rolling on the space cone, with omega along
-// their line of contact, L and the symmetry axis; the rates against alpha.
-#include "figures.h"
-
+// football's figures and motion: the body cone rolling on the space cone, with
+// omega along their line of contact, L and the symmetry axis; the rates against alpha.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
+#include "football/football.h"
 #include "rigid/inertia.h"
 #include "rigid/units.h"
 
@@ -23,8 +23,6 @@ std::vector<Vec3> circle_about_z(double radius, double z) {
   }
   return points;
 }
-
-}  // namespace
 
 // L along z; the symmetry axis 3 and omega in the x-z plane at t = 0. The body
 // cone (half-angle alpha about 3) touches the space cone (half-angle |theta - alpha|
@@ -100,21 +98,20 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   return scene;
 }
 
-namespace {
-
 // Omega / omega and phi_dot / omega against alpha for this body.
-render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
+render::Plot2D rates_plot(const Report& report) {
+  const SymmetricPrecession& p = report.precession;
   std::vector<double> alpha_deg, body, space;
   for (int k = 1; k < 180; ++k) {
     const double a = 0.5 * k;
     const SymmetricPrecession q =
-        free_symmetric_precession(in.inertia(0), in.inertia(1), 1.0, deg_to_rad(a));
+        free_symmetric_precession(report.I, report.Is, 1.0, deg_to_rad(a));
     alpha_deg.push_back(a);
     body.push_back(q.body_rate);
     space.push_back(q.space_rate);
   }
   render::Plot2D plot;
-  plot.title = fmt::format("rates against \\alpha, Is/I = {:.4g}", in.inertia(1) / in.inertia(0));
+  plot.title = fmt::format("rates against \\alpha, Is/I = {:.4g}", report.Is / report.I);
   render::Panel& panel = plot.panel();
   panel.x = {"angle \\alpha between \\omega and 3 (\\deg)", render::Scale::kLinear, 0, 90};
   panel.y = {"rate / \\omega"};
@@ -125,20 +122,45 @@ render::Plot2D rates_plot(const Inputs& in, const SymmetricPrecession& p) {
   panel.add_line(alpha_deg, body, "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
       .color = colors::kSymmetryAxis;
   panel
-      .add_points({in.alpha_deg, in.alpha_deg}, {p.space_rate / in.omega, p.body_rate / in.omega},
-                  fmt::format("this run, \\alpha = {:.3g}\\deg", in.alpha_deg))
+      .add_points({report.alpha_deg, report.alpha_deg},
+                  {p.space_rate / report.omega, p.body_rate / report.omega},
+                  fmt::format("this run, \\alpha = {:.3g}\\deg", report.alpha_deg))
       .color = colors::kMarker;
   return plot;
 }
 
 }  // namespace
 
-void draw(FigureSet& set, const Inputs& in, const SymmetricPrecession& p, const Contrast& other) {
-  set.add("cones", "the body cone rolls on the space cone along omega",
-          cones_scene(in.inertia(1) / in.inertia(0), in.alpha_deg, p, "", 0.0));
-  set.add("cones_contrast", other.caption,
-          cones_scene(other.ratio, in.alpha_deg, other.precession, other.title + ": ", 0.0));
-  set.add("rates", "the precession rates against alpha", rates_plot(in, p));
+Motion::Motion(const Report& report)
+    : ratio_(report.Is / report.I), alpha_deg_(report.alpha_deg), precession_(report.precession) {}
+
+// Two turns of 3 about L: a precession period in each half of the animation.
+double Motion::seconds() const {
+  return 2.0 * precession_.space_period;
+}
+
+render::Scene3D Motion::scene(double t) const {
+  return cones_scene(ratio_, alpha_deg_, precession_, "", t);
+}
+
+// The motion is exact at any time: it needs no frame times to sample.
+Animation animation(const Report& report, const FrameTimes& /*frame_times*/) {
+  const auto motion = std::make_shared<const Motion>(report);
+  Animation a;
+  a.seconds = motion->seconds();
+  a.caption = "the body cone rolling on the space cone, omega along their line of contact";
+  a.still = "cones";
+  a.scene = [motion](double t) { return motion->scene(t); };
+  return a;
+}
+
+void figures(const Report& report, FigureSink& sink) {
+  const Contrast& other = report.contrast;
+  // the still of the motion: the cones at t = 0
+  sink.add("cones", "the body cone rolls on the space cone along omega", Motion(report).scene(0.0));
+  sink.add("cones_contrast", other.caption,
+           cones_scene(other.ratio, report.alpha_deg, other.precession, other.title + ": ", 0.0));
+  sink.add("rates", "the precession rates against alpha", rates_plot(report));
 }
 
 }  // namespace rigid::lab::football

@@ -1,0 +1,252 @@
+#include "football/football.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+
+#include "rigid/inertia.h"
+#include "rigid/units.h"
+
+namespace rigid::lab::football {
+namespace {
+
+constexpr const char* kName = "football";
+constexpr const char* kTitle = "the free symmetric top: football, frisbee, Earth (eqs. 142-149)";
+constexpr const char* kInertiaWithPreset =
+    "replaces the moments of --preset; give one or the other";
+
+// The presets. football: a solid prolate spheroid of an NFL ball's size (semi-axes
+// 0.14 m and 0.085 m, 0.42 kg) thrown with a wobble; frisbee: a thin disk
+// (Is = 2I, eq. 148) of 0.175 kg and radius 0.1375 m; earth: Is/I = 1.00327, alpha = 0.2
+// arcsec, one turn per sidereal day (the text's numbers, section 6.1).
+constexpr double kSiderealDay = 86164.0905;   // s
+constexpr double kSolarDay = 86400.0;         // s
+constexpr double kEarthFlattening = 1.00327;  // Is/I, the text's
+constexpr double kEarthI = 8.0e37;  // kg m^2, Earth's transverse moment; cancels in every rate
+
+struct Preset {
+  double I, Is, omega, alpha_deg;
+};
+
+Preset preset_of(const std::string& name) {
+  if (name == "frisbee") {
+    const Body disk = thin_disk(0.175, 0.1375);  // symmetry axis z
+    return {disk.I_com(0, 0), disk.I_com(2, 2), 30.0, 5.0};
+  }
+  if (name == "earth") {
+    return {kEarthI, kEarthFlattening * kEarthI, 2 * kPi / kSiderealDay, 0.2 / 3600.0};
+  }
+  const Body ball = solid_ellipsoid(0.42, 0.14, 0.085, 0.085);  // symmetry axis x
+  return {ball.I_com(1, 1), ball.I_com(0, 0), 60.0, 10.0};
+}
+
+}  // namespace
+
+const InputTable<Inputs>& input_table() {
+  static const InputTable<Inputs> table = [] {
+    InputTable<Inputs> t;
+    t.choice("--preset", &Inputs::preset, {"football", "frisbee", "earth"},
+             "the body: football = solid prolate spheroid, semi-axes 0.14 m and 0.085 m, 0.42 kg, "
+             "omega 60 rad/s, alpha 10 deg; frisbee = thin disk 0.175 kg, radius 0.1375 m "
+             "(Is = 2I), omega 30 rad/s, alpha 5 deg; earth = Is/I = 1.00327, alpha = 0.2 arcsec, "
+             "omega = 2 pi per sidereal day (86164.0905 s)")
+        .symbol("body");
+    t.pair("--inertia", &Inputs::inertia,
+           "moments I (transverse) and Is (symmetry axis), 0 < Is <= 2I; not with --preset")
+        .value_name("I,IS")
+        .unit("kg m^2")
+        .positive()
+        .lab_default("the preset's")
+        .excludes("--preset", kInertiaWithPreset);
+    t.number("--omega", &Inputs::omega, "angular speed |omega|")
+        .unit("rad/s")
+        .positive()
+        .symbol("\\omega")
+        .lab_default("the preset's");
+    t.angle_deg("--alpha-deg", &Inputs::alpha_deg,
+                "angle alpha between omega and the symmetry axis")
+        .open_range(0.0, 90.0)
+        .symbol("\\alpha")
+        .lab_default("the preset's");
+    return t;
+  }();
+  return table;
+}
+
+Report compute(const Inputs& in) {
+  Report report(kName, kTitle);
+  report.start(input_table(), in);
+  // The preset always has a value here, so "--preset given" reads as a preset other
+  // than the default: its moments and the ones given would contradict each other.
+  if (in.inertia && in.preset != Inputs{}.preset) throw InputError("--inertia", kInertiaWithPreset);
+  const Preset preset = preset_of(in.preset);
+  const double I = in.inertia ? (*in.inertia)(0) : preset.I;
+  const double Is = in.inertia ? (*in.inertia)(1) : preset.Is;
+  const double omega = in.omega.value_or(preset.omega);
+  const double alpha_deg = in.alpha_deg.value_or(preset.alpha_deg);
+  const double alpha = deg_to_rad(alpha_deg);
+  report.I = I, report.Is = Is, report.omega = omega, report.alpha_deg = alpha_deg;
+  const SymmetricPrecession p =
+      for_input("--inertia", [&] { return free_symmetric_precession(I, Is, omega, alpha); });
+  report.precession = p;
+  // The text's printed values of a preset's fixed example: only for that preset
+  // with nothing else changed.
+  const bool example = !in.inertia && !in.omega && !in.alpha_deg;
+  const auto text = [&](const char* name, const std::string& value) {
+    return example && in.preset == name ? printed(value) : std::nullopt;
+  };
+  const double theta_deg = rad_to_deg(p.theta);
+
+  report.section("the body: Is = I3, I = I1 = I2 (eqs. 104-105)");
+  report.result("moment_transverse_kg_m2", "I, transverse moment", I, "kg m^2");
+  report.result("moment_symmetry_kg_m2", "Is, moment about the symmetry axis", Is, "kg m^2");
+  report.result("moment_ratio", "Is / I", Is / I, "", text("earth", "1.00327"));
+  if (in.preset == "earth" && !in.alpha_deg) {
+    report.result("alpha_rad", "alpha", alpha, "rad", text("earth", "0.97e-6"));
+  }
+
+  report.section("rates (eqs. 109, 145-149): Omega in the body, phi_dot in space");
+  report.result("body_precession_rate_rad_s",
+                "Omega = omega cos(alpha) (Is - I)/I, omega about 3 in the body (+: along omega_3)",
+                p.body_rate, "rad/s", text("frisbee", "omega cos alpha (eq. 148)"));
+  report.result("space_precession_rate_rad_s", "phi_dot = |L|/I, 3 and omega about L in space",
+                p.space_rate, "rad/s", text("frisbee", "~ 2 omega (eq. 149)"));
+  report.result("space_precession_rate_eq147_rad_s",
+                "phi_dot = omega sqrt(1 + ((Is/I)^2 - 1) cos^2 alpha) (eq. 147)",
+                omega * std::sqrt(1 + (Is / I * Is / I - 1) * std::cos(alpha) * std::cos(alpha)),
+                "rad/s");
+  report.result("body_rate_over_omega", "Omega / omega", p.body_rate / omega, "",
+                text("earth", "0.00327"));
+  report.result("space_rate_over_omega", "phi_dot / omega", p.space_rate / omega, "",
+                text("earth", "1.00327"));
+  report.result("spin_rate_rad_s",
+                "psi_dot = omega_3 - phi_dot cos(theta), 3 spins in space about itself",
+                p.spin_rate, "rad/s");
+  if (p.body_rate != 0.0) {
+    report.result("body_precession_period_s", "2 pi / |Omega|", p.body_period, "s");
+  } else {
+    report.result_none("body_precession_period_s", "2 pi / |Omega|", "s",
+                       "Is = I: omega stays fixed in the body");
+  }
+  report.result("space_precession_period_s", "2 pi / phi_dot", p.space_period, "s");
+  if (in.preset == "earth") {
+    if (p.body_rate != 0.0) {
+      report.result("body_precession_period_days",
+                    "2 pi / |Omega|, sidereal omega, in days of 86400 s", p.body_period / kSolarDay,
+                    "d", text("earth", "305"));
+    }
+    report.result("space_precession_period_days", "2 pi / phi_dot, in days of 86400 s",
+                  p.space_period / kSolarDay, "d", text("earth", "0.997"));
+  }
+
+  report.section(
+      "cross-check: Euler's equations integrated (dopri5, tolerance 1e-12) for 2 pi / phi_dot");
+  // Within a step budget (a body whose precession is many orders slower than its
+  // spin would need years of steps): beyond it the cross-check is not run.
+  constexpr std::size_t kCheckSteps = 2'000'000;
+  std::optional<PrecessionCheck> check;
+  try {
+    check = integrated_precession(I, Is, omega, alpha, 1e-12, kCheckSteps);
+  } catch (const std::runtime_error&) {
+  }
+  const std::string skipped = fmt::format("not run: needs more than {} steps", kCheckSteps);
+  const char* labels[] = {
+      "phi_dot, 3's turn about L in a quarter period", "|integrated / closed-form phi_dot - 1|",
+      "angle of 3 from its start after 2 pi / phi_dot", "max |L - L0| / |L0| in space"};
+  if (check) {
+    report.result("integrated_space_precession_rate_rad_s", labels[0], check->space_rate, "rad/s");
+    report.result("integrated_rate_error_rel", labels[1],
+                  std::abs(check->space_rate / p.space_rate - 1), "");
+    report.result("integrated_axis_return_rad", labels[2], check->axis_return, "rad");
+    report.result("integrated_L_drift_rel", labels[3], check->L_space_drift_rel, "");
+  } else {
+    report.result_none("integrated_space_precession_rate_rad_s", labels[0], "rad/s", skipped);
+    report.result_none("integrated_rate_error_rel", labels[1], "", skipped);
+    report.result_none("integrated_axis_return_rad", labels[2], "rad", skipped);
+    report.result_none("integrated_L_drift_rel", labels[3], "", skipped);
+  }
+
+  report.section("angles and cones (eq. 144, section 6.1)");
+  report.result("theta_deg", "theta, L to 3: tan theta = (I/Is) tan alpha", theta_deg, "deg",
+                report.textbook("> alpha for a prolate body"));
+  report.result("body_cone_half_angle_deg", "body cone about 3: alpha", rad_to_deg(p.body_cone),
+                "deg");
+  report.result("space_cone_half_angle_deg", "space cone about L: |theta - alpha| (omega to L)",
+                rad_to_deg(p.space_cone), "deg");
+  report.result_text("cones_touch", "the body cone rolls on the space cone's",
+                     to_string(p.contact));
+
+  const std::string numbers =
+      fmt::format("Is/I = {:.6g}, alpha = {:.6g} deg, theta = {:.6g} deg, omega to L = {:.6g} deg",
+                  Is / I, alpha_deg, theta_deg, rad_to_deg(p.space_cone));
+  if (p.contact == ConeContact::kOutside) {
+    report.note(
+        "errata: section 6.1 says the space cone can engulf the body cone for a prolate "
+        "body; it cannot: here (" +
+        numbers +
+        ") theta > alpha, omega lies between L and 3, "
+        "and the body cone rolls on the OUTSIDE of the space cone (neither encloses the "
+        "other). The text's 'alpha < theta for prolate' is right.");
+  } else if (p.contact == ConeContact::kInside) {
+    report.note(
+        "errata: section 6.1 says the space cone can be outside the body cone for an "
+        "oblate body; it is inside: here (" +
+        numbers +
+        ") theta < alpha, L lies between "
+        "3 and omega, and the body cone surrounds the space cone and rolls on it. The "
+        "text's 'alpha > theta for oblate' is right.");
+  }
+  if (p.contact != ConeContact::kNone) {
+    report.note(fmt::format(
+        "errata: section 6.1 (the applet and Marion's description) calls the angle between L "
+        "(z) and omega alpha; in eqs. 142-149 alpha is the angle between omega and the symmetry "
+        "axis 3. The angle omega makes with L is the space cone's half-angle |theta - alpha| = "
+        "{:.6g} deg, not alpha = {:.6g} deg.",
+        rad_to_deg(p.space_cone), alpha_deg));
+  }
+  if (in.preset == "frisbee" && example) {
+    report.note(fmt::format(
+        "Feynman's plate (section 6.1): the quote says the medallion rotates twice as fast as "
+        "the wobble; eq. 149 and these numbers say the reverse. The wobble, phi_dot = {:.6g} "
+        "rad/s (3 about L in space), is {:.6g} times the spin of the plate about its own axis, "
+        "|psi_dot| = omega cos alpha = {:.6g} rad/s (equal in size to the body-frame rate "
+        "Omega = {:.6g} rad/s). The 2:1 is wobble:spin, as the text's eq. 149 says.",
+        p.space_rate, p.space_rate / std::abs(p.spin_rate), std::abs(p.spin_rate), p.body_rate));
+  }
+  if (in.preset == "earth" && example) {
+    const double day_ratio = kSolarDay / kSiderealDay;
+    report.note(fmt::format(
+        "errata: the text's 305 and 0.997 days use two different days. With omega = 2 pi per "
+        "sidereal day, 2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d; with omega = 2 pi per "
+        "solar day (86400 s), they are {:.4g} d and {:.4g} d. 305 needs the sidereal day, 0.997 "
+        "the solar one.",
+        p.body_period / kSolarDay, p.space_period / kSolarDay,
+        p.body_period / kSolarDay * day_ratio, p.space_period / kSolarDay * day_ratio));
+    report.note(
+        "The observed free wobble of the Earth, the Chandler wobble, has a period of about "
+        "433 days (the text says 440): the Earth is not rigid (its elastic mantle and oceans "
+        "yield to the wobble), which lengthens the rigid-body period.");
+  }
+
+  // Beside the run, the other kind of body at the same omega and alpha: the frisbee's
+  // thin disk (oblate) for a prolate run, the football's spheroid for an oblate one.
+  const bool prolate = p.contact == ConeContact::kOutside;
+  const Preset other = preset_of(prolate ? "frisbee" : "football");
+  report.contrast = {
+      other.Is / other.I, free_symmetric_precession(other.I, other.Is, omega, alpha),
+      prolate ? "for contrast, an oblate thin disk" : "for contrast, a prolate football",
+      prolate ? "for contrast, an oblate body: its body cone surrounds the space cone"
+              : "for contrast, a prolate body: its body cone rolls outside the space cone"};
+  return report;
+}
+
+LabProgram<Inputs, Report> program() {
+  LabProgram<Inputs, Report> p{kName, kTitle, input_table()};
+  p.compute = compute;
+  p.figures = figures;
+  p.animation = animation;
+  return p;
+}
+
+}  // namespace rigid::lab::football

@@ -1,0 +1,266 @@
+// football's library in-process: the three presets against the text's numbers
+// and eqs. 143-149 typed here, a sphere, an oblate body of other inputs, the
+// integrated cross-check, the rules compute() holds its inputs to, and the
+// motion: exact at any time, in any order, its still the "cones" figure.
+#include "football/football.h"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "lab_library.h"
+
+using rigid::lab::football::compute;
+using rigid::lab::football::Inputs;
+using rigid::lab::football::Motion;
+using rigid::test::value;
+
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+Inputs preset(const char* name) {
+  Inputs in;
+  in.preset = name;
+  return in;
+}
+
+bool same(const rigid::render::Color& a, const rigid::render::Color& b) {
+  return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
+}
+
+// Two scenes hold the same title, camera, surfaces, lines and labels, bit for bit.
+void check_same_scene(const rigid::render::Scene3D& a, const rigid::render::Scene3D& b) {
+  CHECK(a.title == b.title);
+  CHECK(a.camera.eye == b.camera.eye);
+  CHECK(a.camera.target == b.camera.target);
+  CHECK(a.camera.fov_y_deg == b.camera.fov_y_deg);
+  REQUIRE(a.objects().size() == b.objects().size());
+  for (std::size_t i = 0; i < a.objects().size(); ++i) {
+    const auto &x = a.objects()[i], &y = b.objects()[i];
+    CHECK(x.shape == y.shape);
+    CHECK(x.transform.matrix() == y.transform.matrix());
+    CHECK(same(x.material.color, y.material.color));
+    CHECK(x.material.opacity == y.material.opacity);
+    CHECK(x.label == y.label);
+  }
+  REQUIRE(a.polylines().size() == b.polylines().size());
+  for (std::size_t i = 0; i < a.polylines().size(); ++i) {
+    const auto &x = a.polylines()[i], &y = b.polylines()[i];
+    CHECK(x.points == y.points);
+    CHECK(same(x.color, y.color));
+    CHECK(x.width == y.width);
+    CHECK(x.label == y.label);
+  }
+  REQUIRE(a.labels().size() == b.labels().size());
+  for (std::size_t i = 0; i < a.labels().size(); ++i) {
+    CHECK(a.labels()[i].position == b.labels()[i].position);
+    CHECK(a.labels()[i].text == b.labels()[i].text);
+    CHECK(same(a.labels()[i].color, b.labels()[i].color));
+  }
+}
+
+// The figures as they are handed over, by name.
+struct KeptFigures : rigid::lab::FigureSink {
+  std::map<std::string, rigid::render::Scene3D> scenes;
+  std::map<std::string, rigid::render::Plot2D> plots;
+  void add(const std::string& name, const std::string&, rigid::render::Plot2D plot) override {
+    plots.emplace(name, std::move(plot));
+  }
+  void add(const std::string& name, const std::string&, rigid::render::Scene3D scene) override {
+    scenes.emplace(name, std::move(scene));
+  }
+};
+
+}  // namespace
+
+TEST_CASE("football: the default football is prolate, its body cone rolls outside") {
+  const auto report = compute(Inputs{});
+  const auto& r = report.results();
+  for (const char* key : {"body_precession_rate_rad_s", "space_precession_rate_rad_s", "theta_deg",
+                          "body_cone_half_angle_deg", "space_cone_half_angle_deg", "cones_touch",
+                          "body_precession_period_s", "space_precession_period_s"})
+    CHECK(r.contains(key));
+  CHECK(r.at("cones_touch") == "outside");
+  CHECK(value(r, "body_precession_rate_rad_s") < 0);  // prolate: omega turns clockwise about 3
+  CHECK(value(r, "theta_deg") > value(r, "body_cone_half_angle_deg"));
+  // Independent: theta - alpha from tan theta = (I/Is) tan alpha, formed by subtraction
+  // (fine at 10 deg: cancellation costs ~1 digit of 16).
+  const double I = value(r, "moment_transverse_kg_m2"), Is = value(r, "moment_symmetry_kg_m2");
+  const double alpha = 10.0 * M_PI / 180;
+  const double theta = std::atan(I / Is * std::tan(alpha));
+  CHECK(value(r, "space_cone_half_angle_deg") ==
+        Approx((theta - alpha) * 180 / M_PI).epsilon(1e-12));
+  // The NFL-sized spheroid, m (b^2 + c^2)/5 and m (a^2 + c^2)/5.
+  CHECK(Is == Approx(0.42 * 2 * 0.085 * 0.085 / 5).epsilon(1e-15));
+  CHECK(I == Approx(0.42 * (0.14 * 0.14 + 0.085 * 0.085) / 5).epsilon(1e-15));
+  CHECK(value(r, "body_precession_period_s") ==
+        Approx(2 * M_PI / std::abs(value(r, "body_precession_rate_rad_s"))).epsilon(1e-15));
+}
+
+TEST_CASE("football: the frisbee (Is = 2I) gives eqs. 148-149 and the wobble is twice the spin") {
+  const auto report = compute(preset("frisbee"));
+  const auto& r = report.results();
+  const double omega = 30.0, alpha = 5.0 * M_PI / 180;
+  CHECK(value(r, "moment_symmetry_kg_m2") == 2 * value(r, "moment_transverse_kg_m2"));
+  // (Is - I)/I is exactly 1 for Is = 2I, so Omega = omega cos alpha to the last bit.
+  CHECK(value(r, "body_precession_rate_rad_s") == omega * std::cos(alpha));
+  // phi_dot / omega = sqrt(1 + 3 cos^2 a) = 2 - 3 a^2/4 + O(a^4); a^4 ~ 6e-5 bounds the rest.
+  const double ratio = value(r, "space_precession_rate_rad_s") / omega;
+  CHECK(ratio == Approx(2 - 0.75 * alpha * alpha).margin(std::pow(alpha, 4)));
+  CHECK(ratio == Approx(std::sqrt(1 + 3 * std::cos(alpha) * std::cos(alpha))).epsilon(1e-15));
+  CHECK(r.at("cones_touch") == "inside");
+  CHECK(report.textbook_printed().contains("body_precession_rate_rad_s"));
+  bool feynman = false;
+  for (const auto& note : report.notes()) feynman |= note.find("Feynman") == 0;
+  CHECK(feynman);
+  // Any other physical input takes the text's example away.
+  Inputs other = preset("frisbee");
+  other.omega = 10;
+  CHECK(compute(other).textbook_printed().empty());
+}
+
+TEST_CASE("football: the Earth's periods near the text's 305 and 0.997 days") {
+  const auto report = compute(preset("earth"));
+  const auto& r = report.results();
+  // Independent: omega = 2 pi per sidereal day, Omega = 0.00327 omega cos a,
+  // phi_dot = omega sqrt(1 + (1.00327^2 - 1) cos^2 a); cos a = 1 - 5e-13.
+  const double day = 86164.0905, a = 0.2 / 3600 * M_PI / 180, c = std::cos(a);
+  const double body_days = day / (0.00327 * c) / 86400;
+  const double space_days = day / std::sqrt(1 + (1.00327 * 1.00327 - 1) * c * c) / 86400;
+  // 1e-9: the moments are 8e37 and 1.00327 times it, so (Is - I)/I carries ~1e-13 of rounding.
+  CHECK(value(r, "body_precession_period_days") == Approx(body_days).epsilon(1e-9));
+  CHECK(value(r, "space_precession_period_days") == Approx(space_days).epsilon(1e-12));
+  CHECK(report.units().at("body_precession_period_days") == "d");
+  // The text's printed values, within the rounding of their last digit and of the day used.
+  CHECK(std::abs(value(r, "body_precession_period_days") - 305) < 0.5);
+  CHECK(std::abs(value(r, "space_precession_period_days") - 0.997) < 0.004);
+  CHECK(report.textbook_printed().at("body_precession_period_days") == "305");
+  CHECK(report.textbook_printed().at("space_precession_period_days") == "0.997");
+  CHECK(r.at("cones_touch") == "inside");
+}
+
+TEST_CASE("football: a sphere has no cones and no body period") {
+  Inputs in;
+  in.inertia = Eigen::Vector2d(1, 1), in.omega = 2, in.alpha_deg = 30;
+  const auto report = compute(in);
+  const auto& r = report.results();
+  CHECK(r.at("cones_touch") == "none");
+  CHECK(r.at("body_precession_period_s").is_null());
+  CHECK(value(r, "space_precession_rate_rad_s") == Approx(2.0).epsilon(1e-15));
+}
+
+TEST_CASE("football: the integrated cross-check agrees with the closed form for every preset") {
+  for (const char* name : {"football", "frisbee", "earth"}) {
+    INFO(name);
+    const auto report = compute(preset(name));
+    const auto& r = report.results();
+    // dopri5 at tolerance 1e-12 for one period: the global error is far below 1e-9.
+    CHECK(value(r, "integrated_rate_error_rel") < 1e-9);
+    CHECK(value(r, "integrated_axis_return_rad") < 1e-9);
+    CHECK(value(r, "integrated_L_drift_rel") < 1e-9);
+    CHECK(report.units().at("integrated_space_precession_rate_rad_s") == "rad/s");
+  }
+}
+
+TEST_CASE("football: an oblate body at another spin and angle against eqs. 109 and 143-147") {
+  const double I = 0.3, Is = 0.5, omega = 7, alpha = 25 * kDeg;
+  Inputs in;
+  in.inertia = Eigen::Vector2d(0.3, 0.5), in.omega = 7, in.alpha_deg = 25;
+  const auto report = compute(in);
+  const auto& r = report.results();
+  const double s = std::sin(alpha), c = std::cos(alpha);
+  CHECK(value(r, "body_precession_rate_rad_s") == Approx(omega * c * (Is - I) / I).epsilon(1e-14));
+  const double L = omega * std::sqrt(I * I * s * s + Is * Is * c * c);  // eq. 143
+  CHECK(value(r, "space_precession_rate_rad_s") == Approx(L / I).epsilon(1e-14));
+  const double theta = std::atan(I / Is * std::tan(alpha));  // eq. 144
+  CHECK(value(r, "theta_deg") == Approx(theta / kDeg).epsilon(1e-14));
+  CHECK(value(r, "space_cone_half_angle_deg") == Approx((alpha - theta) / kDeg).epsilon(1e-12));
+  CHECK(r.at("cones_touch") == "inside");  // oblate: theta < alpha
+  CHECK(value(r, "body_precession_period_s") ==
+        Approx(2 * M_PI * I / (omega * c * (Is - I))).epsilon(1e-14));
+}
+
+TEST_CASE("football: the inputs recorded are the preset and those given") {
+  const auto text = compute(Inputs{});
+  CHECK(text.inputs() == rigid::lab::Json{{"preset", "football"}});
+  CHECK(text.textbook_inputs());
+  Inputs in = preset("earth");
+  in.omega = 1e-4;
+  const auto earth = compute(in);
+  CHECK(earth.inputs() == rigid::lab::Json{{"preset", "earth"}, {"omega", 1e-4}});
+  CHECK(!earth.textbook_inputs());
+  // alpha the preset's: the Earth's 0.2 arcsec is reported in radians too
+  CHECK(value(earth.results(), "alpha_rad") == Approx(0.2 / 3600 * kDeg).epsilon(1e-15));
+  // what the figures and the motion draw is what was used
+  CHECK(earth.omega == 1e-4);
+  CHECK(earth.alpha_deg == 0.2 / 3600.0);
+  CHECK(earth.Is / earth.I == Approx(1.00327).epsilon(1e-15));
+}
+
+TEST_CASE("football: a broken rule is an InputError naming the input") {
+  using rigid::lab::InputError;
+  using rigid::test::names_input;
+  Inputs in;
+  in.alpha_deg = 0;
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--alpha-deg"));
+  in.alpha_deg = 90;
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--alpha-deg"));
+  in.alpha_deg = std::nan("");
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--alpha-deg"));
+  in = Inputs{};
+  in.inertia = Eigen::Vector2d(1, 3);  // Is > 2I: no such body
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--inertia"));
+  in.inertia = Eigen::Vector2d(-1, 1);
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--inertia"));
+  in = preset("moon");
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--preset"));
+  in = Inputs{};
+  in.omega = 0;
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--omega"));
+  // a preset's moments and moments given are alternatives
+  in = preset("earth");
+  in.inertia = Eigen::Vector2d(1, 1);
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--inertia"));
+}
+
+TEST_CASE("football: the motion is exact at any time, in any order; its still is the cones") {
+  for (const char* name : {"football", "frisbee", "earth"}) {
+    INFO(name);
+    std::optional<Motion> first, second;
+    {
+      // the motion keeps no reference to its report
+      const auto report = compute(preset(name));
+      first.emplace(report);
+      second.emplace(report);
+      CHECK(first->seconds() == 2 * report.precession.space_period);
+      const auto animation = rigid::lab::football::animation(report, nullptr);
+      CHECK(animation.seconds == first->seconds());
+      CHECK(animation.still == "cones");
+      KeptFigures figures;
+      rigid::lab::football::figures(report, figures);
+      REQUIRE(figures.scenes.count("cones") == 1);
+      check_same_scene(animation.scene(0.0), figures.scenes.at("cones"));
+      CHECK(figures.scenes.count("cones_contrast") == 1);
+      CHECK(figures.plots.count("rates") == 1);
+    }
+    std::vector<double> times;
+    for (int k = 0; k < 24; ++k) times.push_back(first->seconds() * k / 17.0);
+    std::vector<rigid::render::Scene3D> in_order;
+    for (const double t : times) in_order.push_back(first->scene(t));
+    std::vector<std::size_t> order(times.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::shuffle(order.begin(), order.end(), std::mt19937(7));
+    for (const std::size_t k : order) {
+      INFO("t = " << times[k]);
+      check_same_scene(second->scene(times[k]), in_order[k]);
+    }
+    // and it moves: the symmetry axis has turned about L a quarter period on
+    const auto axis3 = [](const rigid::render::Scene3D& s) { return s.labels()[1].position; };
+    CHECK((axis3(first->scene(0.25 * first->seconds() / 2)) - axis3(in_order[0])).norm() > 0.1);
+  }
+}
