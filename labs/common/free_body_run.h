@@ -57,8 +57,8 @@ bool fixed_step(const IntegrationInputs& in);
 /// The options of the chosen method: the tolerance, the step (`default_step` unless
 /// --step was given) and at most `max_steps` steps. Warns (Report::warn) of --step or
 /// --tolerance given where nothing uses them.
-IntegrateOptions integration_options(Report& report, const IntegrationInputs& in, double default_step,
-                                     std::size_t max_steps);
+IntegrateOptions integration_options(Report& report, const IntegrationInputs& in, bool compared,
+                                     double default_step, std::size_t max_steps);
 
 /// Runs the chosen method from exact.state(0) through `times` (the exact motion
 /// sampled, for "exact"), and reports its error against the exact motion

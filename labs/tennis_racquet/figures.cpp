@@ -1,8 +1,6 @@
 // tennis_racquet's figures: omega against t for a spin about each principal
 // axis, the growth of the disturbance on a log scale, the racquet turning over
 // during one flip, and its polhodes with the separatrix.
-#include "figures.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +9,7 @@
 #include "common/free_body_scenes.h"
 #include "rigid/poinsot.h"
 #include "rigid/units.h"
+#include "tennis_racquet/tennis_racquet.h"
 
 namespace rigid::lab::tennis_racquet {
 using Eigen::Vector3d;
@@ -19,7 +18,7 @@ namespace {
 const char* const kAxisWords[] = {"the handle", "in the plane", "the face's normal"};
 
 // omega_1, omega_2, omega_3 against t for the launch about each axis (sections 4.1.1-4.1.2).
-render::Plot2D omega_plot(const Figures& f) {
+render::Plot2D omega_plot(const Report& f) {
   render::Plot2D plot(3, 1);
   plot.title = "\\omega in body axes for a spin about each principal axis";
   const int samples = 1500;
@@ -49,7 +48,7 @@ render::Plot2D omega_plot(const Figures& f) {
 
 // The transverse share of omega about axis 2 on a log scale, with lines of the
 // predicted, the measured and the text's slope through the end of the fit.
-render::Plot2D growth_plot(const Figures& f) {
+render::Plot2D growth_plot(const Report& f) {
   const FreeBodyExact& motion = f.launches[1];
   const double flip = first_sign_change(motion, 1);
   const int samples = 800;
@@ -99,26 +98,10 @@ render::Plot2D growth_plot(const Figures& f) {
   return plot;
 }
 
-// The racquet turned by R (body to display) about its centre of mass at c: the head
-// (a ring), its two faces in their colours (unshaded: each keeps its swatch's colour
-// however it is turned), the handle; named in the legend if `named`.
-void add_racquet(render::Scene3D& scene, const Racquet& r, const Eigen::Matrix3d& R,
-                 const Vector3d& c, bool named) {
-  const double a = r.cm_offset > 0 ? (r.handle_start - r.head_centre).norm() : 0.0;
-  const Vector3d head = c + R * r.head_centre, n3 = R.col(2);
-  scene.add_torus(head, n3, a, 0.06 * a, {render::kGray}, named ? "the head, a ring" : "");
-  scene.add_disk(head + 0.004 * a * n3, n3, 0.96 * a, flat_body(colors::kBody, 1.0f),
-                 named ? "face toward +3" : "");
-  scene.add_disk(head - 0.004 * a * n3, -n3, 0.96 * a, flat_body(render::kYellow, 1.0f),
-                 named ? "face toward -3" : "");
-  scene.add_cylinder(c + R * r.handle_start, c + R * r.handle_end, 0.05 * a, {render::kBlack},
-                     named ? "the handle, axis 1" : "");
-}
-
 // The racquet (ring, strings, handle) at instants of one flip, in a frame that
 // keeps L vertical and turns with the handle about L, so only the turning over
 // is left; body axis 2 goes from along L to against it.
-render::Scene3D flip_scene(const Figures& f) {
+render::Scene3D flip_scene(const Report& f) {
   const FreeBodyExact& motion = f.launches[1];
   const Racquet& r = f.racquet;
   const double flip = first_sign_change(motion, 1);
@@ -171,67 +154,34 @@ render::Scene3D flip_scene(const Figures& f) {
 
 }  // namespace
 
-render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int axis, double t,
-                           const std::function<FreeBodyState(double)>& state_at) {
-  const Eigen::Quaterniond to_display =
-      Eigen::Quaterniond::FromTwoVectors(motion.L_space(), Vector3d::UnitZ());
-  const FreeBodyState x = state_at ? state_at(t) : motion.state(t);
-  const Eigen::Matrix3d R = (to_display * attitude(x).normalized()).toRotationMatrix();
+// The racquet turned by R (body to display) about its centre of mass at c: the head
+// (a ring), its two faces in their colours (unshaded: each keeps its swatch's colour
+// however it is turned), the handle; named in the legend if `named`.
+void add_racquet(render::Scene3D& scene, const Racquet& r, const Eigen::Matrix3d& R,
+                 const Vector3d& c, bool named) {
   const double a = r.cm_offset > 0 ? (r.handle_start - r.head_centre).norm() : 0.0;
-  const double length = (r.handle_end - r.head_centre).norm() + a;
-  const double I2 = motion.moments().I2, L = motion.angular_momentum_magnitude();
-  const double angle2 = std::acos(std::clamp(I2 * omega_body(x)(1) / L, -1.0, 1.0));
-  render::Scene3D scene;
-  scene.title = axis == 1 ? fmt::format(
-                                "spun about axis 2, it turns over and back: t = {:.3f} s, "
-                                "axis 2 at {:.0f}\\deg from L",
-                                t, rad_to_deg(angle2))
-                          : fmt::format(
-                                "spun about axis {}, it wobbles: t = {:.3f} s, axis 2 at "
-                                "{:.0f}\\deg from L",
-                                axis + 1, t, rad_to_deg(angle2));
-  add_racquet(scene, r, R, Vector3d::Zero(), true);
-  scene.add_arrow(Vector3d::Zero(), 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {colors::kL},
-                  "L, fixed in space");
-  scene.add_arrow(Vector3d::Zero(), 0.45 * length * R.col(1), 0.03 * a, {colors::kPrincipal[1]},
-                  "body axis 2");
-  scene.camera.eye = Vector3d(2.5 * length, -3.0 * length, 1.6 * length);
-  scene.camera.target = Vector3d::Zero();
-  scene.camera.fov_y_deg = 30;
-  return scene;
+  const Vector3d head = c + R * r.head_centre, n3 = R.col(2);
+  scene.add_torus(head, n3, a, 0.06 * a, {render::kGray}, named ? "the head, a ring" : "");
+  scene.add_disk(head + 0.004 * a * n3, n3, 0.96 * a, flat_body(colors::kBody, 1.0f),
+                 named ? "face toward +3" : "");
+  scene.add_disk(head - 0.004 * a * n3, -n3, 0.96 * a, flat_body(render::kYellow, 1.0f),
+                 named ? "face toward -3" : "");
+  scene.add_cylinder(c + R * r.handle_start, c + R * r.handle_end, 0.05 * a, {render::kBlack},
+                     named ? "the handle, axis 1" : "");
 }
 
-render::Plot2D omega_strip(const FreeBodyExact& motion, double t_end, double t) {
-  constexpr int kSamples = 600;
-  std::vector<double> ts(kSamples), w[3];
-  for (int n = 0; n < kSamples; ++n) {
-    ts[n] = t_end * n / (kSamples - 1);
-    const Vector3d omega = motion.omega_body(ts[n]);
-    for (int i = 0; i < 3; ++i) w[i].push_back(omega(i));
-  }
-  render::Plot2D plot;
-  render::Panel& panel = plot.panel();
-  panel.x = {"t (s)", render::Scale::kLinear, 0, t_end};
-  panel.y.label = "\\omega_i (rad/s)";
-  for (int i = 0; i < 3; ++i) {
-    panel.add_line(ts, w[i], fmt::format("\\omega_{}", i + 1)).color = colors::kPrincipal[i];
-  }
-  panel.add_ref_line(t, true).color = colors::kMarker;
-  panel.legend = render::LegendPlace::kAuto;
-  return plot;
-}
-
-void draw(FigureSet& set, const Figures& f) {
-  set.add("omega", "omega(t) for a spin about each axis: only axis 2 flips", omega_plot(f));
+void figures(const Report& f, FigureSink& sink) {
+  sink.add("omega", "omega(t) for a spin about each axis: only axis 2 flips", omega_plot(f));
   // A racquet that does not flip (moments equal to double precision) has neither.
   if (f.growth) {
-    set.add("growth", "the disturbance grows at the predicted rate until the flip", growth_plot(f));
-    set.add("flip", "the racquet turns over about its handle", flip_scene(f));
+    sink.add("growth", "the disturbance grows at the predicted rate until the flip",
+             growth_plot(f));
+    sink.add("flip", "the racquet turns over about its handle", flip_scene(f));
   }
   const FreeBodyExact& motion = f.launches[f.spin_axis];
   const Vector3d omega0 = motion.omega_body(0.0);
-  set.add("polhodes", "this racquet's polhode beside the separatrix",
-          polhodes_scene(motion, omega0, polhode(motion.moments(), omega0, 400)));
+  sink.add("polhodes", "this racquet's polhode beside the separatrix",
+           polhodes_scene(motion, omega0, polhode(motion.moments(), omega0, 400)));
 }
 
 }  // namespace rigid::lab::tennis_racquet

@@ -1,0 +1,131 @@
+// tennis_racquet's motion: the racquet of the run turning in space with L fixed
+// and drawn up, omega's components in a strip below; from the closed form, or from
+// the integrator that --method names.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "rigid/units.h"
+#include "tennis_racquet/tennis_racquet.h"
+
+namespace rigid::lab::tennis_racquet {
+using Eigen::Vector3d;
+namespace {
+
+// The racquet in state x at time t of `motion`, L turned to display z: spun about axis 2
+// it turns over and back.
+render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int axis, double t,
+                           const FreeBodyState& x) {
+  const Eigen::Quaterniond to_display =
+      Eigen::Quaterniond::FromTwoVectors(motion.L_space(), Vector3d::UnitZ());
+  const Eigen::Matrix3d R = (to_display * attitude(x).normalized()).toRotationMatrix();
+  const double a = r.cm_offset > 0 ? (r.handle_start - r.head_centre).norm() : 0.0;
+  const double length = (r.handle_end - r.head_centre).norm() + a;
+  const double I2 = motion.moments().I2, L = motion.angular_momentum_magnitude();
+  const double angle2 = std::acos(std::clamp(I2 * omega_body(x)(1) / L, -1.0, 1.0));
+  render::Scene3D scene;
+  scene.title = axis == 1 ? fmt::format(
+                                "spun about axis 2, it turns over and back: t = {:.3f} s, "
+                                "axis 2 at {:.0f}\\deg from L",
+                                t, rad_to_deg(angle2))
+                          : fmt::format(
+                                "spun about axis {}, it wobbles: t = {:.3f} s, axis 2 at "
+                                "{:.0f}\\deg from L",
+                                axis + 1, t, rad_to_deg(angle2));
+  add_racquet(scene, r, R, Vector3d::Zero(), true);
+  scene.add_arrow(Vector3d::Zero(), 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {colors::kL},
+                  "L, fixed in space");
+  scene.add_arrow(Vector3d::Zero(), 0.45 * length * R.col(1), 0.03 * a, {colors::kPrincipal[1]},
+                  "body axis 2");
+  scene.camera.eye = Vector3d(2.5 * length, -3.0 * length, 1.6 * length);
+  scene.camera.target = Vector3d::Zero();
+  scene.camera.fov_y_deg = 30;
+  return scene;
+}
+
+// The states at `samples`, by time.
+void cache(std::map<double, FreeBodyState>& states, const std::vector<FreeBodySample>& samples) {
+  for (const FreeBodySample& s : samples) states[s.t] = make_state(s.omega_body, s.attitude);
+}
+
+}  // namespace
+
+Motion::Motion(const Report& report, const std::vector<double>& sample_times)
+    : racquet_(report.racquet),
+      motion_(report.launches.at(report.spin_axis)),
+      axis_(report.spin_axis),
+      t_end_(report.t_end),
+      integrator_(report.drawn_integrator) {
+  // The strip's lines are the same in every frame: sampled once.
+  constexpr int kSamples = 600;
+  for (int n = 0; n < kSamples; ++n) {
+    strip_t_.push_back(t_end_ * n / (kSamples - 1));
+    const Vector3d omega = motion_.omega_body(strip_t_.back());
+    for (int i = 0; i < 3; ++i) strip_omega_[i].push_back(omega(i));
+  }
+  if (!integrator_) return;
+  cache(states_, report.run);
+  // One run from the launch through every sample time, as the frames were always
+  // drawn (a frame time the run also sampled takes this run's state).
+  std::vector<double> times{0.0};
+  for (const double t : sample_times) {
+    if (t > 0.0) times.push_back(t);
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  if (times.size() < 2) return;
+  try {
+    cache(states_,
+          integrate_free_body(motion_.moments(), motion_.state(0.0), times, *integrator_).samples);
+  } catch (const std::exception& e) {
+    throw InputError(is_adaptive(integrator_->method) ? "--tolerance" : "--step", e.what());
+  }
+}
+
+FreeBodyState Motion::state(double t) const {
+  if (!integrator_) return motion_.state(t);
+  auto next = states_.upper_bound(t);
+  if (next == states_.begin()) {
+    throw std::invalid_argument(fmt::format("the integrated motion starts at t = 0 (got {:g})", t));
+  }
+  const auto& [t0, x0] = *std::prev(next);
+  if (t0 == t) return x0;
+  const IntegrationResult run = integrate_free_body(motion_.moments(), x0, {t0, t}, *integrator_);
+  const FreeBodySample& s = run.samples.back();
+  return make_state(s.omega_body, s.attitude);
+}
+
+render::Scene3D Motion::scene(double t) const {
+  return spin_scene(racquet_, motion_, axis_, t, state(t));
+}
+
+render::Plot2D Motion::strip(double t) const {
+  render::Plot2D plot;
+  render::Panel& panel = plot.panel();
+  panel.x = {"t (s)", render::Scale::kLinear, 0, t_end_};
+  panel.y.label = "\\omega_i (rad/s)";
+  for (int i = 0; i < 3; ++i) {
+    panel.add_line(strip_t_, strip_omega_[i], fmt::format("\\omega_{}", i + 1)).color =
+        colors::kPrincipal[i];
+  }
+  panel.add_ref_line(t, true).color = colors::kMarker;
+  panel.legend = render::LegendPlace::kAuto;
+  return plot;
+}
+
+Animation animation(const Report& report, const FrameTimes& frame_times) {
+  const auto motion = std::make_shared<const Motion>(
+      report, report.drawn_integrator ? frame_times(report.t_end) : std::vector<double>{});
+  Animation a;
+  a.seconds = motion->seconds();
+  a.caption = "the racquet turning in space, omega's components below";
+  a.scene = [motion](double t) { return motion->scene(t); };
+  a.strip = [motion](double t) { return motion->strip(t); };
+  a.strip_share = 0.3;
+  return a;
+}
+
+}  // namespace rigid::lab::tennis_racquet
