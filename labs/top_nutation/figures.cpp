@@ -1,21 +1,27 @@
-// top_nutation's figures: the effective potential with E' and the turning
-// points, the axis's path on the unit sphere in three regimes, theta(t) and
-// phi_dot(t) exact beside integrated, the top in 3D, and every integrator.
-#include "figures.h"
-
+// top_nutation's figures and motion: the effective potential with E' and the
+// turning points, the axis's path on the unit sphere in three regimes, theta(t)
+// and phi_dot(t) exact beside integrated, the top in 3D (the first frame of its
+// motion), and every integrator.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <memory>
+#include <stdexcept>
 
 #include "common/integrator_plot.h"
 #include "rigid/units.h"
+#include "top_nutation/top_nutation.h"
 
 namespace rigid::lab::top_nutation {
 using Eigen::Vector3d;
 namespace {
+
+// The animation's path of the symmetry axis: this many nutation periods behind the top.
+constexpr int kPathPeriods = 10;
 
 // The symmetry axis in space, R e3, from Euler angles.
 Vector3d axis_of(double theta, double phi) {
@@ -140,59 +146,145 @@ double phi_dot_of(const TopSample& s) {
 }
 
 // theta(t) and phi_dot(t): the exact motion beside an integrated run.
-render::Plot2D theta_plot(const Figures& f) {
+render::Plot2D theta_plot(const HeavyTopExact& motion, const TopRun& integrated_run, double t_end) {
   std::vector<double> t, theta, phi_dot, ti, thetai, phi_doti;
   for (int k = 0; k <= 1200; ++k) {
-    t.push_back(f.t_end * k / 1200);
-    const TopAngles a = f.motion.angles(t.back());
+    t.push_back(t_end * k / 1200);
+    const TopAngles a = motion.angles(t.back());
     theta.push_back(rad_to_deg(a.theta));
     phi_dot.push_back(a.phi_dot);
   }
-  const std::size_t stride = std::max<std::size_t>(1, f.integrated.samples.size() / 60);
-  for (std::size_t i = 0; i < f.integrated.samples.size(); i += stride) {
-    const TopSample& s = f.integrated.samples[i];
+  const std::size_t stride = std::max<std::size_t>(1, integrated_run.samples.size() / 60);
+  for (std::size_t i = 0; i < integrated_run.samples.size(); i += stride) {
+    const TopSample& s = integrated_run.samples[i];
     ti.push_back(s.t);
     thetai.push_back(rad_to_deg(s.theta));
     phi_doti.push_back(phi_dot_of(s));
   }
-  const std::string integrated = std::string(method_name(f.integrated.method)) + ", integrated";
+  const std::string integrated = std::string(method_name(integrated_run.method)) + ", integrated";
   render::Plot2D plot(2, 1);
   plot.title = "nutation and precession";
   render::Panel& top = plot.panel(0, 0);
   top.y.label = "\\theta (\\deg)";
   top.add_line(t, theta, "exact").color = render::kBlue;
   top.add_points(ti, thetai, integrated).color = render::kVermillion;
-  top.add_ref_line(rad_to_deg(f.motion.theta_min()), false, "\\theta_{min}");
-  top.add_ref_line(rad_to_deg(f.motion.theta_max()), false, "\\theta_{max}");
+  top.add_ref_line(rad_to_deg(motion.theta_min()), false, "\\theta_{min}");
+  top.add_ref_line(rad_to_deg(motion.theta_max()), false, "\\theta_{max}");
   render::Panel& bottom = plot.panel(1, 0);
   bottom.x.label = "t (s)";
   bottom.y.label = "\\phi-dot (rad/s)";
   bottom.add_line(t, phi_dot, "exact").color = render::kBlue;
   bottom.add_points(ti, phi_doti, integrated).color = render::kVermillion;
-  bottom.add_ref_line(f.motion.mean_precession_rate(), false,
-                      fmt::format("mean {:.4g} rad/s", f.motion.mean_precession_rate()));
+  bottom.add_ref_line(motion.mean_precession_rate(), false,
+                      fmt::format("mean {:.4g} rad/s", motion.mean_precession_rate()));
   bottom.legend = render::LegendPlace::kNone;
   return plot;
 }
 
-// The top at t = 0: tip, spindle and disk, with L, the gravity torque and the
-// circle its centre of mass sweeps as it precesses.
+// Each integrator's theta error (deg) and energy error against t, as curves.
+std::vector<MethodCurve> method_curves(const std::vector<TopComparison>& methods) {
+  std::vector<MethodCurve> curves;
+  for (const TopComparison& c : methods) {
+    std::vector<double> deg;
+    for (const double e : c.theta_error) deg.push_back(rad_to_deg(e));
+    curves.push_back({c.options.method, method_label(c.options),
+                      c.completed && std::isfinite(c.max_theta_error), c.t, deg, c.energy_error});
+  }
+  return curves;
+}
+
 }  // namespace
 
-// The animation's path of the symmetry axis: this many nutation periods behind the top.
-constexpr int kPathPeriods = 10;
+void figures(const Report& report, FigureSink& sink) {
+  const HeavyTopExact& motion = *report.motion;
+  // Beside the exact motion, an integrated one: the lab's own, or splitting4 at its default
+  // step.
+  TopRun splitting4;
+  if (report.method == "exact") {
+    OdeOptions o = report.options;
+    o.method = Method::kSplitting4;
+    splitting4 = integrate_heavy_top(report.top, heavy_top_state(motion.angles(0.0)),
+                                     sample_times(report.t_end, report.scale, o.step), o);
+  }
+  const TopRun& integrated = report.method == "exact" ? splitting4 : report.run;
+  sink.add("potential", "the effective potential, E' and the turning points",
+           potential_plot(motion));
+  sink.add("paths", "the axis's path on the sphere: wavy, cusped, looping", paths_scene(motion));
+  sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
+           theta_plot(motion, integrated, report.t_end));
+  sink.add("top", "the top, L, the gravity torque and the precession circle",
+           Motion(report).scene(0.0));
+  // A sleeping top has no comparison at equal cost: the one at the lab's settings.
+  const bool equal_cost = !report.at_cost.empty();
+  const double evaluations = report.at_cost_evaluations;
+  sink.add(
+      "integrators",
+      equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
+                               "nutation period) over {:g} periods against the exact theta",
+                               evaluations, report.at_cost_periods)
+                 : "every integrator against the exact theta",
+      integrators_plot(
+          method_curves(equal_cost ? report.at_cost : report.methods),
+          equal_cost ? fmt::format("at equal cost: {:g} evaluations a period", evaluations)
+                     : "integrators against the exact solution",
+          equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
+          "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)"));
+}
 
-render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius, double t,
-                          const TopStateAt& state_at, const std::vector<double>& path_times) {
-  const auto state = [&](double s) {
-    return state_at ? state_at(s) : TopState{m.attitude(s), euler_omega_body(m.angles(s))};
+// ---- The motion --------------------------------------------------------------
+
+Motion::Motion(const Report& report, const std::vector<double>& sample_times)
+    : exact_(*report.motion),
+      arm_(report.arm),
+      disk_radius_(report.disk_radius),
+      seconds_(report.t_end),
+      integrated_(report.method != "exact"),
+      options_(report.options),
+      option_(report.fixed ? "--step" : "--tolerance") {
+  if (!integrated_) return;
+  const auto keep = [this](const TopRun& run) {
+    // emplace keeps a state already cached: the sampled run's before the lab's
+    for (const TopSample& s : run.samples) states_.emplace(s.t, State{s.attitude, s.omega_body});
   };
-  const TopState now = state(t);
+  if (!sample_times.empty()) {
+    // One run through every sample time, from the start, as the lab's own run is made:
+    // a frame is then what the integrator gives there, never a step of another run.
+    path_times_ = sample_times;
+    std::sort(path_times_.begin(), path_times_.end());
+    path_times_.erase(std::unique(path_times_.begin(), path_times_.end()), path_times_.end());
+    keep(for_input(option_, [&] {
+      return integrate_heavy_top(exact_.top(), heavy_top_state(exact_.angles(0.0)), path_times_,
+                                 options_);
+    }));
+  } else {
+    for (const TopSample& s : report.run.samples) path_times_.push_back(s.t);
+  }
+  keep(report.run);
+}
+
+Motion::State Motion::state(double t) const {
+  if (!integrated_) return {exact_.attitude(t), euler_omega_body(exact_.angles(t))};
+  const auto next = states_.upper_bound(t);
+  if (next == states_.begin()) {
+    throw std::invalid_argument(fmt::format("the motion starts at t = 0 (asked for t = {:g})", t));
+  }
+  const auto& [t0, s0] = *std::prev(next);
+  if (t0 == t) return s0;
+  // Between cached states: integrated on from the nearest earlier one, each time anew.
+  const TopRun run = for_input(option_, [&, t0 = t0, s0 = s0] {
+    return integrate_heavy_top(exact_.top(), make_state(s0.omega_body, s0.attitude), {t0, t},
+                               options_);
+  });
+  return {run.samples.back().attitude, run.samples.back().omega_body};
+}
+
+render::Scene3D Motion::scene(double t) const {
+  const State now = state(t);
   const Eigen::Quaterniond q = now.attitude;
   const Vector3d e3 = q * Vector3d::UnitZ();
-  const double l = arm, r = disk_radius, size = std::max(l + r, 2 * r);
+  const double l = arm_, r = disk_radius_, size = std::max(l + r, 2 * r);
   const Vector3d omega = q * now.omega_body;
-  const HeavyTop& top = m.top();
+  const HeavyTop& top = exact_.top();
   const Vector3d L_body = Vector3d(top.I, top.I, top.Is).cwiseProduct(now.omega_body);
   const Vector3d L = q * L_body;
   const Vector3d torque = -top.mgl * e3.cross(Vector3d::UnitZ());
@@ -215,14 +307,14 @@ render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius
     scene.add_polyline({(l + 0.5 * r) * e3, reach * e3}, colors::kSymmetryAxis, 2.0);
     // the last kPathPeriods nutation periods of it: over a long run the older loops only
     // fill the band between the turning circles, and a frame's cost stays bounded
-    const double T = m.nutation_period();
+    const double T = exact_.nutation_period();
     const double from = std::isfinite(T) ? std::max(0.0, t - kPathPeriods * T) : 0.0;
     std::vector<Vector3d> path;
     std::vector<double> when;
-    for (const double s : path_times) {
+    for (const double s : path_times_) {
       if (s >= from && s < t) when.push_back(s);
     }
-    if (path_times.empty()) {
+    if (path_times_.empty()) {
       const int n = std::clamp(static_cast<int>(400.0 * (t - from) / T), 2, 400 * kPathPeriods);
       for (int k = 0; k < n; ++k) when.push_back(from + (t - from) * k / n);
     }
@@ -254,34 +346,16 @@ render::Scene3D top_scene(const HeavyTopExact& m, double arm, double disk_radius
   return scene;
 }
 
-void draw(FigureSet& set, const Figures& f) {
-  set.add("potential", "the effective potential, E' and the turning points",
-          potential_plot(f.motion));
-  set.add("paths", "the axis's path on the sphere: wavy, cusped, looping", paths_scene(f.motion));
-  set.add("theta", "theta(t) and phi_dot(t), exact beside integrated", theta_plot(f));
-  set.add("top", "the top, L, the gravity torque and the precession circle",
-          top_scene(f.motion, f.arm, f.disk_radius, 0.0));
-  std::vector<MethodCurve> curves;
-  for (const TopComparison& c : f.methods) {
-    std::vector<double> deg;
-    for (const double e : c.theta_error) deg.push_back(rad_to_deg(e));
-    curves.push_back({c.options.method, method_label(c.options),
-                      c.completed && std::isfinite(c.max_theta_error), c.t, deg, c.energy_error});
-  }
-  const bool equal_cost = f.evaluations_per_period > 0.0;
-  set.add(
-      "integrators",
-      equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
-                               "nutation period) over {:g} periods against the exact theta",
-                               f.evaluations_per_period, f.periods)
-                 : "every integrator against the exact theta",
-      integrators_plot(
-          curves,
-          equal_cost
-              ? fmt::format("at equal cost: {:g} evaluations a period", f.evaluations_per_period)
-              : "integrators against the exact solution",
-          equal_cost ? TimeAxis{f.motion.nutation_period(), "nutation periods"} : TimeAxis{},
-          "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)"));
+Animation animation(const Report& report, const FrameTimes& frame_times) {
+  // Shared, not copied, by every copy of the scene function.
+  const auto motion = std::make_shared<const Motion>(
+      report, report.method == "exact" ? std::vector<double>{} : frame_times(report.t_end));
+  Animation a;
+  a.seconds = motion->seconds();
+  a.caption = "the top precessing and nodding; the path of its axis on the sphere";
+  a.still = "top";
+  a.scene = [motion](double t) { return motion->scene(t); };
+  return a;
 }
 
 }  // namespace rigid::lab::top_nutation

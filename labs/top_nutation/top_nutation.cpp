@@ -1,0 +1,383 @@
+#include "top_nutation/top_nutation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "rigid/inertia.h"
+#include "rigid/units.h"
+
+namespace rigid::lab::top_nutation {
+
+using Eigen::Vector2d;
+
+namespace {
+
+constexpr char kName[] = "top_nutation";
+constexpr char kTitle[] = "the heavy symmetric top: precession and nutation (sections 8-9)";
+constexpr double kRpm = 2 * kPi / 60.0;  // rad/s per rpm
+// A run longer than this many steps is refused rather than left to hang.
+constexpr std::size_t kMaxSteps = 20'000'000;
+// Each method of the comparison gets at most this many steps.
+constexpr std::size_t kMaxComparisonSteps = 20'000;
+// The comparison at equal cost: evaluations a nutation period, and periods.
+constexpr double kEqualCostEvaluations = 200.0;
+constexpr double kEqualCostPeriods = 100.0;
+
+// The section 8.1 example's numbers from the rounded spin the text uses.
+double rounded(double x, int digits) {
+  const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(x))));
+  return std::round(x * scale) / scale;
+}
+
+// Section 8.1: the top's moments, (a) the sleeping top's least spin, (b) a horizontal
+// top's precession and (c) steady precession at theta0.
+void report_section_8_1(Report& report, const Inputs& in, double S, double theta0) {
+  const HeavyTop& top = report.top;
+  report.section("8.1 the top: a disk on a spindle, moments about the tip");
+  report.result("moment_symmetry_kg_m2", "Is = m r^2 / 2", top.Is, "kg m^2",
+                report.textbook("2.5e-3"));
+  report.result("moment_transverse_kg_m2", "I = m r^2 / 4 + m l^2 (parallel axes)", top.I, "kg m^2",
+                report.textbook("4.45e-3"));
+  report.result("mgl_n_m", "m g l", top.mgl, "N m");
+  report.alias("mgl_nm", "mgl_n_m");  // the old name, kept one release
+
+  report.section("8.1 (a) the sleeping top: Is^2 S^2 >= 4 m g l I (eqs. 188-189)");
+  const double S_min = sleeping_min_spin(top);
+  report.result("min_spin_rad_s", "minimum spin S_min", S_min, "rad/s", report.textbook("47.3"));
+  report.result("min_spin_rev_per_s", "  in revolutions per second", S_min / (2 * kPi), "1/s",
+                report.textbook("7.52"));
+  report.result("min_spin_rpm", "  in rpm", S_min / kRpm, "rpm", report.textbook("451"));
+  report.result("min_spin_period_s", "  its spin period 2 pi / S_min", 2 * kPi / S_min, "s",
+                report.textbook("0.132"));
+
+  report.section(fmt::format("8.1 (b) horizontal, at S = {:.6g} rad/s (eq. 185)", S));
+  report.result("spin_rad_s", "spin S", S, "rad/s", report.textbook("52.4"));
+  if (S > 0) {
+    const double horizontal = horizontal_precession_rate(top, S);
+    report.result("horizontal_precession_rate_rad_s", "phi_dot = m g l / (Is S)", horizontal,
+                  "rad/s", report.textbook("5.98"));
+    report.result("horizontal_precession_rpm", "  in rpm", horizontal / kRpm, "rpm",
+                  report.textbook("57.1"));
+    report.result("horizontal_precession_period_s", "  its period", 2 * kPi / horizontal, "s",
+                  report.textbook("1.05"));
+  } else {
+    report.result_none("horizontal_precession_rate_rad_s", "phi_dot = m g l / (Is S)", "rad/s",
+                       "no spin: a horizontal top just falls");
+  }
+
+  report.section(
+      fmt::format("8.1 (c) steady precession at theta0 = {:g} deg (eq. 187)", in.theta0_deg));
+  const SteadyPrecession steady = steady_precession_rates(top, S, theta0);
+  if (steady.exists && std::isfinite(steady.fast)) {
+    report.result("steady_precession_rates_rad_s", "phi_dot, slow and fast",
+                  Vector2d(steady.slow, steady.fast), "rad/s", report.textbook("(7.75, 26.2)"));
+    report.result("steady_precession_periods_s", "  their periods",
+                  Vector2d(2 * kPi / std::abs(steady.slow), 2 * kPi / std::abs(steady.fast)), "s",
+                  report.textbook("(0.81, 0.24)"));
+  } else {
+    report.result_none("steady_precession_rates_rad_s", "phi_dot, slow and fast", "rad/s",
+                       steady.exists ? "horizontal: the fast rate is infinite"
+                                     : "Is^2 S^2 < 4 m g l I cos(theta0): no steady precession");
+  }
+}
+
+// Section 9: the exact motion's invariants, turning circles and period, and the
+// fast-top estimates where they hold.
+void report_section_9(Report& report, double S, double theta0) {
+  const HeavyTop& top = report.top;
+  const HeavyTopExact& motion = *report.motion;
+  const double I = top.I, Is = top.Is;
+  report.result("energy_j", "E (eq. 191)", motion.energy(), "J");
+  report.result("p_phi", "p_phi = L_z (eq. 177)", motion.p_phi(), "kg m^2/s");
+  report.result("p_psi", "p_psi = Is S (eq. 176)", motion.p_psi(), "kg m^2/s");
+  report.result_text("regime", "the axis's path", to_string(motion.regime()));
+  report.result("theta_min_deg", "theta_min (u2 = cos theta_min)", rad_to_deg(motion.theta_min()),
+                "deg");
+  report.result("theta_max_deg", "theta_max (u1 = cos theta_max)", rad_to_deg(motion.theta_max()),
+                "deg");
+  const double S_min = sleeping_min_spin(top);
+  if (motion.regime() == TopRegime::kSleeping) {
+    report.result_none("nutation_period_s", "nutation period", "s", "upright: no nodding");
+    report.result_text(
+        "sleeping_stability", "upright at S vs S_min",
+        S >= S_min ? "stable (S >= S_min)" : "unstable (S < S_min): a hair topples it");
+  } else {
+    report.result("cubic_roots", "roots u1, u2, u3 of f(u) = 0, u = cos theta",
+                  Eigen::Vector3d(motion.u1(), motion.u2(), motion.u3()), "");
+    if (std::isfinite(motion.nutation_period())) {
+      report.result("nutation_period_s", "nutation period 2 K(k) / lambda",
+                    motion.nutation_period(), "s");
+    } else {
+      report.result_none("nutation_period_s", "nutation period", "s",
+                         "on the separatrix: never returns");
+    }
+    report.result("mean_precession_rate_rad_s", "mean phi_dot over a nutation period",
+                  motion.mean_precession_rate(), "rad/s");
+    report.result("phi_dot_turning_rad_s", "phi_dot at theta_max and at theta_min",
+                  Vector2d(motion.phi_dot_at_u1(), motion.phi_dot_at_u2()), "rad/s");
+    // The fast top (Goldstein 5.7): nodding at Is S / I, by 2 m g l I sin(theta0)/(Is S)^2
+    // when released from rest; both to relative order 2 m g l I / (Is S)^2.
+    // Printed where that order is below 1 (the text's top: 0.41); a slower top has no
+    // such estimate (at S = 1e-10 it read 3e24 deg).
+    const std::string frequency_label = "fast-top estimate of 2 pi / period: Is S / I";
+    const std::string amplitude_label =
+        "fast-top estimate of theta_max - theta_min from rest: 2 m g l I sin(theta0) / (Is S)^2";
+    const double order = 2 * top.mgl * I / ((Is * S) * (Is * S));
+    if (S > 0 && order < 1.0) {
+      report.result("fast_top_nutation_frequency_rad_s", frequency_label, Is * S / I, "rad/s");
+      report.result("fast_top_nutation_amplitude_deg", amplitude_label,
+                    rad_to_deg(order * std::sin(theta0)), "deg");
+    } else if (S > 0) {
+      const std::string why =
+          fmt::format("not a fast top: 2 m g l I / (Is S)^2 = {:.3g} is not below 1", order);
+      report.result_none("fast_top_nutation_frequency_rad_s", frequency_label, "rad/s", why);
+      report.result_none("fast_top_nutation_amplitude_deg", amplitude_label, "deg", why);
+    }
+  }
+  // The sleeping top's stability a hair from upright, just above and below S_min.
+  const double hair = 1e-3;
+  const double above = HeavyTopExact(top, {hair, 0, 0, 1.01 * S_min}).theta_max();
+  const double below = HeavyTopExact(top, {hair, 0, 0, 0.99 * S_min}).theta_max();
+  report.result("sleeping_check_theta_max_deg",
+                "theta_max from 0.001 rad at 1.01 S_min and at 0.99 S_min",
+                Vector2d(rad_to_deg(above), rad_to_deg(below)), "deg");
+}
+
+// The chosen method's run from the exact start through `times`, measured against the
+// exact theta; a run that fails, diverges or runs away is an InputError naming the
+// setting to change.
+TopRun run_method(Report& report, const std::vector<double>& times) {
+  const HeavyTopExact& motion = *report.motion;
+  if (report.method == "exact") return sample_exact(motion, times);
+  const char* option = report.fixed ? "--step" : "--tolerance";
+  TopRun run;
+  try {
+    run =
+        integrate_heavy_top(report.top, heavy_top_state(motion.angles(0.0)), times, report.options);
+  } catch (const std::exception& e) {
+    throw InputError(option, e.what());
+  }
+  double worst = 0;
+  for (const TopSample& s : run.samples) {
+    const double e = std::abs(s.theta - motion.theta(s.t));
+    if (!std::isfinite(e)) throw InputError(option, "the integration diverged; shorten the step");
+    worst = std::max(worst, e);
+  }
+  refuse_runaway(option,
+                 std::max({run.energy_drift_rel, run.p_phi_drift_rel, run.p_psi_drift_rel}));
+  report.result("max_theta_error_deg", "max |theta - theta_exact|", rad_to_deg(worst), "deg");
+  report.count("steps", "steps taken", run.steps);
+  return run;
+}
+
+// Every integrator against the exact motion, at the lab's settings and at equal cost.
+void report_comparisons(Report& report, const std::vector<double>& times, double tolerance) {
+  const HeavyTopExact& motion = *report.motion;
+  report.methods =
+      compare_top_methods(motion, times, report.scale, report.options, kMaxComparisonSteps);
+  report.section(
+      fmt::format("every integrator against the exact theta (tolerance {:g}, step {:.4g} s)",
+                  tolerance, report.options.step));
+  for (const TopComparison& c : report.methods) {
+    const std::string name(method_name(c.options.method));
+    const std::string key = "max_theta_error_" + json_key(name) + "_deg";
+    const std::string label = fmt::format("{:<15} max |theta - theta_exact|", name);
+    if (!c.completed) {
+      report.result_none(key, label, "deg",
+                         fmt::format("not run: needs more than {} steps", kMaxComparisonSteps));
+    } else if (!std::isfinite(c.max_theta_error)) {
+      report.result_none(key, label, "deg", "diverged at this step");
+    } else {
+      report.result(key, label, rad_to_deg(c.max_theta_error), "deg");
+    }
+  }
+
+  // "Which method drifts" at equal cost: a sleeping top has no nutation to count
+  // periods by, nor anything to drift through.
+  if (motion.regime() == TopRegime::kSleeping || !std::isfinite(motion.nutation_period())) return;
+  report.at_cost =
+      compare_top_methods_at_cost(motion, report.scale, kEqualCostPeriods, kEqualCostEvaluations);
+  report.at_cost_evaluations = kEqualCostEvaluations;
+  report.at_cost_periods = kEqualCostPeriods;
+  std::vector<EqualCostRow> rows;
+  for (const TopComparison& c : report.at_cost) {
+    rows.push_back(
+        {c.options, c.completed && std::isfinite(c.max_theta_error), c.evaluations, c.energy});
+  }
+  report_equal_cost(report, rows, kEqualCostEvaluations, kEqualCostPeriods);
+}
+
+// The text's numbers use S rounded to 52.4 rad/s; the exact ones differ in the last digit.
+void report_errata(Report& report, double S, double theta0) {
+  const HeavyTop& top = report.top;
+  if (report.textbook_inputs()) {
+    const double S_text = rounded(S, 3);
+    const SteadyPrecession steady = steady_precession_rates(top, S, theta0);
+    const SteadyPrecession text_steady = steady_precession_rates(top, S_text, theta0);
+    const double text_horizontal = horizontal_precession_rate(top, S_text);
+    report.note(fmt::format(
+        "errata: section 8.1 rounds S = {:.6g} rad/s to {:g} before using it. With the exact S, "
+        "phi_dot (horizontal) = {:.4g} rad/s = {:.4g} rpm and the slow steady rate at 30 deg "
+        "is {:.4g} rad/s. The text's 5.98 and 7.75 rad/s come from S = {:g} ({:.4g} and "
+        "{:.4g}), and its 57.1 rpm from the rounded 5.98 rad/s ({:.4g} rpm).",
+        S, S_text, horizontal_precession_rate(top, S), horizontal_precession_rate(top, S) / kRpm,
+        steady.slow, S_text, text_horizontal, text_steady.slow,
+        rounded(text_horizontal, 3) / kRpm));
+    const double S_min = sleeping_min_spin(top);
+    report.note(fmt::format(
+        "errata: the sleeping top's spin period 2 pi / S_min = {:.5g} s rounds to {:.3f} s, not "
+        "the text's 0.132 s.",
+        2 * kPi / S_min, 2 * kPi / S_min));
+  }
+  report.note(
+      "errata: eq. 186 is misprinted: theta_ddot = 0 in eq. 184 gives m g l = Is S phi_dot - "
+      "I phi_dot^2 cos(theta), with I, not S, in the last term (eq. 187 solves the right one).");
+}
+
+}  // namespace
+
+const InputTable<Inputs>& input_table() {
+  static const InputTable<Inputs> table = [] {
+    InputTable<Inputs> t;
+    t.number("--mass", &Inputs::mass, "mass m of the top").unit("kg").positive().symbol("m");
+    t.number("--arm", &Inputs::arm, "distance l from the tip to the centre of mass")
+        .unit("m")
+        .positive()
+        .symbol("l");
+    t.number("--disk-radius", &Inputs::disk_radius, "radius of the top's disk (sets I and Is)")
+        .unit("m")
+        .positive()
+        .symbol("r");
+    t.pair("--inertia", &Inputs::inertia,
+           "moments about the tip: I (transverse) and Is (symmetry axis); not with --disk-radius")
+        .value_name("I,IS")
+        .unit("kg m^2")
+        .positive()
+        .lab_default("a thin disk of --disk-radius at --arm")
+        .excludes("--disk-radius", "replaces the disk's moments; give --inertia or --disk-radius");
+    t.number("--g", &Inputs::g, "gravitational acceleration (9.8, as the text's numbers imply)")
+        .unit("m/s^2")
+        .positive()
+        .symbol("g");
+    t.number("--spin", &Inputs::spin, "spin S about the symmetry axis (instead of --spin-rpm)")
+        .unit("rad/s")
+        .non_negative()
+        .symbol("S")
+        .lab_default("--spin-rpm")
+        .excludes("--spin-rpm", "give the spin once: --spin (rad/s) or --spin-rpm");
+    t.number("--spin-rpm", &Inputs::spin_rpm, "spin S in revolutions per minute")
+        .unit("rpm")
+        .non_negative()
+        .symbol("S");
+    t.number("--theta0-deg", &Inputs::theta0_deg,
+             "initial tilt theta0 of the axis from the vertical")
+        .unit("deg")
+        .symbol("\\theta_0");
+    t.number("--thetadot0", &Inputs::thetadot0, "initial theta_dot")
+        .unit("rad/s")
+        .symbol("\\theta-dot_0");
+    t.number("--phidot0", &Inputs::phidot0, "initial precession rate phi_dot")
+        .unit("rad/s")
+        .symbol("\\phi-dot_0");
+    add_end_time_inputs(t, &Inputs::t_end, &Inputs::periods, "nutation period",
+                        "three nutation periods");
+    t.include(integration_inputs("how the motion is computed", "nutation period / 2000", false),
+              &Inputs::integration);
+    return t;
+  }();
+  return table;
+}
+
+Report compute(const Inputs& in) {
+  Report report(kName, kTitle);
+  report.start(input_table(), in);
+  if (!(in.theta0_deg >= 0.0 && in.theta0_deg < 180.0)) {
+    throw InputError("--theta0-deg", fmt::format("must lie in [0, 180) (got {:g})", in.theta0_deg));
+  }
+  // The top: a thin disk at the arm's height (parallel-axis theorem), or given moments.
+  double I = 0.0, Is = 0.0;
+  if (!in.inertia) {
+    const Body disk = thin_disk(in.mass, in.disk_radius);
+    const Mat3 about_tip = inertia_about(shifted(disk, Vec3(0, 0, in.arm)), Vec3::Zero());
+    I = about_tip(0, 0);
+    Is = about_tip(2, 2);
+  } else {
+    I = (*in.inertia)(0), Is = (*in.inertia)(1);
+    report.drop_input("disk_radius");
+    for_input("--inertia", [&] { validate_top_body(I, Is, in.mass, in.arm); });
+  }
+  report.top = HeavyTop{I, Is, in.mass * in.g * in.arm};
+  report.arm = in.arm;
+  report.disk_radius = in.disk_radius;
+  const double S = in.spin ? *in.spin : in.spin_rpm * kRpm;
+  if (in.spin) report.drop_input("spin_rpm");
+  const double theta0 = deg_to_rad(in.theta0_deg);
+
+  report_section_8_1(report, in, S, theta0);
+
+  report.section("9 the motion: E' = I theta_dot^2 / 2 + V(theta) (eqs. 191-195)");
+  report.motion.emplace(for_input("--theta0-deg", [&] {
+    return HeavyTopExact(report.top, {theta0, in.thetadot0, in.phidot0, S});
+  }));
+  const HeavyTopExact& motion = *report.motion;
+  report_section_9(report, S, theta0);
+
+  // Sampling: 200 a nutation period (or a turn of the spin for a sleeping top).
+  const bool sleeping = motion.regime() == TopRegime::kSleeping;
+  report.scale = sleeping || !std::isfinite(motion.nutation_period())
+                     ? 2 * kPi / std::max(std::abs(S), 1e-300)
+                     : motion.nutation_period();
+  report.t_end = end_time(in.t_end, in.periods, report.scale, 3.0 * report.scale);
+  // Every method runs at --step and --tolerance in the comparison, so neither is unused.
+  const RunPlan plan =
+      plan_run(report, in.integration, /*compared=*/true, report.t_end, report.scale, kMaxSteps);
+  report.method = in.integration.method;
+  report.options = plan.options;
+  report.fixed = plan.fixed;
+  report.section(fmt::format("{} to t_end = {:g} s", report.method, report.t_end));
+  report_plan(report, plan);
+  if (report.method != "exact") {
+    report.result_text("method_kind", "method", std::string(method_kind(plan.options.method)));
+  }
+  report.run = run_method(report, plan.times);
+  {
+    std::vector<double> t, e[3];
+    for (const TopSample& s : report.run.samples) {
+      t.push_back(s.t);
+      for (int i = 0; i < 3; ++i) e[i].push_back(s.invariant_errors(i));
+    }
+    const double roundoff = report.method == "exact" ? kClosedFormRoundoff : 0.0;
+    report_invariant(report, "energy", "max |E - E0| / (T0 + m g l)", t, e[0], report.scale,
+                     roundoff);
+    report_invariant(report, "p_phi", "max |p_phi - p_phi0| / |L0|", t, e[1], report.scale,
+                     roundoff);
+    report_invariant(report, "p_psi", "max |p_psi - p_psi0| / |L0|", t, e[2], report.scale,
+                     roundoff);
+  }
+  report_comparisons(report, plan.times, in.integration.tolerance);
+  report_errata(report, S, theta0);
+
+  TimeSeries series{{"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw",
+                     "qx", "qy", "qz", "energy_error_rel"},
+                    {}};
+  for (const TopSample& s : report.run.samples) {
+    const auto& q = s.attitude;
+    series.rows.push_back({s.t, s.theta, motion.theta(s.t), s.omega_body(0), s.omega_body(1),
+                           s.omega_body(2), q.w(), q.x(), q.y(), q.z(), s.energy_error});
+  }
+  report.series(std::move(series));
+  return report;
+}
+
+LabProgram<Inputs, Report> program() {
+  LabProgram<Inputs, Report> p{kName, kTitle, input_table()};
+  p.compute = compute;
+  p.figures = figures;
+  p.animation = animation;
+  p.csv = true;
+  return p;
+}
+
+}  // namespace rigid::lab::top_nutation

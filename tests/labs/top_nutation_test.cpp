@@ -1,0 +1,447 @@
+// top_nutation's library in-process: section 8.1's numbers at the text's top,
+// another top against eqs. 185-189 and a quadrature of its period, the sleeping
+// top, every integrator against the exact motion, the time series, the rules
+// compute() checks, and the motion, whose scene at a time is the same in any
+// order of asking.
+#include "top_nutation/top_nutation.h"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "lab_library.h"
+
+using Catch::Matchers::WithinAbs;
+using rigid::lab::InputError;
+using rigid::lab::top_nutation::compute;
+using rigid::lab::top_nutation::Inputs;
+using rigid::lab::top_nutation::Motion;
+using rigid::test::value;
+
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+// Half a unit in the last place the text prints.
+bool prints_as(double value, double printed, int decimals) {
+  return std::abs(value - printed) <= 0.5 * std::pow(10.0, -decimals) + 1e-12;
+}
+
+// The ith number of a result that is a list.
+double element(const rigid::lab::Json& results, const char* key, int i) {
+  return results.at(key).at(i).get<double>();
+}
+
+Inputs with_method(const std::string& method) {
+  Inputs in;
+  in.integration.method = method;
+  return in;
+}
+
+// Two scenes hold the same things, number for number.
+void check_same_scene(const rigid::render::Scene3D& a, const rigid::render::Scene3D& b) {
+  CHECK(a.title == b.title);
+  CHECK(a.camera.eye == b.camera.eye);
+  CHECK(a.camera.target == b.camera.target);
+  REQUIRE(a.objects().size() == b.objects().size());
+  for (std::size_t i = 0; i < a.objects().size(); ++i) {
+    const auto &p = a.objects()[i], &q = b.objects()[i];
+    CHECK(p.shape == q.shape);
+    CHECK(p.transform.matrix() == q.transform.matrix());
+    CHECK(p.material.color.r == q.material.color.r);
+    CHECK(p.material.color.g == q.material.color.g);
+    CHECK(p.material.color.b == q.material.color.b);
+    CHECK(p.material.opacity == q.material.opacity);
+    CHECK(p.label == q.label);
+    CHECK(p.path == q.path);
+    CHECK(p.tube_radius == q.tube_radius);
+  }
+  REQUIRE(a.polylines().size() == b.polylines().size());
+  for (std::size_t i = 0; i < a.polylines().size(); ++i) {
+    const auto &p = a.polylines()[i], &q = b.polylines()[i];
+    CHECK(p.points == q.points);
+    CHECK(p.width == q.width);
+    CHECK(p.label == q.label);
+  }
+  REQUIRE(a.labels().size() == b.labels().size());
+  for (std::size_t i = 0; i < a.labels().size(); ++i) {
+    CHECK(a.labels()[i].position == b.labels()[i].position);
+    CHECK(a.labels()[i].text == b.labels()[i].text);
+  }
+}
+
+// A sink that keeps the figures' names, and the scene of one of them.
+struct Kept : rigid::lab::FigureSink {
+  std::vector<std::string> names;
+  std::optional<rigid::render::Scene3D> top;
+  void add(const std::string& name, const std::string&, rigid::render::Plot2D) override {
+    names.push_back(name);
+  }
+  void add(const std::string& name, const std::string&, rigid::render::Scene3D scene) override {
+    names.push_back(name);
+    if (name == "top") top = std::move(scene);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("top_nutation: defaults reproduce section 8.1's numbers, exactly, with the errata") {
+  const auto report = compute(Inputs{});
+  const auto& r = report.results();
+  // The disk written out: Is = m r^2/2, I = m r^2/4 + m l^2, m g l with g = 9.8.
+  const double m = 2.0, rad = 0.05, l = 0.04, g = 9.8;
+  const double Is = m * rad * rad / 2, I = m * rad * rad / 4 + m * l * l, mgl = m * g * l;
+  CHECK(value(r, "moment_symmetry_kg_m2") == Approx(Is).epsilon(1e-15));
+  CHECK(value(r, "moment_transverse_kg_m2") == Approx(I).epsilon(1e-15));
+  // (a) S_min = sqrt(4 m g l I) / Is: the text's 47.3 rad/s, 7.52 rev/s, 451 rpm.
+  const double S_min = std::sqrt(4 * mgl * I) / Is;
+  CHECK(value(r, "min_spin_rad_s") == Approx(S_min).epsilon(1e-15));
+  CHECK(prints_as(value(r, "min_spin_rad_s"), 47.3, 1));
+  CHECK(prints_as(value(r, "min_spin_rev_per_s"), 7.52, 2));
+  CHECK(prints_as(value(r, "min_spin_rpm"), 451, 0));
+  // Its period 2 pi / S_min is 0.13297 s: the text's 0.132 is an erratum.
+  CHECK(prints_as(value(r, "min_spin_period_s"), 0.133, 3));
+  // (b) 500 rpm: phi_dot = m g l / (Is S) = 5.989 rad/s (the text: 5.98, from S = 52.4).
+  const double S = 500 * 2 * M_PI / 60;
+  CHECK(value(r, "horizontal_precession_rate_rad_s") == Approx(mgl / (Is * S)).epsilon(1e-15));
+  CHECK(prints_as(value(r, "horizontal_precession_rate_rad_s"), 5.99, 2));
+  CHECK(prints_as(value(r, "horizontal_precession_period_s"), 1.05, 2));
+  // (c) at 30 deg: the roots of I cos(30) x^2 - Is S x + m g l = 0, by the quadratic formula
+  // written out (no cancellation worth a digit here): 7.764 and 26.20 rad/s.
+  const double c = std::cos(M_PI / 6), D = Is * Is * S * S - 4 * mgl * I * c;
+  const double slow = (Is * S - std::sqrt(D)) / (2 * I * c),
+               fast = (Is * S + std::sqrt(D)) / (2 * I * c);
+  CHECK(element(r, "steady_precession_rates_rad_s", 0) == Approx(slow).epsilon(1e-12));
+  CHECK(element(r, "steady_precession_rates_rad_s", 1) == Approx(fast).epsilon(1e-14));
+  CHECK(prints_as(element(r, "steady_precession_rates_rad_s", 1), 26.2, 1));
+  CHECK(prints_as(element(r, "steady_precession_periods_s", 0), 0.81, 2));
+  CHECK(prints_as(element(r, "steady_precession_periods_s", 1), 0.24, 2));
+  CHECK(report.textbook_printed().at("min_spin_rad_s") == "47.3");
+  int errata = 0;
+  for (const std::string& note : report.notes()) errata += note.rfind("errata:", 0) == 0;
+  CHECK(errata == 3);
+  // Released from rest at 30 deg: theta_min is the start, phi_dot = 0 there (cusps).
+  CHECK(r.at("regime") == "cusped");
+  CHECK(value(r, "theta_min_deg") == Approx(30).epsilon(1e-14));
+  CHECK(element(r, "phi_dot_turning_rad_s", 1) == 0.0);
+  // The exact sampling keeps E, p_phi, p_psi to roundoff.
+  CHECK(value(r, "energy_drift_rel") < 1e-14);
+  CHECK(value(r, "p_phi_drift_rel") < 1e-14);
+  // Every integrator agrees with the exact theta within its tolerance's reach.
+  for (const char* key : {"max_theta_error_dopri5_deg", "max_theta_error_rkf78_deg",
+                          "max_theta_error_rk4_deg", "max_theta_error_splitting4_deg"}) {
+    INFO(key);
+    CHECK(value(r, key) < 1e-5);
+  }
+  CHECK(report.units().at("min_spin_rev_per_s") == "1/s");
+}
+
+TEST_CASE("top_nutation: integrated runs report their theta error and keep the invariants") {
+  for (const char* method :
+       {"splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer"}) {
+    INFO(method);
+    Inputs in = with_method(method);
+    in.phidot0 = 3, in.thetadot0 = 0.5;
+    const auto report = compute(in);
+    const auto& r = report.results();
+    // Tolerance 1e-10 or step period/2000 over three nutation periods: far below 1e-4 deg.
+    CHECK(value(r, "max_theta_error_deg") < 1e-4);
+    CHECK(value(r, "energy_drift_rel") < 1e-6);
+    if (std::string(method).rfind("splitting", 0) == 0) {
+      // A rotation or a torque normal to z and 3 at every sub-step: roundoff only, a
+      // random walk of ~eps sqrt(30 n) = 1e-13 over n = 6000 steps of 15 sub-steps.
+      CHECK(value(r, "p_phi_drift_rel") < 1e-12);
+      CHECK(value(r, "p_psi_drift_rel") < 1e-12);
+    }
+  }
+}
+
+TEST_CASE("top_nutation: the sleeping top is stable above S_min and upright starts sleep") {
+  Inputs in;
+  in.theta0_deg = 0, in.spin_rpm = 460;
+  const auto above = compute(in);
+  const auto& r = above.results();
+  CHECK(r.at("regime") == "sleeping");
+  CHECK(r.at("sleeping_stability") == "stable (S >= S_min)");
+  in.spin_rpm = 440;
+  const auto below = compute(in);
+  CHECK(below.results().at("sleeping_stability") == "unstable (S < S_min): a hair topples it");
+  // From a hair off upright: a small nod above S_min, a fall below.
+  CHECK(element(r, "sleeping_check_theta_max_deg", 0) < 1.0);
+  CHECK(element(r, "sleeping_check_theta_max_deg", 1) > 10.0);
+}
+
+// The numbers of lab_test.cpp's "--csv holds theta beside the exact theta" (that the
+// file is written stays a test of the process there).
+TEST_CASE(
+    "top_nutation: the time series holds theta beside the exact theta, and a unit quaternion") {
+  Inputs in = with_method("rkf78");
+  in.integration.tolerance = 1e-12;
+  const auto report = compute(in);
+  const double t_end = value(report.results(), "t_end_s");
+  const auto& series = report.time_series();
+  CHECK(series.columns == std::vector<std::string>{"t_s", "theta_rad", "theta_exact_rad", "omega1",
+                                                   "omega2", "omega3", "qw", "qx", "qy", "qz",
+                                                   "energy_error_rel"});
+  std::size_t rows = 0;
+  double last_t = -1, worst = 0, worst_norm = 0, lowest = 10, highest = -10;
+  for (const std::vector<double>& v : series.rows) {
+    REQUIRE(v.size() == 11);
+    ++rows;
+    last_t = v[0];
+    worst = std::max(worst, std::abs(v[1] - v[2]));
+    worst_norm = std::max(worst_norm,
+                          std::abs(std::hypot(std::hypot(v[6], v[7]), std::hypot(v[8], v[9])) - 1));
+    lowest = std::min(lowest, v[2]);
+    highest = std::max(highest, v[2]);
+  }
+  CHECK(rows > 100);
+  CHECK(last_t == t_end);
+  CHECK(worst_norm < 1e-14);
+  // rkf78 at 1e-12 over three nutation periods: theta within 1e-9 rad of the exact one.
+  CHECK(worst < 1e-9);
+  // The exact theta nods between 30 deg and theta_max = 52.36 deg (cusped release).
+  CHECK(lowest == Approx(M_PI / 6).epsilon(1e-9));
+  CHECK(highest > 0.9);
+}
+
+TEST_CASE("top_nutation: another top against eqs. 185-189 and a quadrature of the period") {
+  const double m = 1.5, l = 0.06, rd = 0.04, g = 9.8, S = 1500 * 2 * M_PI / 60, theta0 = 50 * kDeg;
+  Inputs in;
+  in.mass = 1.5, in.arm = 0.06, in.disk_radius = 0.04, in.spin_rpm = 1500, in.theta0_deg = 50;
+  const auto report = compute(in);
+  const auto& r = report.results();
+  const double Is = m * rd * rd / 2, I = m * rd * rd / 4 + m * l * l, mgl = m * g * l;
+  CHECK(value(r, "moment_symmetry_kg_m2") == Approx(Is).epsilon(1e-15));
+  CHECK(value(r, "moment_transverse_kg_m2") == Approx(I).epsilon(1e-15));
+  CHECK(value(r, "min_spin_rad_s") ==
+        Approx(std::sqrt(4 * mgl * I) / Is).epsilon(1e-14));  // eq. 189
+  CHECK(value(r, "horizontal_precession_rate_rad_s") ==
+        Approx(mgl / (Is * S)).epsilon(1e-14));  // eq. 185
+  // Eq. 187: I cos(theta) phi_dot^2 - Is S phi_dot + m g l = 0, the two roots.
+  const double c = std::cos(theta0), D = std::sqrt(Is * Is * S * S - 4 * mgl * I * c);
+  CHECK(element(r, "steady_precession_rates_rad_s", 0) ==
+        Approx((Is * S - D) / (2 * I * c)).epsilon(1e-12));
+  CHECK(element(r, "steady_precession_rates_rad_s", 1) ==
+        Approx((Is * S + D) / (2 * I * c)).epsilon(1e-13));
+  // Released at rest in theta and phi (a cusp): theta_min = theta0, and the period is
+  // 2 int_{u1}^{u2} du / sqrt(f(u)), f = beta (u - u1)(u2 - u)(u3 - u), beta = 2 m g l / I;
+  // with u = u1 + (u2 - u1) sin^2(x) it is 4 int_0^{pi/2} dx / sqrt(beta (u3 - u)), an
+  // analytic periodic integrand for which the midpoint rule converges geometrically.
+  CHECK(value(r, "theta_min_deg") == Approx(50).epsilon(1e-13));
+  const double u1 = element(r, "cubic_roots", 0), u2 = element(r, "cubic_roots", 1),
+               u3 = element(r, "cubic_roots", 2);
+  const double a = Is * S / I, b = a * c, beta = 2 * mgl / I, alpha = beta * c;  // eqs. 194-197
+  for (double u : {u1, u2, u3}) {  // each a root of f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2
+    CHECK(std::abs((1 - u * u) * (alpha - beta * u) - (b - a * u) * (b - a * u)) <
+          1e-13 * (a * a + beta));
+  }
+  const int n = 400;
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const double x = (k + 0.5) * (M_PI / 2) / n, sx = std::sin(x);
+    sum += 1 / std::sqrt(beta * (u3 - (u1 + (u2 - u1) * sx * sx)));
+  }
+  CHECK(value(r, "nutation_period_s") == Approx(4 * sum * (M_PI / 2) / n).epsilon(1e-12));
+}
+
+// top_nutation's part of lab_test.cpp's "labs: which integrator drifts, answered by the
+// table at equal cost, and --periods" (poinsot's part, the table and --help stay there).
+TEST_CASE("top_nutation: which integrator drifts, answered at equal cost, and --periods") {
+  Inputs in = with_method("rk4");
+  in.periods = 5;
+  const auto report = compute(in);
+  const auto& r = report.results();
+  // --periods N ends at N of the motion's periods
+  CHECK(value(r, "t_end_s") == Approx(5 * value(r, "nutation_period_s")).epsilon(1e-15));
+  CHECK(r.at("method_kind") == "fixed-step Runge-Kutta, order 4");
+  // Each invariant's largest error and its trend; the old key is the largest error.
+  CHECK(r.at("energy_drift_rel") == r.at("energy_error_max_rel"));
+  CHECK(std::abs(value(r, "energy_drift_per_period_rel")) <= value(r, "energy_error_max_rel"));
+  // At equal cost a splitting drifts least, by at least ten times every other kind.
+  const std::string least = r.at("least_energy_drift");
+  CHECK((least == "splitting" || least == "splitting4"));
+  CHECK(r.at("least_energy_drift_kind").get<std::string>().find("symplectic") == 0);
+  const double split = std::abs(value(r, "equal_cost_energy_drift_per_period_rel_splitting"));
+  for (const char* other : {"rk4", "dopri5", "rkf78", "bulirsch_stoer"}) {
+    INFO(other);
+    CHECK(10 * split <
+          std::abs(
+              value(r, ("equal_cost_energy_drift_per_period_rel_" + std::string(other)).c_str())));
+  }
+  CHECK(value(r, "equal_cost_evaluations_per_period") == 200);
+}
+
+TEST_CASE("top_nutation: the fast-top estimates only for a fast top") {
+  // their relative error is of order 2 m g l I / (Is S)^2: the text's top 0.41, printed;
+  // at S = 30 rad/s 1.24 and at 1e-10 rad/s 1e23 (it read 3e24 deg), none
+  const auto text = compute(Inputs{});
+  CHECK(text.results().at("fast_top_nutation_amplitude_deg").is_number());
+  for (const double spin : {30.0, 1e-10}) {
+    INFO(spin);
+    Inputs in;
+    in.spin = spin;
+    const auto slow = compute(in);
+    CHECK(slow.results().at("fast_top_nutation_amplitude_deg").is_null());
+    CHECK(slow.results().at("fast_top_nutation_frequency_rad_s").is_null());
+  }
+}
+
+// top_nutation's rows of lab_test.cpp's "labs: extreme but legal inputs end with finite
+// numbers or one line, never a crash": compute() returns finite numbers or throws an
+// InputError (which the command line prints as one line naming an option).
+TEST_CASE("top_nutation: extreme but legal inputs give finite numbers or an InputError") {
+  std::vector<std::pair<const char*, Inputs>> cases;
+  const auto add = [&](const char* what, auto set) {
+    Inputs in;
+    set(in);
+    cases.emplace_back(what, in);
+  };
+  add("--g 1e60", [](Inputs& in) { in.g = 1e60; });
+  add("--spin 0", [](Inputs& in) { in.spin = 0.0; });
+  add("--spin 1e-60", [](Inputs& in) { in.spin = 1e-60; });
+  add("--spin 1e60", [](Inputs& in) { in.spin = 1e60; });
+  add("--thetadot0 1e60", [](Inputs& in) { in.thetadot0 = 1e60; });
+  add("--t-end 1e-60", [](Inputs& in) { in.t_end = 1e-60; });
+  add("--spin 0 --theta0-deg 1e-10", [](Inputs& in) { in.spin = 0.0, in.theta0_deg = 1e-10; });
+  add("--theta0-deg 0 --thetadot0 1", [](Inputs& in) { in.theta0_deg = 0, in.thetadot0 = 1; });
+  add("--theta0-deg 179.9999999", [](Inputs& in) { in.theta0_deg = 179.9999999; });
+  for (const auto& [what, in] : cases) {
+    INFO(what);
+    try {
+      const auto report = compute(in);
+      CHECK(report.results().is_object());
+      CHECK(report.results().dump().find("NaN") == std::string::npos);
+      for (const auto& [key, v] : report.results().items()) {
+        INFO(key);
+        if (v.is_number()) CHECK(std::isfinite(v.get<double>()));
+      }
+    } catch (const InputError& e) {
+      CHECK((e.input.empty() || e.input.rfind("--", 0) == 0));
+      CHECK(e.rule.find('\n') == std::string::npos);
+    }
+  }
+}
+
+// The rules compute() checks itself (lab_test.cpp's and contract_test.cpp's bad inputs,
+// whose exit status and stderr stay tests of the process there). --inertia with
+// --disk-radius and --spin with --spin-rpm are alternatives the command line refuses
+// by what was typed; in-process the given --inertia or --spin wins.
+TEST_CASE("top_nutation: a broken rule is an InputError naming the input") {
+  // Refused naming `input`, for a rule that starts with `rule`.
+  const auto refused = [](const char* what, const Inputs& in, const std::string& input,
+                          const std::string& rule = "") {
+    INFO(what);
+    try {
+      compute(in);
+      FAIL("accepted");
+    } catch (const InputError& e) {
+      CHECK(e.input == input);
+      CHECK(e.rule.rfind(rule, 0) == 0);
+    }
+  };
+  Inputs in;
+  in.mass = 0;
+  refused("--mass 0", in, "--mass");
+  in = Inputs{}, in.arm = -1;
+  refused("--arm -1", in, "--arm");
+  in = Inputs{}, in.disk_radius = std::nan("");
+  refused("--disk-radius nan", in, "--disk-radius");
+  in = Inputs{}, in.g = HUGE_VAL;
+  refused("--g inf", in, "--g");
+  in = Inputs{}, in.inertia = Eigen::Vector2d(1, -1);
+  refused("--inertia 1,-1", in, "--inertia");
+  in = Inputs{}, in.inertia = Eigen::Vector2d(0.00445, 0.01);  // I - m l^2 < Is/2: no body
+  refused("--inertia 0.00445,0.01", in, "--inertia", "no body has these moments");
+  // theta0 in [0, 180)
+  in = Inputs{}, in.theta0_deg = 180;
+  refused("--theta0-deg 180", in, "--theta0-deg", "must lie in [0, 180) (got 180)");
+  in = Inputs{}, in.theta0_deg = -1;
+  refused("--theta0-deg -1", in, "--theta0-deg", "must lie in [0, 180) (got -1)");
+  // upright and not spinning: a top at rest, no motion
+  in = Inputs{}, in.theta0_deg = 0, in.spin = 0.0;
+  refused("--theta0-deg 0 --spin 0", in, "--theta0-deg");
+  in = with_method("rk4"), in.integration.step = 1e-12;
+  refused("--method rk4 --step 1e-12", in, "--step");
+  in = with_method("euler");
+  refused("--method euler", in, "--method");
+  in = Inputs{}, in.integration.tolerance = 1e-183;
+  refused("--tolerance 1e-183", in, "--tolerance");
+  in = Inputs{}, in.t_end = 1, in.periods = 2;
+  refused("--t-end 1 --periods 2", in, "--periods", "give --t-end or --periods, not both");
+  // a run that ran away is refused, not printed
+  in = with_method("rk4"), in.integration.step = 0.05;
+  refused("--method rk4 --step 0.05", in, "--step", "the run ran away");
+  // a step asked for that is longer than the run is refused, not cut short
+  in = with_method("rk4"), in.integration.step = 100, in.t_end = 1;
+  refused("--method rk4 --step 100 --t-end 1", in, "--step", "100 s is longer than the run");
+  // The text's thin disk sits exactly on I - m l^2 = Is / 2 and is accepted.
+  in = Inputs{}, in.inertia = Eigen::Vector2d(0.00445, 0.0025);
+  const auto disk = compute(in);
+  CHECK(!disk.inputs().contains("disk_radius"));
+  CHECK(disk.inputs().contains("inertia"));
+}
+
+TEST_CASE("top_nutation: the motion's scene at a time is the same in any order of asking") {
+  for (const char* method : {"exact", "rk4"}) {
+    INFO(method);
+    const auto report = compute(with_method(method));
+    // The frames' times, and times off them and off the run's samples.
+    std::vector<double> times;
+    for (int k = 0; k < 24; ++k) times.push_back(report.t_end * k / 24);
+    std::vector<double> asked = times;
+    for (const double share : {0.013, 0.37, 0.5001, 0.999}) asked.push_back(share * report.t_end);
+    const Motion in_order(report, times);
+    std::vector<rigid::render::Scene3D> expected;
+    for (const double t : asked) expected.push_back(in_order.scene(t));
+
+    // A second motion, sampled ahead at the same times given shuffled, asked in another order.
+    std::vector<std::size_t> order(asked.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::mt19937 random(2024);
+    std::shuffle(order.begin(), order.end(), random);
+    std::vector<double> shuffled = times;
+    std::shuffle(shuffled.begin(), shuffled.end(), random);
+    const Motion second(report, shuffled);
+    for (const std::size_t i : order) {
+      INFO("t = " << asked[i]);
+      check_same_scene(second.scene(asked[i]), expected[i]);
+    }
+    // Asked twice, the same scene: nothing is kept from one asking to the next.
+    check_same_scene(second.scene(asked[order[0]]), expected[order[0]]);
+    CHECK(second.seconds() == report.t_end);
+  }
+}
+
+TEST_CASE("top_nutation: the motion keeps what it needs and starts at the 'top' figure") {
+  for (const char* method : {"exact", "rk4"}) {
+    INFO(method);
+    std::optional<Motion> motion;
+    std::optional<rigid::render::Scene3D> at_half;
+    {
+      const auto report = compute(with_method(method));
+      motion.emplace(report);
+      at_half = motion->scene(0.5 * report.t_end);
+      // The figures: the "top" is the motion's first scene.
+      Kept kept;
+      figures(report, kept);
+      CHECK(kept.names ==
+            std::vector<std::string>{"potential", "paths", "theta", "top", "integrators"});
+      REQUIRE(kept.top);
+      check_same_scene(*kept.top, motion->scene(0.0));
+      // The animation's motion: its still is that figure, its span the run's.
+      const auto animation = rigid::lab::top_nutation::animation(report, [](double seconds) {
+        return std::vector<double>{0.0, 0.25 * seconds};
+      });
+      CHECK(animation.still == "top");
+      CHECK(animation.seconds == report.t_end);
+      check_same_scene(animation.scene(0.0), *kept.top);
+    }
+    // The report is gone: the motion copied what it draws from.
+    check_same_scene(motion->scene(0.5 * motion->seconds()), *at_half);
+  }
+}
