@@ -34,6 +34,7 @@
 #include <vector>
 
 #ifdef RIGID_BENCH_HAVE_RENDER
+#include "rigid/render/draw.h"
 #include "rigid/render/plot2d.h"
 #endif
 
@@ -426,7 +427,7 @@ void draw_work_precision(const std::string& problem, const std::string& title,
       r.color = rr::kLightGray;
     }
   }
-  plot.save(path);
+  rr::save_png(plot, path);
 }
 #endif
 

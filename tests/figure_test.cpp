@@ -188,7 +188,7 @@ TEST_CASE("figures: --timing says where each figure's time went and it adds up t
       sum += s;
     }
     // The phases are laps of one clock inside the figure's own span: they add up to
-    // it, less what lies outside save() (a path check, microseconds).
+    // it, less what lies outside render::save_png() (a path check, microseconds).
     const double wall = seconds[file].get<double>();
     CHECK(sum <= wall);
     CHECK(sum >= 0.9 * wall);

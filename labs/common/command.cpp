@@ -22,6 +22,7 @@
 
 #if RIGID_HAVE_RENDER
 #include "rigid/render/context.h"
+#include "rigid/render/draw.h"
 #include "rigid/render/video.h"
 #include "rigid/support/progress.h"
 #endif
@@ -570,7 +571,8 @@ void Command::FigureFiles::save(const std::string& name, const std::string& capt
 #if RIGID_HAVE_RENDER
   // --timing: where each figure's time went (the phases wait for the GL to finish each)
   render::FigureTiming phases;
-  figure.save(path.string(), c.figure_width_, c.figure_height_, c.timing_ ? &phases : nullptr);
+  render::save_png(figure, path.string(), c.figure_width_, c.figure_height_,
+                   c.timing_ ? &phases : nullptr);
   if (c.timing_) {
     c.figure_phases_[file] = {{"setup", phases.setup},
                               {"layout", phases.layout},
@@ -659,7 +661,7 @@ void Command::animate(const Computed& computed) {
     envelope.title = report.figure_title(envelope.title);
     for (int k = 1; k < kFitSamples; ++k)
       envelope.merge(motion.scene(frame_time(motion_seconds, k, kFitSamples)));
-    const render::Camera camera = envelope.fitted_camera(w, h_scene);
+    const render::Camera camera = render::fitted_camera(envelope, w, h_scene);
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
                                {w, h, animation_fps_});
@@ -684,12 +686,12 @@ void Command::animate(const Computed& computed) {
       scene.camera = camera;
       build += lap(t0);
       render::FigureTiming f;
-      render::Image image = scene.render(w, h_scene, timing_ ? &f : nullptr);
+      render::Image image = render::draw(scene, w, h_scene, timing_ ? &f : nullptr);
       add_phases(f);
       if (motion.strip) {
         render::Plot2D plot = motion.strip(motion_time(k));
         plot.style_height = h;
-        const render::Image below = plot.render(w, h_strip, timing_ ? &f : nullptr);
+        const render::Image below = render::draw(plot, w, h_strip, timing_ ? &f : nullptr);
         add_phases(f);
         image.height = h;
         image.rgb.insert(image.rgb.end(), below.rgb.begin(), below.rgb.end());

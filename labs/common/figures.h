@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -54,8 +55,7 @@ class FigureSink {
   /// A 2D plot.
   virtual void add(const std::string& name, const std::string& caption, render::Plot2D plot) = 0;
   /// A 3D scene.
-  virtual void add(const std::string& name, const std::string& caption,
-                   render::Scene3D scene) = 0;
+  virtual void add(const std::string& name, const std::string& caption, render::Scene3D scene) = 0;
 };
 
 /// What a lab with motion shows moving (--animate, a live view): the scene, and
@@ -70,6 +70,18 @@ struct Animation {
   std::function<render::Plot2D(double)> strip;
   double strip_share = 0.0;
 };
+
+/// The Animation that plays `motion` (a lab's Motion: seconds() and scene(t)), shared
+/// by every copy of its functions.
+template <class Motion>
+Animation play(std::shared_ptr<const Motion> motion, std::string caption, std::string still = {}) {
+  Animation a;
+  a.seconds = motion->seconds();
+  a.caption = std::move(caption);
+  a.still = std::move(still);
+  a.scene = [motion](double t) { return motion->scene(t); };
+  return a;
+}
 
 /// The times, sorted, at which an animation of `seconds` of motion asks for its
 /// scene (its frames and the camera's fit): a lab that draws from an integrator

@@ -30,8 +30,8 @@ std::string projecting_methods() {
 }  // namespace
 
 InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,
-                                                const std::string& step_default,
-                                                bool offer_project) {
+                                                 const std::string& step_default,
+                                                 bool offer_project) {
   InputTable<IntegrationInputs> t;
   std::vector<std::string> methods{"exact"};
   for (const Method m : kAllMethods) methods.emplace_back(method_name(m));
@@ -83,8 +83,7 @@ IntegrateOptions integration_options(Report& report, const IntegrationInputs& in
     report.warn(option, why + (compared ? "; only the comparison of every method uses it"
                                         : "; it is not used" + instead));
   };
-  if (tolerance_set && exact)
-    unused("--tolerance", "--method exact integrates nothing", "");
+  if (tolerance_set && exact) unused("--tolerance", "--method exact integrates nothing", "");
   if (in.step && exact) unused("--step", "--method exact integrates nothing", "");
   if (tolerance_set && !exact && !is_adaptive(options.method)) {
     unused("--tolerance", in.method + " takes a fixed step", " (--step sets it)");
@@ -101,8 +100,9 @@ IntegrateOptions integration_options(Report& report, const IntegrationInputs& in
   return options;
 }
 
-IntegrationResult run_free_body(Report& report, const FreeBodyExact& exact, const IntegrationInputs& in,
-                                const IntegrateOptions& options, const std::vector<double>& times) {
+IntegrationResult run_free_body(Report& report, const FreeBodyExact& exact,
+                                const IntegrationInputs& in, const IntegrateOptions& options,
+                                const std::vector<double>& times) {
   if (in.method == "exact") return sample_exact(exact, times);
   if (in.project && !can_project(options.method)) {
     throw InputError("--project", "works with --method " + projecting_methods() + " only");
@@ -122,7 +122,7 @@ IntegrationResult run_free_body(Report& report, const FreeBodyExact& exact, cons
   // A run whose energy or |L| moved by more than itself has no digit left to print.
   refuse_runaway(option, std::max(run.energy_drift_rel, run.momentum_drift_rel));
   report.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
-             *std::max_element(errors.begin(), errors.end()), "");
+                *std::max_element(errors.begin(), errors.end()), "");
   report.count("steps", "steps taken", run.steps);
   return run;
 }
@@ -188,7 +188,8 @@ void report_motion(Report& report, const FreeBodyExact& motion) {
       stability = "stable";
       words = to_string(regime) + ": stable, omega circles that axis";
     }
-    report.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2, "");
+    report.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2,
+                  "");
   }
   report.result_text("motion", "  in words", words);
   report.result_text("motion_stability", "  stability", stability);
@@ -234,8 +235,8 @@ void report_plan(Report& report, const RunPlan& plan) {
   const double last = plan.t_end - whole * h;
   if (last > 8.0 * kEps * plan.t_end) {
     report.result("last_step_s",
-               fmt::format("  the last, shortened to end at t_end ({:g} whole steps)", whole), last,
-               "s");
+                  fmt::format("  the last, shortened to end at t_end ({:g} whole steps)", whole),
+                  last, "s");
   }
 }
 
@@ -254,7 +255,7 @@ void report_invariant(Report& report, const std::string& key, const std::string&
   const InvariantError error = invariant_error(t, e, period);
   report.result_roundoff(key + "_error_max_rel", error_label, error.max_rel, roundoff, "");
   report.result_roundoff(key + "_drift_per_period_rel", "  its drift: the fitted trend a period",
-                      error.drift_per_period_rel, roundoff, "");
+                         error.drift_per_period_rel, roundoff, "");
   report.alias(key + "_drift_rel", key + "_error_max_rel");  // the maximum's old name
 }
 
@@ -269,8 +270,8 @@ void report_drifts(Report& report, const IntegrationResult& run, double period, 
   const double roundoff = exact ? kClosedFormRoundoff : 0.0;
   report_invariant(report, "energy", "max |T - T0| / T0", t, dT, period, roundoff);
   report_invariant(report, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period, roundoff);
-  report.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|", run.L_space_drift_rel,
-                      roundoff, "");
+  report.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|",
+                         run.L_space_drift_rel, roundoff, "");
 }
 
 double end_time(const std::optional<double>& t_end, const std::optional<double>& periods,
@@ -287,7 +288,7 @@ void report_equal_cost(Report& report, const std::vector<EqualCostRow>& rows,
                   "{:g} periods (a symplectic method's energy error stays in a band)",
                   evaluations_per_period, periods));
   report.result("equal_cost_evaluations_per_period", "evaluations a period (a Strang step: one)",
-             evaluations_per_period, "");
+                evaluations_per_period, "");
   report.result("equal_cost_periods", "periods run", periods, "");
   const EqualCostRow* least = nullptr;
   for (const EqualCostRow& row : rows) {
@@ -299,15 +300,15 @@ void report_equal_cost(Report& report, const std::vector<EqualCostRow>& rows,
     const std::string label = fmt::format("{:<15} {:<15} energy drift a period", name, setting);
     if (!row.completed) {
       report.result_none("equal_cost_energy_drift_per_period_rel_" + key, label, "",
-                      "could not finish at this cost");
+                         "could not finish at this cost");
       report.result_none("equal_cost_energy_error_max_rel_" + key, "  max |T - T0| / T0", "",
-                      "could not finish at this cost");
+                         "could not finish at this cost");
       continue;
     }
     report.result("equal_cost_energy_drift_per_period_rel_" + key, label,
-               row.energy.drift_per_period_rel, "");
+                  row.energy.drift_per_period_rel, "");
     report.result("equal_cost_energy_error_max_rel_" + key, "  largest energy error",
-               row.energy.max_rel, "");
+                  row.energy.max_rel, "");
     if (least == nullptr ||
         std::abs(row.energy.drift_per_period_rel) < std::abs(least->energy.drift_per_period_rel)) {
       least = &row;
@@ -316,7 +317,7 @@ void report_equal_cost(Report& report, const std::vector<EqualCostRow>& rows,
   if (least != nullptr) {
     const Method m = least->options.method;
     report.result_text("least_energy_drift", "least energy drift at equal cost",
-                    std::string(method_name(m)));
+                       std::string(method_name(m)));
     report.result_text("least_energy_drift_kind", "  its kind", std::string(method_kind(m)));
   }
 }

@@ -62,15 +62,17 @@ std::string Report::figure_title(const std::string& own) const {
 
 // ---- Results ----------------------------------------------------------------
 
-void Report::section(const std::string& heading) { rows_.push_back({heading, "", "", "", true}); }
+void Report::section(const std::string& heading) {
+  rows_.push_back({heading, "", "", "", true});
+}
 
 void Report::store(const std::string& key, Json value, bool finite, const std::string& unit,
                    const std::optional<std::string>& printed) {
   // A NaN or an overflow must never reach the output: JSON would print null.
   if (!finite) {
     // The inputs overflow it (the defaults never do); the caller names the inputs given.
-    throw InputError("", "the result '" + key +
-                             "' overflows or is undefined for these inputs (out of range)");
+    throw InputError(
+        "", "the result '" + key + "' overflows or is undefined for these inputs (out of range)");
   }
   results_[key] = std::move(value);
   // A pure number has the unit "1", as SI writes it.
@@ -85,37 +87,34 @@ void Report::result(const std::string& key, const std::string& label, double val
   rows_.push_back({label, format_number(value, 6), unit, printed.value_or("")});
 }
 
-void Report::result(const std::string& key, const std::string& label,
-                    const Eigen::Vector2d& value, const std::string& unit,
-                    std::optional<std::string> printed) {
+void Report::result(const std::string& key, const std::string& label, const Eigen::Vector2d& value,
+                    const std::string& unit, std::optional<std::string> printed) {
   store(key, Json::array({value(0) + 0.0, value(1) + 0.0}), value.allFinite(), unit, printed);
   rows_.push_back({label, format_vec2(value), unit, printed.value_or("")});
 }
 
-void Report::result(const std::string& key, const std::string& label,
-                    const Eigen::Vector3d& value, const std::string& unit,
-                    std::optional<std::string> printed) {
-  store(key, Json::array({value(0) + 0.0, value(1) + 0.0, value(2) + 0.0}), value.allFinite(),
-        unit, printed);
+void Report::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
+                    const std::string& unit, std::optional<std::string> printed) {
+  store(key, Json::array({value(0) + 0.0, value(1) + 0.0, value(2) + 0.0}), value.allFinite(), unit,
+        printed);
   rows_.push_back({label, format_vec3(value), unit, printed.value_or("")});
 }
 
-void Report::result(const std::string& key, const std::string& label,
-                    const Eigen::Matrix3d& value, const std::string& unit,
-                    std::optional<std::string> printed) {
+void Report::result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
+                    const std::string& unit, std::optional<std::string> printed) {
   Json rows = Json::array();
   for (int i = 0; i < 3; ++i) {
     rows.push_back(Json::array({value(i, 0) + 0.0, value(i, 1) + 0.0, value(i, 2) + 0.0}));
   }
   store(key, rows, value.allFinite(), unit, printed);
   for (int i = 0; i < 3; ++i) {
-    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()),
-                     i == 0 ? unit : "", i == 0 ? printed.value_or("") : ""});
+    rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()), i == 0 ? unit : "",
+                     i == 0 ? printed.value_or("") : ""});
   }
 }
 
-void Report::result_none(const std::string& key, const std::string& label,
-                         const std::string& unit, const std::string& why) {
+void Report::result_none(const std::string& key, const std::string& label, const std::string& unit,
+                         const std::string& why) {
   results_[key] = nullptr;
   units_[key] = unit.empty() ? "1" : unit;
   rows_.push_back({label, "none", "", "(" + why + ")"});
@@ -152,7 +151,9 @@ void Report::alias(const std::string& old_key, const std::string& key) {
   units_[old_key] = units_.at(key);
 }
 
-void Report::note(const std::string& text) { notes_.push_back(text); }
+void Report::note(const std::string& text) {
+  notes_.push_back(text);
+}
 
 // The text's printed values as numbers in the result's unit where the print is a
 // plain number (a parenthetical after it, "0.076 (76 g)", is commentary) or a list

@@ -145,13 +145,9 @@ render::Scene3D Motion::scene(double t) const {
 
 // The motion is exact at any time: it needs no frame times to sample.
 Animation animation(const Report& report, const FrameTimes& /*frame_times*/) {
-  const auto motion = std::make_shared<const Motion>(report);
-  Animation a;
-  a.seconds = motion->seconds();
-  a.caption = "the body cone rolling on the space cone, omega along their line of contact";
-  a.still = "cones";
-  a.scene = [motion](double t) { return motion->scene(t); };
-  return a;
+  return play(std::make_shared<const Motion>(report),
+              "the body cone rolling on the space cone, omega along their line of contact",
+              "cones");
 }
 
 void figures(const Report& report, FigureSink& sink) {

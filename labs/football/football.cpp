@@ -242,11 +242,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  LabProgram<Inputs, Report> p{kName, kTitle, input_table()};
-  p.compute = compute;
-  p.figures = figures;
-  p.animation = animation;
-  return p;
+  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/false};
 }
 
 }  // namespace rigid::lab::football

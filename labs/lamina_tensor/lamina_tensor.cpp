@@ -158,10 +158,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  LabProgram<Inputs, Report> p{kName, kTitle, input_table()};
-  p.compute = compute;
-  p.figures = figures;
-  return p;
+  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/false};
 }
 
 }  // namespace rigid::lab::lamina_tensor

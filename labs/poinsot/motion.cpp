@@ -201,13 +201,9 @@ Animation animation(const Report& report, const FrameTimes& frame_times) {
   // frames' times, in one run.
   const auto motion = std::make_shared<const Motion>(
       report, report.method == "exact" ? std::vector<double>{} : frame_times(report.t_end));
-  Animation a;
-  a.seconds = motion->seconds();
-  a.caption =
-      "the body turning with L fixed, and its energy ellipsoid rolling on the invariable "
-      "plane: polhode and herpolhode";
-  a.scene = [motion](double t) { return motion->scene(t); };
-  return a;
+  return play(motion,
+              "the body turning with L fixed, and its energy ellipsoid rolling on the invariable "
+              "plane: polhode and herpolhode");
 }
 
 }  // namespace rigid::lab::poinsot

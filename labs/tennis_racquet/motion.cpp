@@ -119,10 +119,7 @@ render::Plot2D Motion::strip(double t) const {
 Animation animation(const Report& report, const FrameTimes& frame_times) {
   const auto motion = std::make_shared<const Motion>(
       report, report.drawn_integrator ? frame_times(report.t_end) : std::vector<double>{});
-  Animation a;
-  a.seconds = motion->seconds();
-  a.caption = "the racquet turning in space, omega's components below";
-  a.scene = [motion](double t) { return motion->scene(t); };
+  Animation a = play(motion, "the racquet turning in space, omega's components below");
   a.strip = [motion](double t) { return motion->strip(t); };
   a.strip_share = 0.3;
   return a;

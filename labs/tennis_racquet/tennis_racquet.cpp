@@ -240,12 +240,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  LabProgram<Inputs, Report> p{kName, kTitle, input_table()};
-  p.compute = compute;
-  p.figures = figures;
-  p.animation = animation;
-  p.csv = true;
-  return p;
+  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/true};
 }
 
 }  // namespace rigid::lab::tennis_racquet

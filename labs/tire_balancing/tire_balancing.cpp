@@ -9,6 +9,11 @@
 
 namespace rigid::lab::tire_balancing {
 
+namespace {
+constexpr const char* kName = "tire_balancing";
+constexpr const char* kTitle = "dynamic balancing of a wheel on a crooked axle (sections 2.2-2.3)";
+}  // namespace
+
 const InputTable<Inputs>& input_table() {
   static const InputTable<Inputs> table = [] {
     InputTable<Inputs> t;
@@ -46,8 +51,7 @@ const InputTable<Inputs>& input_table() {
 }
 
 Report compute(const Inputs& in) {
-  Report report("tire_balancing",
-                "dynamic balancing of a wheel on a crooked axle (sections 2.2-2.3)");
+  Report report(kName, kTitle);
   report.start(input_table(), in);
   CrookedWheel& wheel = report.wheel;
   wheel.mass = in.mass;
@@ -138,13 +142,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  LabProgram<Inputs, Report> p{"tire_balancing",
-                               "dynamic balancing of a wheel on a crooked axle (sections 2.2-2.3)",
-                               input_table()};
-  p.compute = compute;
-  p.figures = figures;
-  p.csv = true;
-  return p;
+  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/true};
 }
 
 }  // namespace rigid::lab::tire_balancing

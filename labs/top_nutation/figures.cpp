@@ -350,12 +350,7 @@ Animation animation(const Report& report, const FrameTimes& frame_times) {
   // Shared, not copied, by every copy of the scene function.
   const auto motion = std::make_shared<const Motion>(
       report, report.method == "exact" ? std::vector<double>{} : frame_times(report.t_end));
-  Animation a;
-  a.seconds = motion->seconds();
-  a.caption = "the top precessing and nodding; the path of its axis on the sphere";
-  a.still = "top";
-  a.scene = [motion](double t) { return motion->scene(t); };
-  return a;
+  return play(motion, "the top precessing and nodding; the path of its axis on the sphere", "top");
 }
 
 }  // namespace rigid::lab::top_nutation

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rigid/render/context.h"
+#include "rigid/render/draw.h"
 #include "rigid/render/palette.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/png.h"
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
   const rr::Plot2D plot = sample_plot();
   for (int rep = 0; rep < 3; ++rep) {
     auto t1 = clock::now();
-    rr::Image img = plot.render(1600, 1200);
+    rr::Image img = rr::draw(plot, 1600, 1200);
     auto t2 = clock::now();
     rr::write_png(img, dir + "/plot.png");
     auto t3 = clock::now();
@@ -113,15 +114,15 @@ int main(int argc, char** argv) {
                 std::chrono::duration<double, std::milli>(t2 - t1).count(),
                 std::chrono::duration<double, std::milli>(t3 - t2).count());
   }
-  plot.save(dir + "/plot_800.png", 800, 600);
+  rr::save_png(plot, dir + "/plot_800.png", 800, 600);
   const rr::Scene3D scene = sample_scene();
   for (int rep = 0; rep < 2; ++rep) {
     auto t1 = clock::now();
-    scene.save(dir + "/scene.png");
+    rr::save_png(scene, dir + "/scene.png");
     std::printf("scene 1600x1200 render+png %.1f ms\n",
                 std::chrono::duration<double, std::milli>(clock::now() - t1).count());
   }
-  scene.save(dir + "/scene_800.png", 800, 600);
+  rr::save_png(scene, dir + "/scene_800.png", 800, 600);
   (void)argc;
   (void)argv;
   return 0;

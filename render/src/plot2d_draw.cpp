@@ -10,6 +10,7 @@
 #include "overlay.h"
 #include "painter.h"
 #include "placement.h"
+#include "rigid/render/draw.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/text.h"
 #include "rigid/render/ticks.h"
@@ -734,9 +735,9 @@ FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
 
 }  // namespace
 
-Plot2D::Layout Plot2D::layout(int width, int height) const {
-  const FigurePlan fp = plan_figure(*this, width, height);
-  Layout out;
+Plot2D::Layout layout(const Plot2D& plot, int width, int height) {
+  const FigurePlan fp = plan_figure(plot, width, height);
+  Plot2D::Layout out;
   out.title = fp.title.box;
   out.title_lines = static_cast<int>(fp.title.lines.size());
   out.title_size = fp.title.size;
@@ -744,9 +745,9 @@ Plot2D::Layout Plot2D::layout(int width, int height) const {
   return out;
 }
 
-Image Plot2D::render(int width, int height, FigureTiming* timing) const {
+Image draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {
   detail::PhaseClock clock(timing);
-  const FigurePlan fp = plan_figure(*this, width, height);
+  const FigurePlan fp = plan_figure(plot, width, height);
   clock.lap(&FigureTiming::layout);
   detail::Target& tgt = detail::target();
   // No depth buffer for 2D.
@@ -763,8 +764,9 @@ Image Plot2D::render(int width, int height, FigureTiming* timing) const {
   return img;
 }
 
-void Plot2D::save(const std::string& path, int width, int height, FigureTiming* timing) const {
-  detail::save_timed(render(width, height, timing), path, timing);
+void save_png(const Plot2D& plot, const std::string& path, int width, int height,
+              FigureTiming* timing) {
+  detail::save_timed(draw(plot, width, height, timing), path, timing);
 }
 
 }  // namespace rigid::render

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "painter.h"
+#include "rigid/render/draw.h"
 #include "rigid/render/scene3d.h"
 #include "scene_gpu.h"
 #include "scene_layout.h"
@@ -216,48 +217,49 @@ void draw_overlay(const Scene3D& scene, const SceneFrame& fr) {
 
 }  // namespace detail
 
-Scene3D::Layout Scene3D::layout(int width, int height) const {
-  const double k = detail::normalising_scale(*this);
-  if (k != 1.0) return scaled(k).layout(width, height);
-  const detail::SceneFrame fr = detail::frame_scene(*this, width, height);
+Scene3D::Layout layout(const Scene3D& scene, int width, int height) {
+  const double k = detail::normalising_scale(scene);
+  if (k != 1.0) return layout(scene.scaled(k), width, height);
+  const detail::SceneFrame fr = detail::frame_scene(scene, width, height);
   return {fr.title.box,  fr.legend, fr.region, static_cast<int>(fr.title.lines.size()),
           fr.title.size, fr.labels};
 }
 
-Camera Scene3D::fitted_camera(int width, int height) const {
-  const double k = detail::normalising_scale(*this);
+Camera fitted_camera(const Scene3D& scene, int width, int height) {
+  const double k = detail::normalising_scale(scene);
   Camera c;
   if (k != 1.0) {
-    c = scaled(k).fitted_camera(width, height);
+    c = fitted_camera(scene.scaled(k), width, height);
     c.eye /= k;
     c.target /= k;
     c.ortho_height /= k;
   } else {
-    c = detail::frame_scene(*this, width, height).camera;
+    c = detail::frame_scene(scene, width, height).camera;
   }
   c.fit = false;
   return c;
 }
 
-Image Scene3D::render(int width, int height, FigureTiming* timing) const {
-  const double k = detail::normalising_scale(*this);
-  if (k != 1.0) return scaled(k).render(width, height, timing);
+Image draw(const Scene3D& scene, int width, int height, FigureTiming* timing) {
+  const double k = detail::normalising_scale(scene);
+  if (k != 1.0) return draw(scene.scaled(k), width, height, timing);
   detail::PhaseClock clock(timing);
   detail::Target& tgt = detail::target();
   tgt.begin(width, height, true, kWhite);
   clock.lap(&FigureTiming::setup, true);
-  const detail::SceneFrame fr = detail::frame_scene(*this, width, height);
+  const detail::SceneFrame fr = detail::frame_scene(scene, width, height);
   clock.lap(&FigureTiming::layout);
-  detail::draw_geometry(*this, fr);
-  detail::draw_overlay(*this, fr);
+  detail::draw_geometry(scene, fr);
+  detail::draw_overlay(scene, fr);
   clock.lap(&FigureTiming::draw, true);
   Image img = tgt.finish();
   clock.lap(&FigureTiming::resolve);
   return img;
 }
 
-void Scene3D::save(const std::string& path, int width, int height, FigureTiming* timing) const {
-  detail::save_timed(render(width, height, timing), path, timing);
+void save_png(const Scene3D& scene, const std::string& path, int width, int height,
+              FigureTiming* timing) {
+  detail::save_timed(draw(scene, width, height, timing), path, timing);
 }
 
 }  // namespace rigid::render

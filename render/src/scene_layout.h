@@ -1,6 +1,6 @@
 // Internal: a 3D scene framed at one size: the shared overlay (title, legend),
 // the camera fitted into the region the overlay leaves, and where each label's
-// text goes. render() draws exactly this; Scene3D::layout() reports it.
+// text goes. draw() draws exactly this; layout() reports it (both in draw.h).
 #pragma once
 
 #include <vector>

@@ -17,6 +17,8 @@
 using rigid::lab::football::compute;
 using rigid::lab::football::Inputs;
 using rigid::lab::football::Motion;
+using rigid::test::check_same_scene;
+using rigid::test::KeptFigures;
 using rigid::test::value;
 
 namespace {
@@ -29,53 +31,7 @@ Inputs preset(const char* name) {
   return in;
 }
 
-bool same(const rigid::render::Color& a, const rigid::render::Color& b) {
-  return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
-}
-
-// Two scenes hold the same title, camera, surfaces, lines and labels, bit for bit.
-void check_same_scene(const rigid::render::Scene3D& a, const rigid::render::Scene3D& b) {
-  CHECK(a.title == b.title);
-  CHECK(a.camera.eye == b.camera.eye);
-  CHECK(a.camera.target == b.camera.target);
-  CHECK(a.camera.fov_y_deg == b.camera.fov_y_deg);
-  REQUIRE(a.objects().size() == b.objects().size());
-  for (std::size_t i = 0; i < a.objects().size(); ++i) {
-    const auto &x = a.objects()[i], &y = b.objects()[i];
-    CHECK(x.shape == y.shape);
-    CHECK(x.transform.matrix() == y.transform.matrix());
-    CHECK(same(x.material.color, y.material.color));
-    CHECK(x.material.opacity == y.material.opacity);
-    CHECK(x.label == y.label);
-  }
-  REQUIRE(a.polylines().size() == b.polylines().size());
-  for (std::size_t i = 0; i < a.polylines().size(); ++i) {
-    const auto &x = a.polylines()[i], &y = b.polylines()[i];
-    CHECK(x.points == y.points);
-    CHECK(same(x.color, y.color));
-    CHECK(x.width == y.width);
-    CHECK(x.label == y.label);
-  }
-  REQUIRE(a.labels().size() == b.labels().size());
-  for (std::size_t i = 0; i < a.labels().size(); ++i) {
-    CHECK(a.labels()[i].position == b.labels()[i].position);
-    CHECK(a.labels()[i].text == b.labels()[i].text);
-    CHECK(same(a.labels()[i].color, b.labels()[i].color));
-  }
-}
-
 // The figures as they are handed over, by name.
-struct KeptFigures : rigid::lab::FigureSink {
-  std::map<std::string, rigid::render::Scene3D> scenes;
-  std::map<std::string, rigid::render::Plot2D> plots;
-  void add(const std::string& name, const std::string&, rigid::render::Plot2D plot) override {
-    plots.emplace(name, std::move(plot));
-  }
-  void add(const std::string& name, const std::string&, rigid::render::Scene3D scene) override {
-    scenes.emplace(name, std::move(scene));
-  }
-};
-
 }  // namespace
 
 TEST_CASE("football: the default football is prolate, its body cone rolls outside") {

@@ -14,14 +14,10 @@
 using Catch::Matchers::WithinAbs;
 using rigid::lab::lamina_tensor::compute;
 using rigid::lab::lamina_tensor::Inputs;
+using rigid::test::prints_as;
 using rigid::test::value;
 
 namespace {
-// Half a unit in the last place the text prints.
-bool prints_as(double printed_value, double printed, int decimals) {
-  return std::abs(printed_value - printed) <= 0.5 * std::pow(10.0, -decimals) + 1e-12;
-}
-
 // Counts the figures handed over, by kind.
 struct CountingSink : rigid::lab::FigureSink {
   int plots = 0, scenes = 0;

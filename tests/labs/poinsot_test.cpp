@@ -19,15 +19,12 @@ using rigid::lab::poinsot::compute;
 using rigid::lab::poinsot::Inputs;
 using rigid::lab::poinsot::Motion;
 using rigid::lab::poinsot::Report;
+using rigid::test::check_same_scene;
 using rigid::test::names_input;
+using rigid::test::prints_as;
 using rigid::test::value;
 
 namespace {
-
-// Half a unit in the last place the text prints.
-bool prints_as(double printed_value, double printed, int decimals) {
-  return std::abs(printed_value - printed) <= 0.5 * std::pow(10.0, -decimals) + 1e-12;
-}
 
 // The inputs as the options would set them ("--inertia 1,2,3 --method rk4"), through
 // the lab's own table, so each case reads as the command line it stands for.
@@ -63,41 +60,6 @@ Inputs given(const std::string& args) {
     }
   }
   return in;
-}
-
-// Whether the two scenes hold the same things, to the bit.
-void check_same_scene(const rigid::render::Scene3D& a, const rigid::render::Scene3D& b) {
-  CHECK(a.title == b.title);
-  CHECK(a.camera.eye == b.camera.eye);
-  CHECK(a.camera.target == b.camera.target);
-  CHECK(a.camera.up == b.camera.up);
-  CHECK(a.camera.fov_y_deg == b.camera.fov_y_deg);
-  const auto same_color = [](const rigid::render::Color& x, const rigid::render::Color& y) {
-    return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a;
-  };
-  REQUIRE(a.objects().size() == b.objects().size());
-  for (std::size_t k = 0; k < a.objects().size(); ++k) {
-    const auto& x = a.objects()[k];
-    const auto& y = b.objects()[k];
-    INFO("object " << k << " " << x.label);
-    CHECK(x.shape == y.shape);
-    CHECK(x.transform.matrix() == y.transform.matrix());
-    CHECK(same_color(x.material.color, y.material.color));
-    CHECK(x.material.opacity == y.material.opacity);
-    CHECK(x.label == y.label);
-    CHECK(x.path == y.path);
-    CHECK(x.tube_radius == y.tube_radius);
-  }
-  REQUIRE(a.polylines().size() == b.polylines().size());
-  for (std::size_t k = 0; k < a.polylines().size(); ++k) {
-    CHECK(a.polylines()[k].points == b.polylines()[k].points);
-    CHECK(a.polylines()[k].label == b.polylines()[k].label);
-  }
-  REQUIRE(a.labels().size() == b.labels().size());
-  for (std::size_t k = 0; k < a.labels().size(); ++k) {
-    CHECK(a.labels()[k].position == b.labels()[k].position);
-    CHECK(a.labels()[k].text == b.labels()[k].text);
-  }
 }
 
 // The figures handed over, by name.

@@ -17,19 +17,13 @@ using rigid::lab::InputError;
 using rigid::lab::tennis_racquet::compute;
 using rigid::lab::tennis_racquet::Inputs;
 using rigid::lab::tennis_racquet::Motion;
+using rigid::test::check_same_scene;
+using rigid::test::element;
 using rigid::test::names_input;
+using rigid::test::prints_as;
 using rigid::test::value;
 
 namespace {
-
-bool prints_as(double value, double printed, int decimals) {
-  return std::abs(value - printed) <= 0.5 * std::pow(10.0, -decimals) + 1e-12;
-}
-
-// Component i of a result that is a list of numbers.
-double element(const rigid::lab::Json& results, const char* key, int i) {
-  return results.at(key).at(i).get<double>();
-}
 
 // The text's racquet, written out from eqs. 83-85 (independent of core's primitives).
 struct TextRacquet {
@@ -330,27 +324,6 @@ TEST_CASE("tennis_racquet: what a run's inputs and method leave for its motion")
 }
 
 namespace {
-
-void check_same_scene(const rigid::render::Scene3D& a, const rigid::render::Scene3D& b) {
-  CHECK(a.title == b.title);
-  CHECK(a.camera.eye == b.camera.eye);
-  CHECK(a.camera.target == b.camera.target);
-  REQUIRE(a.objects().size() == b.objects().size());
-  for (std::size_t i = 0; i < a.objects().size(); ++i) {
-    const auto &x = a.objects()[i], &y = b.objects()[i];
-    CHECK(x.shape == y.shape);
-    CHECK(x.label == y.label);
-    CHECK(x.transform.matrix() == y.transform.matrix());
-    CHECK(x.material.color.r == y.material.color.r);
-    CHECK(x.material.color.b == y.material.color.b);
-  }
-  REQUIRE(a.labels().size() == b.labels().size());
-  for (std::size_t i = 0; i < a.labels().size(); ++i) {
-    CHECK(a.labels()[i].text == b.labels()[i].text);
-    CHECK(a.labels()[i].position == b.labels()[i].position);
-  }
-  CHECK(a.polylines().size() == b.polylines().size());
-}
 
 void check_same_strip(const rigid::render::Plot2D& a, const rigid::render::Plot2D& b) {
   const auto &p = a.panel(), &q = b.panel();

@@ -20,58 +20,19 @@ using rigid::lab::InputError;
 using rigid::lab::top_nutation::compute;
 using rigid::lab::top_nutation::Inputs;
 using rigid::lab::top_nutation::Motion;
+using rigid::test::check_same_scene;
+using rigid::test::element;
+using rigid::test::prints_as;
 using rigid::test::value;
 
 namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-// Half a unit in the last place the text prints.
-bool prints_as(double value, double printed, int decimals) {
-  return std::abs(value - printed) <= 0.5 * std::pow(10.0, -decimals) + 1e-12;
-}
-
-// The ith number of a result that is a list.
-double element(const rigid::lab::Json& results, const char* key, int i) {
-  return results.at(key).at(i).get<double>();
-}
-
 Inputs with_method(const std::string& method) {
   Inputs in;
   in.integration.method = method;
   return in;
-}
-
-// Two scenes hold the same things, number for number.
-void check_same_scene(const rigid::render::Scene3D& a, const rigid::render::Scene3D& b) {
-  CHECK(a.title == b.title);
-  CHECK(a.camera.eye == b.camera.eye);
-  CHECK(a.camera.target == b.camera.target);
-  REQUIRE(a.objects().size() == b.objects().size());
-  for (std::size_t i = 0; i < a.objects().size(); ++i) {
-    const auto &p = a.objects()[i], &q = b.objects()[i];
-    CHECK(p.shape == q.shape);
-    CHECK(p.transform.matrix() == q.transform.matrix());
-    CHECK(p.material.color.r == q.material.color.r);
-    CHECK(p.material.color.g == q.material.color.g);
-    CHECK(p.material.color.b == q.material.color.b);
-    CHECK(p.material.opacity == q.material.opacity);
-    CHECK(p.label == q.label);
-    CHECK(p.path == q.path);
-    CHECK(p.tube_radius == q.tube_radius);
-  }
-  REQUIRE(a.polylines().size() == b.polylines().size());
-  for (std::size_t i = 0; i < a.polylines().size(); ++i) {
-    const auto &p = a.polylines()[i], &q = b.polylines()[i];
-    CHECK(p.points == q.points);
-    CHECK(p.width == q.width);
-    CHECK(p.label == q.label);
-  }
-  REQUIRE(a.labels().size() == b.labels().size());
-  for (std::size_t i = 0; i < a.labels().size(); ++i) {
-    CHECK(a.labels()[i].position == b.labels()[i].position);
-    CHECK(a.labels()[i].text == b.labels()[i].text);
-  }
 }
 
 // A sink that keeps the figures' names, and the scene of one of them.

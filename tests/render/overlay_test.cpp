@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/render/draw.h"
 #include "rigid/render/palette.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
@@ -94,12 +95,12 @@ TEST_CASE("overlay: a plot's and a scene's legend and title come from one style"
       plot.panel().add_line({0, 1}, {double(k), double(k) + 1}, labels[k]);
       scene.add_sphere(Eigen::Vector3d(double(k), 0, 0), 0.3, {}, labels[k]);
     }
-    const ScreenRect pl = plot.layout(w, h).panels.at(0).legend, sl = scene.layout(w, h).legend;
+    const ScreenRect pl = layout(plot, w, h).panels.at(0).legend, sl = layout(scene, w, h).legend;
     // The same rows, font, swatch and paddings give the same box, to rounding.
     CHECK(pl.width() == Approx(sl.width()).margin(1e-9));
     CHECK(pl.height() == Approx(sl.height()).margin(1e-9));
-    CHECK(plot.layout(w, h).title_size == Approx(scene.layout(w, h).title_size).margin(1e-12));
-    CHECK(plot.layout(w, h).title.y0 == Approx(scene.layout(w, h).title.y0).margin(1e-12));
+    CHECK(layout(plot, w, h).title_size == Approx(layout(scene, w, h).title_size).margin(1e-12));
+    CHECK(layout(plot, w, h).title.y0 == Approx(layout(scene, w, h).title.y0).margin(1e-12));
   }
 }
 
@@ -117,10 +118,10 @@ TEST_CASE("overlay: a long title wraps at a top-level separator, keeping the mar
     scene.title = long_title;
     scene.add_sphere({0, 0, 0}, 1, {kBlue});
     for (const auto& [lines, size, box] :
-         {std::tuple{plot.layout(w, h).title_lines, plot.layout(w, h).title_size,
-                     plot.layout(w, h).title},
-          std::tuple{scene.layout(w, h).title_lines, scene.layout(w, h).title_size,
-                     scene.layout(w, h).title}}) {
+         {std::tuple{layout(plot, w, h).title_lines, layout(plot, w, h).title_size,
+                     layout(plot, w, h).title},
+          std::tuple{layout(scene, w, h).title_lines, layout(scene, w, h).title_size,
+                     layout(scene, w, h).title}}) {
       CHECK(lines == 2);
       CHECK(box.x0 >= margin - 1e-9);
       CHECK(box.x1 <= w - margin + 1e-9);
@@ -132,10 +133,10 @@ TEST_CASE("overlay: a long title wraps at a top-level separator, keeping the mar
   // At 1600 px the two halves fit at full size: nothing shrinks.
   Plot2D plot;
   plot.title = long_title;
-  CHECK(plot.layout(1600, 1200).title_size == Approx(40.0));
+  CHECK(layout(plot, 1600, 1200).title_size == Approx(40.0));
   // The image stays white within the margin on both sides of the title band.
-  const Image img = plot.render(1600, 1200);
-  const ScreenRect band = plot.layout(1600, 1200).title;
+  const Image img = draw(plot, 1600, 1200);
+  const ScreenRect band = layout(plot, 1600, 1200).title;
   CHECK(pixels_of(img, {0, band.y0, margin_at(1600, 1200) - 1, band.y1}, kTextColor, 120) == 0);
   CHECK(pixels_of(img, {1600 - margin_at(1600, 1200) + 1, band.y0, 1600, band.y1}, kTextColor,
                   120) == 0);
@@ -150,14 +151,14 @@ TEST_CASE("overlay: the wrap never splits inside parentheses; a title without a 
   inner += ") end";
   Plot2D plot;
   plot.title = "A: " + inner;
-  const Plot2D::Layout l = plot.layout(1600, 1200);
+  const Plot2D::Layout l = layout(plot, 1600, 1200);
   REQUIRE(l.title_lines == 2);
   // The title is as wide as its second line, all of the parenthesis: it was not split there.
   CHECK(l.title.width() == Approx(measure_text(inner, l.title_size).width).margin(0.5));
   // No separator at all: one line, shrunk to the room between the margins.
   Plot2D plain;
   plain.title = std::string(160, 'W');
-  const Plot2D::Layout p = plain.layout(1600, 1200);
+  const Plot2D::Layout p = layout(plain, 1600, 1200);
   CHECK(p.title_lines == 1);
   CHECK(p.title_size < 40);
   CHECK(p.title.width() <= 1600 - 2 * margin_at(1600, 1200));
@@ -178,7 +179,7 @@ TEST_CASE("legend: kAuto takes the one corner free of data", "[render][legend]")
       }
   p.add_points(x, y, "measured").color = kBlue;
   p.add_line({0.5, 0.5}, {0.45, 0.55}, "a short line");
-  const Plot2D::PanelLayout l = plot.layout(1600, 1200).panels.at(0);
+  const Plot2D::PanelLayout l = layout(plot, 1600, 1200).panels.at(0);
   REQUIRE(!l.legend.empty());
   const double cx = 0.5 * (l.frame.x0 + l.frame.x1), cy = 0.5 * (l.frame.y0 + l.frame.y1);
   CHECK(l.legend.x0 > cx);
@@ -197,7 +198,7 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
       Plot2D plot;
       Panel& p = plot.panel();
       fill_with_waves(p);
-      const Plot2D::PanelLayout l = plot.layout(w, h).panels.at(0);
+      const Plot2D::PanelLayout l = layout(plot, w, h).panels.at(0);
       REQUIRE(!l.legend.empty());
       // The data's range padded by 4 % is -1.08..1.08; exactly one end grew beyond it.
       const bool top = l.y_hi > 1.08 + 1e-6, bottom = l.y_lo < -1.08 - 1e-6;
@@ -206,7 +207,7 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
       CHECK(points_inside(drawn_points(p, {l}), l.legend) == 0);
       // And in the pixels: no curve colour in the legend box right of its swatches (the
       // style's inner padding and swatch, 0.8 × 14 + 52 reference px scaled by f).
-      const Image img = plot.render(w, h);
+      const Image img = draw(plot, w, h);
       const double f = std::pow(std::min(w / 1600.0, h / 1200.0), 0.7);
       const ScreenRect text_part{l.legend.x0 + (0.8 * 14 + 52) * f + 2, l.legend.y0, l.legend.x1,
                                  l.legend.y1};
@@ -218,7 +219,7 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
       Panel& p = plot.panel();
       fill_with_waves(p);
       p.y.max = 1.1;
-      const Plot2D::PanelLayout l = plot.layout(w, h).panels.at(0);
+      const Plot2D::PanelLayout l = layout(plot, w, h).panels.at(0);
       CHECK(l.y_hi == 1.1);
       CHECK(l.y_lo < -1.08 - 0.02);
       CHECK(l.legend.y0 > 0.5 * (l.frame.y0 + l.frame.y1));
@@ -229,7 +230,7 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
       Panel& p = plot.panel();
       fill_with_waves(p);
       p.y.min = -1.1, p.y.max = 1.1;
-      const Plot2D::PanelLayout l = plot.layout(w, h).panels.at(0);
+      const Plot2D::PanelLayout l = layout(plot, w, h).panels.at(0);
       CHECK(l.y_lo == -1.1);
       CHECK(l.y_hi == 1.1);
       CHECK(!l.legend.empty());
@@ -239,13 +240,13 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
       Panel& p = plot.panel();
       fill_with_waves(p);
       p.legend = LegendPlace::kBottomLeft;
-      Plot2D::PanelLayout l = plot.layout(w, h).panels.at(0);
+      Plot2D::PanelLayout l = layout(plot, w, h).panels.at(0);
       CHECK(l.legend.x0 < 0.5 * (l.frame.x0 + l.frame.x1));
       CHECK(l.legend.y0 > 0.5 * (l.frame.y0 + l.frame.y1));
       CHECK(l.y_hi == Approx(1.08));
       CHECK(l.y_lo == Approx(-1.08));
       p.legend = LegendPlace::kNone;
-      l = plot.layout(w, h).panels.at(0);
+      l = layout(plot, w, h).panels.at(0);
       CHECK(l.legend.empty());
     }
   }
@@ -275,7 +276,7 @@ TEST_CASE("annotation: placed texts overlap no data, no legend and no other text
     p.annotate(nx, ny, "note at t = " + std::to_string(nx).substr(0, 4));
   for (const auto& [w, h] : {std::pair{1600, 1200}, std::pair{800, 600}}) {
     CAPTURE(w, h);
-    const Plot2D::PanelLayout l = plot.layout(w, h).panels.at(0);
+    const Plot2D::PanelLayout l = layout(plot, w, h).panels.at(0);
     REQUIRE(l.annotations.size() == notes.size());
     REQUIRE(!l.legend.empty());
     const Mapper m{l};
@@ -306,7 +307,7 @@ TEST_CASE("label3d: labels at one point spread out, clear of each other, the leg
   scene.add_label({-2.5, 0, 0}, "end", kBlack);
   for (const auto& [w, h] : {std::pair{1600, 1200}, std::pair{800, 600}}) {
     CAPTURE(w, h);
-    const Scene3D::Layout l = scene.layout(w, h);
+    const Scene3D::Layout l = layout(scene, w, h);
     REQUIRE(l.labels.size() == 5);
     const ScreenRect image{0, 0, double(w), double(h)};
     for (std::size_t i = 0; i < l.labels.size(); ++i) {
@@ -317,7 +318,7 @@ TEST_CASE("label3d: labels at one point spread out, clear of each other, the leg
       for (std::size_t j = 0; j < i; ++j) CHECK_FALSE(l.labels[i].overlaps(l.labels[j]));
     }
     // None of the bar's shaded vermillion under any label's text: each found a clear place.
-    const Image img = scene.render(w, h);
+    const Image img = draw(scene, w, h);
     long under = 0, bar = 0;
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 
+#include "rigid/render/draw.h"
 #include "rigid/render/palette.h"
 #include "rigid/render/text.h"
 
@@ -44,7 +45,7 @@ TEST_CASE("plot2d: a filled span has its colour and the background is white", "[
   s.color = kBlue;
   s.opacity = 1.0f;
   p.x.grid = p.y.grid = false;
-  const Image img = plot.render(800, 600);
+  const Image img = draw(plot, 800, 600);
   REQUIRE(img.width == 800);
   REQUIRE(img.height == 600);
   // The plot area spans most of the image; its middle is inside the span.
@@ -61,7 +62,7 @@ TEST_CASE("plot2d: a thick line has its colour along its centre", "[render][plot
   Series& s = p.add_line({0, 1}, {0.5, 0.5});
   s.color = kVermillion;
   s.width = 12;
-  const Image img = plot.render(800, 600);
+  const Image img = draw(plot, 800, 600);
   // Find the line in the middle column: the rows of vermillion pixels.
   int first = -1, last = -1;
   for (int y = 0; y < img.height; ++y)
@@ -82,9 +83,9 @@ TEST_CASE("plot2d: drawn text has about its measured extent", "[render][plot2d]"
   p.x.grid = p.y.grid = false;
   Annotation& a = p.annotate(0.5, 0.5, "0123456789");
   a.arrow = false;
-  const Image img = plot.render(1600, 1200);
+  const Image img = draw(plot, 1600, 1200);
   // Blank out everything but the annotation's box (a few px around), then measure the ink.
-  const ScreenRect box = plot.layout(1600, 1200).panels.at(0).annotations.at(0);
+  const ScreenRect box = layout(plot, 1600, 1200).panels.at(0).annotations.at(0);
   const double w = measure_text("0123456789", 27).width;  // annotations use 27 px at 1600×1200
   CHECK(box.width() == Approx(w).margin(0.5));
   Image crop = img;
@@ -113,7 +114,7 @@ TEST_CASE("plot2d: nothing is drawn outside the image at 800x600 with long label
       p.y.label = "angular velocity \\omega_1 (rad/s)";
       p.add_line({0, 1e4}, {-12345.678, 98765.4321}, "series");
     }
-  const Image img = plot.render(800, 600);
+  const Image img = draw(plot, 800, 600);
   // The outermost row and column stay white: no text reaches the border.
   int touched = 0;
   for (int x = 0; x < img.width; ++x)

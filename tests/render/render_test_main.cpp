@@ -15,6 +15,7 @@
 
 #include "render_fixtures.h"
 #include "rigid/render/context.h"
+#include "rigid/render/draw.h"
 #include "rigid/render/png.h"
 
 namespace rigid::render::test {
@@ -49,7 +50,7 @@ std::string context_in_child(const std::string& env, const std::string& path) {
 int main(int argc, char** argv) {
   if (argc == 3 && std::strcmp(argv[1], "--render-child") == 0) {
     try {
-      rigid::render::test::reference_plot().save(argv[2], 800, 600);
+      rigid::render::save_png(rigid::render::test::reference_plot(), argv[2], 800, 600);
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "render child: " << e.what() << "\n";

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "rigid/render/draw.h"
 #include "rigid/render/image.h"
 #include "rigid/render/mesh.h"
 #include "rigid/render/palette.h"
@@ -30,7 +31,7 @@ TEST_CASE("scene3d: an opaque sphere is shaded in its colour, background white",
   Scene3D scene;
   scene.camera = front_camera();
   scene.add_sphere({0, 0, 0}, 1.0, {kBlue});
-  const Image img = scene.render(400, 300);
+  const Image img = draw(scene, 400, 300);
   const std::uint8_t* c = img.at(200, 150);
   // Lit blue: blue dominates, not white, not black.
   CHECK(c[2] > c[0] + 60);
@@ -45,7 +46,7 @@ TEST_CASE("scene3d: an opaque box hides what is behind it", "[render][scene3d]")
   scene.camera = front_camera();
   scene.add_sphere({0, 3, 0}, 1.0, {kVermillion});  // farther from the eye
   scene.add_box({0, 0, 0}, {0.5, 0.5, 0.5}, Eigen::Matrix3d::Identity(), {kBlue});
-  const Image img = scene.render(400, 300);
+  const Image img = draw(scene, 400, 300);
   const std::uint8_t* c = img.at(200, 150);
   CHECK(c[2] > c[0]);  // blue box in front, not the vermillion sphere
 }
@@ -55,7 +56,7 @@ TEST_CASE("scene3d: nested translucent shells show both colours", "[render][scen
   scene.camera = front_camera();
   scene.add_sphere({0, 0, 0}, 2.0, {kSkyBlue, 0.3f});
   scene.add_sphere({0, 0, 0}, 1.0, {kOrange, 1.0f});
-  const Image img = scene.render(400, 300);
+  const Image img = draw(scene, 400, 300);
   const std::uint8_t* inner = img.at(200, 150);
   const std::uint8_t* shell = img.at(200 + 70, 150);  // outside the inner sphere, inside the outer
   // The opaque orange core shows through the blue shell: red stays above blue.
@@ -157,9 +158,9 @@ TEST_CASE("scene3d: the fit fills the free region to its edges and keeps clear o
     const double tol_x = 0.02 * w, tol_y = 0.02 * h;
     SECTION("a wide bar spans the region from left to right") {
       const Scene3D scene = bar_scene(Eigen::Vector3d::UnitX());
-      const Scene3D::Layout layout = scene.layout(w, h);
+      const Scene3D::Layout layout = rigid::render::layout(scene, w, h);
       REQUIRE(!layout.legend.empty());
-      const Placement p = place_of(scene.render(w, h), layout);
+      const Placement p = place_of(draw(scene, w, h), layout);
       CHECK(p.under_legend == 0);
       // Nothing clipped or outside the region (a pixel for antialiasing)...
       CHECK(p.x0 >= layout.region.x0 - 1);
@@ -172,8 +173,8 @@ TEST_CASE("scene3d: the fit fills the free region to its edges and keeps clear o
     }
     SECTION("a tall bar spans the region from top to bottom") {
       const Scene3D scene = bar_scene(Eigen::Vector3d::UnitZ());
-      const Scene3D::Layout layout = scene.layout(w, h);
-      const Placement p = place_of(scene.render(w, h), layout);
+      const Scene3D::Layout layout = rigid::render::layout(scene, w, h);
+      const Placement p = place_of(draw(scene, w, h), layout);
       CHECK(p.under_legend == 0);
       CHECK(p.x0 >= layout.region.x0 - 1);
       CHECK(p.x1 <= layout.region.x1 + 1);
@@ -185,8 +186,8 @@ TEST_CASE("scene3d: the fit fills the free region to its edges and keeps clear o
     SECTION("a round scene tucks under and beside the legend, touching it") {
       Scene3D scene = bar_scene(Eigen::Vector3d::UnitX());
       scene.add_sphere({0, 0, 0}, 2.2, {kVermillion});
-      const Scene3D::Layout layout = scene.layout(w, h);
-      const Placement p = place_of(scene.render(w, h), layout);
+      const Scene3D::Layout layout = rigid::render::layout(scene, w, h);
+      const Placement p = place_of(draw(scene, w, h), layout);
       CHECK(p.under_legend == 0);
       CHECK(p.x0 >= layout.region.x0 - 1);
       CHECK(p.x1 <= layout.region.x1 + 1);
@@ -197,7 +198,7 @@ TEST_CASE("scene3d: the fit fills the free region to its edges and keeps clear o
       // Unfitted, the sphere fills the view and shows under the legend: the check can fail.
       scene.camera.fit = false;
       scene.camera.eye *= 0.35;
-      CHECK(place_of(scene.render(w, h), layout).under_legend > 1000);
+      CHECK(place_of(draw(scene, w, h), layout).under_legend > 1000);
     }
   }
 }
@@ -211,8 +212,8 @@ TEST_CASE("scene3d: the fit keeps the viewing direction and up", "[render][scene
     scene.camera.orthographic = true;
   }
   scene.add_sphere({0, 0, 0}, 1.0, {kVermillion});
-  const Scene3D::Layout layout = scene.layout(800, 600);
-  const Placement p = place_of(scene.render(800, 600), layout);
+  const Scene3D::Layout layout = rigid::render::layout(scene, 800, 600);
+  const Placement p = place_of(draw(scene, 800, 600), layout);
   CHECK(std::abs((p.x1 - p.x0) - (p.y1 - p.y0)) <= 2);
   CHECK(std::abs(0.5 * (p.x0 + p.x1) - 400) <= 1.5);
   CHECK(std::abs(0.5 * (p.y0 + p.y1) - 300) <= 1.5);
@@ -231,7 +232,7 @@ TEST_CASE("scene3d: a scene looks the same at any scale (GL's float range is no 
     scene.add_tube({Eigen::Vector3d(-k, 0, 0.6 * k), Eigen::Vector3d(k, 0, 0.6 * k)}, 0.03 * k,
                    {kVermillion});
     scene.add_arrow(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, k), 0.02 * k, {kBlack});
-    return scene.render(400, 300);
+    return rigid::render::draw(scene, 400, 300);
   };
   const Image reference = draw(1.0);
   for (double k : {1e-40, 1e-8, 1e8, 1e30}) {
@@ -249,9 +250,9 @@ TEST_CASE("scene3d: the fitted camera is the one render uses, and a merge fits b
   a.add_arrow({0, 0, 0}, {0, 0, 2.5}, 0.05, {kVermillion}, "arrow");
   // drawn with its own fit, and with the camera that fit returns (fit off): pixel for pixel
   Scene3D fixed = a;
-  fixed.camera = a.fitted_camera(640, 480);
+  fixed.camera = fitted_camera(a, 640, 480);
   CHECK_FALSE(fixed.camera.fit);
-  const ImageDiff same = compare_images(a.render(640, 480), fixed.render(640, 480), 0);
+  const ImageDiff same = compare_images(draw(a, 640, 480), draw(fixed, 640, 480), 0);
   CHECK(same.differing_pixels == 0);
   // a camera fitted to a and a far-off second scene keeps both in view: a's own fit,
   // applied to the merge, would not (the far sphere falls outside)
@@ -260,6 +261,6 @@ TEST_CASE("scene3d: the fitted camera is the one render uses, and a merge fits b
   Scene3D both = a;
   both.merge(b);
   CHECK(both.objects().size() == a.objects().size() + b.objects().size());
-  const Camera wide = both.fitted_camera(640, 480), tight = a.fitted_camera(640, 480);
+  const Camera wide = fitted_camera(both, 640, 480), tight = fitted_camera(a, 640, 480);
   CHECK((wide.eye - wide.target).norm() > (tight.eye - tight.target).norm());
 }

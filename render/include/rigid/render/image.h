@@ -21,15 +21,15 @@ struct Image {
   }
 };
 
-/// Where one figure's time went, in seconds of wall time (render() and save()
-/// fill it when given one; the phases are split by waiting for the GL to finish
-/// each, which only timed figures do).
+/// Where one figure's time went, in seconds of wall time (draw() and save_png()
+/// of draw.h fill it when given one; the phases are split by waiting for the GL
+/// to finish each, which only timed figures do).
 struct FigureTiming {
   double setup = 0;    ///< binding and clearing the drawing buffer (made by the first figure)
   double layout = 0;   ///< placing the title, legend, labels and the fit (CPU)
   double draw = 0;     ///< drawing, until the rasteriser has finished
   double resolve = 0;  ///< averaging the samples of each pixel and reading the image back
-  double encode = 0;   ///< PNG encoding and the atomic write (save() only)
+  double encode = 0;   ///< PNG encoding and the atomic write (save_png() only)
   double total() const { return setup + layout + draw + resolve + encode; }
 };
 

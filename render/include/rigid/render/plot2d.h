@@ -13,18 +13,18 @@
 // Nothing here takes a pixel offset: the legend, annotations and reference-line
 // labels place themselves clear of the data and of each other.
 //
-// This header is the description library (rigid::render, Eigen only);
-// render(), save() and layout() are defined in the drawing library
-// (rigid::render_gl) and exist only in builds with the renderer.
+// This header is the description library (rigid::render, Eigen only): it
+// declares nothing it cannot define, so a program linking only the description
+// links. Laying out, drawing and saving a figure take fonts and OpenGL; they are
+// free functions of the drawing library (rigid::render_gl, draw.h), which
+// exists only in builds with the renderer.
 #pragma once
 
 #include <limits>
 #include <string>
 #include <vector>
 
-#include "rigid/render/image.h"
 #include "rigid/render/palette.h"
-#include "rigid/render/rect.h"
 
 namespace rigid::render {
 
@@ -145,31 +145,11 @@ class Plot2D {
   /// so its text matches the scene's instead of shrinking with the strip.
   int style_height = 0;
 
-  /// Where one panel's parts land at a size, in pixels.
-  struct PanelLayout {
-    ScreenRect frame;                     ///< the plot area inside the axes
-    ScreenRect title;                     ///< the panel title (empty when none)
-    ScreenRect legend;                    ///< the legend box (empty when none is drawn)
-    std::vector<ScreenRect> annotations;  ///< each annotation's text, in the panel's order
-    std::vector<ScreenRect> ref_labels;   ///< each labelled reference line's label, in order
-    double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;  ///< the axis ranges drawn
-  };
-  /// Where the figure's parts land at a size: the title (one or two lines, maybe shrunk) and
-  /// every panel, row by row.
-  struct Layout {
-    ScreenRect title;
-    int title_lines = 0;
-    double title_size = 0;  ///< the title's font size in pixels
-    std::vector<PanelLayout> panels;
-  };
-  /// The layout render() draws at width × height (needs fonts, not a GL context).
-  Layout layout(int width = 1600, int height = 1200) const;
-
-  /// Draws the figure into an image of width × height pixels (makes the GL context on first use).
-  Image render(int width = 1600, int height = 1200, FigureTiming* timing = nullptr) const;
-  /// Renders and writes a PNG atomically (see png.h); `timing`, if given, gets where the time went.
-  void save(const std::string& path, int width = 1600, int height = 1200,
-            FigureTiming* timing = nullptr) const;
+  /// Where one panel's parts land at a size, and where the whole figure's do: what
+  /// layout() in draw.h returns. Only declared here, as the description never lays
+  /// itself out; draw.h defines them.
+  struct PanelLayout;
+  struct Layout;
 
  private:
   int rows_, cols_;

@@ -10,9 +10,11 @@
 // Plot2D's style; labels place themselves beside their points, clear of the
 // drawn geometry, of each other and of the title and legend.
 //
-// This header is the description library (rigid::render, Eigen only);
-// render(), save() and layout() are defined in the drawing library
-// (rigid::render_gl) and exist only in builds with the renderer.
+// This header is the description library (rigid::render, Eigen only): it
+// declares nothing it cannot define, so a program linking only the description
+// links. Laying out, fitting the camera, drawing and saving a scene take fonts
+// and OpenGL; they are free functions of the drawing library (rigid::render_gl,
+// draw.h), which exists only in builds with the renderer.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -20,10 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "rigid/render/image.h"
 #include "rigid/render/mesh.h"
 #include "rigid/render/palette.h"
-#include "rigid/render/rect.h"
 
 namespace rigid::render {
 
@@ -38,7 +38,7 @@ struct Camera {
   /// Frame the scene tightly: keeping the viewing direction (eye - target) and up, move the eye
   /// along its line of sight and sideways in the image plane (or set the orthographic height)
   /// so the projected geometry, its labels' text and its lines' widths fill the free region of
-  /// Scene3D::layout, clear of the title and legend, without distorting the perspective.
+  /// layout() (draw.h), clear of the title and legend, without distorting the perspective.
   bool fit = true;
 };
 
@@ -114,31 +114,13 @@ class Scene3D {
   /// Convenience: text at a point, centred.
   void add_label(const Eigen::Vector3d& position, std::string text, Color color = kTextColor);
 
-  /// Where the overlay and the scene go at a size: the title (one or two lines), the legend
-  /// box (empty when there is none), the region the fitted scene fills, the figure style's
-  /// margin inside the image's edges (the scene also keeps that margin from the legend box),
-  /// and each label's text box (empty if its point is behind the camera).
-  struct Layout {
-    ScreenRect title, legend, region;
-    int title_lines = 0;
-    double title_size = 0;  ///< the title's font size in pixels
-    std::vector<ScreenRect> labels;
-  };
-  /// The layout render() draws at width × height (needs fonts, not a GL context).
-  Layout layout(int width, int height) const;
+  /// Where the overlay and the scene go at a size: what layout() in draw.h returns. Only
+  /// declared here, as the description never lays itself out; draw.h defines it.
+  struct Layout;
 
-  /// The camera render() would draw with at width × height: the fit applied (Camera::fit),
-  /// returned with fit off, so frames of an animation can share one view.
-  Camera fitted_camera(int width, int height) const;
   /// Adds every surface, line and label of `other` (its camera and title are not taken):
   /// the union of an animation's frames, to fit one camera to all of them.
   void merge(const Scene3D& other);
-
-  /// Draws the scene at width × height pixels (makes the GL context on first use).
-  Image render(int width = 1600, int height = 1200, FigureTiming* timing = nullptr) const;
-  /// Renders and writes a PNG atomically (see png.h); `timing`, if given, gets where the time went.
-  void save(const std::string& path, int width = 1600, int height = 1200,
-            FigureTiming* timing = nullptr) const;
 
   /// What the scene holds; public so the renderer (and tests) can read it.
   enum class Shape { kSphere, kCone, kCylinder, kDisk, kBox, kTorus, kPlane, kTube, kCustom };
@@ -164,11 +146,12 @@ class Scene3D {
   const std::vector<Polyline>& polylines() const { return polylines_; }
   /// The labels added so far (add_axes adds one per axis), in order.
   const std::vector<Label3D>& labels() const { return labels_; }
+  /// The same scene with every length (camera included) multiplied by k: drawing
+  /// brings a scene of any size into float's comfortable range with it.
+  Scene3D scaled(double k) const;
 
  private:
   Material resolve(Material m);
-  /// The same scene with every length multiplied by k (render's float-range guard).
-  Scene3D scaled(double k) const;
   std::vector<Object> objects_;
   std::vector<Polyline> polylines_;
   std::vector<Label3D> labels_;
