@@ -45,19 +45,17 @@ int run_command(int argc, char** argv, const LabProgram<In, Rep>& lab) {
     bound.push_back({&f.rule, [&in, set = f.set](const InputValue& v) { set(in, v); }, f.get(in)});
   }
   std::optional<Rep> report;
-  return run_command(lab.name, lab.title, bound, lab.csv, lab.animation != nullptr, argc, argv,
-                     [&]() -> Computed {
-                       report.emplace(lab.compute(in));
-                       Computed c;
-                       c.report = &*report;
-                       c.figures = [&](FigureSink& sink) { lab.figures(*report, sink); };
-                       if (lab.animation != nullptr) {
-                         c.animation = [&](const FrameTimes& times) {
-                           return lab.animation(*report, times);
-                         };
-                       }
-                       return c;
-                     });
+  return run_command(
+      lab.name, lab.title, bound, lab.csv, lab.animation != nullptr, argc, argv, [&]() -> Computed {
+        report.emplace(lab.compute(in));
+        Computed c;
+        c.report = &*report;
+        c.figures = [&](FigureSink& sink) { lab.figures(*report, sink); };
+        if (lab.animation != nullptr) {
+          c.animation = [&](const FrameTimes& times) { return lab.animation(*report, times); };
+        }
+        return c;
+      });
 }
 
 }  // namespace rigid::lab

@@ -28,8 +28,8 @@ struct IntegrationInputs {
 /// The table of the numerical inputs: --method, --tolerance, --step (whose default
 /// the lab derives, described by `step_default`) and, if `offer_project`, --project.
 InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,
-                                                const std::string& step_default,
-                                                bool offer_project = true);
+                                                 const std::string& step_default,
+                                                 bool offer_project = true);
 
 /// Adds --t-end (s) and --periods N to a lab's table: the end time as N times the lab's
 /// `period_name` ("polhode period"); `default_text` says what the lab does when neither
@@ -64,8 +64,9 @@ IntegrateOptions integration_options(Report& report, const IntegrationInputs& in
 /// sampled, for "exact"), and reports its error against the exact motion
 /// (max_error_vs_exact) and its steps. Bad settings and a run that diverges are
 /// InputErrors naming --step, --tolerance or --project.
-IntegrationResult run_free_body(Report& report, const FreeBodyExact& exact, const IntegrationInputs& in,
-                                const IntegrateOptions& options, const std::vector<double>& times);
+IntegrationResult run_free_body(Report& report, const FreeBodyExact& exact,
+                                const IntegrationInputs& in, const IntegrateOptions& options,
+                                const std::vector<double>& times);
 
 /// What a run samples and how: the method's options (its step `scale` / 2000 unless
 /// --step was given), 200 samples a `scale` up to t_end (a fixed step's on its own

@@ -25,7 +25,10 @@ struct TimeSeries {
 /// the text's value and a remark.
 struct TableRow {
   TableRow(std::string l, std::string v, std::string u, std::string t, bool h = false)
-      : label(std::move(l)), value(std::move(v)), unit(std::move(u)), textbook(std::move(t)),
+      : label(std::move(l)),
+        value(std::move(v)),
+        unit(std::move(u)),
+        textbook(std::move(t)),
         heading(h) {}
   std::string label, value, unit, textbook;
   bool heading = false;
@@ -82,8 +85,8 @@ class Report {
               const std::string& unit, std::optional<std::string> printed = std::nullopt);
   /// A result that is zero but for roundoff: when |value| <= `bound` the table prints 0
   /// with the bound beside it (JSON keeps the value computed); else as result().
-  void result_roundoff(const std::string& key, const std::string& label, double value,
-                       double bound, const std::string& unit);
+  void result_roundoff(const std::string& key, const std::string& label, double value, double bound,
+                       const std::string& unit);
   /// A result that does not exist for these inputs (JSON null), with the reason in the table.
   void result_none(const std::string& key, const std::string& label, const std::string& unit,
                    const std::string& why);
@@ -128,6 +131,8 @@ class Report {
 };
 
 /// The text's printed value for a fixed example that does not depend on the inputs.
-inline std::optional<std::string> printed(const std::string& value) { return value; }
+inline std::optional<std::string> printed(const std::string& value) {
+  return value;
+}
 
 }  // namespace rigid::lab

@@ -18,8 +18,8 @@ struct RunOutputs {
   Json captions = Json::object();    ///< by file name
   std::string csv_path;              ///< "" if no CSV was asked for
   std::string animation_path;
-  Json animation = nullptr;          ///< what --animate wrote, if anything
-  Json timing = nullptr;             ///< --timing: where each figure's time went
+  Json animation = nullptr;  ///< what --animate wrote, if anything
+  Json timing = nullptr;     ///< --timing: where each figure's time went
 };
 
 /// The human table: the title, the inputs, a row a result, the notes, the files.

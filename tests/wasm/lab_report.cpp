@@ -9,9 +9,8 @@ int main() {
   namespace lab = rigid::lab;
   lab::Json out;
   const auto report_of = [](const lab::Report& report) {
-    return lab::Json{{"inputs", report.inputs()},
-                     {"results", report.results()},
-                     {"notes", report.notes()}};
+    return lab::Json{
+        {"inputs", report.inputs()}, {"results", report.results()}, {"notes", report.notes()}};
   };
   lab::tire_balancing::Inputs in;
   out["tire_balancing"] = report_of(lab::tire_balancing::compute(in));
