@@ -4,6 +4,8 @@
 // motion: exact at any time, in any order, its still the "cones" figure.
 #include "football/football.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -219,4 +221,100 @@ TEST_CASE("football: the motion is exact at any time, in any order; its still is
     const auto axis3 = [](const rigid::render::Scene3D& s) { return s.labels()[1].position; };
     CHECK((axis3(first->scene(0.25 * first->seconds() / 2)) - axis3(in_order[0])).norm() > 0.1);
   }
+}
+
+// Every note of the lab: the numbers inside it (from eqs. 142-149 evaluated here) and
+// the condition under which it appears, on both sides.
+namespace {
+std::vector<std::string> notes_starting(const rigid::lab::Report& report,
+                                        const std::string& start) {
+  std::vector<std::string> found;
+  for (const std::string& note : report.notes()) {
+    if (note.rfind(start, 0) == 0) found.push_back(note);
+  }
+  return found;
+}
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+}  // namespace
+
+TEST_CASE("football: the cone errata say prolate, oblate or nothing, with the body's numbers") {
+  constexpr double kDeg = M_PI / 180;
+  const std::string prolate_errata = "errata: section 6.1 says the space cone can engulf";
+  const std::string oblate_errata = "errata: section 6.1 says the space cone can be outside";
+  const std::string alpha_errata = "errata: section 6.1 (the applet and Marion's description)";
+  // (I, Is, alpha in degrees): the football (prolate: Is < I), the frisbee (oblate: Is = 2I)
+  struct Body {
+    double I, Is, alpha_deg;
+    bool prolate;
+  };
+  const double m = 0.42, a = 0.14, b = 0.085;  // the football: a solid spheroid
+  const double md = 0.175, r = 0.1375;         // the frisbee: a thin disk
+  for (const Body& body : {Body{m * (a * a + b * b) / 5, m * 2 * b * b / 5, 10, true},
+                           Body{md * r * r / 4, md * r * r / 2, 5, false}, Body{2.0, 1.5, 33, true},
+                           Body{1.0, 1.7, 61, false}}) {
+    INFO("I = " << body.I << ", Is = " << body.Is << ", alpha = " << body.alpha_deg);
+    Inputs in;
+    in.inertia = Eigen::Vector2d(body.I, body.Is);
+    in.alpha_deg = body.alpha_deg;
+    const auto report = compute(in);
+    // eq. 144: tan theta = (I / Is) tan alpha; omega makes |theta - alpha| with L
+    const double theta = std::atan(body.I / body.Is * std::tan(body.alpha_deg * kDeg)) / kDeg;
+    const std::string numbers = fmt::format(
+        "Is/I = {:.6g}, alpha = {:.6g} deg, theta = {:.6g} deg, omega to L = {:.6g} deg",
+        body.Is / body.I, body.alpha_deg, theta, std::abs(theta - body.alpha_deg));
+    const auto prolate = notes_starting(report, prolate_errata);
+    const auto oblate = notes_starting(report, oblate_errata);
+    CHECK(prolate.size() == (body.prolate ? 1u : 0u));
+    CHECK(oblate.size() == (body.prolate ? 0u : 1u));
+    for (const auto& note : body.prolate ? prolate : oblate) CHECK(contains(note, numbers));
+    const auto alpha = notes_starting(report, alpha_errata);
+    REQUIRE(alpha.size() == 1);
+    CHECK(contains(alpha[0], fmt::format("|theta - alpha| = {:.6g} deg, not alpha = {:.6g} deg",
+                                         std::abs(theta - body.alpha_deg), body.alpha_deg)));
+  }
+  // A sphere has no cones: none of the three notes.
+  Inputs sphere;
+  sphere.inertia = Eigen::Vector2d(1.0, 1.0);
+  const auto report = compute(sphere);
+  CHECK(notes_starting(report, prolate_errata).empty());
+  CHECK(notes_starting(report, oblate_errata).empty());
+  CHECK(notes_starting(report, alpha_errata).empty());
+}
+
+TEST_CASE(
+    "football: the frisbee's wobble note and the Earth's day errata only for their examples") {
+  const std::string wobble = "Feynman's plate (section 6.1)";
+  const std::string days = "errata: the text's 305 and 0.997 days use two different days";
+  const auto frisbee = compute(preset("frisbee"));
+  const auto earth = compute(preset("earth"));
+  REQUIRE(notes_starting(frisbee, wobble).size() == 1);
+  REQUIRE(notes_starting(earth, days).size() == 1);
+  CHECK(notes_starting(frisbee, days).empty());
+  CHECK(notes_starting(earth, wobble).empty());
+  // The wobble note's numbers: a thin disk (Is = 2I) at 30 rad/s, alpha 5 deg (eqs. 148-149):
+  // phi_dot = omega sqrt(1 + 3 cos^2 alpha), |psi_dot| = omega cos alpha.
+  const double w = 30, c = std::cos(5 * M_PI / 180);
+  const double phi_dot = w * std::sqrt(1 + 3 * c * c), psi_dot = w * c;
+  CHECK(contains(notes_starting(frisbee, wobble)[0],
+                 fmt::format("phi_dot = {:.6g} rad/s (3 about L in space), is {:.6g} times",
+                             phi_dot, phi_dot / psi_dot)));
+  // The Earth's periods (eqs. 145-147 with Is/I = 1.00327, alpha = 0.2"): Omega = omega cos
+  // alpha (Is - I)/I, so 2 pi/Omega is 1/0.00327 sidereal days, in solar days.
+  const double sidereal = 86164.0905, solar = 86400.0, k = 0.00327;
+  const double alpha = 0.2 / 3600 * M_PI / 180;
+  const double body_days = sidereal / (std::cos(alpha) * k) / solar;
+  const double space_days =
+      sidereal / std::sqrt(1 + ((1 + k) * (1 + k) - 1) * std::cos(alpha) * std::cos(alpha)) / solar;
+  CHECK(contains(
+      notes_starting(earth, days)[0],
+      fmt::format("2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d", body_days, space_days)));
+  // Another spin is not the text's example: neither note.
+  Inputs spun = preset("frisbee");
+  spun.omega = 31.0;
+  CHECK(notes_starting(compute(spun), wobble).empty());
+  Inputs tilted = preset("earth");
+  tilted.alpha_deg = 1.0;
+  CHECK(notes_starting(compute(tilted), days).empty());
 }

@@ -3,6 +3,8 @@
 // of L and the torque its CSV holds.
 #include "tire_balancing/tire_balancing.h"
 
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -119,4 +121,26 @@ TEST_CASE("tire_balancing: a broken rule is an InputError naming the input") {
   in = Inputs{};
   in.mass = -1;
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError, rigid::test::names_input("--mass"));
+}
+
+TEST_CASE(
+    "tire_balancing: the errata note quotes both masses, each its own, for the text's wheel") {
+  // eq. 61 (small angle) and eq. 60 (exact) evaluated here for m = 10 kg, a = 18 cm,
+  // b = 5 cm, theta = 1 deg; the note prints them in grams to one decimal
+  const double m = 10, a = 0.18, b = 0.05, theta = M_PI / 180, t = std::tan(2 * theta);
+  const double small = theta * a * m / (8 * b);
+  const double exact = t * m * a * a / 4 / (4 * a * b - 2 * t * (a * a - b * b));
+  const auto report = compute(Inputs{});
+  REQUIRE(report.notes().size() == 1);
+  CHECK(report.notes()[0] ==
+        fmt::format("errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) "
+                    "gives {:.1f} g and the exact eq. 60 gives {:.1f} g for m = 10 kg, a = 18 cm, "
+                    "b = 5 cm, theta = 1 deg",
+                    1e3 * small, 1e3 * exact));
+  // Another wheel is not the text's: no errata, no printed values.
+  Inputs other;
+  other.tilt_deg = 2;
+  const auto changed = compute(other);
+  CHECK(changed.notes().empty());
+  CHECK(changed.textbook_printed().empty());
 }
