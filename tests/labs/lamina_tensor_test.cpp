@@ -3,6 +3,8 @@
 // 2.1's bodies, tiny and huge plates, the table's textbook column, and the rules.
 #include "lamina_tensor/lamina_tensor.h"
 
+#include <fmt/format.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -249,4 +251,39 @@ TEST_CASE("lamina_tensor: a broken rule is an InputError naming the input") {
     in.omega = omega;
     refused(in, "--omega");
   }
+}
+
+TEST_CASE(
+    "lamina_tensor: the three errata carry the plate's own numbers, and only for the text's") {
+  // The text's plate: m = a = 1, b = 2 a, corner origin, n = (0.8, 0.6, 0). Eq. 20 here:
+  // Ixx = m b^2/3, Iyy = m a^2/3, Ixy = -m a b/4 (in units of m a^2).
+  const double Ixx = 4.0 / 3, Iyy = 1.0 / 3, Ixy = -0.5;
+  const double Lx = Ixx * 0.8 + Ixy * 0.6, Ly = Ixy * 0.8 + Iyy * 0.6;
+  // The in-plane principal moments of the 2x2 block, and the axis of the larger:
+  // (Ixx - I) cos + Ixy sin = 0.
+  const double mean = (Ixx + Iyy) / 2, half = std::hypot((Ixx - Iyy) / 2, Ixy);
+  const double large = mean + half, small = mean - half;
+  const double large_deg = std::atan(-(Ixx - large) / Ixy) * 180 / M_PI;
+  const auto report = compute(Inputs{});
+  const std::vector<std::string> expected = {
+      fmt::format("errata: |L| = {:.4f} ma^2 omega exactly; the text's 0.793 comes from rounding "
+                  "L_x to 0.767 before taking the norm",
+                  std::hypot(Lx, Ly)),
+      fmt::format("errata: the text calls the axis at {:.1f} deg 'the 1-axis', but its moment is "
+                  "{:.3f} ma^2 (I2 when moments ascend, as in its section 2.4); the axis at {:.1f} "
+                  "deg carries I1 = {:.3f} ma^2",
+                  large_deg, large, large_deg + 90, small),
+      // about +x: N = x cross (I x) = (0, 0, Ixy) m a^2 omega^2
+      fmt::format("errata: for rotation about +x, N3 = omega1 omega2 (I2 - I1) = {:.3f} ma^2 "
+                  "omega^2; the text prints +0.500 (right size, wrong sign): the axle pushes "
+                  "along -z",
+                  Ixy)};
+  CHECK(report.notes() == expected);
+  // Any other plate is not the text's example: no errata.
+  Inputs other;
+  other.b = 3.0;
+  CHECK(compute(other).notes().empty());
+  Inputs centred;
+  centred.origin = "center";
+  CHECK(compute(centred).notes().empty());
 }
