@@ -4,6 +4,8 @@
 // rules compute() checks, and the motion sampled in any order.
 #include "tennis_racquet/tennis_racquet.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -414,4 +416,30 @@ TEST_CASE("tennis_racquet: the animation draws the motion at its frame times") {
   asked.clear();
   rigid::lab::tennis_racquet::animation(compute(Inputs{}), frame_times);
   CHECK(asked.empty());
+}
+
+TEST_CASE("tennis_racquet: 'not small' is said of a large disturbance only, with its fit's share") {
+  const std::string start = "The disturbance at launch (";
+  const auto said = [&](double perturbation) -> std::string {
+    Inputs in;
+    in.perturbation = perturbation;
+    const auto report = compute(in);
+    for (const std::string& note : report.notes()) {
+      if (note.rfind(start, 0) == 0) return note;
+    }
+    return "";
+  };
+  // The linear rates hold while the disturbance is small: up to 5 % of omega no note.
+  CHECK(said(0.01).empty());
+  CHECK(said(0.05).empty());
+  // Beyond, the note, with the share the growth fit runs to: twice the disturbance
+  // (at least 0.1, at most halfway from it to 1).
+  for (const double p : {0.0501, 0.1, 0.3, 0.49}) {
+    INFO(p);
+    const double share = std::min(std::max(0.1, 2 * p), 0.5 * (1 + p));
+    CHECK(said(p) == fmt::format("The disturbance at launch ({:g} of omega) is not small: the "
+                                 "linear rates describe only its start, and the fit runs to a "
+                                 "share of {:g}.",
+                                 p, share));
+  }
 }

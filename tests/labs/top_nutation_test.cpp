@@ -5,6 +5,8 @@
 // order of asking.
 #include "top_nutation/top_nutation.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -405,4 +407,40 @@ TEST_CASE("top_nutation: the motion keeps what it needs and starts at the 'top' 
     // The report is gone: the motion copied what it draws from.
     check_same_scene(motion->scene(0.5 * motion->seconds()), *at_half);
   }
+}
+
+TEST_CASE("top_nutation: the rounding errata quote the exact rates, the slow one as slow") {
+  // Section 8.1's top evaluated here: a 2 kg disk of radius 5 cm, 4 cm up, g = 9.8,
+  // 500 rpm, released at 30 deg; I = m r^2/4 + m l^2 about the tip, Is = m r^2/2.
+  const double m = 2, r = 0.05, l = 0.04, g = 9.8, c = std::cos(M_PI / 6);
+  const double I = m * r * r / 4 + m * l * l, Is = m * r * r / 2, mgl = m * g * l;
+  const double rpm = 2 * M_PI / 60, S = 500 * rpm, S_text = 52.4;
+  // eq. 187: I cos(theta) phi_dot^2 - Is S phi_dot + m g l = 0; the slow root, without
+  // cancellation: 2 m g l / (Is S + sqrt((Is S)^2 - 4 I cos(theta) m g l))
+  const auto slow = [&](double spin) {
+    return 2 * mgl / (Is * spin + std::sqrt(Is * spin * Is * spin - 4 * I * c * mgl));
+  };
+  const double horizontal = mgl / (Is * S), text_horizontal = mgl / (Is * S_text);
+  const auto report = compute(Inputs{});
+  REQUIRE(report.notes().size() == 3);
+  CHECK(report.notes()[0] ==
+        fmt::format("errata: section 8.1 rounds S = {:.6g} rad/s to 52.4 before using it. With "
+                    "the exact S, phi_dot (horizontal) = {:.4g} rad/s = {:.4g} rpm and the slow "
+                    "steady rate at 30 deg is {:.4g} rad/s. The text's 5.98 and 7.75 rad/s come "
+                    "from S = 52.4 ({:.4g} and {:.4g}), and its 57.1 rpm from the rounded 5.98 "
+                    "rad/s ({:.4g} rpm).",
+                    S, horizontal, horizontal / rpm, slow(S), text_horizontal, slow(S_text),
+                    std::round(100 * text_horizontal) / 100 / rpm));
+  // eq. 189: S_min = sqrt(4 m g l I) / Is
+  const double period = 2 * M_PI * Is / std::sqrt(4 * mgl * I);
+  CHECK(report.notes()[1] ==
+        fmt::format("errata: the sleeping top's spin period 2 pi / S_min = {:.5g} s rounds to "
+                    "{:.3f} s, not the text's 0.132 s.",
+                    period, period));
+  // eq. 186's misprint is the text's whatever the top; the rounding errata only for its top
+  Inputs other;
+  other.spin_rpm = 600;
+  const auto changed = compute(other);
+  REQUIRE(changed.notes().size() == 1);
+  CHECK(changed.notes()[0].rfind("errata: eq. 186 is misprinted", 0) == 0);
 }
