@@ -444,3 +444,40 @@ TEST_CASE("top_nutation: the rounding errata quote the exact rates, the slow one
   REQUIRE(changed.notes().size() == 1);
   CHECK(changed.notes()[0].rfind("errata: eq. 186 is misprinted", 0) == 0);
 }
+
+TEST_CASE("top_nutation: each regime word on its side of its threshold") {
+  // Section 8.1's top; only the spin and the start differ.
+  const double m = 2, r = 0.05, l = 0.04, g = 9.8, c = std::cos(M_PI / 6);
+  const double I = m * r * r / 4 + m * l * l, Is = m * r * r / 2, mgl = m * g * l;
+  const auto regime = [](double spin, double phidot0, double thetadot0) {
+    Inputs in;
+    in.spin = spin;
+    in.phidot0 = phidot0;
+    in.thetadot0 = thetadot0;
+    const auto report = compute(in);
+    return report.results().at("regime").get<std::string>();
+  };
+  // Released from rest the axis stops at the top of each nod: cusped, however fast the
+  // spin. At 1e7-1e8 rad/s the nod's amplitude (2 m g l I sin(theta0) / (Is S)^2 rad, about
+  // 1e-12 to 1e-14 of a turn) still exceeds the steady threshold (64 eps of the circles'
+  // distance from the poles) by a factor of about 10 to 1000: a loosened threshold reads
+  // such a top as steady.
+  for (const double S : {60.0, 1e3, 1e5, 1e7, 3e7, 1e8}) {
+    INFO("S = " << S);
+    CHECK(regime(S, 0, 0) == "cusped");
+  }
+  // Started at the slow steady rate of eq. 187, it does not nod: steady.
+  for (const double S : {60.0, 1e3, 1e5}) {
+    INFO("S = " << S);
+    const double slow = 2 * mgl / (Is * S + std::sqrt(Is * S * Is * S - 4 * I * c * mgl));
+    CHECK(regime(S, slow, 0) == "steady");
+    // A little faster than steady: phi_dot keeps its sign through the nod, wavy ...
+    CHECK(regime(S, 1.5 * slow, 0) == "wavy");
+    // ... and started backwards it turns back and forth: looping.
+    CHECK(regime(S, -slow, 0) == "looping");
+  }
+  // Upright with no nod at all: sleeping.
+  Inputs upright;
+  upright.theta0_deg = 0;
+  CHECK(compute(upright).results().at("regime") == "sleeping");
+}
