@@ -8,6 +8,8 @@
 //
 // The labs are the executables beside this one (bin/ when installed, build/labs/
 // in a build tree); rigidlab holds no physics and no drawing of its own.
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -52,16 +54,38 @@ fs::path lab_path(const std::string& lab) {
   return own_directory() / lab;
 }
 
-// A lab's title: the first line of its --help.
+// A lab's title: the first line of its --help, read from the lab run directly (no
+// shell: the install path may hold any character a shell would act on).
 std::string title_of(const std::string& lab) {
-  const std::string command = "'" + lab_path(lab).string() + "' --help 2>/dev/null";
-  std::string line;
-  if (FILE* pipe = ::popen(command.c_str(), "r")) {
+  const std::string path = lab_path(lab).string();
+  int out[2];
+  if (::pipe(out) != 0) return "(not found beside rigidlab)";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, out[0]);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  std::string help_flag = "--help";
+  char* argv[] = {const_cast<char*>(path.c_str()), help_flag.data(), nullptr};
+  pid_t pid = 0;
+  const int spawned = ::posix_spawn(&pid, path.c_str(), &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(out[1]);
+  std::string text;
+  if (spawned == 0) {
     std::array<char, 512> buffer{};
-    if (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) line = buffer.data();
-    ::pclose(pipe);
+    ssize_t n = 0;
+    while (text.find('\n') == std::string::npos &&
+           (n = ::read(out[0], buffer.data(), buffer.size())) > 0) {
+      text.append(buffer.data(), static_cast<std::size_t>(n));
+    }
   }
-  while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+  ::close(out[0]);
+  if (spawned == 0) {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+  }
+  const std::string line = text.substr(0, text.find_first_of("\r\n"));
   return line.empty() ? "(not found beside rigidlab)" : line;
 }
 
