@@ -5,9 +5,10 @@
 //  - "top_fast": Simo & Wong's fast top (I = 5, Is = 1 about the pivot, m g l =
 //    20, S = 50, theta0 = 0.05 rad, released from rest);
 // each to t_end = 20 nutation periods, the error |theta(t_end) - theta_exact|
-// against rigid::HeavyTopExact. Every rigidlab method (integrate_heavy_top) beside
-// Boost.Odeint with std::vector state and GSL gsl_odeiv2_driver on the same
-// seven equations (omega_body with the gravity torque, the attitude quaternion);
+// against rigid::HeavyTopExact. Every rigidlab method (rigid::integrate of a
+// HeavyTopProblem) beside Boost.Odeint with std::vector state and GSL
+// gsl_odeiv2_driver on the same seven equations (omega_body with the gravity
+// torque, the attitude quaternion);
 // and the cost of one exact theta sample beside one gsl_sf_elljac_e call.
 // Writes OUT_DIR/heavy_top.json (entries for the report) and
 // OUT_DIR/heavy_top_reference.json (for scipy_heavy_top.py).
@@ -65,7 +66,7 @@ std::vector<TopProblem> problems() {
 }
 
 struct RunResult {
-  rigid::FreeBodyState x{};
+  rigid::RotationState x{};
   long long steps = 0;
   long long evaluations = 0;  ///< right-hand-side evaluations (a counter in the system)
 };
@@ -91,7 +92,7 @@ struct VectorTopRhs {
 
 template <class Stepper>
 RunResult odeint_run(const TopProblem& p, double tol) {
-  const rigid::FreeBodyState x0 =
+  const rigid::RotationState x0 =
       rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
   std::vector<double> x(x0.begin(), x0.end());
   RunResult r;
@@ -117,7 +118,7 @@ RunResult gsl_run(const TopProblem& p, double tol, const gsl_odeiv2_step_type* t
   VectorTopRhs rhs{p.top.I, p.top.Is, p.top.mgl, &r.evaluations};
   gsl_odeiv2_system sys{gsl_rhs, nullptr, 7, &rhs};
   gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, type, 1e-3, tol, tol);
-  const rigid::FreeBodyState x0 =
+  const rigid::RotationState x0 =
       rigid::heavy_top_state(rigid::HeavyTopExact(p.top, p.start).angles(0));
   r.x = x0;
   double t = 0.0;
@@ -138,10 +139,9 @@ RunResult rigidlab_run(const TopProblem& p, rigid::Method m, double param) {
     o.step = param;
   }
   const rigid::HeavyTopExact exact(p.top, p.start);
-  const rigid::TopRun run =
-      rigid::integrate_heavy_top(p.top, rigid::heavy_top_state(exact.angles(0)), {0.0, p.t_end}, o);
-  const rigid::TopSample& s = run.samples.back();
-  return {rigid::make_state(s.omega_body, s.attitude), static_cast<long long>(run.steps),
+  const rigid::HeavyTopRun run = rigid::integrate(
+      rigid::HeavyTopProblem(p.top), rigid::heavy_top_state(exact.angles(0)), {0.0, p.t_end}, o);
+  return {run.samples.back().x, static_cast<long long>(run.steps),
           static_cast<long long>(run.evaluations)};
 }
 
@@ -268,7 +268,7 @@ int main(int argc, char** argv) {
     const rigid::HeavyTopExact exact(p.top, p.start);
     p.t_end = 20 * exact.nutation_period();
     const double theta_exact = exact.theta(p.t_end);
-    const rigid::FreeBodyState x0 = rigid::heavy_top_state(exact.angles(0));
+    const rigid::RotationState x0 = rigid::heavy_top_state(exact.angles(0));
     bench::detail("heavy top work-precision, problem %s (t_end = %g s)\n", p.name.c_str(), p.t_end);
     entries.push_back({{"group", "problem"}, {"problem", p.name}, {"title", p.title}});
     ref["problems"].push_back({{"name", p.name},

@@ -16,7 +16,7 @@
 namespace bench {
 
 struct RunResult {
-  rigid::FreeBodyState x{};
+  rigid::RotationState x{};
   long long steps = 0;
   long long evaluations = 0;  ///< right-hand-side evaluations (a counter in the system)
 };
@@ -26,7 +26,7 @@ RunResult odeint_vector_rkf78(const Problem& p, double tol);
 
 /// A reference run (not a peer): odeint rkf78 on std::array<long double, 7>
 /// state, abs = rel = tol; the end state rounded to double.
-rigid::FreeBodyState long_double_rkf78(const Problem& p, long double tol);
+rigid::RotationState long_double_rkf78(const Problem& p, long double tol);
 
 #ifdef RIGID_BENCH_HAVE_GSL
 RunResult gsl_rk8pd(const Problem& p, double tol);

@@ -32,7 +32,7 @@ struct VectorEulerRhs {
 
 template <class Stepper>
 RunResult run(const Problem& p, double tol) {
-  const rigid::FreeBodyState x0 = p.initial_state();
+  const rigid::RotationState x0 = p.initial_state();
   VectorState x(x0.begin(), x0.end());
   const double dt0 = 0.01;
   RunResult r;
@@ -63,15 +63,15 @@ struct LongEulerRhs {
 
 }  // namespace
 
-rigid::FreeBodyState long_double_rkf78(const Problem& p, long double tol) {
+rigid::RotationState long_double_rkf78(const Problem& p, long double tol) {
   // the initial data are the double values every other solver starts from
-  const rigid::FreeBodyState x0 = p.initial_state();
+  const rigid::RotationState x0 = p.initial_state();
   LongState x;
   std::copy(x0.begin(), x0.end(), x.begin());
   odeint::integrate_adaptive(
       odeint::make_controlled<odeint::runge_kutta_fehlberg78<LongState, long double>>(tol, tol),
       LongEulerRhs{p.I.I1, p.I.I2, p.I.I3}, x, 0.0L, static_cast<long double>(p.t_end), 0.01L);
-  rigid::FreeBodyState out;
+  rigid::RotationState out;
   std::copy(x.begin(), x.end(), out.begin());
   return out;
 }

@@ -7,7 +7,7 @@
 //  - "separatrix": I = (3, 5, 9), body angular momentum (0, 2, 0.01): almost
 //    a pure rotation about the intermediate axis, so the motion hugs the
 //    separatrix and is exponentially sensitive; t_end = 500.
-// Both start from the identity attitude. The state is rigid::FreeBodyState
+// Both start from the identity attitude. The state is rigid::RotationState
 // (omega_body, then the body-to-space quaternion): seven numbers for every
 // solver, rigidlab's and the peers'.
 #pragma once
@@ -30,7 +30,7 @@ struct Problem {
   double t_end = 0.0;
 
   Eigen::Vector3d omega0_body() const { return L0_body.cwiseQuotient(I.vector()); }
-  rigid::FreeBodyState initial_state() const {
+  rigid::RotationState initial_state() const {
     return rigid::make_state(omega0_body(), Eigen::Quaterniond::Identity());
   }
 };
@@ -51,13 +51,13 @@ inline std::vector<Problem> problems() {
 }
 
 /// Max-norm of the omega_body error relative to |omega_exact| (2-norm).
-inline double omega_error(const rigid::FreeBodyState& x, const rigid::FreeBodyState& exact) {
+inline double omega_error(const rigid::RotationState& x, const rigid::RotationState& exact) {
   const Eigen::Vector3d w = rigid::omega_body(x), we = rigid::omega_body(exact);
   return (w - we).lpNorm<Eigen::Infinity>() / we.norm();
 }
 
 /// The attitude error as the angle of the rotation between the two, rad.
-inline double attitude_error(const rigid::FreeBodyState& x, const rigid::FreeBodyState& exact) {
+inline double attitude_error(const rigid::RotationState& x, const rigid::RotationState& exact) {
   return rigid::attitude_distance(rigid::attitude(x).normalized(), rigid::attitude(exact));
 }
 

@@ -1,6 +1,6 @@
 // bench_work_precision: run time against error for the torque-free rigid body,
 // in one run:
-//  - every rigidlab integrator through rigid::integrate_free_body, and the
+//  - every rigidlab integrator through rigid::integrate (FreeBodyProblem), and the
 //    peers of peers.h, on the two problems of problems.h, scored at t_end
 //    against the exact solution rigid::FreeBodyExact;
 //  - the cost of one sample of the exact solution beside GSL's and
@@ -32,7 +32,7 @@
 #include "peers.h"
 #include "problems.h"
 #include "rigid/free_body_exact.h"
-#include "rigid/integrate.h"
+#include "rigid/free_body_integrate.h"
 #include "rigid/ode.h"
 #include "rigid/splitting.h"
 #include "rigid/verner.h"
@@ -67,19 +67,17 @@ int units_per_problem(std::size_t solvers, const Settings& cfg) {
 
 // One rigidlab run through the core's integrate API: the state at t_end.
 RunResult rigidlab_run(const Problem& p, rigid::Method m, double param, bool project = false) {
-  rigid::IntegrateOptions o;
+  rigid::OdeOptions o;
   o.method = m;
-  o.moments_rule = kRule;
   o.project_invariants = project;
   if (rigid::is_adaptive(m)) {
     o.abs_tol = o.rel_tol = param;
   } else {
     o.step = param;
   }
-  const rigid::IntegrationResult r =
-      rigid::integrate_free_body(p.I, p.initial_state(), {0.0, p.t_end}, o);
-  const rigid::FreeBodySample& s = r.samples.back();
-  return {rigid::make_state(s.omega_body, s.attitude), static_cast<long long>(r.steps),
+  const rigid::FreeBodyRun r =
+      rigid::integrate(rigid::FreeBodyProblem(p.I, kRule), p.initial_state(), {0.0, p.t_end}, o);
+  return {r.samples.back().x, static_cast<long long>(r.steps),
           static_cast<long long>(r.evaluations)};
 }
 
@@ -131,7 +129,7 @@ struct Measurement {
 constexpr bench::TimingPolicy kRoundPolicy{0.02, 3, 0.3};
 
 // Runs and times one setting; false if the solver failed.
-bool measure(const Problem& p, const Solver& s, double param, const rigid::FreeBodyState& exact,
+bool measure(const Problem& p, const Solver& s, double param, const rigid::RotationState& exact,
              Measurement& m) {
   m.solver = &s;
   m.param = param;
@@ -146,7 +144,7 @@ bool measure(const Problem& p, const Solver& s, double param, const rigid::FreeB
   return std::isfinite(m.error);
 }
 
-Json entry(const Problem& p, const Measurement& m, const rigid::FreeBodyState& exact) {
+Json entry(const Problem& p, const Measurement& m, const rigid::RotationState& exact) {
   const Solver& s = *m.solver;
   const double att = bench::attitude_error(m.result.x, exact);
   bench::detail("  %-24s %s %-9.3g error %-9.2e attitude %-9.2e %9.3f ms %9lld steps\n",
@@ -167,7 +165,7 @@ Json entry(const Problem& p, const Measurement& m, const rigid::FreeBodyState& e
 }
 
 // The settings of one solver's sweep, measured once (the first round).
-void sweep(const Problem& p, const Solver& s, const rigid::FreeBodyState& exact,
+void sweep(const Problem& p, const Solver& s, const rigid::RotationState& exact,
            const Settings& cfg, std::vector<Measurement>& out) {
   Measurement m;
   if (s.adaptive) {
@@ -198,7 +196,7 @@ void sweep(const Problem& p, const Solver& s, const rigid::FreeBodyState& exact,
 }
 
 void work_precision(const Problem& p, const std::vector<Solver>& all,
-                    const rigid::FreeBodyState& exact, const Settings& cfg, Json& out,
+                    const rigid::RotationState& exact, const Settings& cfg, Json& out,
                     const std::function<void(const std::string&)>& tick) {
   std::vector<Measurement> ms;
   bench::measure_in_rounds<Solver, Measurement>(
@@ -213,8 +211,8 @@ void work_precision(const Problem& p, const std::vector<Solver>& all,
 }
 
 // The exact end state, cross-checked against a very tight rkf78 run.
-rigid::FreeBodyState reference(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
-  const rigid::FreeBodyState x = exact.state(p.t_end);
+rigid::RotationState reference(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
+  const rigid::RotationState x = exact.state(p.t_end);
   const double tol = 1e-15;
   const RunResult r = rigidlab_run(p, rigid::Method::kRkf78, tol);
   Json e;
@@ -233,7 +231,7 @@ rigid::FreeBodyState reference(const Problem& p, const rigid::FreeBodyExact& exa
   out.push_back(e);
 
   // and against an integration in long double, which sits below double's roundoff
-  const rigid::FreeBodyState xl = bench::long_double_rkf78(p, 1e-17);
+  const rigid::RotationState xl = bench::long_double_rkf78(p, 1e-17);
   Json l;
   l["group"] = "reference";
   l["problem"] = p.name;
@@ -281,7 +279,7 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
           [&] {
             double sum = 0;
             for (int i = 0; i < kSamples; ++i) {
-              const rigid::FreeBodyState x = exact.state(i * dt);
+              const rigid::RotationState x = exact.state(i * dt);
               sum += x[0] + x[3];
             }
             bench::do_not_optimize(sum);
@@ -320,14 +318,14 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
 // One run of a Verner pair under a step controller, directly on the free body's
 // right-hand side (the same starting step for every controller).
 template <class Tableau, class Adjuster>
-Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double tol,
+Json controller_run(const Problem& p, const rigid::RotationState& exact, double tol,
                     const char* controller, Adjuster adjuster) {
   namespace odeint = boost::numeric::odeint;
   long long evaluations = 0;
   std::size_t steps = 0, rejected = 0;
-  rigid::FreeBodyState x;
+  rigid::RotationState x;
   const rigid::EulerRhs rhs{p.I};
-  const auto counted = [&](const rigid::FreeBodyState& xs, rigid::FreeBodyState& d, double t) {
+  const auto counted = [&](const rigid::RotationState& xs, rigid::RotationState& d, double t) {
     ++evaluations;
     rhs(xs, d, t);
   };
@@ -338,7 +336,7 @@ Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double 
   const std::vector<double> times = {0.0, p.t_end};
   const double seconds = bench::best_seconds(
       [&] {
-        rigid::VernerDenseOutput<Tableau, rigid::FreeBodyState, Adjuster> stepper(tol, tol,
+        rigid::VernerDenseOutput<Tableau, rigid::RotationState, Adjuster> stepper(tol, tol,
                                                                                   adjuster);
         evaluations = 0;
         x = p.initial_state();
@@ -367,7 +365,7 @@ Json controller_run(const Problem& p, const rigid::FreeBodyState& exact, double 
 
 // The PI controller against odeint's default one on the same stepper.
 template <class Tableau>
-void controllers(const Problem& p, const rigid::FreeBodyState& exact, Json& out) {
+void controllers(const Problem& p, const rigid::RotationState& exact, Json& out) {
   namespace odeint = boost::numeric::odeint;
   for (int k = 4; k <= 12; k += 2) {
     const double tol = std::pow(10.0, -k);
@@ -385,26 +383,26 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
   if (!std::isfinite(T)) return;
   const long long n_long = cfg.quick ? 100'000 : 1'000'000;
   for (rigid::Method m : {rigid::Method::kSplitting, rigid::Method::kSplitting4}) {
-    rigid::IntegrateOptions o;
+    rigid::OdeOptions o;
     o.method = m;
-    o.moments_rule = kRule;
+    const rigid::FreeBodyProblem problem(p.I, kRule);
     // about 100 (order 2) or 50 (order 4) steps per polhode period: the energy
     // error is then well above roundoff, so its growth (or not) is visible
     const int per_period = m == rigid::Method::kSplitting ? 100 : 50;
     o.step = T / per_period;
 
     // |L| after 10^6 steps (relative change, end against start)
-    const auto long_run =
-        rigid::integrate_free_body(p.I, p.initial_state(), {0.0, n_long * o.step}, o);
+    const auto long_run = rigid::integrate(problem, p.initial_state(), {0.0, n_long * o.step}, o);
     const double L0 = exact.angular_momentum_magnitude();
-    const Eigen::Vector3d w_end = long_run.samples.back().omega_body;
+    const Eigen::Vector3d w_end = rigid::omega_body(long_run.samples.back().x);
     const double dL = std::abs(rigid::angular_momentum_magnitude(p.I, w_end) - L0) / L0;
 
     // energy error at every step over one period and over ten
     const auto energy_max = [&](int periods) {
       const auto times = rigid::uniform_times(0.0, periods * T,
                                               static_cast<std::size_t>(periods) * per_period + 1);
-      return rigid::integrate_free_body(p.I, p.initial_state(), times, o).energy_drift_rel;
+      return rigid::integrate(problem, p.initial_state(), times, o)
+          .max_invariant_error[rigid::FreeBodyProblem::kEnergy];
     };
     const double e1 = energy_max(1), e10 = energy_max(10);
 
@@ -415,7 +413,7 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
     e["step"] = o.step;
     e["steps"] = static_cast<long long>(long_run.steps);
     e["L_rel_change"] = dL;
-    e["L_rel_drift_max"] = long_run.momentum_drift_rel;
+    e["L_rel_drift_max"] = long_run.max_invariant_error[rigid::FreeBodyProblem::kMomentum];
     e["polhode_period"] = T;
     e["energy_err_max_T"] = e1;
     e["energy_err_max_10T"] = e10;
@@ -426,7 +424,7 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
         dL, e1, e10, e10 / e1);
     out.push_back(e);
 
-    // the bare LiePoissonSplitting::step for comparison: integrate_free_body projects
+    // the bare LiePoissonSplitting::step for comparison: the free body's run projects
     // L back onto |L| = |L0| after each step, the class alone does not
     const rigid::LiePoissonSplitting split(p.I, rigid::fixed_step_order(m));
     Eigen::Vector3d L = p.L0_body;
@@ -485,10 +483,10 @@ int main(int argc, char** argv) {
   ref["note"] =
       "exact end states from rigid::FreeBodyExact; state = omega_body, then the "
       "body-to-space quaternion (w, x, y, z); initial attitude identity";
-  std::vector<std::pair<Problem, rigid::FreeBodyState>> exact_ends;
+  std::vector<std::pair<Problem, rigid::RotationState>> exact_ends;
   for (const Problem& p : problems) {
     const rigid::FreeBodyExact exact(p.I, p.omega0_body(), Eigen::Quaterniond::Identity(), kRule);
-    const rigid::FreeBodyState x_end = reference(p, exact, entries);
+    const rigid::RotationState x_end = reference(p, exact, entries);
     exact_ends.push_back({p, x_end});
     tick(p.name + ", reference");
     Json desc;

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "rigid/free_body.h"
-#include "rigid/integrate.h"
+#include "rigid/free_body_integrate.h"
 
 using namespace rigid;
 using Catch::Matchers::WithinAbs;
@@ -122,16 +122,17 @@ TEST_CASE("poinsot: the herpolhode touches the invariable plane, and its turn a 
   // integration of Euler's equations and the attitude at tolerance 1e-13 (a second
   // method: no elliptic function), unwrapped the same way
   const double turn = rigid::herpolhode_turn_per_period(motion);
-  rigid::IntegrateOptions o;
+  rigid::OdeOptions o;
   o.method = rigid::Method::kRkf78;
   o.abs_tol = o.rel_tol = 1e-13;
   const auto times = rigid::uniform_times(0.0, T, 257);
-  const auto run = rigid::integrate_free_body(
-      I, rigid::make_state(w0, Eigen::Quaterniond::Identity()), times, o);
+  const auto run = rigid::integrate(
+      rigid::FreeBodyProblem(I), rigid::make_state(w0, Eigen::Quaterniond::Identity()), times, o);
   const Eigen::Vector3d n = L.normalized(), e1 = n.unitOrthogonal(), e2 = n.cross(e1);
   double turned = 0, previous = 0;
   for (std::size_t k = 0; k < run.samples.size(); ++k) {
-    const Eigen::Vector3d p = run.samples[k].attitude * run.samples[k].omega_body;
+    const Eigen::Vector3d p =
+        rigid::attitude(run.samples[k].x) * rigid::omega_body(run.samples[k].x);
     const double a = std::atan2(p.dot(e2), p.dot(e1));
     if (k > 0) turned += std::remainder(a - previous, 2 * M_PI);
     previous = a;

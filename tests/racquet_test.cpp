@@ -1,13 +1,13 @@
 // The tennis racquet (racquet.h) against formulas written out here from the
 // text's eqs. 83-85 and Euler's equations, against the exact free body
 // (free_body_exact.h, which knows nothing of the linear analysis) and against
-// an integrated run (integrate.h).
+// an integrated run (free_body_integrate.h).
 #include "rigid/racquet.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "rigid/integrate.h"
+#include "rigid/free_body_integrate.h"
 
 using Catch::Matchers::WithinRel;
 
@@ -173,15 +173,16 @@ TEST_CASE("racquet: flips found on the exact motion match an integrated run's ze
   REQUIRE(std::isfinite(first));
   // dopri5 at tolerance 1e-12 over a fine grid; the crossing by linear interpolation
   // between samples dt apart is good to ~dt^2 |omega_2''| / |omega_2'|, far below 1e-6 s.
-  rigid::IntegrateOptions options;
+  rigid::OdeOptions options;
   options.abs_tol = options.rel_tol = 1e-12;
   const double span = first + 0.75 * motion.period();
   const auto times = rigid::uniform_times(0.0, span, 20001);
-  const rigid::IntegrationResult run =
-      rigid::integrate_free_body(r.moments, motion.state(0.0), times, options);
+  const rigid::FreeBodyRun run =
+      rigid::integrate(rigid::FreeBodyProblem(r.moments), motion.state(0.0), times, options);
   std::vector<double> crossings;
   for (std::size_t n = 1; n < run.samples.size(); ++n) {
-    const double a = run.samples[n - 1].omega_body(1), b = run.samples[n].omega_body(1);
+    const double a = rigid::omega_body(run.samples[n - 1].x)(1);
+    const double b = rigid::omega_body(run.samples[n].x)(1);
     if (a * b < 0) crossings.push_back(times[n - 1] + (times[n] - times[n - 1]) * a / (a - b));
   }
   REQUIRE(crossings.size() == 2);

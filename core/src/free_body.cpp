@@ -33,15 +33,11 @@ void validate(const PrincipalMoments& I, MomentsRule rule) {
   }
 }
 
-FreeBodyState make_state(const Eigen::Vector3d& omega_body, const Eigen::Quaterniond& q) {
-  return {omega_body.x(), omega_body.y(), omega_body.z(), q.w(), q.x(), q.y(), q.z()};
-}
-
 Eigen::Vector3d L_body(const PrincipalMoments& I, const Eigen::Vector3d& omega_body) {
   return {I.I1 * omega_body.x(), I.I2 * omega_body.y(), I.I3 * omega_body.z()};
 }
 
-Eigen::Vector3d L_space(const PrincipalMoments& I, const FreeBodyState& x) {
+Eigen::Vector3d L_space(const PrincipalMoments& I, const RotationState& x) {
   return attitude(x).normalized() * L_body(I, omega_body(x));
 }
 

@@ -380,7 +380,7 @@ Eigen::Quaterniond FreeBodyExact::attitude(double t) const {
   return attitude_from(t, elliptic_at(t));
 }
 
-FreeBodyState FreeBodyExact::state(double t) const {
+RotationState FreeBodyExact::state(double t) const {
   if (regime_ == FreeMotionRegime::kSteady) return make_state(omega0_, attitude(t));
   const Elliptic e = elliptic_at(t);
   return make_state(omega_from(e), attitude_from(t, e));

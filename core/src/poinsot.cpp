@@ -64,7 +64,7 @@ std::vector<Eigen::Vector3d> herpolhode(const FreeBodyExact& motion, double t_en
   points.reserve(static_cast<std::size_t>(std::max(samples, 0)));
   for (int k = 0; k < samples; ++k) {
     const double t = samples > 1 ? t_end * k / (samples - 1) : 0.0;
-    const FreeBodyState x = motion.state(t);
+    const RotationState x = motion.state(t);
     points.push_back(attitude(x) * omega_body(x));
   }
   return points;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "rigid/units.h"
 
@@ -68,6 +69,19 @@ double attitude_distance(const Eigen::Quaterniond& a, const Eigen::Quaterniond& 
   // angle of a^-1 b from its quaternion, sign-blind; atan2 keeps small angles accurate
   const Eigen::Quaterniond d = a.normalized().conjugate() * b.normalized();
   return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
+}
+
+RotationState make_state(const Eigen::Vector3d& omega_body, const Eigen::Quaterniond& q) {
+  return {omega_body.x(), omega_body.y(), omega_body.z(), q.w(), q.x(), q.y(), q.z()};
+}
+
+void validate_start(const RotationState& x0) {
+  for (const double v : x0) {
+    if (!std::isfinite(v)) throw std::invalid_argument("initial state must be finite");
+  }
+  if (!(attitude(x0).norm() > 0.0)) {
+    throw std::invalid_argument("initial attitude quaternion must be nonzero");
+  }
 }
 
 }  // namespace rigid

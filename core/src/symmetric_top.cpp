@@ -7,8 +7,8 @@
 
 #include "rigid/format.h"
 #include "rigid/free_body.h"
+#include "rigid/free_body_integrate.h"
 #include "rigid/inertia.h"
-#include "rigid/integrate.h"
 #include "rigid/units.h"
 
 namespace rigid {
@@ -63,17 +63,17 @@ PrecessionCheck integrated_precession(double I, double Is, double omega, double 
   const SymmetricPrecession p = free_symmetric_precession(I, Is, omega, alpha);
   const double period = p.space_period * omega;  // dimensionless: time in units of 1/omega
   const PrincipalMoments moments{1.0, 1.0, Is / I};
-  const FreeBodyState x0 =
+  const RotationState x0 =
       make_state(Vec3(std::sin(alpha), 0.0, std::cos(alpha)), Eigen::Quaterniond::Identity());
-  IntegrateOptions options;
+  OdeOptions options;
   options.abs_tol = options.rel_tol = tol;
   options.max_steps = max_steps;
-  const IntegrationResult run =
-      integrate_free_body(moments, x0, {0.0, period / 4, period}, options);
+  const FreeBodyRun run =
+      integrate(FreeBodyProblem(moments), x0, {0.0, period / 4, period}, options);
   const Vec3 L = Vec3(std::sin(alpha), 0.0, (Is / I) * std::cos(alpha)).normalized();
   const Vec3 axis0 = Vec3::UnitZ();
-  const Vec3 quarter = run.samples[1].attitude * Vec3::UnitZ();
-  const Vec3 end = run.samples[2].attitude * Vec3::UnitZ();
+  const Vec3 quarter = attitude(run.samples[1].x) * Vec3::UnitZ();
+  const Vec3 end = attitude(run.samples[2].x) * Vec3::UnitZ();
   // The turn of 3 about L between t = 0 and a quarter period (about 90 degrees); the
   // parts across L scaled to unit length first, since at alpha ~ 1e-200 their cross
   // product (~1e-400) underflowed to 0 and the turn read 0
@@ -83,8 +83,8 @@ PrecessionCheck integrated_precession(double I, double Is, double omega, double 
   PrecessionCheck check;
   check.space_rate = turn / (period / 4) * omega;
   check.axis_return = angle_between(axis0, end);
-  check.L_space_drift_rel = run.L_space_drift_rel;
-  check.energy_drift_rel = run.energy_drift_rel;
+  check.L_space_drift_rel = run.max_invariant_error[FreeBodyProblem::kLSpace];
+  check.energy_drift_rel = run.max_invariant_error[FreeBodyProblem::kEnergy];
   check.steps = run.steps;
   return check;
 }

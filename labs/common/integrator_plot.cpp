@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace rigid::lab {
 
@@ -10,6 +12,21 @@ std::string method_label(const OdeOptions& o) {
   return std::string(method_name(o.method)) + ", " +
          (is_adaptive(o.method) ? fmt::format("tol {:.2g}", o.rel_tol)
                                 : fmt::format("h = {:.3g} s", o.step));
+}
+
+std::vector<MethodCurve> method_curves(const std::vector<MethodComparison>& comparisons,
+                                       double (*in_unit)(double)) {
+  std::vector<MethodCurve> curves;
+  for (const MethodComparison& c : comparisons) {
+    std::vector<double> error = c.error;
+    if (in_unit != nullptr) {
+      for (double& e : error) e = in_unit(e);
+    }
+    curves.push_back({c.options.method, method_label(c.options),
+                      c.completed && std::isfinite(c.max_error), c.t, std::move(error),
+                      c.energy_error});
+  }
+  return curves;
 }
 
 namespace {

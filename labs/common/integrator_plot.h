@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "rigid/ode.h"
+#include "rigid/compare.h"
 #include "rigid/render/plot2d.h"
 
 namespace rigid::lab {
@@ -20,6 +20,11 @@ struct MethodCurve {
 
 /// A method and its setting as a legend names it: "dopri5, tol 4.3e-06" or "rk4, h = 0.001 s".
 std::string method_label(const OdeOptions& options);
+
+/// Each compared method's curves: its error against the exact motion (`in_unit` of it,
+/// or as it is) and its energy error; one that did not finish or blew up is not drawn.
+std::vector<MethodCurve> method_curves(const std::vector<MethodComparison>& comparisons,
+                                       double (*in_unit)(double) = nullptr);
 
 /// The time axis of the plot: in periods of the motion (`period` > 0, named by
 /// `name`, e.g. "polhode periods"), or in seconds (period 0).

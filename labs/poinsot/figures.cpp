@@ -41,11 +41,11 @@ render::Scene3D ellipsoids_scene(const FreeBodyExact& motion, const Vector3d& om
 }
 
 // omega_1, omega_2, omega_3 against t and the phase plot of section 5.1.
-render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodySample>& samples) {
+render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodyRun::Sample>& samples) {
   std::vector<double> t, w[3];
   for (const auto& s : samples) {
     t.push_back(s.t);
-    for (int i = 0; i < 3; ++i) w[i].push_back(s.omega_body(i));
+    for (int i = 0; i < 3; ++i) w[i].push_back(s.x[i]);
   }
   render::Plot2D plot(1, 2);
   render::Panel& left = plot.panel(0, 0);
@@ -79,21 +79,15 @@ void figures(const Report& report, FigureSink& sink) {
            omega_plot(report.omega0, report.run.samples));
   const bool periodic = std::isfinite(exact.period());
   const std::string period_name = periodic ? "polhode periods" : "turns";
-  std::vector<MethodCurve> curves;
-  for (const MethodComparison& m : report.at_cost) {
-    curves.push_back({m.options.method, method_label(m.options),
-                      m.completed && std::isfinite(m.max_omega_error), m.t, m.omega_error,
-                      m.energy_error});
-  }
-  sink.add(
-      "integrators",
-      fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
-                  "{} against the exact solution",
-                  kEqualCostEvaluations, kEqualCostPeriods, period_name),
-      integrators_plot(
-          curves, fmt::format("at equal cost: {:g} evaluations a period", kEqualCostEvaluations),
-          {report.scale, period_name}, "error in \\omega",
-          "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0"));
+  sink.add("integrators",
+           fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
+                       "{} against the exact solution",
+                       kEqualCostEvaluations, kEqualCostPeriods, period_name),
+           integrators_plot(
+               method_curves(report.comparisons.at_cost),
+               fmt::format("at equal cost: {:g} evaluations a period", kEqualCostEvaluations),
+               {report.scale, period_name}, "error in \\omega",
+               "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0"));
   if (periodic) {
     sink.add("herpolhode",
              fmt::format("Poinsot's construction seen from above: the herpolhode over {:g} "

@@ -42,8 +42,8 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
   // times, or else 240 samples a polhode period of the closed form
   std::vector<double> times;
   if (integrated_) {
-    for (const FreeBodySample& s : report.run.samples) {
-      states_[s.t] = make_state(s.omega_body, s.attitude);
+    for (const FreeBodyRun::Sample& s : report.run.samples) {
+      states_[s.t] = s.x;
       times.push_back(s.t);
     }
     if (!sample_times.empty()) {
@@ -52,8 +52,8 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
       times = sample_times;
       std::sort(times.begin(), times.end());
       times.erase(std::unique(times.begin(), times.end()), times.end());
-      for (const FreeBodySample& s : integrate(exact_.state(0.0), times).samples) {
-        states_[s.t] = make_state(s.omega_body, s.attitude);
+      for (const FreeBodyRun::Sample& s : integrate(exact_.state(0.0), times).samples) {
+        states_[s.t] = s.x;
       }
     }
   } else {
@@ -63,7 +63,7 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
   }
   double reach = 0.0;
   for (const double t : times) {
-    const FreeBodyState x = state(t);
+    const RotationState x = state(t);
     const Eigen::Matrix3d a = space_ * attitude(x).toRotationMatrix();
     herpolhode_t_.push_back(t);
     herpolhode_.push_back(to_construction(a, omega_body(x)));
@@ -72,21 +72,21 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
   plane_radius_ = std::max(1.2 * reach, 0.6 * size_);
 }
 
-IntegrationResult Motion::integrate(const FreeBodyState& x0,
-                                    const std::vector<double>& times) const {
-  IntegrationResult run;
+FreeBodyRun Motion::integrate(const RotationState& x0, const std::vector<double>& times) const {
+  FreeBodyRun run;
   try {
-    run = integrate_free_body(exact_.moments(), x0, times, options_);
+    run = rigid::integrate(FreeBodyProblem(exact_.moments()), x0, times, options_);
   } catch (const std::exception& e) {
     throw InputError(step_input_, e.what());
   }
   // The lab's own run kept T and |L| over the same span; a run of other samples
   // that did not would draw a body no longer the same, refused as the lab's would be.
-  refuse_runaway(step_input_, std::max(run.energy_drift_rel, run.momentum_drift_rel));
+  refuse_runaway(step_input_, std::max(run.max_invariant_error[FreeBodyProblem::kEnergy],
+                                       run.max_invariant_error[FreeBodyProblem::kMomentum]));
   return run;
 }
 
-FreeBodyState Motion::state(double t) const {
+RotationState Motion::state(double t) const {
   if (!integrated_) return exact_.state(t);
   const auto after = states_.upper_bound(t);
   if (after == states_.begin()) {
@@ -95,8 +95,7 @@ FreeBodyState Motion::state(double t) const {
   }
   const auto& [t0, x0] = *std::prev(after);
   if (t0 == t) return x0;
-  const FreeBodySample end = integrate(x0, {t0, t}).samples.back();
-  return make_state(end.omega_body, end.attitude);
+  return integrate(x0, {t0, t}).samples.back().x;
 }
 
 Vector3d Motion::to_construction(const Eigen::Matrix3d& attitude, const Vector3d& w) const {
@@ -104,7 +103,7 @@ Vector3d Motion::to_construction(const Eigen::Matrix3d& attitude, const Vector3d
 }
 
 render::Scene3D Motion::scene(double t) const {
-  const FreeBodyState x = state(t);
+  const RotationState x = state(t);
   const Eigen::Matrix3d a = space_ * attitude(x).toRotationMatrix();
   const Vector3d w = omega_body(x);
   render::Scene3D scene;
@@ -156,7 +155,7 @@ render::Scene3D Motion::scene(double t) const {
 render::Scene3D Motion::herpolhode_scene(double periods) const {
   const double T = exact_.period();
   const auto contact = [&](double t) {
-    const FreeBodyState x = exact_.state(t);
+    const RotationState x = exact_.state(t);
     return to_construction(space_ * attitude(x).toRotationMatrix(), omega_body(x));
   };
   render::Scene3D scene;
@@ -187,7 +186,7 @@ render::Scene3D Motion::herpolhode_scene(double periods) const {
     scene.add_label(p, k == 0 ? "0" : k == 1 ? "T" : fmt::format("{}T", k));
   }
   // the energy ellipsoid at t = 0, touching the plane at the first contact point
-  const FreeBodyState x0 = exact_.state(0.0);
+  const RotationState x0 = exact_.state(0.0);
   const Eigen::Matrix3d a0 = space_ * attitude(x0).toRotationMatrix();
   const PoinsotEllipsoids e = poinsot_ellipsoids(exact_.moments(), exact_.omega_body(0.0));
   scene.add_ellipsoid(offset_, construction_scale_ * e.energy_semi_axes, a0,

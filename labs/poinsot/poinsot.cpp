@@ -15,34 +15,6 @@ namespace {
 constexpr const char* kName = "poinsot";
 constexpr const char* kTitle =
     "free asymmetric body: Poinsot's ellipsoids and polhodes (sections 4-5.1)";
-// A run longer than this many steps is refused rather than left to hang.
-constexpr std::size_t kMaxSteps = 20'000'000;
-// Each method of the comparison with the others gets at most this many steps:
-// the comparison then costs at most a few hundred ms.
-constexpr std::size_t kMaxComparisonSteps = 20'000;
-
-// Every integrator at the lab's step and tolerance against the exact solution.
-void report_comparison(Report& report, const std::vector<double>& times, double tolerance) {
-  report.section(
-      fmt::format("every integrator against the exact solution (tolerance {:g}, step {:.4g} s)",
-                  tolerance, report.options.step));
-  // An aside: a method needing more steps than this is reported as not run.
-  const std::vector<MethodComparison> methods =
-      compare_methods(report.exact, times, report.scale, report.options, kMaxComparisonSteps);
-  for (const MethodComparison& c : methods) {
-    const std::string name(method_name(c.options.method));
-    const std::string key = "max_error_" + json_key(name);
-    const std::string label = fmt::format("{:<15} max |omega - omega_exact| / |omega0|", name);
-    if (!c.completed) {
-      report.result_none(key, label, "",
-                         fmt::format("not run: needs more than {} steps", kMaxComparisonSteps));
-    } else if (!std::isfinite(c.max_omega_error)) {
-      report.result_none(key, label, "", "diverged at this step");
-    } else {
-      report.result(key, label, c.max_omega_error, "");
-    }
-  }
-}
 
 // Section 4: the two ellipsoids through omega0 and Poinsot's construction.
 void report_ellipsoids(Report& report, const std::string& regime) {
@@ -103,14 +75,13 @@ void report_text_example(Report& report) {
 }
 
 // The run as --csv writes it: t, omega, the attitude, T and |L| at each sample.
-TimeSeries run_series(const IntegrationResult& run, const PrincipalMoments& I) {
+TimeSeries run_series(const FreeBodyRun& run, const PrincipalMoments& I) {
   TimeSeries series{
       {"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz", "energy_J", "L_kg_m2_s"}, {}};
   for (const auto& s : run.samples) {
-    const auto& q = s.attitude;
-    series.rows.push_back({s.t, s.omega_body(0), s.omega_body(1), s.omega_body(2), q.w(), q.x(),
-                           q.y(), q.z(), kinetic_energy(I, s.omega_body),
-                           angular_momentum_magnitude(I, s.omega_body)});
+    const Vector3d w = omega_body(s.x);
+    series.rows.push_back({s.t, w(0), w(1), w(2), s.x[3], s.x[4], s.x[5], s.x[6],
+                           kinetic_energy(I, w), angular_momentum_magnitude(I, w)});
   }
   return series;
 }
@@ -198,8 +169,7 @@ Report compute(const Inputs& in) {
   report.t_end = end_time(in.t_end, in.periods, scale, 3.0 * scale);
   // Two hundred samples a period; a fixed-step method is sampled on its own step grid.
   // Every method is compared at --step and --tolerance, in a section of its own.
-  const RunPlan plan =
-      plan_run(report, in.integration, /*compared=*/true, report.t_end, scale, kMaxSteps);
+  const RunPlan plan = plan_run(report, in.integration, /*compared=*/true, report.t_end, scale);
   report.options = plan.options;
   report.method = in.integration.method;
 
@@ -209,21 +179,17 @@ Report compute(const Inputs& in) {
     report.result_text("method_kind", "  its kind", std::string(method_kind(plan.options.method)));
   }
   report_plan(report, plan);
-  report.run = run_free_body(report, exact, in.integration, plan.options, plan.times);
-  report.result("omega_end", "omega at t_end", report.run.samples.back().omega_body, "rad/s");
-  report_drifts(report, report.run, scale, report.method == "exact");
+  const FreeBodyProblem problem(I);
+  report.run = run_chosen_method(report, problem, exact, in.integration, plan.options, plan.times,
+                                 free_body_words());
+  report.result("omega_end", "omega at t_end", omega_body(report.run.samples.back().x), "rad/s");
+  report_drifts(report, report.run, scale, report.method == "exact", free_body_words());
 
-  report_comparison(report, plan.times, in.integration.tolerance);
-
-  // "Which method drifts" answered at equal cost, over enough periods for a
-  // symplectic method's bounded band to tell from a steady drift.
-  report.at_cost = compare_methods_at_cost(exact, scale, kEqualCostPeriods, kEqualCostEvaluations);
-  std::vector<EqualCostRow> cost_rows;
-  for (const MethodComparison& c : report.at_cost) {
-    cost_rows.push_back(
-        {c.options, c.completed && std::isfinite(c.max_omega_error), c.evaluations, c.energy});
-  }
-  report_equal_cost(report, cost_rows, kEqualCostEvaluations, kEqualCostPeriods);
+  // Every method at --step and --tolerance, and "which method drifts" answered at
+  // equal cost, over enough periods for a symplectic method's bounded band to tell
+  // from a steady drift.
+  report.comparisons =
+      compare_every_method(report, problem, exact, plan, scale, true, free_body_words());
 
   report_ellipsoids(report, regime);
   report_text_example(report);

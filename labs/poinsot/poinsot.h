@@ -12,12 +12,13 @@
 #include <vector>
 
 #include "common/figures.h"
-#include "common/free_body_run.h"
+#include "common/free_motion.h"
 #include "common/inputs.h"
+#include "common/integrated_run.h"
 #include "common/program.h"
 #include "common/report.h"
 #include "rigid/free_body_exact.h"
-#include "rigid/integrate.h"
+#include "rigid/free_body_integrate.h"
 #include "rigid/units.h"
 
 namespace rigid::lab::poinsot {
@@ -35,11 +36,6 @@ struct Inputs {
   IntegrationInputs integration;  ///< "exact" by default; step: period / 2000
 };
 
-/// The comparison at equal cost: this many right-hand-side evaluations a polhode
-/// period over this many periods (a few tens of ms), enough for rk4's steady energy
-/// drift to leave the splittings' bounded band behind.
-inline constexpr double kEqualCostEvaluations = 200.0;
-inline constexpr double kEqualCostPeriods = 100.0;
 /// The herpolhode figure: enough polhode periods for its failure to close to show.
 inline constexpr double kHerpolhodePeriods = 6.0;
 
@@ -55,9 +51,10 @@ struct Report : lab::Report {
   double scale = 0.0;  ///< the time scale: the polhode period, or one turn, s
   double t_end = 0.0;  ///< s
   std::string method = "exact";
-  IntegrateOptions options;  ///< the chosen method's, as the run used them
-  IntegrationResult run;     ///< the lab's own run (the closed form sampled, for "exact")
-  std::vector<MethodComparison> at_cost;  ///< every method at kEqualCostEvaluations a period
+  OdeOptions options;  ///< the chosen method's, as the run used them
+  FreeBodyRun run;     ///< the lab's own run (the closed form sampled, for "exact")
+  /// Every method at the lab's settings and at kEqualCostEvaluations a polhode period.
+  MethodComparisons comparisons;
 };
 
 /// The inputs' rules: options, widgets and compute()'s checks.
@@ -95,19 +92,19 @@ class Motion {
  private:
   /// The state at t: the closed form's, a cached one, or integrated from the nearest
   /// earlier cached one.
-  FreeBodyState state(double t) const;
+  RotationState state(double t) const;
   /// The chosen method from x0 at times.front() through `times`; a failure names the
   /// input that set the step (as the lab's own run does).
-  IntegrationResult integrate(const FreeBodyState& x0, const std::vector<double>& times) const;
+  FreeBodyRun integrate(const RotationState& x0, const std::vector<double>& times) const;
   Eigen::Vector3d to_construction(const Eigen::Matrix3d& attitude, const Eigen::Vector3d& w) const;
   FreeBodyExact exact_;
   Eigen::Vector3d half_extents_;
   bool box_;
   double t_end_;
   bool integrated_;
-  IntegrateOptions options_;
+  OdeOptions options_;
   std::string step_input_;                  ///< the input an integration failure names
-  std::map<double, FreeBodyState> states_;  ///< integrated only: the cached states
+  std::map<double, RotationState> states_;  ///< integrated only: the cached states
   Eigen::Matrix3d space_;  ///< the motion's space frame turned so that L points down
   double size_, omega_scale_, construction_scale_, plane_depth_, plane_radius_;
   Eigen::Vector3d offset_;                             ///< where the construction stands

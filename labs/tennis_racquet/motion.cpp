@@ -18,7 +18,7 @@ namespace {
 // The racquet in state x at time t of `motion`, L turned to display z: spun about axis 2
 // it turns over and back.
 render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int axis, double t,
-                           const FreeBodyState& x) {
+                           const RotationState& x) {
   const Eigen::Quaterniond to_display =
       Eigen::Quaterniond::FromTwoVectors(motion.L_space(), Vector3d::UnitZ());
   const Eigen::Matrix3d R = (to_display * attitude(x).normalized()).toRotationMatrix();
@@ -47,8 +47,9 @@ render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int ax
 }
 
 // The states at `samples`, by time.
-void cache(std::map<double, FreeBodyState>& states, const std::vector<FreeBodySample>& samples) {
-  for (const FreeBodySample& s : samples) states[s.t] = make_state(s.omega_body, s.attitude);
+void cache(std::map<double, RotationState>& states,
+           const std::vector<FreeBodyRun::Sample>& samples) {
+  for (const FreeBodyRun::Sample& s : samples) states[s.t] = s.x;
 }
 
 }  // namespace
@@ -79,13 +80,14 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
   if (times.size() < 2) return;
   try {
     cache(states_,
-          integrate_free_body(motion_.moments(), motion_.state(0.0), times, *integrator_).samples);
+          integrate(FreeBodyProblem(motion_.moments()), motion_.state(0.0), times, *integrator_)
+              .samples);
   } catch (const std::exception& e) {
     throw InputError(is_adaptive(integrator_->method) ? "--tolerance" : "--step", e.what());
   }
 }
 
-FreeBodyState Motion::state(double t) const {
+RotationState Motion::state(double t) const {
   if (!integrator_) return motion_.state(t);
   auto next = states_.upper_bound(t);
   if (next == states_.begin()) {
@@ -93,9 +95,7 @@ FreeBodyState Motion::state(double t) const {
   }
   const auto& [t0, x0] = *std::prev(next);
   if (t0 == t) return x0;
-  const IntegrationResult run = integrate_free_body(motion_.moments(), x0, {t0, t}, *integrator_);
-  const FreeBodySample& s = run.samples.back();
-  return make_state(s.omega_body, s.attitude);
+  return integrate(FreeBodyProblem(motion_.moments()), x0, {t0, t}, *integrator_).samples.back().x;
 }
 
 render::Scene3D Motion::scene(double t) const {

@@ -15,12 +15,13 @@
 #include <vector>
 
 #include "common/figures.h"
-#include "common/free_body_run.h"
+#include "common/free_motion.h"
 #include "common/inputs.h"
+#include "common/integrated_run.h"
 #include "common/program.h"
 #include "common/report.h"
 #include "rigid/free_body_exact.h"
-#include "rigid/integrate.h"
+#include "rigid/free_body_integrate.h"
 #include "rigid/racquet.h"
 
 namespace rigid::lab::tennis_racquet {
@@ -59,8 +60,8 @@ struct Report : lab::Report {
   int spin_axis = 1;                         ///< the run's axis (0, 1, 2)
   /// The integrator the motion is drawn from (a method other than the cross-check's
   /// default); none: the closed form.
-  std::optional<IntegrateOptions> drawn_integrator;
-  std::vector<FreeBodySample> run;  ///< the cross-check's samples, 0 to t_end
+  std::optional<OdeOptions> drawn_integrator;
+  std::vector<FreeBodyRun::Sample> run;  ///< the cross-check's samples, 0 to t_end
 };
 
 /// The inputs' rules: options, widgets and compute()'s checks.
@@ -94,14 +95,14 @@ class Motion {
   render::Plot2D strip(double t) const;
 
  private:
-  FreeBodyState state(double t) const;
+  RotationState state(double t) const;
 
   Racquet racquet_;
   FreeBodyExact motion_;
   int axis_ = 1;
   double t_end_ = 0.0;
-  std::optional<IntegrateOptions> integrator_;
-  std::map<double, FreeBodyState> states_;  ///< the integrated states cached when built
+  std::optional<OdeOptions> integrator_;
+  std::map<double, RotationState> states_;  ///< the integrated states cached when built
   std::vector<double> strip_t_;             ///< omega's exact components over the run
   std::array<std::vector<double>, 3> strip_omega_;
 };

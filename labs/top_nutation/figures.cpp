@@ -138,15 +138,18 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
 
 // phi_dot from a state: omega_z = phi_dot + psi_dot cos(theta), omega_3 = phi_dot cos(theta) +
 // psi_dot.
-double phi_dot_of(const TopSample& s) {
-  const Vector3d axis = s.attitude * Vector3d::UnitZ();
-  const double omega_z = (s.attitude * s.omega_body).z(), c = axis.z();
+double phi_dot_of(const RotationState& x) {
+  const Eigen::Quaterniond q = attitude(x);
+  const Vector3d w = omega_body(x);
+  const Vector3d axis = q * Vector3d::UnitZ();
+  const double omega_z = (q * w).z(), c = axis.z();
   const double sin2 = axis.x() * axis.x() + axis.y() * axis.y();
-  return sin2 > 0 ? (omega_z - s.omega_body.z() * c) / sin2 : 0.0;
+  return sin2 > 0 ? (omega_z - w.z() * c) / sin2 : 0.0;
 }
 
 // theta(t) and phi_dot(t): the exact motion beside an integrated run.
-render::Plot2D theta_plot(const HeavyTopExact& motion, const TopRun& integrated_run, double t_end) {
+render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun& integrated_run,
+                          double t_end) {
   std::vector<double> t, theta, phi_dot, ti, thetai, phi_doti;
   for (int k = 0; k <= 1200; ++k) {
     t.push_back(t_end * k / 1200);
@@ -156,10 +159,10 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const TopRun& integrated_
   }
   const std::size_t stride = std::max<std::size_t>(1, integrated_run.samples.size() / 60);
   for (std::size_t i = 0; i < integrated_run.samples.size(); i += stride) {
-    const TopSample& s = integrated_run.samples[i];
+    const HeavyTopRun::Sample& s = integrated_run.samples[i];
     ti.push_back(s.t);
-    thetai.push_back(rad_to_deg(s.theta));
-    phi_doti.push_back(phi_dot_of(s));
+    thetai.push_back(rad_to_deg(tilt_of(attitude(s.x))));
+    phi_doti.push_back(phi_dot_of(s.x));
   }
   const std::string integrated = std::string(method_name(integrated_run.method)) + ", integrated";
   render::Plot2D plot(2, 1);
@@ -181,32 +184,20 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const TopRun& integrated_
   return plot;
 }
 
-// Each integrator's theta error (deg) and energy error against t, as curves.
-std::vector<MethodCurve> method_curves(const std::vector<TopComparison>& methods) {
-  std::vector<MethodCurve> curves;
-  for (const TopComparison& c : methods) {
-    std::vector<double> deg;
-    for (const double e : c.theta_error) deg.push_back(rad_to_deg(e));
-    curves.push_back({c.options.method, method_label(c.options),
-                      c.completed && std::isfinite(c.max_theta_error), c.t, deg, c.energy_error});
-  }
-  return curves;
-}
-
 }  // namespace
 
 void figures(const Report& report, FigureSink& sink) {
   const HeavyTopExact& motion = *report.motion;
   // Beside the exact motion, an integrated one: the lab's own, or splitting4 at its default
   // step.
-  TopRun splitting4;
+  HeavyTopRun splitting4;
   if (report.method == "exact") {
     OdeOptions o = report.options;
     o.method = Method::kSplitting4;
-    splitting4 = integrate_heavy_top(report.top, heavy_top_state(motion.angles(0.0)),
-                                     sample_times(report.t_end, report.scale, o.step), o);
+    splitting4 = integrate(HeavyTopProblem(report.top), heavy_top_state(motion.angles(0.0)),
+                           sample_times(report.t_end, report.scale, o.step), o);
   }
-  const TopRun& integrated = report.method == "exact" ? splitting4 : report.run;
+  const HeavyTopRun& integrated = report.method == "exact" ? splitting4 : report.run;
   sink.add("potential", "the effective potential, E' and the turning points",
            potential_plot(motion));
   sink.add("paths", "the axis's path on the sphere: wavy, cusped, looping", paths_scene(motion));
@@ -215,16 +206,17 @@ void figures(const Report& report, FigureSink& sink) {
   sink.add("top", "the top, L, the gravity torque and the precession circle",
            Motion(report).scene(0.0));
   // A sleeping top has no comparison at equal cost: the one at the lab's settings.
-  const bool equal_cost = !report.at_cost.empty();
-  const double evaluations = report.at_cost_evaluations;
+  const MethodComparisons& compared = report.comparisons;
+  const bool equal_cost = !compared.at_cost.empty();
+  const double evaluations = kEqualCostEvaluations;
   sink.add(
       "integrators",
       equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
                                "nutation period) over {:g} periods against the exact theta",
-                               evaluations, report.at_cost_periods)
+                               evaluations, kEqualCostPeriods)
                  : "every integrator against the exact theta",
       integrators_plot(
-          method_curves(equal_cost ? report.at_cost : report.methods),
+          method_curves(equal_cost ? compared.at_cost : compared.at_settings, rad_to_deg),
           equal_cost ? fmt::format("at equal cost: {:g} evaluations a period", evaluations)
                      : "integrators against the exact solution",
           equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
@@ -242,9 +234,11 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
       options_(report.options),
       option_(report.fixed ? "--step" : "--tolerance") {
   if (!integrated_) return;
-  const auto keep = [this](const TopRun& run) {
+  const auto keep = [this](const HeavyTopRun& run) {
     // emplace keeps a state already cached: the sampled run's before the lab's
-    for (const TopSample& s : run.samples) states_.emplace(s.t, State{s.attitude, s.omega_body});
+    for (const HeavyTopRun::Sample& s : run.samples) {
+      states_.emplace(s.t, State{attitude(s.x), omega_body(s.x)});
+    }
   };
   if (!sample_times.empty()) {
     // One run through every sample time, from the start, as the lab's own run is made:
@@ -253,11 +247,11 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
     std::sort(path_times_.begin(), path_times_.end());
     path_times_.erase(std::unique(path_times_.begin(), path_times_.end()), path_times_.end());
     keep(for_input(option_, [&] {
-      return integrate_heavy_top(exact_.top(), heavy_top_state(exact_.angles(0.0)), path_times_,
-                                 options_);
+      return integrate(HeavyTopProblem(exact_.top()), heavy_top_state(exact_.angles(0.0)),
+                       path_times_, options_);
     }));
   } else {
-    for (const TopSample& s : report.run.samples) path_times_.push_back(s.t);
+    path_times_ = report.run.times();
   }
   keep(report.run);
 }
@@ -271,11 +265,12 @@ Motion::State Motion::state(double t) const {
   const auto& [t0, s0] = *std::prev(next);
   if (t0 == t) return s0;
   // Between cached states: integrated on from the nearest earlier one, each time anew.
-  const TopRun run = for_input(option_, [&, t0 = t0, s0 = s0] {
-    return integrate_heavy_top(exact_.top(), make_state(s0.omega_body, s0.attitude), {t0, t},
-                               options_);
+  const HeavyTopRun run = for_input(option_, [&, t0 = t0, s0 = s0] {
+    return integrate(HeavyTopProblem(exact_.top()), make_state(s0.omega_body, s0.attitude), {t0, t},
+                     options_);
   });
-  return {run.samples.back().attitude, run.samples.back().omega_body};
+  const RotationState& end = run.samples.back().x;
+  return {attitude(end), omega_body(end)};
 }
 
 render::Scene3D Motion::scene(double t) const {

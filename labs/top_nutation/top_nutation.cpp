@@ -17,13 +17,6 @@ namespace {
 constexpr char kName[] = "top_nutation";
 constexpr char kTitle[] = "the heavy symmetric top: precession and nutation (sections 8-9)";
 constexpr double kRpm = 2 * kPi / 60.0;  // rad/s per rpm
-// A run longer than this many steps is refused rather than left to hang.
-constexpr std::size_t kMaxSteps = 20'000'000;
-// Each method of the comparison gets at most this many steps.
-constexpr std::size_t kMaxComparisonSteps = 20'000;
-// The comparison at equal cost: evaluations a nutation period, and periods.
-constexpr double kEqualCostEvaluations = 200.0;
-constexpr double kEqualCostPeriods = 100.0;
 
 // The section 8.1 example's numbers from the rounded spin the text uses.
 double rounded(double x, int digits) {
@@ -145,68 +138,26 @@ void report_section_9(Report& report, double S, double theta0) {
                 Vector2d(rad_to_deg(above), rad_to_deg(below)), "deg");
 }
 
-// The chosen method's run from the exact start through `times`, measured against the
-// exact theta; a run that fails, diverges or runs away is an InputError naming the
-// setting to change.
-TopRun run_method(Report& report, const std::vector<double>& times) {
-  const HeavyTopExact& motion = *report.motion;
-  if (report.method == "exact") return sample_exact(motion, times);
-  const char* option = report.fixed ? "--step" : "--tolerance";
-  TopRun run;
-  try {
-    run =
-        integrate_heavy_top(report.top, heavy_top_state(motion.angles(0.0)), times, report.options);
-  } catch (const std::exception& e) {
-    throw InputError(option, e.what());
-  }
-  double worst = 0;
-  for (const TopSample& s : run.samples) {
-    const double e = std::abs(s.theta - motion.theta(s.t));
-    if (!std::isfinite(e)) throw InputError(option, "the integration diverged; shorten the step");
-    worst = std::max(worst, e);
-  }
-  refuse_runaway(option,
-                 std::max({run.energy_drift_rel, run.p_phi_drift_rel, run.p_psi_drift_rel}));
-  report.result("max_theta_error_deg", "max |theta - theta_exact|", rad_to_deg(worst), "deg");
-  report.count("steps", "steps taken", run.steps);
-  return run;
-}
-
-// Every integrator against the exact motion, at the lab's settings and at equal cost.
-void report_comparisons(Report& report, const std::vector<double>& times, double tolerance) {
-  const HeavyTopExact& motion = *report.motion;
-  report.methods =
-      compare_top_methods(motion, times, report.scale, report.options, kMaxComparisonSteps);
-  report.section(
-      fmt::format("every integrator against the exact theta (tolerance {:g}, step {:.4g} s)",
-                  tolerance, report.options.step));
-  for (const TopComparison& c : report.methods) {
-    const std::string name(method_name(c.options.method));
-    const std::string key = "max_theta_error_" + json_key(name) + "_deg";
-    const std::string label = fmt::format("{:<15} max |theta - theta_exact|", name);
-    if (!c.completed) {
-      report.result_none(key, label, "deg",
-                         fmt::format("not run: needs more than {} steps", kMaxComparisonSteps));
-    } else if (!std::isfinite(c.max_theta_error)) {
-      report.result_none(key, label, "deg", "diverged at this step");
-    } else {
-      report.result(key, label, rad_to_deg(c.max_theta_error), "deg");
-    }
-  }
-
-  // "Which method drifts" at equal cost: a sleeping top has no nutation to count
-  // periods by, nor anything to drift through.
-  if (motion.regime() == TopRegime::kSleeping || !std::isfinite(motion.nutation_period())) return;
-  report.at_cost =
-      compare_top_methods_at_cost(motion, report.scale, kEqualCostPeriods, kEqualCostEvaluations);
-  report.at_cost_evaluations = kEqualCostEvaluations;
-  report.at_cost_periods = kEqualCostPeriods;
-  std::vector<EqualCostRow> rows;
-  for (const TopComparison& c : report.at_cost) {
-    rows.push_back(
-        {c.options, c.completed && std::isfinite(c.max_theta_error), c.evaluations, c.energy});
-  }
-  report_equal_cost(report, rows, kEqualCostEvaluations, kEqualCostPeriods);
+// The top's error against the exact motion, |theta - theta_exact| in degrees, and its
+// invariants E, p_phi and p_psi: a run that lost any of them ran away.
+const ExactErrorWords& top_words() {
+  static const ExactErrorWords words = [] {
+    ExactErrorWords w;
+    w.key = "max_theta_error_deg";
+    w.label = "max |theta - theta_exact|";
+    w.unit = "deg";
+    w.in_unit = rad_to_deg;
+    w.method_key_prefix = "max_theta_error_";
+    w.method_key_suffix = "_deg";
+    w.against = "the exact theta";
+    w.diverged = "the integration diverged; shorten the step";
+    w.runaway_invariants = HeavyTopProblem::kInvariantCount;
+    w.invariants = {{HeavyTopProblem::kEnergy, "energy", "max |E - E0| / (T0 + m g l)"},
+                    {HeavyTopProblem::kPPhi, "p_phi", "max |p_phi - p_phi0| / |L0|"},
+                    {HeavyTopProblem::kPPsi, "p_psi", "max |p_psi - p_psi0| / |L0|"}};
+    return w;
+  }();
+  return words;
 }
 
 // The text's numbers use S rounded to 52.4 rad/s; the exact ones differ in the last digit.
@@ -332,7 +283,7 @@ Report compute(const Inputs& in) {
   report.t_end = end_time(in.t_end, in.periods, report.scale, 3.0 * report.scale);
   // Every method runs at --step and --tolerance in the comparison, so neither is unused.
   const RunPlan plan =
-      plan_run(report, in.integration, /*compared=*/true, report.t_end, report.scale, kMaxSteps);
+      plan_run(report, in.integration, /*compared=*/true, report.t_end, report.scale);
   report.method = in.integration.method;
   report.options = plan.options;
   report.fixed = plan.fixed;
@@ -341,31 +292,24 @@ Report compute(const Inputs& in) {
   if (report.method != "exact") {
     report.result_text("method_kind", "method", std::string(method_kind(plan.options.method)));
   }
-  report.run = run_method(report, plan.times);
-  {
-    std::vector<double> t, e[3];
-    for (const TopSample& s : report.run.samples) {
-      t.push_back(s.t);
-      for (int i = 0; i < 3; ++i) e[i].push_back(s.invariant_errors(i));
-    }
-    const double roundoff = report.method == "exact" ? kClosedFormRoundoff : 0.0;
-    report_invariant(report, "energy", "max |E - E0| / (T0 + m g l)", t, e[0], report.scale,
-                     roundoff);
-    report_invariant(report, "p_phi", "max |p_phi - p_phi0| / |L0|", t, e[1], report.scale,
-                     roundoff);
-    report_invariant(report, "p_psi", "max |p_psi - p_psi0| / |L0|", t, e[2], report.scale,
-                     roundoff);
-  }
-  report_comparisons(report, plan.times, in.integration.tolerance);
+  const HeavyTopProblem problem(report.top);
+  report.run = run_chosen_method(report, problem, motion, in.integration, plan.options, plan.times,
+                                 top_words());
+  report_drifts(report, report.run, report.scale, report.method == "exact", top_words());
+  // "Which method drifts" at equal cost too: a sleeping top has no nutation to count
+  // periods by, nor anything to drift through.
+  const bool at_cost = !sleeping && std::isfinite(motion.nutation_period());
+  report.comparisons =
+      compare_every_method(report, problem, motion, plan, report.scale, at_cost, top_words());
   report_errata(report, S, theta0);
 
   TimeSeries series{{"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw",
                      "qx", "qy", "qz", "energy_error_rel"},
                     {}};
-  for (const TopSample& s : report.run.samples) {
-    const auto& q = s.attitude;
-    series.rows.push_back({s.t, s.theta, motion.theta(s.t), s.omega_body(0), s.omega_body(1),
-                           s.omega_body(2), q.w(), q.x(), q.y(), q.z(), s.energy_error});
+  for (const HeavyTopRun::Sample& s : report.run.samples) {
+    series.rows.push_back({s.t, tilt_of(attitude(s.x)), motion.theta(s.t), s.x[0], s.x[1], s.x[2],
+                           s.x[3], s.x[4], s.x[5], s.x[6],
+                           std::abs(s.invariant_errors[HeavyTopProblem::kEnergy])});
   }
   report.series(std::move(series));
   return report;

@@ -15,13 +15,12 @@
 #include <vector>
 
 #include "common/figures.h"
-#include "common/free_body_run.h"
 #include "common/inputs.h"
+#include "common/integrated_run.h"
 #include "common/program.h"
 #include "common/report.h"
 #include "rigid/heavy_top.h"
 #include "rigid/heavy_top_integrate.h"
-#include "rigid/integrate.h"
 
 namespace rigid::lab::top_nutation {
 
@@ -51,16 +50,14 @@ struct Report : lab::Report {
   std::optional<HeavyTopExact> motion;
   double arm = 0.0, disk_radius = 0.0;  ///< for drawing the top, m
   std::string method;                   ///< "exact" or the integrator's name
-  IntegrateOptions options;             ///< the chosen method's settings
+  OdeOptions options;                   ///< the chosen method's settings
   bool fixed = false;                   ///< the method takes a fixed step
-  TopRun run;                           ///< the lab's run: exact, or the chosen integrator
-  std::vector<TopComparison> methods;   ///< every integrator at the lab's settings
-  /// Every integrator at the same cost (empty for a top with no nutation to count by).
-  std::vector<TopComparison> at_cost;
-  double at_cost_evaluations = 0.0;  ///< the equal cost: evaluations a nutation period
-  double at_cost_periods = 0.0;      ///< over this many nutation periods
-  double t_end = 0.0;                ///< s
-  double scale = 0.0;                ///< the nutation period (or a turn of the spin), s
+  HeavyTopRun run;                      ///< the lab's run: exact, or the chosen integrator
+  /// Every integrator at the lab's settings and at the same cost, kEqualCostEvaluations
+  /// a nutation period (none at equal cost for a top with no nutation to count by).
+  MethodComparisons comparisons;
+  double t_end = 0.0;  ///< s
+  double scale = 0.0;  ///< the nutation period (or a turn of the spin), s
 };
 
 /// The inputs' rules: options, widgets and compute()'s checks.
@@ -101,7 +98,7 @@ class Motion {
   HeavyTopExact exact_;
   double arm_, disk_radius_, seconds_;
   bool integrated_;
-  IntegrateOptions options_;
+  OdeOptions options_;
   std::string option_;              ///< the input blamed if an integration fails
   std::map<double, State> states_;  ///< integrated: the cached states
   std::vector<double> path_times_;  ///< integrated: the times the axis's path runs through

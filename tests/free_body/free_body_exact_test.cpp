@@ -95,7 +95,7 @@ TEST_CASE("exact free body: matches the 30-digit reference on every regime") {
     const double w_scale = w0.norm();
     for (const RefPoint& p : c.points) {
       const Eigen::Vector3d w_ref(p.y[0], p.y[1], p.y[2]);
-      const FreeBodyState x = exact.state(p.t);
+      const RotationState x = exact.state(p.t);
       const double rate_t = 1.0 + w_scale * p.t;  // radians turned: eps |u| growth
       const double err_w = (omega_body(x) - w_ref).norm() / w_scale;
       const double err_q = attitude_distance(attitude(x), quat(p.y + 3));
@@ -124,7 +124,7 @@ TEST_CASE("exact free body: omega and the attitude at 10 to 1000 periods match t
                 << ")");
     CHECK(std::abs(exact.period() / c.period - 1.0) <= 64 * kEps * conditioning);
     for (const LongPoint& p : c.points) {
-      const FreeBodyState x = exact.state(p.t);
+      const RotationState x = exact.state(p.t);
       const double budget = 64 * kEps * (1.0 + w_scale * p.t) * conditioning;
       const double err_w =
           (omega_body(x) - Eigen::Vector3d(p.y[0], p.y[1], p.y[2])).norm() / w_scale;
@@ -217,7 +217,7 @@ TEST_CASE("exact free body: the phase loses eps per quarter period, and huge t s
   for (double t : {1e25, 1e300, -1e300}) {
     INFO("t = " << t);
     CHECK(exact.phase_precision(t) > 1.0);
-    const FreeBodyState x = exact.state(t);
+    const RotationState x = exact.state(t);
     for (double v : x) CHECK(std::isfinite(v));
     // meaningless but bounded by the amplitudes (measured |w| = 1.78 and 1.65 here)
     CHECK(exact.omega_body(t).norm() < 2 * w0.norm());
@@ -270,7 +270,7 @@ TEST_CASE("exact free body: L_space is constant along the exact attitude") {
   const PrincipalMoments I{kPi, 2 * kPi, 13 * kPi / 5};
   const FreeBodyExact exact(I, {1, 1, 1}, axis_angle(Eigen::Vector3d(1, 0, 0), 0.2));
   for (double t = 0; t < 50; t += 1.7) {
-    const FreeBodyState x = exact.state(t);
+    const RotationState x = exact.state(t);
     CHECK((L_space(I, x) - exact.L_space()).norm() <
           2e-14 * (1 + t) * exact.angular_momentum_magnitude());
     CHECK(std::abs(attitude(x).norm() - 1.0) < 4 * kEps);
@@ -334,7 +334,7 @@ TEST_CASE("exact free body: separatrix started next to the saddle stays finite a
   const FreeBodyExact exact({3, 3.75, 5}, w0);
   REQUIRE(exact.regime() == FreeMotionRegime::kSeparatrix);
   for (double t : {0.0, 10.0, 40.0}) {
-    const FreeBodyState x = exact.state(t);
+    const RotationState x = exact.state(t);
     for (double v : x) CHECK(std::isfinite(v));
     // omega1 and omega3 decay as sech(lambda t + u0) while omega2 tends to 1
     CHECK(std::abs(x[1] - 1.0) < 1e-15);

@@ -39,7 +39,7 @@ TEST_CASE("free body: Euler's equations (eq. 73) and quaternion kinematics") {
   const PrincipalMoments I{1.0, 2.0, 3.0};
   const Eigen::Vector3d w(0.3, -0.7, 1.1), N(0.5, -0.25, 0.125);
   const Eigen::Quaterniond q = axis_angle(Eigen::Vector3d(1, 2, 3).normalized(), 0.4);
-  FreeBodyState dxdt{};
+  RotationState dxdt{};
   EulerRhs{I, N}(make_state(w, q), dxdt, 0.0);
   // I w_dot + w x (I w) = N, the vector form of eq. 73
   const Eigen::Vector3d Iw = L_body(I, w);

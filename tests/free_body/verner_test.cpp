@@ -206,7 +206,7 @@ const PrincipalMoments kHlw{2.0, 1.0, 2.0 / 3.0};
 const Eigen::Vector3d kOmega0 =
     Eigen::Vector3d(std::cos(1.1), 0.0, std::sin(1.1)).cwiseQuotient(kHlw.vector());
 
-double state_error(const FreeBodyState& x, const FreeBodyState& exact) {
+double state_error(const RotationState& x, const RotationState& exact) {
   double worst = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::abs(x[i] - exact[i]));
   return worst;
@@ -218,8 +218,8 @@ double fixed_step_error(int n) {
   const FreeBodyExact exact(kHlw, kOmega0, Eigen::Quaterniond::Identity(),
                             MomentsRule::kPositiveOnly);
   const double t_end = 10.0, h = t_end / n;
-  VernerStepper<T, FreeBodyState> stepper;
-  FreeBodyState x = exact.state(0.0);
+  VernerStepper<T, RotationState> stepper;
+  RotationState x = exact.state(0.0);
   const EulerRhs rhs{kHlw};
   for (int k = 0; k < n; ++k) stepper.do_step(rhs, x, k * h, h);
   return state_error(x, exact.state(t_end));
@@ -231,12 +231,12 @@ double interpolant_error(double h) {
   const FreeBodyExact exact(kHlw, kOmega0, Eigen::Quaterniond::Identity(),
                             MomentsRule::kPositiveOnly);
   // a tolerance that accepts the step as given: one step of length h, then the interpolant
-  VernerDenseOutput<T, FreeBodyState> dense(0.5, 0.5);
+  VernerDenseOutput<T, RotationState> dense(0.5, 0.5);
   dense.initialize(exact.state(0.0), 0.0, h);
   dense.do_step(EulerRhs{kHlw});
   REQUIRE(dense.previous_time() == 0.0);
   REQUIRE(dense.current_time() == h);
-  FreeBodyState x;
+  RotationState x;
   dense.calc_state(0.5 * h, x);
   return state_error(x, exact.state(0.5 * h));
 }
@@ -314,11 +314,11 @@ TEST_CASE("verner: the PI controller holds the error with fewer rejections than 
                             MomentsRule::kPositiveOnly);
   const std::vector<double> times = {0.0, 100.0};
   for (const double tol : {1e-6, 1e-10}) {
-    VernerDenseOutput<verner::Vern7, FreeBodyState> pi(tol, tol);
-    VernerDenseOutput<verner::Vern7, FreeBodyState, odeint::default_step_adjuster<double, double>>
+    VernerDenseOutput<verner::Vern7, RotationState> pi(tol, tol);
+    VernerDenseOutput<verner::Vern7, RotationState, odeint::default_step_adjuster<double, double>>
         elementary(tol, tol, odeint::default_step_adjuster<double, double>());
-    FreeBodyState x1 = exact.state(0.0), x2 = x1;
-    const auto none = [](const FreeBodyState&, double) {};
+    RotationState x1 = exact.state(0.0), x2 = x1;
+    const auto none = [](const RotationState&, double) {};
     const std::size_t s1 = odeint::integrate_times(std::ref(pi), EulerRhs{kHlw}, x1, times.begin(),
                                                    times.end(), 0.01, none);
     const std::size_t s2 = odeint::integrate_times(std::ref(elementary), EulerRhs{kHlw}, x2,
@@ -347,17 +347,17 @@ TEST_CASE(
     double worst = 0.0, worst_hooked = 0.0;
     std::size_t seen = 0;
     const OdeStats dense = integrate_sampled(
-        EulerRhs{kHlw}, exact.state(0.0), times, o, [&](const FreeBodyState& x, double t) {
+        EulerRhs{kHlw}, exact.state(0.0), times, o, [&](const RotationState& x, double t) {
           CHECK(t == times[seen++]);
           worst = std::max(worst, state_error(x, exact.state(t)));
         });
-    const auto normalize = [](FreeBodyState& x) {
+    const auto normalize = [](RotationState& x) {
       const double n = std::sqrt(x[3] * x[3] + x[4] * x[4] + x[5] * x[5] + x[6] * x[6]);
       for (int i = 3; i < 7; ++i) x[i] /= n;
     };
     const OdeStats hooked = integrate_sampled(
         EulerRhs{kHlw}, exact.state(0.0), times, o,
-        [&](const FreeBodyState& x, double t) {
+        [&](const RotationState& x, double t) {
           worst_hooked = std::max(worst_hooked, state_error(x, exact.state(t)));
         },
         normalize);
@@ -390,7 +390,7 @@ TEST_CASE("verner: between steps the interpolant is as accurate as the steps, no
     o.abs_tol = o.rel_tol = 1e-12;
     double worst = 0.0;
     integrate_sampled(EulerRhs{I}, exact.state(0.0), times, o,
-                      [&](const FreeBodyState& x, double t) {
+                      [&](const RotationState& x, double t) {
                         worst = std::max(worst, (omega_body(x) - exact.omega_body(t)).norm());
                       });
     INFO(method_name(m) << ": worst sample error " << worst);

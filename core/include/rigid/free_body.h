@@ -9,11 +9,12 @@
 //    q_dot = 1/2 q (x) (0, omega_body).
 //  - Euler's equations with a body-frame torque N (eq. 73):
 //      I1 w1_dot = N1 - w2 w3 (I3 - I2), and cyclically.
-//  - The fixed-size state is (w1, w2, w3, qw, qx, qy, qz), SI units.
+//  - The fixed-size state is rotation.h's RotationState (w1, w2, w3, qw, qx, qy, qz), SI units.
 #pragma once
 
 #include <Eigen/Geometry>
-#include <array>
+
+#include "rigid/rotation.h"
 
 namespace rigid {
 
@@ -41,28 +42,13 @@ enum class MomentsRule {
 /// order, to a relative tolerance of a few ulps so a lamina with I3 = I1 + I2 passes.
 void validate(const PrincipalMoments& I, MomentsRule rule = MomentsRule::kPhysical);
 
-/// The state (w1, w2, w3, qw, qx, qy, qz): omega_body in rad/s, then the
-/// body-to-space quaternion. Fixed size, as the odeint steppers want.
-using FreeBodyState = std::array<double, 7>;
-
-/// Packs omega_body and the attitude into a state.
-FreeBodyState make_state(const Eigen::Vector3d& omega_body, const Eigen::Quaterniond& q);
-/// The angular velocity in body axes, rad/s.
-inline Eigen::Vector3d omega_body(const FreeBodyState& x) {
-  return {x[0], x[1], x[2]};
-}
-/// The attitude quaternion (body to space), as stored (not renormalised).
-inline Eigen::Quaterniond attitude(const FreeBodyState& x) {
-  return Eigen::Quaterniond(x[3], x[4], x[5], x[6]);
-}
-
 /// Right-hand side of Euler's equations (eq. 73) with a constant body-frame
 /// torque, and the quaternion kinematics; an odeint system functor.
 struct EulerRhs {
   PrincipalMoments I;
   Eigen::Vector3d torque_body = Eigen::Vector3d::Zero();
 
-  void operator()(const FreeBodyState& x, FreeBodyState& dxdt, double /*t*/) const {
+  void operator()(const RotationState& x, RotationState& dxdt, double /*t*/) const {
     const double w1 = x[0], w2 = x[1], w3 = x[2];
     // eq. 73 solved for omega_dot
     dxdt[0] = (torque_body.x() - w2 * w3 * (I.I3 - I.I2)) / I.I1;
@@ -80,7 +66,7 @@ struct EulerRhs {
 /// Body-frame angular momentum L_body = (I1 w1, I2 w2, I3 w3), kg m^2/s.
 Eigen::Vector3d L_body(const PrincipalMoments& I, const Eigen::Vector3d& omega_body);
 /// Space-frame angular momentum L_space = q * L_body (q is normalised first).
-Eigen::Vector3d L_space(const PrincipalMoments& I, const FreeBodyState& x);
+Eigen::Vector3d L_space(const PrincipalMoments& I, const RotationState& x);
 /// Rotational kinetic energy 1/2 (I1 w1^2 + I2 w2^2 + I3 w3^2) (eq. 81), J.
 double kinetic_energy(const PrincipalMoments& I, const Eigen::Vector3d& omega_body);
 /// |L| = sqrt(I1^2 w1^2 + I2^2 w2^2 + I3^2 w3^2) (eq. 79), kg m^2/s.

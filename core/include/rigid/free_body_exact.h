@@ -78,7 +78,7 @@ class FreeBodyExact {
   /// Unit body-to-space quaternion at time t.
   Eigen::Quaterniond attitude(double t) const;
   /// omega_body and attitude at time t, sharing the elliptic-function evaluation.
-  FreeBodyState state(double t) const;
+  RotationState state(double t) const;
 
   /// Polhode period 4K/lambda, s: omega_body(t + T) = omega_body(t); the
   /// component along the polhode's axis repeats after T/2. +inf on the

@@ -4,8 +4,8 @@
 // is an ordinary point. Euler's equations about the pivot with the moments
 // (I, I, Is) and the gravity torque N_body = -mgl e3 x (R^T z).
 //
-//  - rk4, dopri5, rkf78, bulirsch-stoer: Boost.Odeint through ode.h's one
-//    integration layer on the fixed-size FreeBodyState (w, q).
+//  - rk4, dopri5, rkf78, bulirsch-stoer, vern*: through ode.h's one integration
+//    layer on the fixed-size RotationState (w, q), as a problem of compare.h.
 //  - splitting, splitting4: the exact flow of the free symmetric top composed
 //    with gravity kicks (Strang, and Suzuki's fourth-order composition). Each
 //    piece is a rotation of L or of the attitude, and a kick changes L by a
@@ -16,21 +16,20 @@
 #include <cstddef>
 #include <vector>
 
-#include "rigid/drift.h"
-#include "rigid/free_body.h"
+#include "rigid/compare.h"
 #include "rigid/heavy_top.h"
-#include "rigid/ode.h"
+#include "rigid/rotation.h"
 
 namespace rigid {
 
 /// Right-hand side of the heavy top: Euler's equations with the gravity torque
-/// and the quaternion kinematics; an odeint system functor on FreeBodyState.
+/// and the quaternion kinematics; an odeint system functor on RotationState.
 /// The coefficients are formed once, so an evaluation costs one division.
 class HeavyTopRhs {
  public:
   explicit HeavyTopRhs(const HeavyTop& top)
       : mgl_over_I_(top.mgl / top.I), spin_coupling_((top.Is - top.I) / top.I) {}
-  void operator()(const FreeBodyState& x, FreeBodyState& dxdt, double /*t*/) const {
+  void operator()(const RotationState& x, RotationState& dxdt, double /*t*/) const {
     const double w1 = x[0], w2 = x[1], w3 = x[2];
     const double qw = x[3], qx = x[4], qy = x[5], qz = x[6];
     // R^T z for the (not renormalised) quaternion: z in body axes, times 1/|q|^2.
@@ -52,67 +51,53 @@ class HeavyTopRhs {
 };
 
 /// The state (omega_body, attitude) of Euler angles and rates.
-FreeBodyState heavy_top_state(const TopAngles& angles);
+RotationState heavy_top_state(const TopAngles& angles);
 
 /// theta, the tilt of the symmetry axis from z, of an attitude (exact at theta = 0).
 double tilt_of(const Eigen::Quaterniond& q);
 
-/// One sample of an integrated run.
-struct TopSample {
-  double t = 0.0;
-  double theta = 0.0;         ///< rad
-  double energy_error = 0.0;  ///< |E - E0| / (T0 + mgl)
-  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
-  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  ///< unit
-  /// Signed errors of the three invariants: (E - E0) / (T0 + mgl), (p_phi - p_phi0) / |L0|,
-  /// (p_psi - p_psi0) / |L0|.
-  Eigen::Vector3d invariant_errors = Eigen::Vector3d::Zero();
+/// The heavy top as a problem for compare.h.
+class HeavyTopProblem {
+ public:
+  using State = RotationState;
+  using Exact = HeavyTopExact;
+  /// The invariants, in the order of a run's errors: (E - E0) / (T0 + mgl),
+  /// (p_phi - p_phi0) / |L0| and (p_psi - p_psi0) / |L0|.
+  enum Invariant : std::size_t { kEnergy, kPPhi, kPPsi };
+  static constexpr std::size_t kInvariantCount = 3;
+  using Sample = RunSample<State, kInvariantCount>;
+
+  /// The top's moments and gravity.
+  explicit HeavyTopProblem(const HeavyTop& top) : top_(top) {}
+  /// The top.
+  const HeavyTop& top() const { return top_; }
+
+  /// Throws std::invalid_argument for a bad top, or a start that is not finite or
+  /// has a zero quaternion.
+  void validate(const State& x0) const;
+  /// Euler's equations with the gravity torque, and the quaternion kinematics.
+  HeavyTopRhs rhs() const { return HeavyTopRhs(top_); }
+  /// The signed errors of E, p_phi and p_psi against those of x0 (defined in the .cpp).
+  class Invariants;
+  Invariants invariants(const State& x0) const;
+  /// The state as a sample keeps it: the quaternion normalised.
+  State sampled(const State& x) const;
+  /// The free symmetric top's exact flow and gravity kicks, order 2 or 4 (defined in the .cpp).
+  class Splitting;
+  Splitting splitting(int order, const State& x0) const;
+
+  /// The exact motion's state at t.
+  State exact_state(const Exact& exact, double t) const;
+  /// Each sample's |theta - theta_exact| (rad) and |E - E0| / (T0 + mgl).
+  ExactErrors errors_against(const Exact& exact, const std::vector<Sample>& samples) const;
+
+ private:
+  HeavyTop top_;
 };
 
-/// The samples of one run and the drift of its invariants.
-struct TopRun {
-  Method method = Method::kDopri5;
-  std::vector<TopSample> samples;
-  double energy_drift_rel = 0.0;  ///< max |E - E0| / (T0 + mgl)
-  double p_phi_drift_rel = 0.0;   ///< max |p_phi - p_phi0| / |L0|
-  double p_psi_drift_rel = 0.0;   ///< max |p_psi - p_psi0| / |L0|
-  std::size_t steps = 0;
-  std::size_t evaluations = 0;  ///< right-hand-side evaluations (ode.h's evaluations_per_step)
-};
+/// A run of the heavy top.
+using HeavyTopRun = Run<HeavyTopProblem>;
 
-/// Integrates from x0 at times.front(), sampling at `times`. Throws like
-/// integrate_sampled (ode.h) for bad options, and std::invalid_argument for a bad top.
-TopRun integrate_heavy_top(const HeavyTop& top, const FreeBodyState& x0,
-                           const std::vector<double>& times, const OdeOptions& options);
-
-/// The exact motion sampled at `times` as a run of its own (no steps), its
-/// invariants measured as an integrator's are: roundoff only.
-TopRun sample_exact(const HeavyTopExact& exact, const std::vector<double>& times);
-
-/// One method's run measured against the exact motion, sample by sample.
-struct TopComparison {
-  OdeOptions options;                ///< the method and the settings it ran with
-  bool completed = false;            ///< false: it would have needed more than max_steps
-  std::vector<double> t;             ///< its sample times (a fixed step's on its own grid)
-  std::vector<double> theta_error;   ///< |theta - theta_exact|, rad
-  std::vector<double> energy_error;  ///< |E - E0| / (T0 + mgl)
-  double max_theta_error = 0.0;      ///< rad; infinite if the run blew up
-  std::size_t evaluations = 0;       ///< right-hand-side evaluations of the run
-  InvariantError energy;             ///< E's largest error and drift per period
-};
-
-/// Every method of kAllMethods at `options` with at most `max_steps` steps against the
-/// exact motion from 0 to times.back(): adaptive methods at `times`, fixed-step ones on
-/// their step grid, `period` / 200 apart (sample_times), as each would run alone.
-std::vector<TopComparison> compare_top_methods(const HeavyTopExact& exact,
-                                               const std::vector<double>& times, double period,
-                                               const OdeOptions& options, std::size_t max_steps);
-
-/// Every method at the same cost (compare_methods_at_cost in integrate.h, for the top):
-/// `evaluations_per_period` evaluations a period over `periods` nutation periods.
-std::vector<TopComparison> compare_top_methods_at_cost(const HeavyTopExact& exact, double period,
-                                                       double periods,
-                                                       double evaluations_per_period,
-                                                       double samples_per_period = 8.0);
+extern template struct detail::ProblemCode<HeavyTopProblem>;
 
 }  // namespace rigid

@@ -13,9 +13,10 @@
 //    9(8) (verner.h) under a PI step-size controller, with Verner's
 //    interpolants between steps (dense output); with an after-step hook they
 //    run as odeint controlled steppers instead, which land on every sample.
-//  - "splitting", "splitting4": the free body's Lie-Poisson splittings
-//    (splitting.h); named here so one Method lists every integrator, they run
-//    through integrate_on_grid from integrate.cpp.
+//  - "splitting", "splitting4": a problem's own structure-preserving splitting,
+//    order 2 and 4 (the free body's Lie-Poisson splitting, the heavy top's
+//    kicks and free flows); named here so one Method lists every integrator,
+//    they step through integrate_on_grid with the problem's stepper (compare.h).
 //
 // Samples land exactly on the requested times. The error-controlled methods go
 // through odeint's integrate_times (dense output interpolates, the controlled
@@ -55,79 +56,12 @@
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 
+#include "rigid/ode_options.h"
 #include "rigid/verner.h"
 // odeint's Eigen support must follow its own headers (it specialises their templates).
 #include <boost/numeric/odeint/external/eigen/eigen.hpp>
 
 namespace rigid {
-
-/// The integrators, by their command-line names.
-enum class Method {
-  kSplitting,
-  kSplitting4,
-  kRk4,
-  kDopri5,
-  kRkf78,
-  kBulirschStoer,
-  kVern6,
-  kVern7,
-  kVern8,
-  kVern9
-};
-
-/// Every method, in the order of `method_name`.
-inline constexpr std::array<Method, 10> kAllMethods = {
-    Method::kSplitting,     Method::kSplitting4, Method::kRk4,   Method::kDopri5, Method::kRkf78,
-    Method::kBulirschStoer, Method::kVern6,      Method::kVern7, Method::kVern8,  Method::kVern9};
-
-/// The command-line name: "splitting", "splitting4", "rk4", "dopri5", "rkf78", "bulirsch-stoer",
-/// "vern6", "vern7", "vern8", "vern9".
-std::string_view method_name(Method m);
-/// The method of a name; throws std::invalid_argument listing the valid names.
-Method method_from_name(std::string_view name);
-/// True for the error-controlled methods (dopri5, rkf78, bulirsch-stoer, vern6..vern9),
-/// which take tolerances; the others take a fixed step.
-bool is_adaptive(Method m);
-/// True for the methods that apply an after-step hook (rk4, rkf78, vern6..vern9); dopri5
-/// and bulirsch-stoer interpolate between steps, where a hook would not act.
-bool takes_after_step(Method m);
-/// The order of accuracy of a fixed-step method (2, 4, 4); 0 for the adaptive ones.
-int fixed_step_order(Method m);
-/// What kind of method it is and its order, in words for --help and the table:
-/// "symplectic splitting, order 2", "adaptive Runge-Kutta, order 5(4)", ...
-std::string_view method_kind(Method m);
-/// Right-hand-side evaluations a fixed-step method makes a step (rk4: 4). A
-/// splitting has no right-hand side: one Strang step, which costs about what one
-/// evaluation does (five rotations, or a kick and a free flow), counts as one, so
-/// the fourth-order splitting (five Strang steps) counts five. 0 for the adaptive
-/// methods, whose evaluations are counted as they happen.
-int evaluations_per_step(Method m);
-
-/// How to integrate, for any system. Set only what differs from the defaults.
-struct OdeOptions {
-  Method method = Method::kDopri5;
-  double abs_tol = 1e-10;  ///< adaptive methods: absolute tolerance on each state component
-  double rel_tol = 1e-10;  ///< adaptive methods: relative tolerance
-  double step = 1e-2;      ///< fixed-step methods: the step, s
-  std::size_t max_steps = 50'000'000;  ///< accepted steps; a run needing more throws
-  /// Wall-clock budget of a run in seconds, checked every 256 steps; a run past it
-  /// throws std::runtime_error (0: none). A step count alone does not bound the
-  /// work: a Bulirsch-Stoer step may cost hundreds of right-hand sides.
-  double max_seconds = 0.0;
-};
-
-/// What a run cost.
-struct OdeStats {
-  std::size_t steps = 0;           ///< accepted steps (shortened ones included)
-  std::size_t rejected_steps = 0;  ///< steps rejected by the error control (rkf78, vern*)
-  std::size_t evaluations = 0;     ///< right-hand-side evaluations (see evaluations_per_step)
-};
-
-/// Throws std::invalid_argument unless `times` is nonempty, finite and
-/// nondecreasing, the options suit their method (tolerances in [0, 1) and not
-/// both 0; a positive finite step) and, with `after_step`, the method takes a hook.
-void validate_run(const OdeOptions& options, const std::vector<double>& times,
-                  bool after_step = false);
 
 /// The after-step hook that does nothing.
 struct NoAfterStep {
@@ -518,8 +452,8 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
       break;
   }
   throw std::invalid_argument(std::string(method_name(options.method)) +
-                              " splits the free body's energy and needs no right-hand side: "
-                              "use integrate_free_body");
+                              " steps a problem's own splitting, not a right-hand side: "
+                              "integrate the problem (compare.h)");
 }
 
 }  // namespace rigid

@@ -6,9 +6,13 @@
 // space-to-body matrix is lambda = lambda_psi lambda_theta lambda_phi (eq. 122),
 // so the body-to-space quaternion is q = Rz(phi) Rx(theta) Rz(psi).
 // Euler angles are for output only; attitude is always carried as a quaternion.
+//
+// The state of a turning body, RotationState, is what every integrated body
+// (the free body, the heavy top) carries: omega in body axes and the attitude.
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 
 namespace rigid {
 
@@ -32,5 +36,23 @@ Eigen::Quaterniond axis_angle(const Eigen::Vector3d& axis, double angle);
 
 /// The angle between two attitudes, rad in [0, pi]; q and -q are the same attitude.
 double attitude_distance(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
+
+/// The state of a turning rigid body (w1, w2, w3, qw, qx, qy, qz): omega_body in
+/// rad/s, then the body-to-space quaternion. Fixed size, as the odeint steppers want.
+using RotationState = std::array<double, 7>;
+
+/// Packs omega_body and the attitude into a state.
+RotationState make_state(const Eigen::Vector3d& omega_body, const Eigen::Quaterniond& q);
+/// The angular velocity in body axes, rad/s.
+inline Eigen::Vector3d omega_body(const RotationState& x) {
+  return {x[0], x[1], x[2]};
+}
+/// The attitude quaternion (body to space), as stored (not renormalised).
+inline Eigen::Quaterniond attitude(const RotationState& x) {
+  return Eigen::Quaterniond(x[3], x[4], x[5], x[6]);
+}
+/// Throws std::invalid_argument unless every component of a starting state is
+/// finite and its quaternion is nonzero.
+void validate_start(const RotationState& x0);
 
 }  // namespace rigid

@@ -52,7 +52,7 @@ void validate_symmetric(double I, double Is);
 /// nanoradians keep full precision.
 SymmetricPrecession free_symmetric_precession(double I, double Is, double omega, double alpha);
 
-/// A cross-check of the closed form by integration (integrate.h, dopri5).
+/// A cross-check of the closed form by integration (free_body_integrate.h, dopri5).
 struct PrecessionCheck {
   double space_rate =
       0.0;  ///< phi_dot measured: the turn of 3 about L over a quarter period, rad/s

@@ -1,20 +1,16 @@
-#include "common/free_body_run.h"
+#include "common/integrated_run.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
-#include <utility>
 
 #include "rigid/units.h"
 
 namespace rigid::lab {
 
 namespace {
-// The wall-clock budget of a lab's own run; the comparisons are capped in steps.
-constexpr double kMaxRunSeconds = 4.0;
 // A run whose invariants drift by more than this share of themselves is refused.
 constexpr double kMaxDrift = 1.0;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -58,8 +54,8 @@ bool fixed_step(const IntegrationInputs& in) {
   return in.method != "exact" && !is_adaptive(method_from_name(in.method));
 }
 
-IntegrateOptions integration_options(Report& report, const IntegrationInputs& in, bool compared,
-                                     double default_step, std::size_t max_steps) {
+OdeOptions integration_options(Report& report, const IntegrationInputs& in, bool compared,
+                               double default_step) {
   // Below double precision no step meets a tolerance, and odeint's step control
   // then collapses (tolerances under 1e-150 crashed it).
   if (in.tolerance < 1e-16) {
@@ -67,10 +63,10 @@ IntegrateOptions integration_options(Report& report, const IntegrationInputs& in
                                                 "reach (got {:g})",
                                                 in.tolerance));
   }
-  IntegrateOptions options;
+  OdeOptions options;
   options.abs_tol = options.rel_tol = in.tolerance;
   options.step = in.step.value_or(default_step);
-  options.max_steps = max_steps;
+  options.max_steps = kMaxRunSteps;
   // Every lab finishes or refuses within seconds, whatever the step count.
   options.max_seconds = kMaxRunSeconds;
   options.method = in.method == "exact" ? Method::kDopri5 : method_from_name(in.method);
@@ -100,104 +96,30 @@ IntegrateOptions integration_options(Report& report, const IntegrationInputs& in
   return options;
 }
 
-IntegrationResult run_free_body(Report& report, const FreeBodyExact& exact,
-                                const IntegrationInputs& in, const IntegrateOptions& options,
-                                const std::vector<double>& times) {
-  if (in.method == "exact") return sample_exact(exact, times);
+std::string run_option(const IntegrationInputs& in, const OdeOptions& options) {
   if (in.project && !can_project(options.method)) {
     throw InputError("--project", "works with --method " + projecting_methods() + " only");
   }
-  const char* option = fixed_step(in) ? "--step" : "--tolerance";
-  IntegrationResult run;
-  try {
-    run = integrate_free_body(exact.moments(), exact.state(0.0), times, options);
-  } catch (const std::exception& e) {
-    throw InputError(option, e.what());
-  }
-  const std::vector<double> errors = omega_errors(run, exact);
-  // A step beyond the method's stability region blows omega up.
-  if (!std::all_of(errors.begin(), errors.end(), [](double e) { return std::isfinite(e); })) {
-    throw InputError(option, "the integration diverged (omega overflowed); shorten the step");
-  }
-  // A run whose energy or |L| moved by more than itself has no digit left to print.
-  refuse_runaway(option, std::max(run.energy_drift_rel, run.momentum_drift_rel));
-  report.result("max_error_vs_exact", "max |omega - omega_exact| / |omega0|",
-                *std::max_element(errors.begin(), errors.end()), "");
-  report.count("steps", "steps taken", run.steps);
-  return run;
+  return fixed_step(in) ? "--step" : "--tolerance";
 }
 
-namespace {
-
-// A steady spin in words: about which axis, and whether a nudge grows.
-std::pair<std::string, std::string> steady_in_words(const FreeBodyExact& motion) {
-  const Eigen::Vector3d w = motion.omega_body(0.0), I = motion.moments().vector();
-  if (w.isZero(0.0)) return {"at rest", "neutral"};
-  if (I.minCoeff() == I.maxCoeff())
-    return {"steady rotation of a spherical body: every axis is steady", "neutral"};
-  Eigen::Index axis = 0;
-  w.cwiseAbs().maxCoeff(&axis);
-  const bool on_axis = (w.cwiseAbs().array() > 0.0).count() == 1;
-  if (!on_axis) {
-    // omega in the plane of two equal moments: every axis of that plane is principal
-    return {"steady rotation about an axis of the plane of two equal moments", "neutral"};
+void report_run(Report& report, const std::string& option, const std::vector<double>& errors,
+                const std::vector<double>& max_invariant_errors, std::size_t steps,
+                const ExactErrorWords& words) {
+  double worst = 0.0;
+  for (const double e : errors) {
+    // A step beyond the method's stability region blows the motion up.
+    if (!std::isfinite(e)) throw InputError(option, words.diverged);
+    worst = std::max(worst, e);
   }
-  const double Ii = I(axis);
-  const int below = (I.array() < Ii).count(), above = (I.array() > Ii).count();
-  const std::string name = fmt::format("axis {}", axis + 1);
-  if (below > 0 && above > 0) {
-    return {"steady rotation about the intermediate " + name +
-                ": unstable, the least nudge grows and flips it (the tennis racquet theorem)",
-            "unstable"};
+  // A run whose conserved quantities moved by more than themselves has no digit left to print.
+  double drift = max_invariant_errors.at(0);
+  for (std::size_t k = 1; k < words.runaway_invariants; ++k) {
+    drift = std::max(drift, max_invariant_errors.at(k));
   }
-  if (below + above < 2) {
-    return {"steady rotation about " + name + ", one of two equal moments: neutral", "neutral"};
-  }
-  return {"steady rotation about the " + std::string(above == 0 ? "largest " : "smallest ") + name +
-              ": stable, a nudge only wobbles it",
-          "stable"};
-}
-
-}  // namespace
-
-void report_motion(Report& report, const FreeBodyExact& motion) {
-  const FreeMotionRegime regime = motion.regime();
-  report.result_text("regime", "motion", to_string(regime));
-  std::string words, stability;
-  if (regime == FreeMotionRegime::kSteady) {
-    std::tie(words, stability) = steady_in_words(motion);
-    report.result_none("complementary_parameter", "  k'^2", "", "a steady spin has no polhode");
-  } else if (regime == FreeMotionRegime::kSeparatrix) {
-    words =
-        "on the separatrix: unstable, omega leaves the intermediate axis and only "
-        "approaches it again, never returning";
-    stability = "unstable";
-    report.result("complementary_parameter", "  k'^2 (0: on the separatrix)", 0.0, "");
-  } else {
-    const double kp2 = motion.complementary_parameter();
-    // k'^2 measures the distance to the separatrix; below 0.01 the period grows as
-    // ln(4/k') and omega lingers by the intermediate axis between flips: the orbit of
-    // a spin about that axis, nudged, whose fate a further nudge may change.
-    if (kp2 < 0.01) {
-      stability = "unstable";
-      words = fmt::format(
-          "near the separatrix (k'^2 = {:.2g}): unstable, omega lingers by the "
-          "intermediate axis and the body flips over every {:.4g} s ({})",
-          kp2, 0.5 * motion.period(), to_string(regime));
-    } else {
-      stability = "stable";
-      words = to_string(regime) + ": stable, omega circles that axis";
-    }
-    report.result("complementary_parameter", "  k'^2 (1: far from the separatrix, 0: on it)", kp2,
-                  "");
-  }
-  report.result_text("motion", "  in words", words);
-  report.result_text("motion_stability", "  stability", stability);
-}
-
-double time_scale(const FreeBodyExact& motion) {
-  return std::isfinite(motion.period()) ? motion.period()
-                                        : 2.0 * kPi / motion.omega_body(0.0).norm();
+  refuse_runaway(option, drift);
+  report.result(words.key, words.label, words.in_unit ? words.in_unit(worst) : worst, words.unit);
+  report.count("steps", "steps taken", steps);
 }
 
 void check_phase_digits(double t_end, double scale) {
@@ -209,10 +131,10 @@ void check_phase_digits(double t_end, double scale) {
 }
 
 RunPlan plan_run(Report& report, const IntegrationInputs& in, bool compared, double t_end,
-                 double scale, std::size_t max_steps) {
+                 double scale) {
   check_phase_digits(t_end, scale);
   RunPlan plan;
-  plan.options = integration_options(report, in, compared, scale / 2000.0, max_steps);
+  plan.options = integration_options(report, in, compared, scale / 2000.0);
   plan.fixed = fixed_step(in);
   // A step asked for that is longer than the whole run would be silently cut to it.
   if (plan.fixed && in.step && plan.options.step > t_end) {
@@ -259,19 +181,42 @@ void report_invariant(Report& report, const std::string& key, const std::string&
   report.alias(key + "_drift_rel", key + "_error_max_rel");  // the maximum's old name
 }
 
-void report_drifts(Report& report, const IntegrationResult& run, double period, bool exact) {
+void report_drifts(Report& report, const std::vector<double>& t,
+                   const std::vector<std::vector<double>>& invariant_errors,
+                   const std::vector<double>& max_invariant_errors, double period, bool exact,
+                   const ExactErrorWords& words) {
   // Relative to the start; roundoff for the exact motion.
-  std::vector<double> t, dT, dL;
-  for (const FreeBodySample& s : run.samples) {
-    t.push_back(s.t);
-    dT.push_back(s.energy_error);
-    dL.push_back(s.momentum_error);
-  }
   const double roundoff = exact ? kClosedFormRoundoff : 0.0;
-  report_invariant(report, "energy", "max |T - T0| / T0", t, dT, period, roundoff);
-  report_invariant(report, "momentum", "max ||L| - |L0|| / |L0|", t, dL, period, roundoff);
-  report.result_roundoff("L_space_drift_rel", "max |L_space - L_space0| / |L0|",
-                         run.L_space_drift_rel, roundoff, "");
+  for (const InvariantWords& w : words.invariants) {
+    if (w.fitted) {
+      report_invariant(report, w.key, w.label, t, invariant_errors.at(w.index), period, roundoff);
+    } else {
+      report.result_roundoff(w.key, w.label, max_invariant_errors.at(w.index), roundoff, "");
+    }
+  }
+}
+
+void report_comparisons(Report& report, const MethodComparisons& comparisons,
+                        const OdeOptions& settings, const ExactErrorWords& words) {
+  report.section(fmt::format("every integrator against {} (tolerance {:g}, step {:.4g} s)",
+                             words.against, settings.rel_tol, settings.step));
+  for (const MethodComparison& c : comparisons.at_settings) {
+    const std::string name(method_name(c.options.method));
+    const std::string key = words.method_key_prefix + json_key(name) + words.method_key_suffix;
+    const std::string label = fmt::format("{:<15} {}", name, words.label);
+    if (!c.completed) {
+      report.result_none(key, label, words.unit,
+                         fmt::format("not run: needs more than {} steps", kMaxComparisonSteps));
+    } else if (!std::isfinite(c.max_error)) {
+      report.result_none(key, label, words.unit, "diverged at this step");
+    } else {
+      report.result(key, label, words.in_unit ? words.in_unit(c.max_error) : c.max_error,
+                    words.unit);
+    }
+  }
+  if (!comparisons.at_cost.empty()) {
+    report_equal_cost(report, comparisons.at_cost, kEqualCostEvaluations, kEqualCostPeriods);
+  }
 }
 
 double end_time(const std::optional<double>& t_end, const std::optional<double>& periods,
@@ -281,7 +226,7 @@ double end_time(const std::optional<double>& t_end, const std::optional<double>&
   return default_t_end;
 }
 
-void report_equal_cost(Report& report, const std::vector<EqualCostRow>& rows,
+void report_equal_cost(Report& report, const std::vector<MethodComparison>& at_cost,
                        double evaluations_per_period, double periods) {
   report.section(
       fmt::format("which method drifts: every method at {:g} evaluations a period, "
@@ -290,35 +235,38 @@ void report_equal_cost(Report& report, const std::vector<EqualCostRow>& rows,
   report.result("equal_cost_evaluations_per_period", "evaluations a period (a Strang step: one)",
                 evaluations_per_period, "");
   report.result("equal_cost_periods", "periods run", periods, "");
-  const EqualCostRow* least = nullptr;
-  for (const EqualCostRow& row : rows) {
-    const std::string name(method_name(row.options.method));
+  const InvariantError* least = nullptr;
+  Method least_method = Method::kSplitting;
+  for (const MethodComparison& c : at_cost) {
+    const std::string name(method_name(c.options.method));
     const std::string key = json_key(name);
-    const std::string setting = is_adaptive(row.options.method)
-                                    ? fmt::format("tol {:.2g}", row.options.rel_tol)
-                                    : fmt::format("h = {:.3g} s", row.options.step);
+    const std::string setting = is_adaptive(c.options.method)
+                                    ? fmt::format("tol {:.2g}", c.options.rel_tol)
+                                    : fmt::format("h = {:.3g} s", c.options.step);
     const std::string label = fmt::format("{:<15} {:<15} energy drift a period", name, setting);
-    if (!row.completed) {
+    if (!c.completed || !std::isfinite(c.max_error)) {
       report.result_none("equal_cost_energy_drift_per_period_rel_" + key, label, "",
                          "could not finish at this cost");
       report.result_none("equal_cost_energy_error_max_rel_" + key, "  max |T - T0| / T0", "",
                          "could not finish at this cost");
       continue;
     }
+    const InvariantError& energy = c.invariants.at(kEnergyInvariant);
     report.result("equal_cost_energy_drift_per_period_rel_" + key, label,
-                  row.energy.drift_per_period_rel, "");
+                  energy.drift_per_period_rel, "");
     report.result("equal_cost_energy_error_max_rel_" + key, "  largest energy error",
-                  row.energy.max_rel, "");
+                  energy.max_rel, "");
     if (least == nullptr ||
-        std::abs(row.energy.drift_per_period_rel) < std::abs(least->energy.drift_per_period_rel)) {
-      least = &row;
+        std::abs(energy.drift_per_period_rel) < std::abs(least->drift_per_period_rel)) {
+      least = &energy;
+      least_method = c.options.method;
     }
   }
   if (least != nullptr) {
-    const Method m = least->options.method;
     report.result_text("least_energy_drift", "least energy drift at equal cost",
-                       std::string(method_name(m)));
-    report.result_text("least_energy_drift_kind", "  its kind", std::string(method_kind(m)));
+                       std::string(method_name(least_method)));
+    report.result_text("least_energy_drift_kind", "  its kind",
+                       std::string(method_kind(least_method)));
   }
 }
 

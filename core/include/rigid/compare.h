@@ -1,0 +1,185 @@
+// Integrated bodies as problems: one sampled run and one comparison of every
+// method against an exact solution, for any body. A problem type brings the
+// physics; the stepping (ode.h), the bookkeeping of its invariants and the
+// measuring against its exact motion are written here once:
+//
+//   struct MyBody {
+//     using State = RotationState;                    // fixed-size odeint state
+//     using Exact = MyBodyExact;                      // only for the comparisons
+//     static constexpr std::size_t kInvariantCount = 2;  // invariant 0: the energy
+//     using Sample = RunSample<State, kInvariantCount>;
+//     void validate(const State& x0) const;           // throws std::invalid_argument
+//     Rhs rhs() const;                                // (x, dxdt, t), an odeint functor
+//     Invariants invariants(const State& x0) const;   // (x) -> their signed relative errors
+//     State sampled(const State& x) const;            // the state a sample keeps
+//     Splitting splitting(int order, const State& x0) const;  // optional: its own stepper
+//     Projection projection(const State& x0) const;   // optional: (State&) onto the invariants
+//     State exact_state(const Exact&, double t) const;
+//     ExactErrors errors_against(const Exact&, const std::vector<Sample>&) const;
+//   };
+//
+// A Splitting steps variables of its own (L_body and q, say): `enter(x0)` makes
+// them, `leave(xs)` gives the State back, `do_step(self, xs, t, h)` advances
+// them (odeint's Stepper concept, the splitting its own system). The code that
+// runs a problem is compiled once, in its .cpp, by `template struct
+// detail::ProblemCode<MyBody>;` with compare_impl.h included there: no other
+// translation unit compiles a stepper for it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "rigid/drift.h"
+#include "rigid/ode_options.h"
+
+namespace rigid {
+
+/// Every problem's first invariant: the energy (the comparison at equal cost ranks by it).
+inline constexpr std::size_t kEnergyInvariant = 0;
+
+/// One sample of a run.
+template <class State, std::size_t K>
+struct RunSample {
+  double t = 0.0;
+  State x{};  ///< the state as the problem samples it (its quaternion unit)
+  std::array<double, K> invariant_errors{};  ///< each invariant's signed relative error
+};
+
+/// The samples of one run, the largest error of each invariant and what the run cost.
+template <class State, std::size_t K>
+struct SampledRun {
+  using Sample = RunSample<State, K>;
+  Method method = Method::kDopri5;
+  std::vector<Sample> samples;
+  std::array<double, K> max_invariant_error{};  ///< max over samples of |invariant_errors[k]|
+  std::size_t steps = 0;                        ///< accepted steps (shortened ones included)
+  std::size_t rejected_steps = 0;  ///< steps rejected by the error control (where known)
+  std::size_t evaluations = 0;     ///< right-hand-side evaluations (ode.h's evaluations_per_step)
+
+  /// The sample times.
+  std::vector<double> times() const {
+    std::vector<double> t;
+    t.reserve(samples.size());
+    for (const Sample& s : samples) t.push_back(s.t);
+    return t;
+  }
+  /// Invariant k's signed relative error at every sample.
+  std::vector<double> invariant_errors(std::size_t k) const {
+    std::vector<double> e;
+    e.reserve(samples.size());
+    for (const Sample& s : samples) e.push_back(s.invariant_errors[k]);
+    return e;
+  }
+};
+
+/// The run of a problem.
+template <class Problem>
+using Run = SampledRun<typename Problem::State, Problem::kInvariantCount>;
+
+/// A run's samples measured against the exact motion, as a problem measures them.
+struct ExactErrors {
+  std::vector<double> error;         ///< the problem's error (omega's, theta's), each sample
+  std::vector<double> energy_error;  ///< |the energy's relative error|, each sample
+};
+
+/// One method's run measured against the exact motion, sample by sample.
+struct MethodComparison {
+  OdeOptions options;                ///< the method and the settings it ran with
+  bool completed = false;            ///< false: it would have needed more than its step budget
+  std::vector<double> t;             ///< its sample times (a fixed step's on its own grid)
+  std::vector<double> error;         ///< the problem's error against the exact motion
+  std::vector<double> energy_error;  ///< |the energy's relative error|
+  double max_error = 0.0;            ///< the largest error (infinite if the run blew up)
+  std::size_t evaluations = 0;       ///< right-hand-side evaluations of the run
+  /// Each invariant's largest error and drift per period, by the problem's index (none
+  /// if not completed).
+  std::vector<InvariantError> invariants;
+};
+
+namespace detail {
+
+// The code that runs a problem, defined in compare_impl.h and instantiated once
+// for each problem type, in its .cpp.
+template <class Problem>
+struct ProblemCode {
+  using State = typename Problem::State;
+  static Run<Problem> integrate(const Problem& problem, const State& x0,
+                                const std::vector<double>& times, const OdeOptions& options);
+  static Run<Problem> sample_exact(const Problem& problem, const typename Problem::Exact& exact,
+                                   const std::vector<double>& times);
+  static std::vector<MethodComparison> compare_methods(const Problem& problem,
+                                                       const typename Problem::Exact& exact,
+                                                       const std::vector<double>& times,
+                                                       double period, const OdeOptions& options,
+                                                       std::size_t max_steps);
+  static std::vector<MethodComparison> compare_methods_at_cost(const Problem& problem,
+                                                               const typename Problem::Exact& exact,
+                                                               double period, double periods,
+                                                               double evaluations_per_period,
+                                                               double samples_per_period);
+};
+
+}  // namespace detail
+
+/// Integrates the problem from x0 at t = times.front() by options.method and samples
+/// it at every entry of `times` (finite, nondecreasing): a splitting by the problem's
+/// own stepper, the others through integrate_sampled (ode.h), with the problem's
+/// projection after every step if options.project_invariants. Throws
+/// std::invalid_argument for a bad problem, state, times or options (ode.h's
+/// validate_run; a splitting or a projection the problem has not), and
+/// std::runtime_error when an adaptive run needs more than options.max_steps steps.
+template <class Problem>
+Run<Problem> integrate(const Problem& problem, const typename Problem::State& x0,
+                       const std::vector<double>& times, const OdeOptions& options) {
+  return detail::ProblemCode<Problem>::integrate(problem, x0, times, options);
+}
+
+/// The exact motion sampled at `times` as a run of its own (no steps), its
+/// invariants measured as an integrator's are: roundoff only.
+template <class Problem>
+Run<Problem> sample_exact(const Problem& problem, const typename Problem::Exact& exact,
+                          const std::vector<double>& times) {
+  return detail::ProblemCode<Problem>::sample_exact(problem, exact, times);
+}
+
+/// Every method of kAllMethods at `options` (no projection, at most `max_steps`
+/// steps each) against the exact motion from t = 0 to times.back(): adaptive
+/// methods at `times`, fixed-step ones on their step grid with `period` / 200
+/// spacing as sample_times makes it, so each run is the one a caller choosing that
+/// method alone would get. A method that cannot finish is not completed.
+template <class Problem>
+std::vector<MethodComparison> compare_methods(const Problem& problem,
+                                              const typename Problem::Exact& exact,
+                                              const std::vector<double>& times, double period,
+                                              const OdeOptions& options, std::size_t max_steps) {
+  return detail::ProblemCode<Problem>::compare_methods(problem, exact, times, period, options,
+                                                       max_steps);
+}
+
+/// Every method at the same cost, the question "which method drifts" answered fairly:
+/// `evaluations_per_period` right-hand-side evaluations a period (options_at_cost:
+/// fixed steps from evaluations_per_step, tolerances found by bisection) over
+/// `periods` periods of length `period`, each run sampled `samples_per_period` times a
+/// period (a fixed step's on its grid). A method that cannot finish is not completed.
+template <class Problem>
+std::vector<MethodComparison> compare_methods_at_cost(const Problem& problem,
+                                                      const typename Problem::Exact& exact,
+                                                      double period, double periods,
+                                                      double evaluations_per_period,
+                                                      double samples_per_period = 8.0) {
+  return detail::ProblemCode<Problem>::compare_methods_at_cost(
+      problem, exact, period, periods, evaluations_per_period, samples_per_period);
+}
+
+/// n equally spaced times from t0 to t1 inclusive (n >= 2), or {t0} for n = 1.
+std::vector<double> uniform_times(double t0, double t1, std::size_t n);
+
+/// Sample times from 0 to exactly t_end, `per_period` samples per `period` and at
+/// most `max_samples` in all. With `step` > 0 (a fixed-step method) every sample
+/// but the last falls on the step grid n * step, every k-th step, and the last
+/// is t_end itself: only the run's last step is shortened, when step does not divide t_end.
+std::vector<double> sample_times(double t_end, double period, double step = 0.0,
+                                 double per_period = 200.0, std::size_t max_samples = 20001);
+
+}  // namespace rigid

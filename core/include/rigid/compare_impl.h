@@ -1,0 +1,187 @@
+// The code of compare.h that runs a problem, for the .cpp of a problem type only:
+// it is instantiated there, once, by `template struct detail::ProblemCode<P>;`, so
+// the steppers of ode.h are compiled for a body in one translation unit.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "rigid/compare.h"
+#include "rigid/ode.h"
+
+namespace rigid::detail {
+
+template <class P, class = void>
+inline constexpr bool kHasSplitting = false;
+template <class P>
+inline constexpr bool kHasSplitting<P, std::void_t<decltype(std::declval<const P&>().splitting(
+                                           2, std::declval<const typename P::State&>()))>> = true;
+
+template <class P, class = void>
+inline constexpr bool kHasProjection = false;
+template <class P>
+inline constexpr bool kHasProjection<P, std::void_t<decltype(std::declval<const P&>().projection(
+                                            std::declval<const typename P::State&>()))>> = true;
+
+// The observer of a run: each sample as the problem keeps it, with its invariants'
+// errors, and the largest error of each.
+template <class Problem>
+class Recorder {
+ public:
+  using State = typename Problem::State;
+  Recorder(const Problem& problem, const State& x0, Run<Problem>& out, std::size_t n)
+      : problem_(problem), invariants_(problem.invariants(x0)), out_(out) {
+    out_.samples.reserve(n);
+  }
+  void operator()(const State& x, double t) {
+    const auto errors = invariants_(x);
+    for (std::size_t k = 0; k < errors.size(); ++k) {
+      out_.max_invariant_error[k] = std::max(out_.max_invariant_error[k], std::abs(errors[k]));
+    }
+    out_.samples.push_back({t, problem_.sampled(x), errors});
+  }
+
+ private:
+  const Problem& problem_;
+  decltype(std::declval<const Problem&>().invariants(std::declval<const State&>())) invariants_;
+  Run<Problem>& out_;
+};
+
+template <class Problem>
+Run<Problem> ProblemCode<Problem>::integrate(const Problem& problem, const State& x0,
+                                             const std::vector<double>& times,
+                                             const OdeOptions& o) {
+  problem.validate(x0);
+  // the generic rules here too: a splitting does not pass through integrate_sampled
+  validate_run(o, times, o.project_invariants);
+  Run<Problem> out;
+  out.method = o.method;
+  Recorder<Problem> record(problem, x0, out, times.size());
+  OdeStats stats;
+  if (o.method == Method::kSplitting || o.method == Method::kSplitting4) {
+    if constexpr (kHasSplitting<Problem>) {
+      // the splitting carries its own variables between samples, not the State
+      auto split = problem.splitting(fixed_step_order(o.method), x0);
+      auto xs = split.enter(x0);
+      const auto observe = [&](const decltype(xs)& s, double t) { record(split.leave(s), t); };
+      stats = integrate_on_grid(split, split, xs, times, o, observe);
+      stats.evaluations = stats.steps * static_cast<std::size_t>(evaluations_per_step(o.method));
+    } else {
+      throw std::invalid_argument(std::string(method_name(o.method)) +
+                                  ": this problem has no splitting");
+    }
+  } else if (o.project_invariants) {
+    if constexpr (kHasProjection<Problem>) {
+      stats = integrate_sampled(problem.rhs(), x0, times, o, record, problem.projection(x0));
+    } else {
+      throw std::invalid_argument("this problem has no projection onto its invariants");
+    }
+  } else {
+    stats = integrate_sampled(problem.rhs(), x0, times, o, record);
+  }
+  out.steps = stats.steps;
+  out.rejected_steps = stats.rejected_steps;
+  out.evaluations = stats.evaluations;
+  return out;
+}
+
+template <class Problem>
+Run<Problem> ProblemCode<Problem>::sample_exact(const Problem& problem,
+                                                const typename Problem::Exact& exact,
+                                                const std::vector<double>& times) {
+  Run<Problem> out;
+  if (times.empty()) return out;
+  Recorder<Problem> record(problem, problem.exact_state(exact, times.front()), out, times.size());
+  for (const double t : times) record(problem.exact_state(exact, t), t);
+  return out;
+}
+
+// A completed run measured against the exact motion: its errors sample by sample,
+// its cost, and each invariant's largest error and drift per period.
+template <class Problem>
+void measure(MethodComparison& c, const Problem& problem, const Run<Problem>& run,
+             const typename Problem::Exact& exact, double period) {
+  c.completed = true;
+  c.evaluations = run.evaluations;
+  c.t = run.times();
+  ExactErrors errors = problem.errors_against(exact, run.samples);
+  c.error = std::move(errors.error);
+  c.energy_error = std::move(errors.energy_error);
+  for (const double e : c.error) {
+    // A NaN (a run that blew up) counts as an infinite error.
+    c.max_error =
+        std::isfinite(e) ? std::max(c.max_error, e) : std::numeric_limits<double>::infinity();
+  }
+  for (std::size_t k = 0; k < Problem::kInvariantCount; ++k) {
+    c.invariants.push_back(invariant_error(c.t, run.invariant_errors(k), period));
+  }
+}
+
+// The comparison with only its settings: a run that could not finish.
+inline MethodComparison not_completed(const OdeOptions& options) {
+  MethodComparison c;
+  c.options = options;
+  return c;
+}
+
+template <class Problem>
+std::vector<MethodComparison> ProblemCode<Problem>::compare_methods(
+    const Problem& problem, const typename Problem::Exact& exact, const std::vector<double>& times,
+    double period, const OdeOptions& options, std::size_t max_steps) {
+  const State x0 = problem.exact_state(exact, 0.0);
+  std::vector<MethodComparison> out;
+  for (const Method m : kAllMethods) {
+    OdeOptions o = options;
+    o.method = m;
+    o.project_invariants = false;
+    o.max_steps = max_steps;
+    const std::vector<double> each_times =
+        is_adaptive(m) ? times : sample_times(times.back(), period, options.step);
+    MethodComparison c;
+    c.options = o;
+    try {
+      measure(c, problem, integrate(problem, x0, each_times, o), exact, period);
+    } catch (const std::exception&) {
+      c = not_completed(o);  // more steps than allowed
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+template <class Problem>
+std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
+    const Problem& problem, const typename Problem::Exact& exact, double period, double periods,
+    double evaluations_per_period, double samples_per_period) {
+  const State x0 = problem.exact_state(exact, 0.0);
+  const double t_end = periods * period;
+  const auto max_samples = static_cast<std::size_t>(std::ceil(periods * samples_per_period)) + 1;
+  std::vector<MethodComparison> out;
+  for (const Method m : kAllMethods) {
+    const auto run_with = [&](const OdeOptions& o) {
+      const std::vector<double> times = sample_times(t_end, period, is_adaptive(m) ? 0.0 : o.step,
+                                                     samples_per_period, max_samples);
+      return integrate(problem, x0, times, o);
+    };
+    const OdeOptions o =
+        settings_at_cost(m, period, periods, evaluations_per_period,
+                         [&](const OdeOptions& trial) { return run_with(trial).evaluations; });
+    MethodComparison c;
+    c.options = o;
+    try {
+      measure(c, problem, run_with(o), exact, period);
+    } catch (const std::exception&) {
+      c = not_completed(o);
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+}  // namespace rigid::detail

@@ -1,0 +1,28 @@
+// What the labs of the free body share beyond the integrated run (poinsot,
+// tennis_racquet): the motion in words, its time scale, and the words the free
+// body's error against its exact motion and its invariants are reported in.
+#pragma once
+
+#include "common/integrated_run.h"
+#include "common/report.h"
+#include "rigid/free_body_exact.h"
+
+namespace rigid::lab {
+
+/// The motion in words, for the table: its regime with its stability and, near
+/// the separatrix, how near. Reports "regime" (to_string of the regime, as before),
+/// "motion" (the sentence), "motion_stability" (stable, unstable or neutral) and
+/// "complementary_parameter" (k'^2: 0 on the separatrix, null for a steady spin).
+void report_motion(Report& report, const FreeBodyExact& motion);
+
+/// The motion's time scale: its polhode period, or one turn for a steady rotation
+/// (no polhode to go round).
+double time_scale(const FreeBodyExact& motion);
+
+/// The free body's error against the exact motion, |omega - omega_exact| / |omega0|
+/// (max_error_vs_exact, max_error_<method>), and its invariants: T's and |L|'s largest
+/// relative error and drift a period (energy_*, momentum_*; a run that lost either ran
+/// away) and L's largest error in space (L_space_drift_rel).
+const ExactErrorWords& free_body_words();
+
+}  // namespace rigid::lab
