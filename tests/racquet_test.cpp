@@ -4,6 +4,7 @@
 // an integrated run (free_body_integrate.h).
 #include "rigid/racquet.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -214,5 +215,71 @@ TEST_CASE(
     const rigid::FreeBodyExact near(r.moments, rigid::launch_omega(1, 10.0, 1e-9));
     CHECK_THAT(rigid::direction_cosine_range(near, 0, near.period()).max,
                WithinRel(I1 / r.moments.I2, 1e-6));
+  }
+}
+
+TEST_CASE("racquet: the cosine range holds every sampled value, the span's ends included") {
+  // Spans that end anywhere in the motion, most of them with the cosine still rising or
+  // falling there, so the extreme is the span's own end: the range must reach it (to
+  // roundoff) and contain every value of a dense grid of its own, the ends included.
+  constexpr double kEps = 2.220446049250313e-16;
+  const rigid::Racquet r = rigid::make_racquet(kOther);
+  const rigid::FreeBodyExact motion(r.moments, rigid::launch_omega(1, 10.0, 0.01));
+  const double L = motion.angular_momentum_magnitude();
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto cosine = [&](double t) {
+      return r.moments.vector()(axis) * motion.omega_body(t)(axis) / L;
+    };
+    for (const double share : {0.13, 0.37, 0.61, 0.77, 0.93, 1.21}) {
+      INFO("axis " << axis << ", span " << share << " periods");
+      const double span = share * motion.period();
+      const rigid::CosineRange range = rigid::direction_cosine_range(motion, axis, span);
+      // how far any value lies outside the range (0 if inside)
+      double outside = 0.0;
+      for (int k = 0; k <= 4000; ++k) {
+        const double c = cosine(span * k / 4000);
+        outside = std::max({outside, c - range.max, range.min - c});
+      }
+      CHECK(outside <= 4 * kEps);
+      CHECK(cosine(span) <= range.max + 4 * kEps);
+      CHECK(cosine(span) >= range.min - 4 * kEps);
+    }
+  }
+}
+
+TEST_CASE("racquet: the growth rate is the least-squares rate over the whole window") {
+  // The fit's definition, written out here: omega's two transverse components at
+  // `samples` times spread evenly over [0, t_end], ends included, each fitted by
+  // A e^{rate t} + B e^{-rate t} with one shared rate. The rate reported minimises that
+  // sum of squares: one part in 1e6 either side of it (well beyond Brent's sqrt(eps)
+  // in the rate) the sum is larger; a window or grid other than the whole one moves the
+  // minimum by more than that (a window short by one sample in 400: about 1e-5).
+  for (const auto& model : {kText, kOther}) {
+    const rigid::Racquet r = rigid::make_racquet(model);
+    for (const double p : {1e-2, 1e-4}) {
+      INFO("perturbation " << p);
+      const rigid::FreeBodyExact motion(r.moments, rigid::launch_omega(1, 10.0, p));
+      const rigid::GrowthFit fit = rigid::measure_growth_rate(motion, 1, 0.1);
+      const auto n = static_cast<Eigen::Index>(fit.samples);
+      Eigen::VectorXd t(n);
+      Eigen::MatrixXd y(n, 2);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        t(i) = fit.t_end * static_cast<double>(i) / static_cast<double>(n - 1);
+        const Eigen::Vector3d w = motion.omega_body(t(i));
+        y(i, 0) = w(2);
+        y(i, 1) = w(0);
+      }
+      const auto sum_of_squares = [&](double rate) {
+        Eigen::MatrixXd basis(n, 2);
+        basis.col(0) = (rate * t.array()).exp();
+        basis.col(1) = (-rate * t.array()).exp();
+        // the normal equations, solved by a complete orthogonal decomposition
+        const Eigen::MatrixXd a = basis.completeOrthogonalDecomposition().solve(y);
+        return (basis * a - y).squaredNorm();
+      };
+      const double at = sum_of_squares(fit.rate);
+      CHECK(sum_of_squares(fit.rate * (1 + 1e-6)) > at);
+      CHECK(sum_of_squares(fit.rate * (1 - 1e-6)) > at);
+    }
   }
 }

@@ -117,10 +117,12 @@ TEST_CASE("football: the integrated cross-check agrees with the closed form for 
     INFO(name);
     const auto report = compute(preset(name));
     const auto& r = report.results();
-    // dopri5 at tolerance 1e-12 for one period: the global error is far below 1e-9.
-    CHECK(value(r, "integrated_rate_error_rel") < 1e-9);
-    CHECK(value(r, "integrated_axis_return_rad") < 1e-9);
-    CHECK(value(r, "integrated_L_drift_rel") < 1e-9);
+    // dopri5 at tolerance 1e-12 for one period: its local errors of 1e-12 a step stay,
+    // over the period, within 10x the tolerance (measured: at most 9.3e-13 over the
+    // presets), so a looser tolerance in the lab fails here.
+    CHECK(value(r, "integrated_rate_error_rel") < 1e-11);
+    CHECK(value(r, "integrated_axis_return_rad") < 1e-11);
+    CHECK(value(r, "integrated_L_drift_rel") < 1e-11);
     CHECK(report.units().at("integrated_space_precession_rate_rad_s") == "rad/s");
   }
 }
