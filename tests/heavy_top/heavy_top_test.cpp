@@ -355,7 +355,10 @@ const FastTop kFastTop[] = {
 TEST_CASE("heavy top: a fast top's mean precession, a tiny difference of two terms, is kept") {
   // mean phi_dot ~ mgl/(Is S) where the partial fractions' terms are ~a = Is S / I each:
   // summed, they kept it to 3e-3 at S = 1e8 and lost it at 1e10 (0). The trapezoidal
-  // mean of phi_dot over the phase is free of the cancellation: to 1e-12.
+  // mean of phi_dot over the phase is free of the cancellation: to 1e-12. The lab switches
+  // to it where the terms cancel by more than 1e3 (here S of about 1e3); the spins 3e3 to
+  // 3e4 cancel by 1e4 to 2e6, where the summed terms would keep only eps times that
+  // (up to 4e-10): a switch moved higher fails here.
   for (const FastTop& c : kFastTop) {
     const rigid::HeavyTopExact exact(kText, {k30, 0.0, 0.0, c.spin});
     INFO("S " << c.spin << ": mean " << exact.mean_precession_rate() << ", reference "

@@ -27,7 +27,7 @@ IS = 0.5 * M * R * R
 MGL = M * G * L
 NEAR_UPRIGHT = [(1e-6, 10.0), (1e-6, 1e-60), (1e-5, 40.0), (1e-7, 47.0), (1e-3, 10.0),
                 (1e-8, 20.0)]
-FAST_SPINS = [1e3, 1e5, 1e6, 1e8, 1e10]
+FAST_SPINS = [1e3, 3e3, 1e4, 3e4, 1e5, 1e6, 1e8, 1e10]
 
 
 def released_from_rest(theta0, spin):
