@@ -166,22 +166,21 @@ TEST_CASE("tennis_racquet: --csv holds the exact motion and the integrator's ome
   CHECK(csv.header ==
         "t_s,omega1,omega2,omega3,qw,qx,qy,qz,omega1_integrated,omega2_integrated,"
         "omega3_integrated");
+  // The file holds the lab's time series to 17 digits; what the numbers say (the
+  // integrated omega beside the exact one) is tested on the series itself, in-process
+  // (tests/labs/tennis_racquet_test.cpp).
   std::size_t rows = 0;
-  double last_t = -1, worst = 0, worst_norm = 0;
+  double last_t = -1, worst_norm = 0;
   for (const std::vector<double>& v : csv.rows) {
     REQUIRE(v.size() == 11);
     ++rows;
     last_t = v[0];
-    // |omega| of a free racquet is not constant, but T and |L| are; the unit quaternion is unit.
     worst_norm = std::max(worst_norm,
                           std::abs(std::hypot(std::hypot(v[4], v[5]), std::hypot(v[6], v[7])) - 1));
-    for (int i = 1; i <= 3; ++i) worst = std::max(worst, std::abs(v[i] - v[i + 7]));
   }
   CHECK(rows > 100);
   CHECK(last_t == t_end);
   CHECK(worst_norm < 1e-14);
-  // rkf78 at 1e-12 over one period: the integrated omega within 1e-8 rad/s of the exact.
-  CHECK(worst < 1e-8);
   std::remove(path.c_str());
 }
 
@@ -235,26 +234,21 @@ TEST_CASE("top_nutation: --csv holds theta beside the exact theta, and a unit qu
   const rigid::test::Csv csv = rigid::test::read_csv(path);
   CHECK(csv.header ==
         "t_s,theta_rad,theta_exact_rad,omega1,omega2,omega3,qw,qx,qy,qz,energy_error_rel");
+  // The file holds the lab's time series to 17 digits; what the numbers say (theta
+  // beside the exact theta, its nod) is tested on the series itself, in-process
+  // (tests/labs/top_nutation_test.cpp).
   std::size_t rows = 0;
-  double last_t = -1, worst = 0, worst_norm = 0, lowest = 10, highest = -10;
+  double last_t = -1, worst_norm = 0;
   for (const std::vector<double>& v : csv.rows) {
     REQUIRE(v.size() == 11);
     ++rows;
     last_t = v[0];
-    worst = std::max(worst, std::abs(v[1] - v[2]));
     worst_norm = std::max(worst_norm,
                           std::abs(std::hypot(std::hypot(v[6], v[7]), std::hypot(v[8], v[9])) - 1));
-    lowest = std::min(lowest, v[2]);
-    highest = std::max(highest, v[2]);
   }
   CHECK(rows > 100);
   CHECK(last_t == t_end);
   CHECK(worst_norm < 1e-14);
-  // rkf78 at 1e-12 over three nutation periods: theta within 1e-9 rad of the exact one.
-  CHECK(worst < 1e-9);
-  // The exact theta nods between 30 deg and theta_max = 52.36 deg (cusped release).
-  CHECK(lowest == Approx(M_PI / 6).epsilon(1e-9));
-  CHECK(highest > 0.9);
   std::remove(path.c_str());
 }
 

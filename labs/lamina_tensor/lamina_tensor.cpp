@@ -82,10 +82,15 @@ Report compute(const Inputs& in) {
   report.result("angle_L_omega_deg", "angle between L and omega",
                 rad_to_deg(angle_between(L, omega)), "deg", report.textbook("51"));
   if (report.textbook_inputs()) {
+    // The text's |L| from its printed components: L_x to three digits, L_y to two.
+    const Vec3 unit_L = L / (ma2 * in.omega);
+    const double Lx_printed = std::round(1e3 * unit_L.x()) / 1e3;
+    const double Ly_printed = std::round(1e2 * unit_L.y()) / 1e2;
     report.note(fmt::format(
         "errata: |L| = {:.4f} ma^2 omega exactly; the text's 0.793 comes from rounding L_x "
-        "to 0.767 before taking the norm",
-        L.stableNorm() / (ma2 * in.omega)));
+        "to {:.3f} before taking the norm (|({:.3f}, {:.2f}, 0)| = {:.4f})",
+        unit_L.stableNorm(), Lx_printed, Lx_printed, Ly_printed,
+        std::hypot(Lx_printed, Ly_printed)));
   }
 
   report.section("1.2 kinetic energy (eqs. 33-34)");

@@ -266,9 +266,12 @@ TEST_CASE(
   const double large_deg = std::atan(-(Ixx - large) / Ixy) * 180 / M_PI;
   const auto report = compute(Inputs{});
   const std::vector<std::string> expected = {
+      // the text's |L| from L_x to three digits and L_y to two, as it prints them
       fmt::format("errata: |L| = {:.4f} ma^2 omega exactly; the text's 0.793 comes from rounding "
-                  "L_x to 0.767 before taking the norm",
-                  std::hypot(Lx, Ly)),
+                  "L_x to {:.3f} before taking the norm (|({:.3f}, {:.2f}, 0)| = {:.4f})",
+                  std::hypot(Lx, Ly), std::round(1e3 * Lx) / 1e3, std::round(1e3 * Lx) / 1e3,
+                  std::round(1e2 * Ly) / 1e2,
+                  std::hypot(std::round(1e3 * Lx) / 1e3, std::round(1e2 * Ly) / 1e2)),
       fmt::format("errata: the text calls the axis at {:.1f} deg 'the 1-axis', but its moment is "
                   "{:.3f} ma^2 (I2 when moments ascend, as in its section 2.4); the axis at {:.1f} "
                   "deg carries I1 = {:.3f} ma^2",
