@@ -216,6 +216,11 @@ TEST_CASE("inertia: invalid input throws with the rule") {
   CHECK_THROWS_WITH(validate_inertia_tensor(skew), Catch::Contains("symmetric"));
   // A lamina sits exactly on the boundary I1 + I2 = I3 and is valid.
   CHECK_NOTHROW(validate_inertia_tensor(lamina_tensor(kTextLamina)));
+  // The slack there is the eigen-solver's roundoff, 64 eps of I3: 640 eps beyond is a
+  // body that does not exist, however it is rounded.
+  const double eps = 2.2e-16;
+  CHECK_THROWS_WITH(validate_inertia_tensor(Vec3(1.0, 1.0, 2.0 * (1 + 640 * eps)).asDiagonal()),
+                    Catch::Contains("I1 + I2 >= I3"));
 }
 
 TEST_CASE("inertia: every primitive with unequal sides is its standard closed form") {

@@ -167,6 +167,41 @@ TEST_CASE("racquet: the measured growth rate approaches the linear one as share_
   CHECK_THROWS_AS(rigid::measure_growth_rate(unstable, 1, 0.1), std::invalid_argument);
 }
 
+TEST_CASE("racquet: the growth fit's residual is the rms over both transverse components") {
+  // Recomputed here at the fit's rate: the two transverse components at its n samples
+  // on [0, t_end], each fitted by A e^{rate t} + B e^{-rate t} (normal equations), the
+  // rms of all 2n residuals over the largest |component|. The minimum is flat in the
+  // rate, so the rate's own precision (half the digits) moves the residual by far less
+  // than the 1e-6 asked (a count of n instead of 2n moves it by sqrt 2).
+  const rigid::Racquet r = rigid::make_racquet(kText);
+  for (const double p : {1e-2, 1e-3}) {
+    INFO("perturbation " << p);
+    const rigid::FreeBodyExact motion(r.moments, rigid::launch_omega(1, 10.0, p));
+    const rigid::GrowthFit fit = rigid::measure_growth_rate(motion, 1, 0.1);
+    const int n = static_cast<int>(fit.samples);
+    REQUIRE(n >= 8);
+    double sum = 0, largest = 0;
+    for (const int c : {2, 0}) {
+      Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+      Eigen::Vector2d rhs = Eigen::Vector2d::Zero();
+      std::vector<Eigen::Vector2d> basis(n);
+      std::vector<double> y(n);
+      for (int i = 0; i < n; ++i) {
+        const double t = fit.t_end * i / (n - 1);
+        basis[i] = {std::exp(fit.rate * (t - fit.t_end)), std::exp(-fit.rate * t)};
+        y[i] = motion.omega_body(t)(c);
+        normal += basis[i] * basis[i].transpose();
+        rhs += basis[i] * y[i];
+        largest = std::max(largest, std::abs(y[i]));
+      }
+      const Eigen::Vector2d amplitude = normal.ldlt().solve(rhs);
+      for (int i = 0; i < n; ++i) sum += std::pow(basis[i].dot(amplitude) - y[i], 2);
+    }
+    const double rms = std::sqrt(sum / (2 * n)) / largest;
+    CHECK_THAT(fit.rms_residual, WithinRel(rms, 1e-6));
+  }
+}
+
 TEST_CASE("racquet: flips found on the exact motion match an integrated run's zero crossings") {
   const rigid::Racquet r = rigid::make_racquet(kOther);
   const rigid::FreeBodyExact motion(r.moments, rigid::launch_omega(1, 10.0, 0.01));

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "rigid/rotation.h"
@@ -28,6 +29,11 @@ TEST_CASE("free body: moments must be positive, finite and obey the triangle ine
   CHECK_THROWS_AS(validate({1.0, 1.0, INFINITY}), std::invalid_argument);
   // the numbers in the message show the violation, however small or close
   CHECK_THROWS_WITH(validate({1.0, 1.0, 2.0000001}), Contains("got 1 + 1 < 2.0000001"));
+  // The slack is a few ulps (4 eps of I3), no more: 40 eps over the boundary is a body
+  // that does not exist.
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  CHECK_NOTHROW(validate({1.0, 1.0, 2.0 * (1 + 2 * eps)}));
+  CHECK_THROWS_WITH(validate({1.0, 1.0, 2.0 * (1 + 40 * eps)}), Contains("I1 + I2 >= I3"));
   CHECK_THROWS_WITH(validate({1e-320, 1e-320, 3e-320}), Contains("got 1e-320 + 1e-320 < 3e-320"));
   CHECK_THROWS_WITH(validate({-1e-320, 1.0, 1.0}), Contains("got -1e-320"));
   // Hairer-Lubich-Wanner's test body breaks the triangle inequality: allowed only as a test problem

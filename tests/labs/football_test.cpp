@@ -227,19 +227,8 @@ TEST_CASE("football: the motion is exact at any time, in any order; its still is
 
 // Every note of the lab: the numbers inside it (from eqs. 142-149 evaluated here) and
 // the condition under which it appears, on both sides.
-namespace {
-std::vector<std::string> notes_starting(const rigid::lab::Report& report,
-                                        const std::string& start) {
-  std::vector<std::string> found;
-  for (const std::string& note : report.notes()) {
-    if (note.rfind(start, 0) == 0) found.push_back(note);
-  }
-  return found;
-}
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-}  // namespace
+using rigid::test::contains;
+using rigid::test::notes_starting;
 
 TEST_CASE("football: the cone errata say prolate, oblate or nothing, with the body's numbers") {
   constexpr double kDeg = M_PI / 180;
@@ -302,6 +291,12 @@ TEST_CASE(
   CHECK(contains(notes_starting(frisbee, wobble)[0],
                  fmt::format("phi_dot = {:.6g} rad/s (3 about L in space), is {:.6g} times",
                              phi_dot, phi_dot / psi_dot)));
+  // psi_dot = omega cos alpha (Is - I)/Is - ... is negative for the plate: its size is said,
+  // and the body-frame rate Omega = omega cos alpha (Is - I)/I equals it for Is = 2I.
+  CHECK(contains(notes_starting(frisbee, wobble)[0],
+                 fmt::format("|psi_dot| = omega cos alpha = {:.6g} rad/s (equal in size to the "
+                             "body-frame rate Omega = {:.6g} rad/s)",
+                             psi_dot, psi_dot)));
   // The Earth's periods (eqs. 145-147 with Is/I = 1.00327, alpha = 0.2"): Omega = omega cos
   // alpha (Is - I)/I, so 2 pi/Omega is 1/0.00327 sidereal days, in solar days.
   const double sidereal = 86164.0905, solar = 86400.0, k = 0.00327;
@@ -312,6 +307,11 @@ TEST_CASE(
   CHECK(contains(
       notes_starting(earth, days)[0],
       fmt::format("2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d", body_days, space_days)));
+  // With omega = 2 pi per solar day the same periods are 1/(k cos alpha) and
+  // 1/sqrt(1 + ((1 + k)^2 - 1) cos^2 alpha) solar days.
+  CHECK(contains(notes_starting(earth, days)[0],
+                 fmt::format("solar day (86400 s), they are {:.4g} d and {:.4g} d.",
+                             body_days * solar / sidereal, space_days * solar / sidereal)));
   // Another spin is not the text's example: neither note.
   Inputs spun = preset("frisbee");
   spun.omega = 31.0;

@@ -10,6 +10,7 @@
 
 #include "common/figures.h"
 #include "common/inputs.h"
+#include "common/report.h"
 
 namespace rigid::test {
 
@@ -97,6 +98,19 @@ class NamesInput : public Catch::MatcherBase<rigid::lab::InputError> {
 };
 inline NamesInput names_input(const std::string& input) {
   return NamesInput(input);
+}
+
+/// The report's notes that start with `start`, in order.
+inline std::vector<std::string> notes_starting(const rigid::lab::Report& report,
+                                               const std::string& start) {
+  std::vector<std::string> found;
+  for (const std::string& note : report.notes()) {
+    if (note.rfind(start, 0) == 0) found.push_back(note);
+  }
+  return found;
+}
+inline bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
 }
 
 }  // namespace rigid::test

@@ -4,6 +4,8 @@
 // figures handed over, and the motion, the same in any order of its times.
 #include "poinsot/poinsot.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -512,5 +514,78 @@ TEST_CASE("poinsot: the motion is the same whatever the order of its times") {
       check_same_scene(shuffled.scene(times[k]), scenes[k]);
     }
     CHECK(shuffled.seconds() == report.t_end);
+  }
+}
+
+TEST_CASE("poinsot: the notes carry their own numbers, the herpolhode's folded to 180 deg") {
+  using rigid::test::contains;
+  using rigid::test::notes_starting;
+  // Section 4.1 for I1 : I2 : I3 = 5 : 4 : 3: touching the energy ellipsoid (1/sqrt(I_j))
+  // on axis i scales the momentum one (1/I_j) to sqrt(I_i)/I_j.
+  const double I[] = {5, 4, 3};
+  const auto touching = [&](int i) {
+    return fmt::format("({:.3f} : {:.3f} : {:.3f})", std::sqrt(I[i]) / I[0], std::sqrt(I[i]) / I[1],
+                       std::sqrt(I[i]) / I[2]);
+  };
+  const std::string herpolhode = "the herpolhode closes only if";
+  int folded = 0;  // runs whose contact point ends more than 180 deg round
+  for (const Eigen::Vector3d& omega0 :
+       {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 0.2, 0.5), Eigen::Vector3d(0.3, 1, 0.1),
+        Eigen::Vector3d(0.1, 0.4, 1)}) {
+    INFO("omega0 " << omega0.transpose());
+    Inputs in;
+    in.omega0 = omega0;
+    const auto report = compute(in);
+    const auto ratios = notes_starting(report, "errata: section 4.1 rescales");
+    REQUIRE(ratios.size() == 1);
+    CHECK(contains(ratios[0], "touching on axis 1 gives " + touching(0) + " and on axis 2 " +
+                                  touching(1) + ", where"));
+    const auto root5 = notes_starting(report, "errata: 1/sqrt(5)");
+    REQUIRE(root5.size() == 1);
+    CHECK(contains(root5[0], fmt::format("= {:.4f} rounds to {:.2f};", 1 / std::sqrt(5.0),
+                                         1 / std::sqrt(5.0))));
+    // After kHerpolhodePeriods periods the contact point has turned N x turn; its
+    // distance from the start is that angle folded into [0, 180] deg.
+    const double turn = value(report.results(), "herpolhode_turn_per_period_deg");
+    const double round = std::fmod(rigid::lab::poinsot::kHerpolhodePeriods * turn, 360.0);
+    const double from_start = std::min(std::abs(round), 360.0 - std::abs(round));
+    folded += std::abs(round) > 180.0;
+    const auto said = notes_starting(report, herpolhode);
+    REQUIRE(said.size() == 1);
+    CHECK(contains(said[0], fmt::format("a polhode period, {:.4f} deg, is", turn)));
+    CHECK(contains(said[0], fmt::format("after {:g} periods the contact point is {:.2f} deg from",
+                                        rigid::lab::poinsot::kHerpolhodePeriods, from_start)));
+  }
+  CHECK(folded > 0);
+  CHECK(folded < 4);
+  // No polhode period (about an axis, steady): no herpolhode note.
+  Inputs steady;
+  steady.omega0 = Eigen::Vector3d(0, 0, 2);
+  CHECK(notes_starting(compute(steady), herpolhode).empty());
+}
+
+TEST_CASE("poinsot: the phase plot starts each curve at its own t = 0 point") {
+  // omega0 with three different components: (omega1, omega2) and (omega1, omega3) at
+  // t = 0 are the marked points, each the first point of its curve.
+  Inputs in;
+  in.omega0 = Eigen::Vector3d(1.0, 0.2, 0.5);
+  const auto report = compute(in);
+  rigid::test::KeptFigures kept;
+  rigid::lab::poinsot::figures(report, kept);
+  REQUIRE(kept.plots.count("omega") == 1);
+  const rigid::render::Panel& phase = kept.plots.at("omega").panel(0, 1);
+  const rigid::render::Series* start = nullptr;
+  for (const auto& s : phase.series) {
+    if (s.label == "t = 0") start = &s;
+  }
+  REQUIRE(start != nullptr);
+  REQUIRE(start->x.size() == 2);
+  REQUIRE(phase.series.size() >= 2);
+  for (int j = 0; j < 2; ++j) {
+    INFO("omega_" << j + 2 << " against omega_1");
+    CHECK(start->x[j] == in.omega0(0));
+    CHECK(start->y[j] == in.omega0(j + 1));
+    CHECK(phase.series[j].x.front() == Approx(start->x[j]).epsilon(1e-12));
+    CHECK(phase.series[j].y.front() == Approx(start->y[j]).epsilon(1e-12));
   }
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <cmath>
 #include <random>
 #include <string>
@@ -102,9 +103,17 @@ TEST_CASE("tennis_racquet: defaults reproduce eqs. 83-85 and the flip about axis
   // The cross-check: dopri5 at 1e-10 over one period stays within 1e-7 of the exact omega.
   CHECK(value(r, "max_error_vs_exact") < 1e-7);
   CHECK(value(r, "t_end_s") == period);
-  bool errata = false;
-  for (const auto& note : report.notes()) errata |= note.rfind("errata: eq. 92", 0) == 0;
-  CHECK(errata);
+  // Eq. 92's errata, with the rates written out above in their places.
+  const auto errata = rigid::test::notes_starting(report, "errata: eq. 92");
+  REQUIRE(errata.size() == 1);
+  const double wobble1 = omega * std::sqrt((t.I3 - t.I1) * (t.I2 - t.I1) / (t.I2 * t.I3));
+  CHECK(rigid::test::contains(errata[0],
+                              fmt::format("errata: eq. 92 sets (I2 - I1)/(I2 + I1) = {:.4f} to 1",
+                                          (t.I2 - t.I1) / (t.I2 + t.I1))));
+  CHECK(rigid::test::contains(
+      errata[0], fmt::format("= {:.6g} 1/s, not omega = {:.6g} 1/s; about axis 1 it goes round at "
+                             "{:.6g} rad/s, not {:.6g},",
+                             growth, omega, wobble1, omega)));
 }
 
 TEST_CASE("tennis_racquet: spins about axes 1 and 3 are stable and do not flip") {
@@ -412,6 +421,17 @@ TEST_CASE("tennis_racquet: the animation draws the motion at its frame times") {
     check_same_scene(animation.scene(t), motion.scene(t));
     check_same_strip(animation.strip(t), motion.strip(t));
   }
+  // The strip's lines span the whole run, 0 to t_end, and are the exact omega there.
+  const rigid::render::Plot2D strip = motion.strip(0.0);
+  const rigid::FreeBodyExact& exact = report.launches.at(report.spin_axis);
+  REQUIRE(strip.panel().series.size() >= 3);
+  for (int i = 0; i < 3; ++i) {
+    const auto& line = strip.panel().series[i];
+    REQUIRE(line.x.size() >= 2);
+    CHECK(line.x.front() == 0.0);
+    CHECK(line.x.back() == Approx(report.t_end).epsilon(4 * DBL_EPSILON));
+    CHECK(line.y.back() == Approx(exact.omega_body(report.t_end)(i)).margin(1e-12));
+  }
   // The closed form asks for no frame times: nothing to integrate.
   asked.clear();
   rigid::lab::tennis_racquet::animation(compute(Inputs{}), frame_times);
@@ -423,11 +443,8 @@ TEST_CASE("tennis_racquet: 'not small' is said of a large disturbance only, with
   const auto said = [&](double perturbation) -> std::string {
     Inputs in;
     in.perturbation = perturbation;
-    const auto report = compute(in);
-    for (const std::string& note : report.notes()) {
-      if (note.rfind(start, 0) == 0) return note;
-    }
-    return "";
+    const auto notes = rigid::test::notes_starting(compute(in), start);
+    return notes.empty() ? std::string() : notes[0];
   };
   // The linear rates hold while the disturbance is small: up to 5 % of omega no note.
   CHECK(said(0.01).empty());

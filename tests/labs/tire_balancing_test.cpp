@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <cmath>
 
 #include "lab_library.h"
@@ -108,6 +109,36 @@ TEST_CASE("tire_balancing: a straight axle is a balanced wheel, and the spin com
     roundoff_shown = roundoff_shown || row.remark.rfind("(roundoff: |computed| <=", 0) == 0;
   }
   CHECK(roundoff_shown);
+}
+
+TEST_CASE("tire_balancing: the balanced torque's roundoff bound is a few ulps of omega^2 |I|") {
+  // The torque omega x I omega of the balanced wheel is roundoff of terms omega^2 I_max:
+  // shown as 0 below 64 eps omega^2 I_max and no looser. I_max <= the disk's axial
+  // moment m a^2 / 2 plus both masses' 2 m0 (a^2 + b^2). Across tilts and speeds.
+  const std::string shown = "(roundoff: |computed| <= ";
+  for (const double tilt : {0.5, 3.0, 10.0}) {
+    for (const double omega : {1.0, 90.0, 3000.0}) {
+      INFO("tilt " << tilt << " deg, omega " << omega);
+      Inputs in;
+      in.tilt_deg = tilt, in.omega = omega;
+      const auto report = compute(in);
+      const double m0 = value(report.results(), "balance_mass_kg");
+      const double a = in.radius, b = in.offset;
+      const double I_max = in.mass * a * a / 2 + 2 * m0 * (a * a + b * b);
+      const double computed = value(report.results(), "torque_balanced_n_m");
+      bool found = false;
+      for (const auto& row : report.rows()) {
+        if (row.label != "bearing torque after balancing") continue;
+        found = true;
+        REQUIRE(row.remark.rfind(shown, 0) == 0);
+        CHECK(row.value == "0");
+        const double bound = std::stod(row.remark.substr(shown.size()));
+        CHECK(std::abs(computed) <= bound * 1.05);  // the remark's two digits
+        CHECK(bound <= 64 * DBL_EPSILON * omega * omega * I_max * 1.05);
+      }
+      CHECK(found);
+    }
+  }
 }
 
 TEST_CASE("tire_balancing: a broken rule is an InputError naming the input") {
