@@ -2,6 +2,7 @@
 #include "rigid/heavy_top.h"
 
 #include <algorithm>
+#include <boost/math/special_functions/ellint_rc.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 #include <cmath>
@@ -43,6 +44,9 @@ double rf(double x, double y, double z) {
 double rj(double x, double y, double z, double p) {
   return boost::math::ellint_rj(x, y, z, p);
 }
+double rc(double x, double y) {
+  return boost::math::ellint_rc(x, y);
+}
 
 }  // namespace
 
@@ -79,7 +83,13 @@ double horizontal_precession_rate(const HeavyTop& top, double spin) {
 
 SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, double theta) {
   validate(top);
-  const double c = std::cos(theta), L3 = top.Is * spin;
+  // A theta within its own rounding (half an ulp) of 90 deg is horizontal: the double
+  // nearest pi/2 has cos 6e-17, which would make the fast rate 5e17 rad/s where the
+  // angle meant, and all the input can tell, has it infinite.
+  const double c_raw = std::cos(theta);
+  const double half_ulp = 0.5 * (std::nextafter(std::abs(theta), HUGE_VAL) - std::abs(theta));
+  const double c = std::abs(c_raw) <= half_ulp ? 0.0 : c_raw;
+  const double L3 = top.Is * spin;
   const double D = L3 * L3 - 4.0 * top.mgl * top.I * c;  // eq. 188
   SteadyPrecession p;
   if (!(D >= 0.0)) return p;
@@ -233,8 +243,12 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     const auto polish = [&](double v) { return cubic_root_near(beta_, A2, B2, C2, v); };
     const double disc = B2 * B2 - 4.0 * A2 * C2;
     const double q = -0.5 * (B2 + std::copysign(std::sqrt(std::max(disc, 0.0)), B2));
-    if (A2 > 0.0 && q != 0.0) {
-      const double r1 = polish(q / A2), r2 = polish(C2 / q);
+    if (q != 0.0) {
+      // C2/q is the small root. q/A2 is the other only where A2 > 0: for A2 <= 0 the
+      // two have one sign (a spinning top nodding just off upright with u3 far above
+      // 1), the cubic's v^3 term decides the second, and 1 - u2 = -C2/q alone (its
+      // roots about u0 held it to 2e-10 at 1 - u2 = 1e-14).
+      const double r2 = polish(C2 / q), r1 = A2 > 0.0 ? polish(q / A2) : r2;
       const double v3 = std::max(r1, r2), v2 = std::min(r1, r2);
       if (v3 >= 0.0 && v3 < 1e-3 && !through_south_ && opu1_ >= 1e-3) {
         // and u1 again from Vieta's relations with this w3 (they held its roundoff)
@@ -250,22 +264,21 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     }
   }
 
-  // A turning circle within roundoff of a pole (a top that barely spins, or a huge g)
-  // is the pole: the passage, a turn of phi by pi within a vanishing time, is then
-  // exact to roundoff, where the integral of the spike would overflow.
-  const double pole_roundoff = 16 * kEps;
-  // (South: 1 + u1, now known to its own accuracy, against roundoff of the phase: the
-  // passage through the bottom lasts ~sqrt(1 + u1)/lambda, and below that no sample time
-  // resolves it.)
-  if (!through_south_ && !(opu1_ > pole_roundoff * (1.0 + u0_))) {
+  // A turning circle whose distance from a pole underflows is the pole: the passage,
+  // a turn of phi by pi within a vanishing time, is then exact, where the integral of
+  // the spike would overflow. Above that the passage is resolved: 1 - u2 and 1 + u1
+  // are known to their own accuracy, and the complete and incomplete integrals keep
+  // theirs (taking a circle within 16 eps of a pole as the pole missed the mean
+  // precession by ~sqrt of that distance: 2e-8 at 1 + u1 = 8e-16).
+  if (!through_south_ && !(opu1_ >= std::numeric_limits<double>::min())) {
     through_south_ = true;
     w1_ = -1.0 - u0_;
     opu1_ = 0.0;
   }
-  // (North: the pole only where phi_dot's spike there, (b - a)/(2 (1 - u2)), is far
-  // beyond the motion's own rates; a top released from rest near upright has phi_dot
-  // -a/2 at the top, no spike, and keeps its 1 - u2.)
-  if (!through_north_ && omu2_ <= pole_roundoff &&
+  // (North: only where phi_dot's spike there, (b - a)/(2 (1 - u2)), is far beyond the
+  // motion's own rates; a top released from rest near upright has phi_dot -a/2 at the
+  // top, no spike, and keeps its 1 - u2.)
+  if (!through_north_ && omu2_ < std::numeric_limits<double>::min() &&
       std::abs(b_minus_a_) > 1e6 * omu2_ * (std::abs(a_) + std::sqrt(beta_))) {
     through_north_ = true;
     w2_ = one_minus_u0_;
@@ -306,9 +319,13 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   n_minus_ = !through_south_ ? -amplitude / one_plus_u1 : 0.0;
   // 1 - n+ = (1 - u2)/(1 - u1) as such: near upright 1 - n+ rounded to 0
   one_minus_n_plus_ = n_plus_ != 0.0 ? omu2_ / one_minus_u1 : 1.0;
-  // Complete integrals of 1/(1 - n sn^2) over a half period: Pi(n, k) = K + n/3 R_J(0, k'^2, 1, 1 -
-  // n).
+  // Complete integrals of 1/(1 - n sn^2) over a half period: Pi(n, k) = K + n/3 R_J(0, k'^2, 1,
+  // 1 - n); for n < -1 the form third_kind takes there, at sn = 1.
   const auto complete = [&](double n, double one_minus_n) {
+    if (n < -1.0) {
+      const double w = k2_ / n;
+      return -w / 3.0 * rj(0.0, kp2_, 1.0, 1.0 - w) + rc(0.0, one_minus_n * (1.0 - w));
+    }
     return n == 0.0 ? K_ : K_ + n / 3.0 * rj(0.0, kp2_, 1.0, one_minus_n);
   };
   // A term with a zero coefficient is left out, whatever its n.
@@ -388,11 +405,23 @@ double HeavyTopExact::third_kind(double v, double n, double one_minus_n, double 
     jacobi_(vr, sn, cn, dn);
   }
   // Pi(n; am v, k) = v + n/3 sn^3 R_J(cn^2, dn^2, 1, 1 - n sn^2) for |v| <= K, its last
-  // argument as cn^2 + (1 - n) sn^2 (no cancellation where n is near 1)
-  const double part = n == 0.0
-                          ? vr
-                          : vr + n / 3.0 * sn * sn * sn *
-                                     rj(cn * cn, dn * dn, 1.0, cn * cn + one_minus_n * sn * sn);
+  // argument as cn^2 + (1 - n) sn^2 (no cancellation where n is near 1). For n < -1 (a
+  // turning circle near the south pole: n = -(u2 - u1)/(1 + u1)) Pi ~ 1/sqrt(-n) is what
+  // is left of v minus a term as large as v: it kept only eps sqrt(-n) of itself (1e-9
+  // at 1 + u1 = 1e-13). The transformation to w = k^2/n (DLMF 19.7.9 in Carlson's form)
+  //   Pi(n; am v) = -w/3 sn^3 R_J(cn^2, dn^2, 1, 1 - w sn^2)
+  //                 + sn R_C(cn^2 dn^2, (1 - n sn^2)(1 - w sn^2))
+  // adds two terms of one sign.
+  const double one_minus_n_sn2 = cn * cn + one_minus_n * sn * sn;
+  double part = vr;
+  if (n < -1.0) {
+    const double w = k2_ / n;
+    const double one_minus_w_sn2 = 1.0 - w * sn * sn;
+    part = -w / 3.0 * sn * sn * sn * rj(cn * cn, dn * dn, 1.0, one_minus_w_sn2) +
+           sn * rc(cn * cn * dn * dn, one_minus_n_sn2 * one_minus_w_sn2);
+  } else if (n != 0.0) {
+    part = vr + n / 3.0 * sn * sn * sn * rj(cn * cn, dn * dn, 1.0, one_minus_n_sn2);
+  }
   return m == 0.0 ? part : part + 2.0 * m * complete;
 }
 

@@ -143,8 +143,14 @@ TEST_CASE("tire_balancing: the balanced torque's roundoff bound is a few ulps of
 
 TEST_CASE("tire_balancing: a broken rule is an InputError naming the input") {
   Inputs in;
+  // The tilt's rule is [0, 45) deg, said as such at 45 (tan 2 theta is infinite); just
+  // below, the rule of eq. 60 that no mass reaches the tilt.
   in.tilt_deg = 45;
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError, rigid::test::names_input("--tilt-deg"));
+  CHECK_THROWS_WITH(compute(in),
+                    Catch::StartsWith("--tilt-deg: must be at least 0 and below 45 deg"));
+  in.tilt_deg = std::nextafter(45.0, 0.0);
+  CHECK_THROWS_WITH(compute(in), Catch::StartsWith("--tilt-deg: no balancing mass reaches"));
   in = Inputs{};
   in.tire_radius = 0.1, in.road_speed = 10;  // smaller than the disk
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError,

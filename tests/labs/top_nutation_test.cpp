@@ -481,3 +481,26 @@ TEST_CASE("top_nutation: each regime word on its side of its threshold") {
   upright.theta0_deg = 0;
   CHECK(compute(upright).results().at("regime") == "sleeping");
 }
+
+TEST_CASE("top_nutation: no steady rates says why: horizontal, or too slow a spin for eq. 187") {
+  // Eq. 187: Is S phi_dot = I cos theta phi_dot^2 + m g l; at theta = 90 deg the fast
+  // root runs off to infinity, and a real pair needs Is^2 S^2 >= 4 m g l I cos theta.
+  const auto why = [](const Inputs& in) -> std::string {
+    const auto report = compute(in);
+    for (const auto& row : report.rows()) {
+      if (row.label == "phi_dot, slow and fast") return row.value + " " + row.textbook;
+    }
+    return "no row";
+  };
+  Inputs horizontal;
+  horizontal.theta0_deg = 90;
+  CHECK(why(horizontal) == "none (horizontal: the fast rate is infinite)");
+  Inputs slow;  // the text's top at 30 deg: S_min = sqrt(4 mgl I cos 30) / Is = 44.0 rad/s
+  slow.spin = 40.0;
+  CHECK(why(slow) == "none (Is^2 S^2 < 4 m g l I cos(theta0): no steady precession)");
+  Inputs hanging;  // below the pivot cos theta < 0: a real pair at any spin
+  hanging.theta0_deg = 120;
+  hanging.spin = 50.0;
+  CHECK(why(hanging).rfind("none", 0) != 0);
+  CHECK(why(Inputs{}).rfind("none", 0) != 0);
+}

@@ -31,6 +31,12 @@ TEST_CASE("ticks: large values share a power of ten", "[render][ticks]") {
   const Ticks t = linear_ticks(0, 3e6, 3);
   REQUIRE(t.values.size() >= 2);
   CHECK(t.labels[1].find("10^{6}") != std::string::npos);
+  // From 1e5 up; five digits (an rpm, a period in s) are written out.
+  const Ticks five = linear_ticks(0, 99999, 4);
+  for (const std::string& label : five.labels) CHECK(label.find("10^") == std::string::npos);
+  CHECK(five.labels[1] == "20000");
+  const Ticks six = linear_ticks(0, 1e5, 4);
+  CHECK(six.labels[1].find("10^{5}") != std::string::npos);
 }
 
 TEST_CASE("ticks: log axis ticks sit at decades labelled 10^{k}", "[render][ticks]") {

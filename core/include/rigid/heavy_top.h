@@ -60,6 +60,7 @@ struct SteadyPrecession {
   bool exists = false;  ///< false when Is^2 S^2 < 4 mgl I cos(theta) (eq. 188)
   double slow = 0.0;    ///< (Is S - sqrt(D)) / (2 I cos theta), formed as 2 mgl / (Is S + sqrt(D))
   double fast = 0.0;    ///< (Is S + sqrt(D)) / (2 I cos theta); +inf at theta = 90 deg
+                        ///< (any theta within half an ulp of it)
 };
 SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, double theta);
 

@@ -1,0 +1,67 @@
+// What every lab's report shares (labs/common): how a result reads in the table,
+// where roundoff is shown as 0, and the rules an input table checks.
+#include <catch2/catch.hpp>
+#include <sstream>
+#include <string>
+
+#include "common/report.h"
+#include "common/writers.h"
+
+using rigid::lab::Report;
+
+namespace {
+const rigid::lab::TableRow& last_row(const Report& report) {
+  REQUIRE(!report.rows().empty());
+  return report.rows().back();
+}
+}  // namespace
+
+TEST_CASE("lab common: a vector result reads in its own order in the table") {
+  Report report;
+  report.result("v3", "three", Eigen::Vector3d(1.5, -2, 3.25), "m");
+  CHECK(last_row(report).value == "(1.5, -2, 3.25)");
+  report.result("v2", "two", Eigen::Vector2d(7, -0.125), "m");
+  CHECK(last_row(report).value == "(7, -0.125)");
+}
+
+TEST_CASE("lab common: roundoff reads 0 up to its bound, and a number past it") {
+  // The bound is the method's roundoff: at it the value is noise, a hair above it a
+  // result (a looser cut would print real numbers as 0).
+  const double bound = 1e-14;
+  Report report;
+  report.result_roundoff("at", "at the bound", bound, bound, "N m");
+  CHECK(last_row(report).value == "0");
+  CHECK(last_row(report).remark == "(roundoff: |computed| <= 1e-14)");
+  report.result_roundoff("above", "above the bound", 1.01 * bound, bound, "N m");
+  CHECK(last_row(report).value != "0");
+  CHECK(last_row(report).remark.empty());
+  report.result_roundoff("negative", "below, negative", -0.5 * bound, bound, "N m");
+  CHECK(last_row(report).value == "0");
+  // The JSON keeps the computed number either way.
+  CHECK(report.results().at("at").get<double>() == bound);
+}
+
+TEST_CASE("lab common: the table's value column is as wide as its numbers, not its sentences") {
+  // A number sets the column; a sentence of 60 characters runs past it. The header
+  // "value" and every number then start and end in the same columns.
+  Report report;
+  report.result("x", "a number", -1.2345678901e-300, "m");
+  const std::string shown = last_row(report).value;
+  REQUIRE(shown.size() > 5);  // wider than the header "value"
+  const std::string sentence(60, 's');
+  report.result_text("words", "the motion in words", sentence);
+  std::ostringstream table;
+  rigid::lab::write_table(table, report, rigid::lab::RunOutputs{});
+  std::string header, number;
+  std::istringstream lines(table.str());
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("quantity", 0) == 0) header = line;
+    if (line.rfind("a number", 0) == 0) number = line;
+  }
+  REQUIRE(!header.empty());
+  REQUIRE(!number.empty());
+  const std::size_t value_at = header.find("value"), unit_at = header.find("unit");
+  CHECK(number.find(shown) == value_at);
+  CHECK(unit_at == value_at + shown.size() + 2);
+  CHECK(number.find(" m") + 1 == unit_at);
+}
