@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "lab_common.h"
 
@@ -150,7 +152,7 @@ TEST_CASE("contract: --csv writes regular files only and never follows or replac
   CHECK(run_lab("poinsot", "--quiet --csv '" + long_name.string() + "'").status == 0);
   CHECK(fs::is_regular_file(long_name));
   for (const auto& entry : fs::directory_iterator(dir)) {
-    CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+    CHECK(entry.path().filename().string().find(".rigidlab-tmp-") == std::string::npos);
   }
   fs::remove_all(dir);
 }
@@ -190,12 +192,29 @@ TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries ar
             std::string("timeout -s ") + sig + " 1");
     CHECK(fs::is_empty(dir));
   }
-  // A temporary a killed run left (its pid gone) is removed by the next writer.
-  const fs::path stale = dir / "out.csv.tmp-999999999-0";
+  // A temporary a killed run left (its pid gone) is removed by the next writer, and
+  // only that: the user's files with names like it are not ours and stay.
+  const fs::path stale = dir / "out.csv.rigidlab-tmp-999999999-0123456789abcdef";
   std::ofstream(stale) << "partial\n";
-  REQUIRE(run_lab("poinsot", "--quiet --csv '" + (dir / "out.csv").string() + "'").status == 0);
+  const fs::path figures = dir / "F";
+  fs::create_directories(figures);
+  const std::vector<fs::path> users = {dir / "out.csv.tmp-2024-01-05-backup",
+                                       dir / "out.csv.tmp-99999",
+                                       dir / "out.csv.rigidlab-tmp-99999",
+                                       dir / "out.csv.rigidlab-tmp-999999999-0123456789ABCDEF",
+                                       dir / "out.csv.rigidlab-tmp-999999999-0123456789abcdef.bak",
+                                       figures / "poinsot_omega.png.tmp-2023-notes",
+                                       figures / "poinsot_omega.png.tmp-99999"};
+  for (const fs::path& p : users) std::ofstream(p) << "the user's\n";
+  REQUIRE(run_lab("poinsot", "--quiet --csv '" + (dir / "out.csv").string() + "' --figures '" +
+                                 figures.string() + "'")
+              .status == 0);
   CHECK_FALSE(fs::exists(stale));
   CHECK(fs::is_regular_file(dir / "out.csv"));
+  for (const fs::path& p : users) {
+    INFO(p);
+    CHECK(fs::is_regular_file(p));
+  }
   fs::remove_all(dir);
 }
 
@@ -309,4 +328,41 @@ TEST_CASE("contract: a bad figure prefix or size is refused naming the option") 
     CHECK(run.err.rfind("poinsot: error: --figure-prefix: ", 0) == 0);
   }
   CHECK(run_lab("poinsot", "--figure-size 1920*1080").status == 2);
+}
+
+TEST_CASE("contract: two outputs in one place are refused up front, and nothing is written") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_same_" + std::to_string(::getpid()));
+  const fs::path figures = dir / "F";
+  fs::create_directories(figures);
+  fs::create_directory_symlink(figures, dir / "G");
+  const std::string d = dir.string();
+  const struct {
+    std::string args, option;
+  } cases[] = {
+      // --csv and --animate naming one file, directly or through another spelling
+      {"--csv '" + d + "/same.webp' --animate '" + d + "/same.webp'", "--animate"},
+      {"--csv '" + d + "/same.webp' --animate '" + d + "/F/../same.webp'", "--animate"},
+      // the CSV where --figures writes a figure, directly or through a link to the folder
+      {"--figures '" + d + "/F' --csv '" + d + "/F/poinsot_omega.png'", "--csv"},
+      {"--figures '" + d + "/F' --csv '" + d + "/G/poinsot_polhodes.png'", "--csv"},
+      // the figures' folder inside the CSV's file
+      {"--figures '" + d + "/out.csv/F' --csv '" + d + "/out.csv'", "--figures"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto run = run_lab("poinsot", c.args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind("poinsot: error: " + c.option + ": ", 0) == 0);
+    CHECK(fs::is_empty(figures));
+    CHECK_FALSE(fs::exists(dir / "same.webp"));
+    CHECK_FALSE(fs::exists(dir / "out.csv"));
+  }
+  // A CSV of another name in the figures' folder is the user's choice, and lands beside them.
+  CHECK(run_lab("poinsot", "--quiet --figures '" + d + "/F' --csv '" + d + "/F/run.csv'").status ==
+        0);
+  CHECK(fs::is_regular_file(figures / "run.csv"));
+  CHECK(fs::is_regular_file(figures / "poinsot_omega.png"));
+  fs::remove_all(dir);
 }

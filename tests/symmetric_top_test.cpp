@@ -118,6 +118,15 @@ TEST_CASE("symmetric top: which cone rolls on which") {
   CHECK(sphere.contact == rigid::ConeContact::kNone);
   CHECK(sphere.space_cone == 0.0);
   CHECK(sphere.body_rate == 0.0);
+  // A hair either side of the sphere (I - Is = +-1e-12 of I, far above roundoff of the
+  // difference): the verdict follows the sign, at any alpha.
+  for (const double deg : {0.001, 20.0, 89.999}) {
+    const double alpha = rigid::deg_to_rad(deg);
+    CHECK(rigid::free_symmetric_precession(1.0 + 1e-12, 1.0, 1.0, alpha).contact ==
+          rigid::ConeContact::kOutside);
+    CHECK(rigid::free_symmetric_precession(1.0 - 1e-12, 1.0, 1.0, alpha).contact ==
+          rigid::ConeContact::kInside);
+  }
   CHECK(std::isinf(sphere.body_period));
   CHECK(rigid::to_string(rigid::ConeContact::kInside) == "inside");
   // Earth: theta - alpha is ~3e-9 rad and keeps full precision. For small alpha,

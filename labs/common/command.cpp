@@ -419,10 +419,14 @@ void Command::check_output_paths() const {
     throw InputError("--figures", "needs a directory name");
   }
   if (!figures_dir_.empty()) check_output_dir("--figures", figures_dir_);
-  if (csv_enabled_ && app_.count("--csv") > 0) {
+  const bool csv = csv_enabled_ && app_.count("--csv") > 0;
+  if (csv) {
     if (csv_path_.empty()) throw InputError("--csv", "needs a file name");
     check_output_file("--csv", csv_path_);
   }
+  const bool animation = animation_enabled_ && app_.count("--animate") > 0;
+  check_distinct_outputs(csv ? csv_path_ : "", animation ? animation_path_ : "", figures_dir_,
+                         figure_prefix_ + name_ + "_");
 }
 
 void Command::parse(int argc, char** argv) {

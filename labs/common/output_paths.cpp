@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <utility>
 
 #include "common/inputs.h"
 
@@ -77,6 +79,46 @@ void check_animation_file(const std::string& option, const std::string& name) {
   const fs::path parent = path.parent_path();
   if (!fs::is_directory(parent, ec) || !can_create_in(parent.string())) {
     throw InputError(option, "cannot write into directory '" + parent.string() + "'");
+  }
+}
+
+namespace {
+// Where a name points, as one spelling: absolute, with the links and dots of the part
+// that exists resolved (two names of one file compare equal).
+fs::path place(const std::string& name) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(name, ec), ec);
+  return ec ? fs::absolute(name).lexically_normal() : p;
+}
+// `inner` is `outer` or lies below it.
+bool within(const fs::path& inner, const fs::path& outer) {
+  const auto [end, _] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+  return end == outer.end();
+}
+}  // namespace
+
+void check_distinct_outputs(const std::string& csv, const std::string& animation,
+                            const std::string& figures_dir, const std::string& figure_stem) {
+  if (!csv.empty() && !animation.empty() && place(csv) == place(animation)) {
+    throw InputError("--animate",
+                     "'" + animation + "' is the file --csv writes; give each its own");
+  }
+  if (figures_dir.empty()) return;
+  const fs::path figures = place(figures_dir);
+  for (const auto& [option, name] : {std::pair{"--csv", csv}, std::pair{"--animate", animation}}) {
+    if (name.empty()) continue;
+    const fs::path file = place(name);
+    if (within(figures, file)) {
+      throw InputError("--figures", "'" + figures_dir + "' would lie inside the file " + option +
+                                        " writes ('" + name + "')");
+    }
+    const std::string leaf = file.filename().string();
+    if (file.parent_path() == figures && leaf.rfind(figure_stem, 0) == 0 && leaf.size() >= 4 &&
+        leaf.compare(leaf.size() - 4, 4, ".png") == 0) {
+      throw InputError(option, "'" + name + "' is where --figures writes its figures (" +
+                                   figure_stem + "*.png in '" + figures_dir +
+                                   "'); give another name");
+    }
   }
 }
 

@@ -5,15 +5,19 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
 
-#include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <mutex>
+#include <random>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -84,36 +88,68 @@ struct Pending {
 };
 std::vector<Pending>* g_transaction = nullptr;
 
-// A name no other writer in this process or another can be using: pid and a
-// per-process counter (threads), in the target's directory so rename() is atomic.
-// A target whose name leaves no room for the suffix (NAME_MAX) gets a short
-// hidden temporary in the same directory instead.
+// Temporaries are named TARGET.rigidlab-tmp-PID-RANDOM: the marker, the writer's
+// process id and 16 hex digits of randomness, so that no user's file has that name by
+// accident (a "c.csv.tmp-99999" of theirs is not ours). A target whose name leaves no
+// room for the suffix (NAME_MAX) gets a hidden ".rigidlab-tmp-PID-RANDOM" beside it.
+constexpr char kMarker[] = ".rigidlab-tmp-";
+constexpr std::size_t kRandomDigits = 16;
+
 std::string temporary_name(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  const std::string suffix = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  static std::random_device device;
+  static std::mutex mutex;
+  std::uint64_t random = 0;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    random = (std::uint64_t{device()} << 32) ^ device();
+  }
+  char hex[kRandomDigits + 1];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(random));
+  const std::string suffix = kMarker + std::to_string(::getpid()) + "-" + hex;
   const std::size_t slash = path.rfind('/');
   const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
   const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
   if (base.size() + suffix.size() <= NAME_MAX) return path + suffix;
-  return dir + ".rigid" + suffix;
+  return dir + suffix;
 }
 
-// Removes NAME.tmp-PID-N beside `path` whose PID is no longer running: what a
-// killed run (SIGKILL, a power cut) left behind.
+// The process id in `name` if it is exactly `prefix` + PID + "-" + 16 hex digits.
+long pid_of_temporary(const std::string& name, const std::string& prefix) {
+  if (name.size() <= prefix.size() + 1 + kRandomDigits || name.rfind(prefix, 0) != 0) return -1;
+  const std::size_t dash = name.size() - kRandomDigits - 1;
+  if (name[dash] != '-') return -1;
+  for (std::size_t i = dash + 1; i < name.size(); ++i) {
+    if (!std::isxdigit(static_cast<unsigned char>(name[i])) || std::isupper(name[i])) return -1;
+  }
+  const std::string digits = name.substr(prefix.size(), dash - prefix.size());
+  if (digits.empty() || digits.size() > 10 ||
+      digits.find_first_not_of("0123456789") != std::string::npos || digits[0] == '0') {
+    return -1;
+  }
+  return std::stol(digits);
+}
+
+// Removes the temporaries beside `path` that a killed run (SIGKILL, a power cut) left
+// behind, and only those: exactly our pattern (for this target, or the hidden short
+// form), a regular file of this user, and its process gone.
 void remove_stale(const std::string& path) {
   const std::size_t slash = path.rfind('/');
-  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  const std::string dir = slash == std::string::npos ? "./" : path.substr(0, slash + 1);
   const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
   DIR* d = ::opendir(dir.c_str());
   if (d == nullptr) return;
-  const std::string prefix = base + ".tmp-";
+  const std::string ours = base + kMarker;
   while (const dirent* e = ::readdir(d)) {
     const std::string name = e->d_name;
-    if (name.rfind(prefix, 0) != 0) continue;
-    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
-    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
-      ::unlink((slash == std::string::npos ? name : dir + name).c_str());
+    long pid = pid_of_temporary(name, ours);
+    if (pid < 0) pid = pid_of_temporary(name, kMarker);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    const std::string full = dir + name;
+    struct stat st {};
+    if (::lstat(full.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != ::getuid()) {
+      continue;
     }
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) ::unlink(full.c_str());
   }
   ::closedir(d);
 }

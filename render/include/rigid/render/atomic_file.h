@@ -1,14 +1,16 @@
 // Atomic file writing: a file appears complete under its name or not at all.
-// The content goes to a temporary in the target's directory (its name holds
-// the process id, and fits the file system's name limit), is flushed and
-// checked, and is renamed into place; a failure removes the temporary. PNG
-// figures and the labs' CSV use it.
+// The content goes to a temporary in the target's directory
+// (TARGET.rigidlab-tmp-PID-RANDOM: a marker, the process id and 16 random hex
+// digits, within the file system's name limit), is flushed and checked, and is
+// renamed into place; a failure removes the temporary. PNG figures, the labs'
+// CSV and animations use it.
 //
 // A FileTransaction makes a run's files land together or not at all: while one
 // lives, each file stays at its temporary name until commit() renames them all;
 // without a commit they are removed. SIGINT and SIGTERM remove every temporary
 // the process holds before it dies, and a writer removes the temporaries that
-// dead processes left beside its target.
+// dead processes left beside its target: names of exactly that pattern, regular
+// files of this user, whose process is gone. Nothing else is touched.
 #pragma once
 
 #include <cstdio>
