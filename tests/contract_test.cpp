@@ -366,3 +366,26 @@ TEST_CASE("contract: two outputs in one place are refused up front, and nothing 
   CHECK(fs::is_regular_file(figures / "poinsot_omega.png"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("contract: any bytes in a file name: JSON stays valid, stderr and stdout escaped") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_bytes_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // 0xff is no UTF-8 at all, U+009B is the 8-bit CSI, U+202E turns the text around.
+  const std::string name = "c\xff\xc2\x9b\xe2\x80\xae.csv";
+  const std::string quoted = "'" + (dir / name).string() + "'";
+  const auto run = run_lab("poinsot", "--json --csv " + quoted);
+  REQUIRE(run.status == 0);
+  const nlohmann::json json = run.json();  // parses: every string is UTF-8
+  const std::string written = json["outputs"].back().get<std::string>();
+  CHECK(written.find("c\\xff\\u{009b}") == std::string::npos);  // JSON shows the CSI as is
+  CHECK(written.find("c\\xff\xc2\x9b\xe2\x80\xae.csv") != std::string::npos);
+  CHECK(fs::is_regular_file(dir / name));  // the file itself has the name given
+  // The table lists the command's inputs; an error line shows the bytes escaped.
+  const auto bad = run_lab("poinsot", "--mass 'x\xff\xc2\x9b\xe2\x80\xae'");
+  CHECK(bad.status == 2);
+  CHECK(bad.one_error_line());
+  CHECK(bad.err.find("x\\xff\\u{009b}\\u{202e}") != std::string::npos);
+  CHECK(bad.err.find('\xff') == std::string::npos);
+  fs::remove_all(dir);
+}

@@ -25,28 +25,12 @@
 #include "rigid/render/draw.h"
 #include "rigid/render/video.h"
 #include "rigid/support/progress.h"
+#include "rigid/support/text.h"
 #endif
 
 namespace rigid::lab {
 namespace fs = std::filesystem;
 namespace {
-
-// A message as one printable line: user input may carry a line break or an escape
-// sequence, which would forge a second error line or colour the terminal.
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') {
-      out += "\\n";
-    } else if (u < 0x20 || u == 0x7f) {
-      out += fmt::format("\\x{:02x}", u);
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
 
 // A component the validator has accepted, as a number.
 double component(const std::string& text) {
@@ -505,19 +489,20 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     }
   } catch (const InputError& e) {
     const std::string what = e.input.empty() ? blamed_option() + ": " + e.rule : e.what();
-    std::cerr << name_ << ": error: " << escaped(what) << '\n';
+    std::cerr << name_ << ": error: " << support::terminal_safe(what) << '\n';
     return 2;
   } catch (const std::exception& e) {
     // A rule of core's broken where the lab named no input (or a failure it did
     // not foresee): the inputs given are to blame, the first physical one named.
-    std::cerr << name_ << ": error: " << escaped(blamed_option() + ": " + e.what()) << '\n';
+    std::cerr << name_ << ": error: " << support::terminal_safe(blamed_option() + ": " + e.what())
+              << '\n';
     return 2;
   }
   for (const std::string& warning : warnings_) {
-    std::cerr << name_ << ": warning: " << escaped(warning) << '\n';
+    std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
   }
   for (const std::string& warning : report->warnings()) {
-    std::cerr << name_ << ": warning: " << escaped(warning) << '\n';
+    std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
   }
   outputs_.figures_dir = figures_dir_;
   outputs_.csv_path = csv_path_;
@@ -621,7 +606,7 @@ void Command::draw_figures(const Computed& computed) {
     throw;
   } catch (const std::exception& e) {
     figures_failed_ = true;
-    std::cerr << name_ << ": error: --figures: " << e.what() << '\n';
+    std::cerr << name_ << ": error: --figures: " << support::terminal_safe(e.what()) << '\n';
   }
 }
 
@@ -734,15 +719,15 @@ void Command::animate(const Computed& computed) {
     progress.finish(fmt::format(
         "wrote {}: {} frames, {}x{} at {:g} fps ({:g} s of video for {:.3g} s of motion), "
         "{:.1f} MB, in {:.1f} s",
-        animation_path_, frames, w, h, animation_fps_, frames / animation_fps_, motion_seconds,
-        bytes / 1e6, seconds));
+        support::terminal_safe(animation_path_), frames, w, h, animation_fps_,
+        frames / animation_fps_, motion_seconds, bytes / 1e6, seconds));
   } catch (const InputError&) {
     throw;
   } catch (const std::invalid_argument& e) {
     throw InputError("--animate", e.what());
   } catch (const std::exception& e) {
     figures_failed_ = true;
-    std::cerr << name_ << ": error: --animate: " << e.what() << '\n';
+    std::cerr << name_ << ": error: --animate: " << support::terminal_safe(e.what()) << '\n';
   }
 #else
   (void)report;

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "rigid/format.h"
+#include "rigid/support/text.h"
 
 namespace rigid::lab {
 namespace fs = std::filesystem;
@@ -27,6 +28,22 @@ std::string text_of(const Json& value) {
   return value.dump();
 }
 
+// Every string of `json`, keys too, as valid UTF-8 (a file name may hold any bytes).
+Json utf8_safe(const Json& json) {
+  if (json.is_string()) return support::utf8_safe(json.get<std::string>());
+  if (json.is_array()) {
+    Json out = Json::array();
+    for (const Json& item : json) out.push_back(utf8_safe(item));
+    return out;
+  }
+  if (json.is_object()) {
+    Json out = Json::object();
+    for (const auto& [key, value] : json.items()) out[support::utf8_safe(key)] = utf8_safe(value);
+    return out;
+  }
+  return json;
+}
+
 // The widest value that sets the value column's width; longer ones (sentences) overflow it.
 constexpr std::size_t kValueColumnMax = 40;
 
@@ -38,7 +55,7 @@ void write_table(std::ostream& out, const Report& report, const RunOutputs& outp
   for (const auto& [key, value] : report.inputs().items()) {
     inputs += (inputs.empty() ? "" : ", ") + key + " = " + text_of(value);
   }
-  out << "inputs: " << inputs << "\n";
+  out << "inputs: " << support::terminal_safe(inputs) << "\n";
   size_t label_width = 8, value_width = 5, unit_width = 4;
   bool any_textbook = false;
   for (const auto& row : report.rows()) {
@@ -70,13 +87,14 @@ void write_table(std::ostream& out, const Report& report, const RunOutputs& outp
     for (const auto& note : report.notes()) out << "  - " << note << "\n";
   }
   if (!outputs.animation.is_null()) {
-    out << "\nanimation: " << outputs.animation_path << "  "
+    out << "\nanimation: " << support::terminal_safe(outputs.animation_path) << "  "
         << outputs.animation["caption"].get<std::string>() << "\n";
   }
   if (!outputs.figures.empty()) {
-    out << "\nfigures in " << outputs.figures_dir << ":\n";
+    out << "\nfigures in " << support::terminal_safe(outputs.figures_dir) << ":\n";
     for (const auto& figure : outputs.figures) {
-      out << "  " << figure << "  " << outputs.captions[figure].get<std::string>() << "\n";
+      out << "  " << support::terminal_safe(figure) << "  "
+          << outputs.captions[figure].get<std::string>() << "\n";
     }
   }
 }
@@ -109,7 +127,7 @@ void write_json(std::ostream& out, const Report& report, const RunOutputs& outpu
   if (!outputs.animation.is_null()) files.push_back(outputs.animation["path"]);
   json["outputs"] = files;
   json["notes"] = report.notes();
-  out << json.dump(2) << "\n";
+  out << utf8_safe(json).dump(2) << "\n";
 }
 
 std::string csv_text(const TimeSeries& series) {

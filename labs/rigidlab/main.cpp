@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "rigid/support/text.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -184,7 +186,8 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     std::cerr << "rigidlab: error: figures: " << failed << " lab(s) failed (their lines above)\n";
     return 1;
   }
-  std::cout << "figures of " << labs.size() << " labs in " << fs::absolute(out).string() << "\n";
+  std::cout << "figures of " << labs.size() << " labs in "
+            << rigid::support::terminal_safe(fs::absolute(out).string()) << "\n";
   return 0;
 }
 
@@ -210,7 +213,8 @@ int main(int argc, char** argv) {
   const std::string& command = args[0];
   if (command == "--version") {
     if (args.size() > 1) {
-      std::cerr << "rigidlab: error: --version: takes nothing after it (got '" << args[1] << "')\n";
+      std::cerr << "rigidlab: error: --version: takes nothing after it (got '"
+                << rigid::support::terminal_safe(args[1]) << "')\n";
       return 2;
     }
     std::cout << "rigidlab " << RIGID_VERSION << "\n";
@@ -224,7 +228,7 @@ int main(int argc, char** argv) {
       app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
     } catch (const CLI::ParseError& e) {
       if (e.get_exit_code() == 0) return app.exit(e);
-      std::cerr << "rigidlab: error: list: " << e.what() << "\n";
+      std::cerr << "rigidlab: error: list: " << rigid::support::terminal_safe(e.what()) << "\n";
       return 2;
     }
     return list(names);
@@ -240,7 +244,7 @@ int main(int argc, char** argv) {
       app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
     } catch (const CLI::ParseError& e) {
       if (e.get_exit_code() == 0) return app.exit(e);
-      std::cerr << "rigidlab: error: figures: " << e.what() << "\n";
+      std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(e.what()) << "\n";
       return 2;
     }
     return figures(out, size, prefix);
@@ -251,11 +255,11 @@ int main(int argc, char** argv) {
     for (int i = 2; i < argc; ++i) lab_argv.push_back(argv[i]);
     lab_argv.push_back(nullptr);
     ::execv(path.c_str(), lab_argv.data());
-    std::cerr << "rigidlab: error: " << command << ": cannot run " << path << " ("
-              << std::strerror(errno) << ")\n";
+    std::cerr << "rigidlab: error: " << command << ": cannot run "
+              << rigid::support::terminal_safe(path) << " (" << std::strerror(errno) << ")\n";
     return 1;
   }
-  std::cerr << "rigidlab: error: " << command
+  std::cerr << "rigidlab: error: " << rigid::support::terminal_safe(command)
             << ": no such lab or command (rigidlab list shows the labs)\n";
   return 2;
 }

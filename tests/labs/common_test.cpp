@@ -6,6 +6,7 @@
 
 #include "common/report.h"
 #include "common/writers.h"
+#include "rigid/support/text.h"
 
 using rigid::lab::Report;
 
@@ -64,4 +65,27 @@ TEST_CASE("lab common: the table's value column is as wide as its numbers, not i
   CHECK(number.find(shown) == value_at);
   CHECK(unit_at == value_at + shown.size() + 2);
   CHECK(number.find(" m") + 1 == unit_at);
+}
+
+TEST_CASE("lab common: user text is shown byte for byte and cannot act on a terminal") {
+  using rigid::support::terminal_safe;
+  using rigid::support::utf8_safe;
+  // Valid UTF-8 stays: accents, the degree sign, a four-byte character.
+  const std::string plain = "r\xc3\xa9sum\xc3\xa9 30\xc2\xb0 \xf0\x9f\x8e\xbe";
+  CHECK(terminal_safe(plain) == plain);
+  CHECK(utf8_safe(plain) == plain);
+  // What is not UTF-8, byte by byte: a stray continuation, an overlong '/', a UTF-16
+  // surrogate, a sequence cut short, beyond U+10FFFF.
+  CHECK(utf8_safe("a\x80z") == "a\\x80z");
+  CHECK(utf8_safe("\xc0\xaf") == "\\xc0\\xaf");
+  CHECK(utf8_safe("\xed\xa0\x80") == "\\xed\\xa0\\x80");
+  CHECK(utf8_safe("\xe2\x82") == "\\xe2\\x82");
+  CHECK(utf8_safe("\xf4\x90\x80\x80") == "\\xf4\\x90\\x80\\x80");
+  // JSON keeps control characters (it escapes them itself); a terminal line does not.
+  CHECK(utf8_safe("a\nb\x1b[31m") == "a\nb\x1b[31m");
+  CHECK(terminal_safe("a\nb\x1b[31m\x7f") == "a\\nb\\x1b[31m\\x7f");
+  CHECK(terminal_safe("\xc2\x9b"
+                      "31m") == "\\u{009b}31m");
+  CHECK(terminal_safe("abc\xe2\x80\xae"
+                      "def\xe2\x81\xa6") == "abc\\u{202e}def\\u{2066}");
 }
