@@ -389,3 +389,24 @@ TEST_CASE("contract: any bytes in a file name: JSON stays valid, stderr and stdo
   CHECK(bad.err.find('\xff') == std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("contract: a figure or animation that fails lands nothing, not even the CSV or folder") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_none_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string d = dir.string();
+  // No renderer to be had: the figures fail after the CSV was ready.
+  for (const std::string& outputs :
+       {"--csv '" + d + "/c.csv' --figures '" + d + "/F/sub'",
+        "--csv '" + d + "/c.csv' --animate '" + d + "/a.webp' --duration 0.5 --fps 4",
+        "--csv '" + d + "/c.csv' --animate '" + d + "/a.webp' --duration 0.5 --fps 4 --figures '" +
+            d + "/F'"}) {
+    INFO(outputs);
+    const auto run = run_lab("poinsot", "--json " + outputs, "RIGID_GL_BACKEND=bogus");
+    CHECK(run.status == 1);
+    CHECK(run.out.empty());
+    CHECK(run.err.find("RIGID_GL_BACKEND") != std::string::npos);
+    CHECK(fs::is_empty(dir));
+  }
+  fs::remove_all(dir);
+}

@@ -105,6 +105,7 @@ class Command {
   std::list<OptionSlot> slots_;
   bool json_ = false, quiet_ = false, timing_ = false, csv_enabled_, animation_enabled_;
   bool figures_failed_ = false;
+  std::vector<fs::path> created_dirs_;  ///< by --figures, deepest first
   std::string figures_dir_, figure_size_ = "1600x1200", figure_prefix_, csv_path_;
   int figure_width_ = 1600, figure_height_ = 1200;
   std::string animation_path_, animation_size_ = "1280x720";
@@ -456,6 +457,14 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
   // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   const Report* report = nullptr;
+  std::string printed;
+  // Unless the run's files landed, the folders it made go too (if still empty).
+  bool landed = false;
+  const std::shared_ptr<void> unmake(nullptr, [&](void*) {
+    if (landed) return;
+    std::error_code ignored;
+    for (const fs::path& dir : created_dirs_) fs::remove(dir, ignored);
+  });
   try {
     try {
       parse(argc, argv);
@@ -472,7 +481,7 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     const Computed computed = compute();
     report = computed.report;
     if (computed.animation) animate(computed);
-    if (!figures_dir_.empty()) draw_figures(computed);
+    if (!figures_failed_ && !figures_dir_.empty()) draw_figures(computed);
     if (!csv_path_.empty() && !report->time_series().columns.empty()) {
       const std::string text = csv_text(report->time_series());
       try {
@@ -482,11 +491,29 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
         throw InputError("--csv", e.what());
       }
     }
+    // A figure or the animation that failed (its error line is out): nothing lands.
+    if (figures_failed_) return 1;
+    // The report as it will be printed, composed before any file lands: once the
+    // renames are done, only writing it to stdout is left.
+    outputs_.figures_dir = figures_dir_;
+    outputs_.csv_path = csv_path_;
+    outputs_.animation_path = animation_path_;
+    if (timing_) {
+      outputs_.timing = {{"figure_seconds", figure_seconds_}, {"figure_phases", figure_phases_}};
+    }
+    std::ostringstream text;
+    if (json_) {
+      write_json(text, *report, outputs_, RIGID_VERSION);
+    } else if (!quiet_) {
+      write_table(text, *report, outputs_);
+    }
     try {
       files.commit();
     } catch (const std::runtime_error& e) {
       throw InputError(csv_path_.empty() ? "--figures" : "--csv", e.what());
     }
+    landed = true;
+    printed = text.str();
   } catch (const InputError& e) {
     const std::string what = e.input.empty() ? blamed_option() + ": " + e.rule : e.what();
     std::cerr << name_ << ": error: " << support::terminal_safe(what) << '\n';
@@ -504,17 +531,7 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
   for (const std::string& warning : report->warnings()) {
     std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
   }
-  outputs_.figures_dir = figures_dir_;
-  outputs_.csv_path = csv_path_;
-  outputs_.animation_path = animation_path_;
-  if (timing_) {
-    outputs_.timing = {{"figure_seconds", figure_seconds_}, {"figure_phases", figure_phases_}};
-  }
-  if (json_) {
-    write_json(std::cout, *report, outputs_, RIGID_VERSION);
-  } else if (!quiet_) {
-    write_table(std::cout, *report, outputs_);
-  }
+  std::cout << printed;
   // Output that never arrived (stdout closed, a full disk, a closed pipe) is an error.
   std::cout.flush();
   if (!std::cout) {
@@ -522,7 +539,7 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
               << std::strerror(errno) << ")\n";
     return 1;
   }
-  return figures_failed_ ? 1 : 0;
+  return 0;
 }
 
 // ---- Figures ----------------------------------------------------------------
@@ -587,6 +604,12 @@ void Command::FigureFiles::save(const std::string& name, const std::string& capt
 
 void Command::draw_figures(const Computed& computed) {
   std::error_code error;
+  // The folders this run makes, deepest first: removed again if the run lands nothing.
+  for (fs::path dir = fs::absolute(figures_dir_, error).lexically_normal();
+       !error && !dir.empty() && !fs::exists(dir, error) && dir != dir.parent_path();
+       dir = dir.parent_path()) {
+    created_dirs_.push_back(dir);
+  }
   fs::create_directories(figures_dir_, error);
   if (error) {
     throw InputError("--figures",
