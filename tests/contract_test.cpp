@@ -94,6 +94,9 @@ TEST_CASE("contract: input no lab accepts exits 2 with one line naming the optio
       {"--figure-size big", "--figure-size"},
       {"--figures", "--figures"},
       {"--figures /proc/rigidlab-cannot", "--figures"},
+      // a side that wraps to 800 in an int is too large, not 800
+      {"--figure-size 4294968096x600 --figures /tmp", "--figure-size"},
+      {"--figure-size 800x4294967896 --figures /tmp", "--figure-size"},
   };
   for (const std::string& lab : all_labs()) {
     for (const auto& [args, option] : cases) {
@@ -409,4 +412,22 @@ TEST_CASE("contract: a figure or animation that fails lands nothing, not even th
     CHECK(fs::is_empty(dir));
   }
   fs::remove_all(dir);
+}
+
+TEST_CASE("contract: an animation with no whole frame, or beyond the work budget, is refused") {
+  const std::pair<const char*, const char*> cases[] = {
+      // 0.1 of a frame, which was stretched to a second of video
+      {"--fps 1 --duration 0.1", "holds no whole frame at --fps 1"},
+      {"--animation-size 3840x2160 --fps 120 --duration 600", "beyond the budget"},
+      {"--animation-size 1920x1080 --fps 60 --duration 81", "beyond the budget"},
+  };
+  for (const auto& [args, rule] : cases) {
+    INFO(args);
+    const auto run = run_lab("poinsot", std::string("--animate /tmp/never.webp ") + args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind("poinsot: error: --duration: ", 0) == 0);
+    CHECK(run.err.find(rule) != std::string::npos);
+  }
+  CHECK_FALSE(std::filesystem::exists("/tmp/never.webp"));
 }

@@ -40,16 +40,29 @@ double component(const std::string& text) {
 }
 
 // "1280x720" into width and height within the limits; the rule broken, or "".
+// Each side is read as digits alone, compared before it is stored: a side of
+// 4294968096 (which wraps to 800 in an int) is too large, not 800.
 std::string parse_size(const std::string& text, int min_w, int min_h, int max_w, int max_h,
                        bool even, int& width, int& height) {
+  const std::string rule =
+      fmt::format("must be WxH{} with {} <= W <= {} and {} <= H <= {} (got '{}')",
+                  even ? ", both even," : "", min_w, max_w, min_h, max_h, text);
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return rule;
+  const auto side = [](const std::string& digits, int lo, int hi, int& out) {
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
+      return false;
+    }
+    const long value = std::stol(digits);
+    if (value < lo || value > hi) return false;
+    out = static_cast<int>(value);
+    return true;
+  };
   int w = 0, h = 0;
-  char x = 0, extra = 0;
-  const int read = std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
-  // 1920x1080 or 1920X1080
-  if (read != 3 || (x != 'x' && x != 'X') || w < min_w || h < min_h || w > max_w || h > max_h ||
+  if (!side(text.substr(0, x), min_w, max_w, w) || !side(text.substr(x + 1), min_h, max_h, h) ||
       (even && (w % 2 != 0 || h % 2 != 0))) {
-    return fmt::format("must be WxH{} with {} <= W <= {} and {} <= H <= {} (got '{}')",
-                       even ? ", both even," : "", min_w, max_w, min_h, max_h, text);
+    return rule;
   }
   width = w;
   height = h;
@@ -59,6 +72,10 @@ std::string parse_size(const std::string& text, int min_w, int min_h, int max_w,
 // Frame k at k/frames of the motion (the last frame one short of its end, so a periodic
 // motion loops without a repeated frame), the camera fitted at kFitSamples more.
 constexpr int kFitSamples = 16;
+// The most pixels an animation may draw, frames x width x height: 3840x2160 for
+// 1200 frames (10 s at 120 fps) or 1920x1080 for 4800 frames (80 s at 60 fps).
+constexpr double kMaxPixelFrames = 1e10;
+
 int frame_count(double duration, double fps) {
   return std::max(1, static_cast<int>(std::lround(duration * fps)));
 }
@@ -396,6 +413,25 @@ void Command::check_animation_path() const {
   }
 #endif
   check_animation_file("--animate", animation_path_);
+  // At least one frame: 1 fps for 0.1 s would be stretched to a second of video.
+  const double frames = animation_fps_ * animation_duration_;
+  if (frames < 1.0) {
+    throw InputError("--duration",
+                     fmt::format("holds no whole frame at --fps {:g} (fps x duration = {:g}); give "
+                                 "at least {:g} s",
+                                 animation_fps_, frames, 1.0 / animation_fps_));
+  }
+  // The work before it starts: every frame is drawn and encoded, so frames x pixels
+  // bounds it (kMaxPixelFrames).
+  const double pixel_frames = frames * animation_width_ * animation_height_;
+  if (pixel_frames > kMaxPixelFrames) {
+    throw InputError("--duration",
+                     fmt::format("{:g} frames of {}x{} are {:.3g} pixels to draw, beyond the "
+                                 "budget of {:.3g}: shorten --duration, or lower --fps or "
+                                 "--animation-size",
+                                 std::round(frames), animation_width_, animation_height_,
+                                 pixel_frames, kMaxPixelFrames));
+  }
 }
 
 void Command::check_output_paths() const {
