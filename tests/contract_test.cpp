@@ -115,12 +115,22 @@ TEST_CASE("contract: output that never arrives is an error, not a silent exit 0"
     INFO(lab);
     // A full disk (/dev/full) and a closed stdout: exit 1 and one line on stderr.
     for (const char* redirect : {"> /dev/full", ">&-"}) {
-      INFO(redirect);
-      const auto run = run_lab(lab, std::string("--json ") + redirect);
-      CHECK(run.status == 1);
-      CHECK(run.one_error_line());
-      CHECK(run.err.rfind(lab + ": error: stdout: ", 0) == 0);
+      for (const char* what : {"--json ", "--help ", "--version "}) {
+        INFO(what << redirect);
+        const auto run = run_lab(lab, std::string(what) + redirect);
+        CHECK(run.status == 1);
+        CHECK(run.one_error_line());
+        CHECK(run.err.rfind(lab + ": error: stdout: ", 0) == 0);
+      }
     }
+  }
+  // The front door's own output likewise.
+  for (const char* what : {"list", "list --names", "--version", "--help", "list --help"}) {
+    INFO(what);
+    const auto run = run_lab("rigidlab", std::string(what) + " > /dev/full");
+    CHECK(run.status == 1);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind("rigidlab: error: stdout: ", 0) == 0);
   }
 }
 

@@ -99,6 +99,8 @@ class Command {
   Command(const std::string& name, const std::string& title, const std::vector<BoundInput>& inputs,
           bool csv, bool animation);
   int run(int argc, char** argv, const std::function<Computed()>& compute);
+  /// `status`, or 1 with one line on stderr if what went to stdout did not arrive.
+  int stdout_written(int status) const;
 
  private:
   class FigureFiles;
@@ -489,6 +491,18 @@ void Command::parse(int argc, char** argv) {
   }
 }
 
+int Command::stdout_written(int status) const {
+  // Output that never arrived (stdout closed, a full disk, a closed pipe) is an error,
+  // for --help and --version as for a run.
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << name_ << ": error: stdout: the output could not be written ("
+              << std::strerror(errno) << ")\n";
+    return 1;
+  }
+  return status;
+}
+
 int Command::run(int argc, char** argv, const std::function<Computed()>& compute) {
   // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
@@ -505,9 +519,9 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     try {
       parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-      return app_.exit(e);
+      return stdout_written(app_.exit(e));
     } catch (const CLI::CallForVersion& e) {
-      return app_.exit(e);
+      return stdout_written(app_.exit(e));
     }
     store();
     check_output_paths();
@@ -568,14 +582,7 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
   }
   std::cout << printed;
-  // Output that never arrived (stdout closed, a full disk, a closed pipe) is an error.
-  std::cout.flush();
-  if (!std::cout) {
-    std::cerr << name_ << ": error: stdout: the output could not be written ("
-              << std::strerror(errno) << ")\n";
-    return 1;
-  }
-  return 0;
+  return stdout_written(0);
 }
 
 // ---- Figures ----------------------------------------------------------------

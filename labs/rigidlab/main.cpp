@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <array>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -201,9 +202,7 @@ void usage(std::ostream& os) {
      << "  rigidlab --version             the version\n";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     // Asked for: the usage on stdout; no command at all: on stderr, as an error.
@@ -262,4 +261,19 @@ int main(int argc, char** argv) {
   std::cerr << "rigidlab: error: " << rigid::support::terminal_safe(command)
             << ": no such lab or command (rigidlab list shows the labs)\n";
   return 2;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  const int status = run(argc, argv);
+  // What went to stdout (the usage, the version, the list) must have arrived.
+  std::cout.flush();
+  if (!std::cout && status == 0) {
+    std::cerr << "rigidlab: error: stdout: the output could not be written ("
+              << std::strerror(errno) << ")\n";
+    return 1;
+  }
+  return status;
 }
