@@ -441,3 +441,32 @@ TEST_CASE("contract: an animation with no whole frame, or beyond the work budget
   }
   CHECK_FALSE(std::filesystem::exists("/tmp/never.webp"));
 }
+
+TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave no temporaries") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_term_" + std::to_string(::getpid()));
+  const fs::path status_file = dir.string() + ".status";
+  for (const char* after : {"2", "6"}) {  // during the first lab alone, and during the others
+    INFO("SIGTERM after " << after << " s");
+    // To rigidlab alone (not its process group, as a terminal's Ctrl-C or timeout would).
+    const std::string script =
+        std::string("(") + RIGID_LAB_DIR + "/rigidlab figures --figure-size 8192x8192 --out '" +
+        dir.string() + "' 2>/dev/null & p=$!; sleep " + after +
+        "; kill -TERM $p; wait $p; echo $? > '" + status_file.string() + "')";
+    REQUIRE(std::system(script.c_str()) == 0);
+    std::ifstream status(status_file);
+    int code = 0;
+    status >> code;
+    CHECK(code == 128 + 15);  // rigidlab died of the signal, after its labs
+    // Every lab it ran has stopped (none still writes into the folder) and left no temporary.
+    const std::string still = "pgrep -f -- '[-]-figures " + dir.string() + "' > /dev/null 2>&1";
+    CHECK(std::system(still.c_str()) != 0);  // (the bracket keeps pgrep's own shell out)
+    if (fs::exists(dir)) {
+      for (const auto& entry : fs::directory_iterator(dir)) {
+        CHECK(entry.path().filename().string().find(".rigidlab-tmp-") == std::string::npos);
+      }
+    }
+    fs::remove_all(dir);
+    fs::remove(status_file);
+  }
+}

@@ -105,11 +105,65 @@ int list(bool names_only) {
   return 0;
 }
 
+// The labs `figures` runs, in fixed storage a signal handler may read: SIGINT and
+// SIGTERM to rigidlab are passed on to each (kill is async-signal-safe), which then
+// removes its temporaries and dies; rigidlab waits for them all and dies as asked.
+constexpr int kMaxChildren = 256;
+volatile std::sig_atomic_t g_child[kMaxChildren] = {};
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void forward_signal(int sig) {
+  g_signal = sig;
+  for (int i = 0; i < kMaxChildren; ++i) {
+    if (g_child[i] > 0) ::kill(static_cast<pid_t>(g_child[i]), sig);
+  }
+}
+
+void forward_signals() {
+  for (const int sig : {SIGINT, SIGTERM}) {
+    struct sigaction action {};
+    action.sa_handler = forward_signal;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(sig, &action, nullptr);
+  }
+}
+
+void track(pid_t pid, bool running) {
+  for (int i = 0; i < kMaxChildren; ++i) {
+    if (running ? g_child[i] == 0 : g_child[i] == pid) {
+      g_child[i] = running ? pid : 0;
+      return;
+    }
+  }
+}
+
+// After every lab has ended: die by the signal that was forwarded, if one was.
+void die_if_signalled() {
+  if (g_signal == 0) return;
+  std::signal(g_signal, SIG_DFL);
+  std::raise(g_signal);
+}
+
 // Starts a lab with `args`, its stdout to /dev/null and stderr kept (or into `err_fd`
 // if one is given); returns the pid.
 pid_t start(const std::string& lab, const std::vector<std::string>& args, int err_fd = -1) {
+  // A signal arriving between fork and track would miss the child: held until then.
+  sigset_t block, old;
+  sigemptyset(&block);
+  sigaddset(&block, SIGINT);
+  sigaddset(&block, SIGTERM);
+  ::sigprocmask(SIG_BLOCK, &block, &old);
   const pid_t pid = ::fork();
+  if (pid > 0) track(pid, true);
+  if (pid != 0) {
+    ::sigprocmask(SIG_SETMASK, &old, nullptr);
+    if (g_signal != 0 && pid > 0) ::kill(pid, g_signal);  // already asked to stop
+  }
   if (pid == 0) {
+    // the lab's own handlers, and the mask it was started with
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    ::sigprocmask(SIG_SETMASK, &old, nullptr);
     if (err_fd >= 0) ::dup2(err_fd, STDERR_FILENO);
     std::vector<char*> argv;
     const std::string path = lab_path(lab).string();
@@ -134,16 +188,25 @@ int run_captured(const std::string& lab, const std::vector<std::string>& args, s
   const pid_t pid = start(lab, args, fds[1]);
   ::close(fds[1]);
   std::array<char, 4096> buffer{};
-  for (ssize_t n; (n = ::read(fds[0], buffer.data(), buffer.size())) > 0;)
-    err.append(buffer.data(), n);
+  for (;;) {
+    const ssize_t n = ::read(fds[0], buffer.data(), buffer.size());
+    if (n > 0) {
+      err.append(buffer.data(), n);
+    } else if (n == 0 || errno != EINTR) {
+      break;
+    }
+  }
   ::close(fds[0]);
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  track(pid, false);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 // Every lab's figures into `out`, as many labs at once as there are processors.
 int figures(const std::string& out, const std::string& size, const std::string& prefix) {
+  forward_signals();
   std::vector<std::string> args{"--quiet", "--figures", out, "--figure-size", size};
   if (!prefix.empty()) args.insert(args.end(), {"--figure-prefix", prefix});
   // The first lab alone: it checks the options by the labs' own rules, so bad ones are
@@ -151,6 +214,7 @@ int figures(const std::string& out, const std::string& size, const std::string& 
   const std::vector<std::string> labs = lab_names();
   std::string err;
   const int first = run_captured(labs.front(), args, err);
+  die_if_signalled();
   if (first == 2) {
     const std::string prefix_of_lab = labs.front() + ": error: ";
     if (err.rfind(prefix_of_lab, 0) == 0) err.erase(0, prefix_of_lab.size());
@@ -167,7 +231,10 @@ int figures(const std::string& out, const std::string& size, const std::string& 
   std::vector<std::pair<pid_t, std::string>> running;
   const auto wait_one = [&] {
     int status = 0;
-    const pid_t pid = ::wait(&status);
+    pid_t pid = 0;
+    while ((pid = ::wait(&status)) < 0 && errno == EINTR) {
+    }
+    track(pid, false);
     for (auto it = running.begin(); it != running.end(); ++it) {
       if (it->first != pid) continue;
       const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
@@ -177,12 +244,14 @@ int figures(const std::string& out, const std::string& size, const std::string& 
       return;
     }
   };
-  for (std::size_t k = 1; k < labs.size(); ++k) {
+  for (std::size_t k = 1; k < labs.size() && g_signal == 0; ++k) {
     const std::string& lab = labs[k];
     if (static_cast<long>(running.size()) >= cpus) wait_one();
+    if (g_signal != 0) break;
     running.emplace_back(start(lab, args), lab);
   }
   while (!running.empty()) wait_one();
+  die_if_signalled();
   if (failed > 0) {
     std::cerr << "rigidlab: error: figures: " << failed << " lab(s) failed (their lines above)\n";
     return 1;
