@@ -49,7 +49,9 @@ const InputTable<Inputs>& input_table() {
         .symbol("\\omega");
     t.number("--perturbation", &Inputs::perturbation,
              "transverse share of omega at launch, along the next axis (1->2, 2->3, 3->1)")
-        .open_range(0.0, 0.5)
+        // From 1e-60, as every input's magnitude: the polhode's k'^2 ~ share^2 must not
+        // underflow (below ~1e-154 the period came out infinite, "first flip: none").
+        .range_from(1e-60, 0.5)
         .symbol("\\epsilon");
     add_end_time_inputs(t, &Inputs::t_end, &Inputs::periods, "polhode period",
                         "one polhode period of the spin about axis 2: two flips");

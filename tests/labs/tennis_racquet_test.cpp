@@ -460,3 +460,19 @@ TEST_CASE("tennis_racquet: 'not small' is said of a large disturbance only, with
                                  p, share));
   }
 }
+
+TEST_CASE("tennis_racquet: a disturbance a double cannot follow is refused, not a false 'stable'") {
+  // The polhode's k'^2 ~ share^2 underflows below a share of ~1e-154 (an infinite period:
+  // "first flip: none"); the rule starts at 1e-60, as every input's magnitude does, and
+  // there the spin about 2 flips after ln(1/share)/rate.
+  Inputs in;
+  in.perturbation = 1e-60;
+  const auto report = compute(in);
+  CHECK(std::isfinite(value(report.results(), "polhode_period_s")));
+  CHECK(value(report.results(), "first_flip_s") > 0.0);
+  for (const double p : {1e-61, 1e-154, 1e-160, 1e-300, 0.0}) {
+    in.perturbation = p;
+    CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError,
+                         rigid::test::names_input("--perturbation"));
+  }
+}
