@@ -47,6 +47,25 @@ inline std::string hex_escape(unsigned char b) {
   return buffer;
 }
 
+// `text` with each byte that starts no valid sequence as "\xNN" and each valid
+// sequence as `shown(code, sequence)` returns it.
+template <class Shown>
+std::string escape_utf8(const std::string& text, Shown shown) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    char32_t code = 0;
+    const int length = utf8_sequence(text, i, code);
+    if (length == 0) {
+      out += hex_escape(static_cast<unsigned char>(text[i]));
+      ++i;
+    } else {
+      out += shown(code, text.substr(i, length));
+      i += length;
+    }
+  }
+  return out;
+}
+
 }  // namespace detail
 
 /// For one terminal line: \n as "\n", other C0 controls, DEL and invalid UTF-8 bytes
@@ -54,48 +73,23 @@ inline std::string hex_escape(unsigned char b) {
 /// overrides and isolates (U+202A..U+202E, U+2066..U+2069) as "\u{NNNN}"; the rest
 /// of valid UTF-8 as it is.
 inline std::string terminal_safe(const std::string& text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size();) {
-    char32_t code = 0;
-    const int length = detail::utf8_sequence(text, i, code);
-    if (length == 0) {
-      out += detail::hex_escape(static_cast<unsigned char>(text[i]));
-      ++i;
-      continue;
-    }
-    if (code == '\n') {
-      out += "\\n";
-    } else if (code < 0x20 || code == 0x7f) {
-      out += detail::hex_escape(static_cast<unsigned char>(code));
-    } else if ((code >= 0x80 && code <= 0x9f) || (code >= 0x202a && code <= 0x202e) ||
-               (code >= 0x2066 && code <= 0x2069)) {
+  return detail::escape_utf8(text, [](char32_t code, const std::string& sequence) -> std::string {
+    if (code == '\n') return "\\n";
+    if (code < 0x20 || code == 0x7f) return detail::hex_escape(static_cast<unsigned char>(code));
+    if ((code >= 0x80 && code <= 0x9f) || (code >= 0x202a && code <= 0x202e) ||
+        (code >= 0x2066 && code <= 0x2069)) {
       char buffer[12];
       std::snprintf(buffer, sizeof buffer, "\\u{%04x}", static_cast<unsigned>(code));
-      out += buffer;
-    } else {
-      out.append(text, i, length);
+      return buffer;
     }
-    i += length;
-  }
-  return out;
+    return sequence;
+  });
 }
 
 /// Valid UTF-8 for a JSON string: each byte that is not part of a valid sequence as
 /// the four characters "\xNN" (so "c\xff.csv" reads as the name given); the rest unchanged.
 inline std::string utf8_safe(const std::string& text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size();) {
-    char32_t code = 0;
-    const int length = detail::utf8_sequence(text, i, code);
-    if (length == 0) {
-      out += detail::hex_escape(static_cast<unsigned char>(text[i]));
-      ++i;
-    } else {
-      out.append(text, i, length);
-      i += length;
-    }
-  }
-  return out;
+  return detail::escape_utf8(text, [](char32_t, const std::string& sequence) { return sequence; });
 }
 
 }  // namespace rigid::support
