@@ -3,6 +3,7 @@
 #pragma once
 
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <cmath>
 #include <map>
 #include <string>
@@ -13,6 +14,13 @@
 #include "common/report.h"
 
 namespace rigid::test {
+
+/// The relative difference between a closed form as the lab evaluates it and as a test
+/// writes it out: a handful of roundings of half an ulp each. Most such checks agree
+/// to the last bit (scripts/tolerance-audit: "exact") or within 2 eps; the allowance
+/// is for a compiler that contracts or reorders. A formula that cancels says its own
+/// bound beside the check.
+inline constexpr double kRoundoff = 4 * DBL_EPSILON;
 
 /// A numeric result by key (throws if absent or not a number).
 inline double value(const rigid::lab::Json& results, const char* key) {
