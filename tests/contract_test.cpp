@@ -470,3 +470,48 @@ TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave n
     fs::remove(status_file);
   }
 }
+
+TEST_CASE("contract: a number a double cannot hold breaks the magnitude rule, quoted short") {
+  // strtod rounds 1e400 to infinity and 1e-400 to zero; the rule broken is the range
+  // 1e-60..1e60, not "finite" or "positive". A 100,000-digit value is quoted by its
+  // first 32 characters and its length: the error stays one short line.
+  const std::string digits(100000, '7');
+  const std::pair<std::string, std::string> cases[] = {
+      {"--t-end " + digits, "--t-end: must be between 1e-60 and 1e60 (got 77777777"},
+      {"--t-end 1e400", "--t-end: must be between 1e-60 and 1e60 (got 1e400)"},
+      {"--t-end 1e-400", "--t-end: must be between 1e-60 and 1e60 (got 1e-400)"},
+      {"--t-end 0x1p-2000", "--t-end: must be between 1e-60 and 1e60 (got 0x1p-2000)"},
+      {"--omega 1,-1e999,1", "--omega: must be 0 or between 1e-60 and 1e60 in magnitude"},
+      {"--t-end 0", "--t-end: must be positive (got 0)"},
+      {"--t-end inf", "--t-end: must be finite (got inf)"},
+      {"--t-end x" + digits, "--t-end: must be a number (got 'x7777777"},
+  };
+  for (const auto& [args, error] : cases) {
+    INFO(args.substr(0, 60));
+    const auto run = run_lab("poinsot", args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind("poinsot: error: " + error, 0) == 0);
+    CHECK(run.err.size() < 200);
+    CHECK(run.out.empty());
+  }
+  const auto run = run_lab("poinsot", "--t-end " + digits);
+  CHECK(run.err.find("... (100000 characters))") != std::string::npos);
+}
+
+TEST_CASE("contract: a rule that joins inputs names those of them the user gave") {
+  // Eq. 60's 4 a b > 2 (a^2 - b^2) tan 2 theta joins --tilt-deg, --offset and --radius.
+  const std::pair<const char*, const char*> cases[] = {
+      {"--offset 1e-60", "--offset: no balancing mass reaches this tilt"},
+      {"--tilt-deg 44.99", "--tilt-deg: no balancing mass reaches this tilt"},
+      {"--tilt-deg 40 --offset 0.001", "--tilt-deg, --offset: no balancing mass"},
+      {"--offset 0.001 --radius 0.4 --tilt-deg 40", "--tilt-deg, --offset, --radius: no"},
+  };
+  for (const auto& [args, error] : cases) {
+    INFO(args);
+    const auto run = run_lab("tire_balancing", args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(std::string("tire_balancing: error: ") + error, 0) == 0);
+  }
+}

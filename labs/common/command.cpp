@@ -46,7 +46,7 @@ std::string parse_size(const std::string& text, int min_w, int min_h, int max_w,
                        bool even, int& width, int& height) {
   const std::string rule =
       fmt::format("must be WxH{} with {} <= W <= {} and {} <= H <= {} (got '{}')",
-                  even ? ", both even," : "", min_w, max_w, min_h, max_h, text);
+                  even ? ", both even," : "", min_w, max_w, min_h, max_h, quoted_text(text));
   const std::size_t x = text.find_first_of("xX");
   if (x == std::string::npos) return rule;
   const auto side = [](const std::string& digits, int lo, int hi, int& out) {
@@ -111,6 +111,8 @@ class Command {
   void check_output_paths() const;
   void check_animation_path() const;
   std::string blamed_option() const;
+  /// Of a joint rule's inputs, those the user gave (all of them if none was).
+  std::string given_among(const std::vector<std::string>& joint) const;
   bool given(const std::string& flag) const;
   static bool given(const OptionSlot& slot) {
     return slot.cli->count() > 0 || (slot.old != nullptr && slot.old->count() > 0);
@@ -171,7 +173,7 @@ Command::Command(const std::string& name, const std::string& title,
             return ok ? ""
                       : "must be 1 to 64 letters, digits, '-', '_' or '.', not starting "
                         "with '.' (got '" +
-                            text + "')";
+                            quoted_text(text) + "')";
           },
           ""));
   app_.set_version_flag("--version", name_ + " (rigidlab) " + std::string(RIGID_VERSION),
@@ -193,7 +195,8 @@ Command::Command(const std::string& name, const std::string& title,
             char* end = nullptr;
             const double v = std::strtod(text.c_str(), &end);
             if (end == text.c_str() || *end != '\0' || !(v >= lo && v <= hi))
-              return fmt::format("must be {} from {:g} to {:g} (got '{}')", what, lo, hi, text);
+              return fmt::format("must be {} from {:g} to {:g} (got '{}')", what, lo, hi,
+                                 quoted_text(text));
             return "";
           },
           "");
@@ -237,7 +240,7 @@ void Command::bind(const BoundInput& input) {
           [&rule](std::string& text) -> std::string {
             double parsed = 0.0;
             if (!CLI::detail::lexical_cast(text, parsed)) {
-              return "must be a number (got '" + text + "')";
+              return "must be a number (got '" + quoted_text(text) + "')";
             }
             return rule.broken(parsed, text);
           },
@@ -273,9 +276,9 @@ void Command::bind(const BoundInput& input) {
               // too few numbers before the next option ("--omega , --json"): CLI11 took it
               if (text.rfind("--", 0) == 0 && text.size() > 2) {
                 return fmt::format("needs {} numbers separated by commas; '{}' is the next option",
-                                   count, text);
+                                   count, quoted_text(text));
               }
-              return "each component must be a number (got '" + text + "')" +
+              return "each component must be a number (got '" + quoted_text(text) + "')" +
                      (rule.word_names().empty() ? "" : ", or the value one of " + rule.word_list());
             }
             return rule.broken(parsed, text);
@@ -389,6 +392,16 @@ void Command::check_pairings() const {
   }
 }
 
+std::string Command::given_among(const std::vector<std::string>& joint) const {
+  std::vector<std::string> named;
+  for (const std::string& flag : joint) {
+    for (const OptionSlot& s : slots_) {
+      if (s.input->rule->flag() == flag && given(s)) named.push_back(flag);
+    }
+  }
+  return InputError::joined(named.empty() ? joint : named);
+}
+
 std::string Command::blamed_option() const {
   for (const OptionSlot& s : slots_) {
     if (s.input->rule->physical() && given(s)) return s.input->rule->flag();
@@ -410,8 +423,8 @@ void Command::check_animation_path() const {
   if (animation_path_.empty()) throw InputError("--animate", "needs a file name");
 #if RIGID_HAVE_RENDER
   if (!render::video_format_for(animation_path_)) {
-    throw InputError("--animate",
-                     "the file name must end in .mp4 or .webp (got '" + animation_path_ + "')");
+    throw InputError("--animate", "the file name must end in .mp4 or .webp (got '" +
+                                      quoted_text(animation_path_) + "')");
   }
 #endif
   check_animation_file("--animate", animation_path_);
@@ -565,7 +578,9 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     landed = true;
     printed = text.str();
   } catch (const InputError& e) {
-    const std::string what = e.input.empty() ? blamed_option() + ": " + e.rule : e.what();
+    const std::string what = e.input.empty()   ? blamed_option() + ": " + e.rule
+                             : e.joint.empty() ? e.what()
+                                               : given_among(e.joint) + ": " + e.rule;
     std::cerr << name_ << ": error: " << support::terminal_safe(what) << '\n';
     return 2;
   } catch (const std::exception& e) {

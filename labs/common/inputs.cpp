@@ -102,8 +102,54 @@ std::string InputRule::word_list() const {
   return list;
 }
 
+std::string quoted_text(const std::string& text) {
+  constexpr std::size_t kWhole = 40, kHead = 32;
+  if (text.size() <= kWhole) return text;
+  std::size_t cut = kHead;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return fmt::format("{}... ({} characters)", text.substr(0, cut), text.size());
+}
+
+namespace {
+
+/// Whether a number's text spells a value a double cannot hold (1e400, 1e-400, a
+/// 100,000-digit integer) rather than inf or nan, or a zero: strtod rounds the first
+/// to infinity and the second to zero, and then "must be finite" or "must be positive"
+/// would name the wrong rule.
+bool beyond_double(double value, const std::string& text) {
+  std::string lower;
+  for (const char c : text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower.find("inf") != std::string::npos || lower.find("nan") != std::string::npos) {
+    return false;
+  }
+  if (std::isinf(value)) return true;
+  if (value != 0.0) return false;
+  // Zero: beyond range only if the mantissa has a nonzero digit.
+  std::size_t i = lower.find_first_not_of("+- \t");
+  const bool hex = lower.compare(i == std::string::npos ? 0 : i, 2, "0x") == 0;
+  if (hex) i += 2;
+  for (; i < lower.size(); ++i) {
+    const char c = lower[i];
+    if (hex ? c == 'p' : c == 'e') break;
+    if ((c >= '1' && c <= '9') || (hex && c >= 'a' && c <= 'f')) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::string InputRule::broken(double value, const std::string& text) const {
-  const auto fail = [&](const std::string& rule) { return rule + " (got " + text + ")"; };
+  const auto fail = [&](const std::string& rule) {
+    return rule + " (got " + quoted_text(text) + ")";
+  };
+  const std::string magnitude_rule = bound_ == Bound::kPositive
+                                         ? "must be between 1e-60 and 1e60"
+                                         : "must be 0 or between 1e-60 and 1e60 in magnitude";
+  if (beyond_double(value, text)) {
+    if (bound_ != Bound::kOpenRange) return fail(magnitude_rule);
+    return fail(fmt::format("must be between {} and {}{}, exclusive", lo_, hi_,
+                            unit_.empty() ? "" : " " + unit_));
+  }
   if (!std::isfinite(value)) return fail("must be finite");
   switch (bound_) {
     case Bound::kPositive:
@@ -130,8 +176,7 @@ std::string InputRule::broken(double value, const std::string& text) const {
   const double magnitude = std::abs(value);
   if (bound_ != Bound::kOpenRange && magnitude != 0.0 &&
       (magnitude < kSmallest || magnitude > kLargest)) {
-    return fail(bound_ == Bound::kPositive ? "must be between 1e-60 and 1e60"
-                                           : "must be 0 or between 1e-60 and 1e60 in magnitude");
+    return fail(magnitude_rule);
   }
   return "";
 }

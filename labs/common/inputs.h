@@ -31,20 +31,45 @@ using Json = nlohmann::ordered_json;
 /// Bad input: names the input (by its option, "--mass") and the rule it breaks.
 /// An empty `input` blames no input in particular (a result that overflows for the
 /// inputs given); the command line then names the first input given.
+/// A rule that joins several inputs (4 a b > 2 (a^2 - b^2) tan 2 theta) names them all
+/// in `joint`; the command line then names those of them the user gave.
 struct InputError : std::runtime_error {
   InputError(const std::string& input, const std::string& rule)
       : std::runtime_error(input.empty() ? rule : input + ": " + rule), input(input), rule(rule) {}
+  InputError(const std::vector<std::string>& inputs, const std::string& rule)
+      : InputError(joined(inputs), rule) {
+    joint = inputs;
+  }
   std::string input, rule;
+  std::vector<std::string> joint;
+
+  static std::string joined(const std::vector<std::string>& inputs) {
+    std::string text;
+    for (const std::string& i : inputs) text += (text.empty() ? "" : ", ") + i;
+    return text;
+  }
 };
 
+/// A user's text as an error message quotes it: whole up to 40 characters, else its
+/// first 32 and its length, so that a 100,000-digit number still makes a one-line error.
+std::string quoted_text(const std::string& text);
+
 /// Runs `compute`; an std::invalid_argument from core (a physics rule broken by
-/// the inputs) becomes an InputError naming `input`.
+/// the inputs) becomes an InputError naming `input`, or the `inputs` its rule joins.
 template <class Compute>
 auto for_input(const std::string& input, Compute&& compute) -> decltype(compute()) {
   try {
     return compute();
   } catch (const std::invalid_argument& e) {
     throw InputError(input, e.what());
+  }
+}
+template <class Compute>
+auto for_inputs(const std::vector<std::string>& inputs, Compute&& compute) -> decltype(compute()) {
+  try {
+    return compute();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(inputs, e.what());
   }
 }
 

@@ -88,7 +88,9 @@ Report compute(const Inputs& in) {
                 bearing_torque(wheel, 0.0, omega).stableNorm(), "N m");
 
   report.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
-  const double m0 = for_input("--tilt-deg", [&] { return balance_mass_exact(wheel); });
+  // The rule 4 a b > 2 (a^2 - b^2) tan 2 theta joins the tilt, the offset and the radius.
+  const double m0 =
+      for_inputs({"--tilt-deg", "--offset", "--radius"}, [&] { return balance_mass_exact(wheel); });
   report.m0 = m0;
   const double m0_small = balance_mass_small_angle(wheel);
   report.result("balance_mass_kg", "m0, exact from tan 2 theta (eq. 60)", m0, "kg",

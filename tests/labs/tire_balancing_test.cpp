@@ -155,7 +155,16 @@ TEST_CASE("tire_balancing: a broken rule is an InputError naming the input") {
   CHECK_THROWS_WITH(compute(in),
                     Catch::StartsWith("--tilt-deg: must be at least 0 and below 45 deg"));
   in.tilt_deg = std::nextafter(45.0, 0.0);
-  CHECK_THROWS_WITH(compute(in), Catch::StartsWith("--tilt-deg: no balancing mass reaches"));
+  // Eq. 60's rule joins the tilt, the offset and the radius: the error names all three
+  // (the command line then names those given).
+  CHECK_THROWS_WITH(compute(in), Catch::StartsWith("--tilt-deg, --offset, --radius: no balancing "
+                                                   "mass reaches"));
+  try {
+    compute(in);
+  } catch (const rigid::lab::InputError& e) {
+    CHECK(e.joint == std::vector<std::string>{"--tilt-deg", "--offset", "--radius"});
+    CHECK(e.rule.rfind("no balancing mass reaches this tilt", 0) == 0);
+  }
   in = Inputs{};
   in.tire_radius = 0.1, in.road_speed = 10;  // smaller than the disk
   CHECK_THROWS_MATCHES(compute(in), rigid::lab::InputError,
