@@ -166,7 +166,12 @@ void add_racquet(render::Scene3D& scene, const Racquet& r, const Eigen::Matrix3d
                  named ? "face toward +3" : "");
   scene.add_disk(head - 0.004 * a * n3, -n3, 0.96 * a, flat_body(render::kYellow, 1.0f),
                  named ? "face toward -3" : "");
-  scene.add_cylinder(c + R * r.handle_start, c + R * r.handle_end, 0.05 * a, {render::kBlack},
+  // The handle runs along body axis 1 from the rim. One shorter than a tenth of the head's
+  // radius (--handle-length 1e-20) is drawn at that tenth, so it shows; its length is in
+  // the table.
+  const double handle = std::max((r.handle_end - r.handle_start).norm(), 0.1 * a);
+  const Vector3d start = c + R * r.handle_start;
+  scene.add_cylinder(start, start + handle * R.col(0), 0.05 * a, {render::kBlack},
                      named ? "the handle, axis 1" : "");
 }
 

@@ -148,8 +148,9 @@ double phi_dot_of(const RotationState& x) {
 }
 
 // theta(t) and phi_dot(t): the exact motion beside an integrated run.
-render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun& integrated_run,
-                          double t_end) {
+// `integrated_run` null: none beside it (`why_none` goes in the title).
+render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integrated_run,
+                          double t_end, const std::string& why_none) {
   std::vector<double> t, theta, phi_dot, ti, thetai, phi_doti;
   for (int k = 0; k <= 1200; ++k) {
     t.push_back(t_end * k / 1200);
@@ -157,27 +158,31 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun& integr
     theta.push_back(rad_to_deg(a.theta));
     phi_dot.push_back(a.phi_dot);
   }
-  const std::size_t stride = std::max<std::size_t>(1, integrated_run.samples.size() / 60);
-  for (std::size_t i = 0; i < integrated_run.samples.size(); i += stride) {
-    const HeavyTopRun::Sample& s = integrated_run.samples[i];
+  const std::vector<HeavyTopRun::Sample> none;
+  const auto& samples = integrated_run ? integrated_run->samples : none;
+  const std::size_t stride = std::max<std::size_t>(1, samples.size() / 60);
+  for (std::size_t i = 0; i < samples.size(); i += stride) {
+    const HeavyTopRun::Sample& s = samples[i];
     ti.push_back(s.t);
     thetai.push_back(rad_to_deg(tilt_of(attitude(s.x))));
     phi_doti.push_back(phi_dot_of(s.x));
   }
-  const std::string integrated = std::string(method_name(integrated_run.method)) + ", integrated";
+  const std::string integrated =
+      integrated_run ? std::string(method_name(integrated_run->method)) + ", integrated" : "";
   render::Plot2D plot(2, 1);
-  plot.title = "nutation and precession";
+  plot.title = integrated_run ? "nutation and precession"
+                              : "nutation and precession, exact (" + why_none + ")";
   render::Panel& top = plot.panel(0, 0);
   top.y.label = "\\theta (\\deg)";
   top.add_line(t, theta, "exact").color = render::kBlue;
-  top.add_points(ti, thetai, integrated).color = render::kVermillion;
+  if (integrated_run) top.add_points(ti, thetai, integrated).color = render::kVermillion;
   top.add_ref_line(rad_to_deg(motion.theta_min()), false, "\\theta_{min}");
   top.add_ref_line(rad_to_deg(motion.theta_max()), false, "\\theta_{max}");
   render::Panel& bottom = plot.panel(1, 0);
   bottom.x.label = "t (s)";
   bottom.y.label = "\\phi-dot (rad/s)";
   bottom.add_line(t, phi_dot, "exact").color = render::kBlue;
-  bottom.add_points(ti, phi_doti, integrated).color = render::kVermillion;
+  if (integrated_run) bottom.add_points(ti, phi_doti, integrated).color = render::kVermillion;
   bottom.add_ref_line(motion.mean_precession_rate(), false,
                       fmt::format("mean {:.4g} rad/s", motion.mean_precession_rate()));
   bottom.legend = render::LegendPlace::kNone;
@@ -188,21 +193,30 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun& integr
 
 void figures(const Report& report, FigureSink& sink) {
   const HeavyTopExact& motion = *report.motion;
-  // Beside the exact motion, an integrated one: the lab's own, or splitting4 at its default
-  // step.
+  // Beside the exact motion, an integrated one: the lab's own, or splitting4 at the run's
+  // step, unless that would take more steps than a run may (--periods 1e8, --step 1e-20:
+  // the exact run is valid, and the figure says why it stands alone).
   HeavyTopRun splitting4;
+  const HeavyTopRun* integrated = &report.run;
+  std::string why_none;
   if (report.method == "exact") {
     OdeOptions o = report.options;
     o.method = Method::kSplitting4;
-    splitting4 = integrate(HeavyTopProblem(report.top), heavy_top_state(motion.angles(0.0)),
-                           sample_times(report.t_end, report.scale, o.step), o);
+    const double steps = std::ceil(report.t_end / o.step);
+    if (steps <= static_cast<double>(o.max_steps)) {
+      splitting4 = integrate(HeavyTopProblem(report.top), heavy_top_state(motion.angles(0.0)),
+                             sample_times(report.t_end, report.scale, o.step), o);
+      integrated = &splitting4;
+    } else {
+      integrated = nullptr;
+      why_none = fmt::format("splitting4 at step {:.3g} s would need {:.3g} steps", o.step, steps);
+    }
   }
-  const HeavyTopRun& integrated = report.method == "exact" ? splitting4 : report.run;
   sink.add("potential", "the effective potential, E' and the turning points",
            potential_plot(motion));
   sink.add("paths", "the axis's path on the sphere: wavy, cusped, looping", paths_scene(motion));
   sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
-           theta_plot(motion, integrated, report.t_end));
+           theta_plot(motion, integrated, report.t_end, why_none));
   sink.add("top", "the top, L, the gravity torque and the precession circle",
            Motion(report).scene(0.0));
   // A sleeping top has no comparison at equal cost: the one at the lab's settings.
@@ -277,7 +291,10 @@ render::Scene3D Motion::scene(double t) const {
   const State now = state(t);
   const Eigen::Quaterniond q = now.attitude;
   const Vector3d e3 = q * Vector3d::UnitZ();
-  const double l = arm_, r = disk_radius_, size = std::max(l + r, 2 * r);
+  const double l = arm_, size = std::max(l + disk_radius_, 2 * disk_radius_);
+  // A disk below 2% of the picture (--disk-radius 1e-20, --arm 1e20) is drawn at 2%: it
+  // would not show, nor would l +- its thickness differ in doubles. The title says so.
+  const double r = std::max(disk_radius_, 0.02 * size);
   const Vector3d omega = q * now.omega_body;
   const HeavyTop& top = exact_.top();
   const Vector3d L_body = Vector3d(top.I, top.I, top.Is).cwiseProduct(now.omega_body);
@@ -286,6 +303,7 @@ render::Scene3D Motion::scene(double t) const {
   render::Scene3D scene;
   scene.title = t > 0 ? fmt::format("the top at t = {:.3f} s; arrows show directions", t)
                       : "the top at t = 0; arrows show directions";
+  if (r > disk_radius_) scene.title += " (disk enlarged to be seen)";
   scene.add_sphere(Vector3d::Zero(), 0.04 * size, {render::kGray}, "tip (pivot)");
   scene.add_cylinder(Vector3d::Zero(), (l + 0.5 * r) * e3, 0.03 * size, {render::kGray});
   // The disk translucent, so the tip, the spindle and the circle below stay in view.

@@ -484,3 +484,16 @@ TEST_CASE("tennis_racquet: a disturbance a double cannot follow is refused, not 
                          rigid::test::names_input("--perturbation"));
   }
 }
+
+TEST_CASE("tennis_racquet: every valid racquet draws its figures, a vanishing handle seen") {
+  // A 1e-20 m handle beside a 13 cm head: its ends are one point in doubles; drawn at a
+  // tenth of the head's radius along axis 1. A 1e20 m head with the text's handle too.
+  for (const auto& [handle, head] : {std::pair{1e-20, 0.13}, std::pair{0.3, 1e20}}) {
+    INFO("handle " << handle << ", head " << head);
+    Inputs in;
+    in.handle_length = handle, in.head_radius = head;
+    rigid::test::KeptFigures kept;
+    REQUIRE_NOTHROW(figures(compute(in), kept));
+    CHECK(kept.scenes.count("flip") == 1);
+  }
+}

@@ -526,3 +526,38 @@ TEST_CASE("top_nutation: no steady rates says why: horizontal, or too slow a spi
   CHECK(why(hanging).rfind("none", 0) != 0);
   CHECK(why(Inputs{}).rfind("none", 0) != 0);
 }
+
+TEST_CASE("top_nutation: every valid run draws its figures, the extremes drawn to be seen") {
+  using rigid::test::contains;
+  using rigid::test::KeptFigures;
+  // An arm 1e20 m beside a 5 cm disk: l +- the disk's thickness would be l in doubles; a
+  // 1e-20 m disk would not show. Both are drawn at 2% of the picture and say so.
+  for (const auto& [arm, radius] : {std::pair{1e20, 0.05}, std::pair{0.04, 1e-20}}) {
+    INFO("arm " << arm << ", disk radius " << radius);
+    Inputs in;
+    in.arm = arm, in.disk_radius = radius;
+    KeptFigures kept;
+    REQUIRE_NOTHROW(figures(compute(in), kept));
+    CHECK(contains(kept.scenes.at("top").title, "(disk enlarged to be seen)"));
+  }
+  Inputs text;
+  KeptFigures kept;
+  figures(compute(text), kept);
+  CHECK(!contains(kept.scenes.at("top").title, "enlarged"));
+  // The exact run is valid at any step and for 1e8 periods; the figure's integrated
+  // companion (splitting4 at the run's step) would need more steps than a run may take,
+  // so the theta figure shows the exact motion alone and says why.
+  Inputs tiny_step = with_method("exact"), long_run = with_method("exact");
+  tiny_step.integration.step = 1e-20;
+  long_run.periods = 1e8;
+  for (const Inputs& in : {tiny_step, long_run}) {
+    KeptFigures alone;
+    REQUIRE_NOTHROW(figures(compute(in), alone));
+    const auto& theta = alone.plots.at("theta");
+    CHECK(contains(theta.title, "exact (splitting4 at step"));
+    CHECK(contains(theta.title, "would need"));
+  }
+  KeptFigures beside;
+  figures(compute(with_method("exact")), beside);
+  CHECK(!contains(beside.plots.at("theta").title, "would need"));
+}
