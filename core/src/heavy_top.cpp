@@ -126,7 +126,8 @@ Eigen::Quaterniond euler_attitude(double phi, double theta, double psi) {
 }
 
 Eigen::Vector3d euler_omega_body(const TopAngles& a) {
-  const double st = std::sin(a.theta), ct = std::cos(a.theta);
+  // cos(theta) is flat near the poles, so the rounded theta gives it to roundoff.
+  const double st = a.sin_theta ? *a.sin_theta : std::sin(a.theta), ct = std::cos(a.theta);
   const double sp = std::sin(a.psi), cp = std::cos(a.psi);
   return {a.phi_dot * st * sp + a.theta_dot * cp, a.phi_dot * st * cp - a.theta_dot * sp,
           a.phi_dot * ct + a.psi_dot};
@@ -486,6 +487,7 @@ TopAngles HeavyTopExact::angles(double t) const {
   const Phase p = phase(t);
   const Where x = at(p.sn * p.sn, p.cn * p.cn);
   out.theta = x.theta;
+  out.sin_theta = std::sqrt(x.omu) * std::sqrt(x.opu);  // each root apart: no underflow
   // theta_dot = -u_dot / sin(theta), u_dot = 2 (u2 - u1) lambda sn cn dn. Where a pole
   // is a turning circle, 1 - u = (u2 - u1) cn^2 (north) or 1 + u = (u2 - u1) sn^2
   // (south) exactly, and that factor cancels: the axis goes through the pole at
@@ -533,6 +535,12 @@ TopAngles HeavyTopExact::angles(double t) const {
   out.psi =
       start_.psi + (S - a_) * t - 0.5 * (b_minus_a_ * J_plus - b_plus_a_ * J_minus) - north + south;
   return out;
+}
+
+Eigen::Vector3d HeavyTopExact::omega_body(const TopAngles& angles) const {
+  Eigen::Vector3d w = euler_omega_body(angles);
+  w.z() = start_.spin;
+  return w;
 }
 
 Eigen::Quaterniond HeavyTopExact::attitude(double t) const {

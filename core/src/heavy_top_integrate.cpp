@@ -41,8 +41,14 @@ class HeavyTopProblem::Invariants {
     const Eigen::Vector3d w0 = omega_body(x0);
     scale_E_ =
         0.5 * (top.I * (w0.x() * w0.x() + w0.y() * w0.y()) + top.Is * w0.z() * w0.z()) + top.mgl;
+    // p_phi and p_psi are components of L, measured against the largest |L| the motion
+    // can reach: |L|^2 <= 2 max(I, Is) T and T <= T0 + 2 m g l (the centre of mass falls
+    // by 2 l at most). Against |L0| alone a top released from rest with a slow spin
+    // (|L0| = Is S -> 0) would call the roundoff of its swing a drift.
     const double L0 = Eigen::Vector3d(top.I * w0.x(), top.I * w0.y(), top.Is * w0.z()).norm();
-    inv_L0_ = L0 > 0.0 ? 1.0 / L0 : 0.0;
+    const double L_reach = std::sqrt(2.0 * std::max(top.I, top.Is) * (scale_E_ + top.mgl));
+    const double L_scale = std::max(L0, L_reach);
+    inv_L0_ = L_scale > 0.0 ? 1.0 / L_scale : 0.0;
   }
   std::array<double, kInvariantCount> operator()(const State& x) const {
     double E, p_phi, p_psi;
@@ -139,7 +145,8 @@ HeavyTopProblem::Splitting HeavyTopProblem::splitting(int order, const State& /*
 }
 
 HeavyTopProblem::State HeavyTopProblem::exact_state(const Exact& exact, double t) const {
-  return heavy_top_state(exact.angles(t));
+  const TopAngles a = exact.angles(t);
+  return make_state(exact.omega_body(a), euler_attitude(a.phi, a.theta, a.psi));
 }
 
 ExactErrors HeavyTopProblem::errors_against(const Exact& exact,

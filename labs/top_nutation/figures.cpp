@@ -271,7 +271,10 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
 }
 
 Motion::State Motion::state(double t) const {
-  if (!integrated_) return {exact_.attitude(t), euler_omega_body(exact_.angles(t))};
+  if (!integrated_) {
+    const TopAngles a = exact_.angles(t);
+    return {euler_attitude(a.phi, a.theta, a.psi), exact_.omega_body(a)};
+  }
   const auto next = states_.upper_bound(t);
   if (next == states_.begin()) {
     throw std::invalid_argument(fmt::format("the motion starts at t = 0 (asked for t = {:g})", t));

@@ -153,8 +153,8 @@ const ExactErrorWords& top_words() {
     w.diverged = "the integration diverged; shorten the step";
     w.runaway_invariants = HeavyTopProblem::kInvariantCount;
     w.invariants = {{HeavyTopProblem::kEnergy, "energy", "max |E - E0| / (T0 + m g l)"},
-                    {HeavyTopProblem::kPPhi, "p_phi", "max |p_phi - p_phi0| / |L0|"},
-                    {HeavyTopProblem::kPPsi, "p_psi", "max |p_psi - p_psi0| / |L0|"}};
+                    {HeavyTopProblem::kPPhi, "p_phi", "max |p_phi - p_phi0| / L_max"},
+                    {HeavyTopProblem::kPPsi, "p_psi", "max |p_psi - p_psi0| / L_max"}};
     return w;
   }();
   return words;

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 
 #include "rigid/free_body_exact.h"
@@ -89,6 +90,10 @@ std::string to_string(TopRegime regime);
 struct TopAngles {
   double theta = 0.0, phi = 0.0, psi = 0.0;
   double theta_dot = 0.0, phi_dot = 0.0, psi_dot = 0.0;
+  /// sin(theta) to full relative accuracy, where known (the exact motion has it from
+  /// (1 - u)(1 + u)). Near a pole sin of the rounded theta is not: theta = pi - 2e-11
+  /// holds it to ulp(pi) / 2e-11 = 2e-5, and phi_dot sin(theta) in omega with it.
+  std::optional<double> sin_theta;
 };
 
 /// The body-to-space rotation Rz(phi) Rx(theta) Rz(psi).
@@ -105,6 +110,10 @@ class HeavyTopExact {
 
   /// The Euler angles and rates at time t.
   TopAngles angles(double t) const;
+  /// omega in body axes from angles(t): euler_omega_body, but omega_3 the spin S the
+  /// motion holds constant. phi_dot cos(theta) + psi_dot returns S only to eps |phi_dot|,
+  /// which near a pole (phi_dot ~ 1 / (1 - u^2)) outweighs a slow spin.
+  Eigen::Vector3d omega_body(const TopAngles& angles) const;
   /// theta(t) alone, rad (one sn evaluation).
   double theta(double t) const;
   /// The body-to-space attitude at time t.
