@@ -1,18 +1,29 @@
 #!/usr/bin/python3
-"""A deterministic random-input driver for one lab.
+"""A deterministic adversary for one lab, case by case in classes, with counts.
 
 Reads the lab's options from its --help (so a new lab is covered without new
-code), then runs it many times with random values for one to three of them:
-numbers across the whole double range and beyond it, NaN and infinities,
-malformed numbers, strings with control characters, vectors of the wrong
-length, option combinations, and --csv paths. Every run must keep the lab
-contract:
-  - exit 0 with strict JSON on stdout (no NaN, no Infinity), or exit 2 with one
-    line on stderr of the form "LAB: error: --option: rule", without raw
-    control characters;
+code) and runs it many times. Classes (each case's class is in its report line):
+  numbers     random values for one to three options: numbers across the whole
+              double range and beyond it, NaN and infinities, malformed numbers,
+              strings with control characters, vectors of the wrong length,
+              combinations, --csv paths;
+  bytes       random bytes (invalid UTF-8, C0 and C1 controls, bidi overrides) in
+              a word option or the --csv name, under --json;
+  file names  any name the filesystem accepts (up to 255 bytes, any byte but '/'
+              and NUL) as --csv, beside decoys a careless cleanup would delete;
+  figures     the numbers class's inputs with --figures: every valid run draws;
+  signals     SIGINT or SIGTERM at a random moment of a run writing --csv and
+              --figures;
+  full disk   --csv and --figures into a small tmpfs (where this user may mount).
+Every run must keep the lab contract:
+  - exit 0 with strict JSON on stdout (no NaN, no Infinity, valid UTF-8), or exit 2
+    with one line on stderr of the form "LAB: error: --option: rule", escaped (no raw
+    control character, no invalid UTF-8, no bidi override); a failure to write
+    (full disk) exits 1 with one line; a signal ends the run by that signal;
   - finish within the time limit;
-  - leave no temporary file behind.
-Usage: fuzz_lab.py LAB_EXECUTABLE [--cases N] [--seed S] [--timeout SECONDS]
+  - leave no temporary file behind, land all its outputs or none, and touch no
+    file it did not create.
+Usage: fuzz_lab.py LAB_EXECUTABLE [--cases N] [--class-cases M] [--seed S] [--timeout SECONDS]
 Exit status 0 when every case keeps the contract, 1 otherwise.
 """
 import argparse
@@ -22,8 +33,11 @@ import random
 import re
 import subprocess
 import sys
+import shutil
+import signal
 import tempfile
 import time
+import unicodedata
 
 OPTION = re.compile(r"^\s+(?:-\w,)?(--[\w-]+)(?:\s+(\S+?))?(?:=(\S+))?(?:\s+x\s+(\d))?\s{2,}(.*)$")
 
@@ -90,7 +104,25 @@ def value_for(rng, kind, count, choices, defaults):
     return number(rng, defaults[0] if defaults else None)
 
 
-def check(lab_name, proc, elapsed, limit, workdir):
+BIDI = {chr(c) for c in list(range(0x202A, 0x202F)) + list(range(0x2066, 0x206A))}
+
+
+def stderr_problems(lab_name, err_bytes, kind="error"):
+    """What is wrong with a one-line message on stderr ("LAB: error: --option: ...")."""
+    try:
+        err = err_bytes.decode("utf-8")
+    except UnicodeDecodeError:
+        return [f"invalid UTF-8 on stderr: {err_bytes[:200]!r}"]
+    if err.count("\n") != 1 or not err.endswith("\n"):
+        return [f"not one {kind} line: {err[:300]!r}"]
+    if not err.startswith(f"{lab_name}: error: "):
+        return [f"not an error line: {err[:300]!r}"]
+    if any(unicodedata.category(ch) == "Cc" or ch in BIDI for ch in err[:-1]):
+        return [f"raw control character in: {err[:300]!r}"]
+    return []
+
+
+def check(lab_name, proc, elapsed, limit, workdir, allow_write_failure=False, ours=()):
     """The contract's breaches for one run, as strings."""
     problems = []
     if elapsed > limit:
@@ -99,33 +131,141 @@ def check(lab_name, proc, elapsed, limit, workdir):
         def reject(token):
             raise ValueError(f"non-strict JSON constant {token}")
         try:
-            out = json.loads(proc.stdout, parse_constant=reject)
+            out = json.loads(proc.stdout.decode("utf-8"), parse_constant=reject)
             if not isinstance(out.get("results"), dict):
                 problems.append("JSON without results")
-        except ValueError as e:
+        except (ValueError, UnicodeDecodeError) as e:
             problems.append(f"stdout is not strict JSON: {e}")
-    elif proc.returncode == 2:
-        err = proc.stderr
-        if err.count("\n") != 1 or not err.endswith("\n"):
-            problems.append(f"not one error line: {err!r}")
-        elif not err.startswith(f"{lab_name}: error: --"):
-            problems.append(f"error line names no option: {err!r}")
-        elif any(ord(ch) < 32 for ch in err[:-1]):
-            problems.append(f"raw control character in: {err!r}")
+    elif proc.returncode == 2 or (proc.returncode == 1 and allow_write_failure):
+        problems += stderr_problems(lab_name, proc.stderr)
+        if proc.returncode == 2 and not proc.stderr.startswith(f"{lab_name}: error: --".encode()):
+            problems.append(f"error line names no option: {proc.stderr[:300]!r}")
         if proc.stdout:
             problems.append("printed to stdout as well as refusing")
     else:
         problems.append(f"exit status {proc.returncode}: {proc.stderr[-300:]!r}")
-    for name in os.listdir(workdir):
-        if ".tmp" in name:
-            problems.append(f"left {name} behind")
+    problems += leftovers(workdir, ours)
     return problems
+
+
+def leftovers(workdir, decoys=()):
+    """Temporaries left in workdir, other than the decoys the case made itself."""
+    found = []
+    for root, _, files in os.walk(os.fsencode(workdir)):
+        for name in files:
+            path = os.path.join(root, name)
+            if path in decoys:
+                continue
+            if b".rigidlab-tmp-" in name or b".rigidlab-probe-" in name:
+                found.append(f"left {path!r} behind")
+    return found
+
+
+def random_bytes(rng, for_file_name=False):
+    """1 to 40 bytes a user could pass: printable, controls, invalid UTF-8, C1 and bidi."""
+    pieces = [
+        lambda: bytes([rng.randint(0x20, 0x7e)]),
+        lambda: bytes([rng.randint(0x01, 0x1f)]),
+        lambda: bytes([rng.choice([0x7f, 0x80, 0x9b, 0xc3, 0xff, 0xfe])]),
+        lambda: "\u202e".encode(), lambda: "\u009b".encode(), lambda: "\u00e9".encode(),
+        lambda: "\U0001f600".encode(), lambda: b" ", lambda: b"-",
+    ]
+    out = b"".join(rng.choice(pieces)() for _ in range(rng.randint(1, 40)))
+    if for_file_name:
+        out = out.replace(b"/", b"_") or b"x"
+        if out in (b".", b".."):
+            out += b"x"
+    return out
+
+
+def file_name(rng):
+    """Any name the filesystem takes: up to 255 bytes, no '/' or NUL, not . or .."""
+    pick = rng.random()
+    if pick < 0.3:
+        name = random_bytes(rng, True)
+    elif pick < 0.5:
+        name = b"n" * rng.randint(200, 251) + b".csv"
+    else:
+        name = rng.choice([b"-out.csv", b" lead", b"trail ", b"a\nb.csv", b"$(touch pwned)",
+                           b"c.csv.tmp-99999", b"x.rigidlab-tmp-1-0123456789abcdef", b".hidden",
+                           "\u00e9t\u00e9.csv".encode(), b"*?[]", b"'\"", b"\\"])
+    return name[:255]
+
+
+def decoys_for(workdir, target):
+    """Files a careless cleanup would take for its own; their bytes, by name."""
+    made = {}
+    for suffix in (b".tmp-1", b".tmp-99999", b".tmp-2024-01-05-backup", b".rigidlab-tmp-x",
+                   b".rigidlab-tmp-99999999-0123456789abcdeg"):
+        name = target + suffix
+        if len(name) > 255:
+            continue
+        path = os.path.join(os.fsencode(workdir), name)
+        with open(path, "wb") as f:
+            f.write(b"user data " + name)
+        made[path] = b"user data " + name
+    return made
+
+
+def decoys_intact(made):
+    problems = []
+    for path, content in made.items():
+        try:
+            with open(path, "rb") as f:
+                if f.read() != content:
+                    problems.append(f"changed {path!r}")
+        except OSError:
+            problems.append(f"deleted {path!r}")
+    return problems
+
+
+def run(argv, cwd, timeout):
+    t0 = time.monotonic()
+    proc = subprocess.run(argv, capture_output=True, timeout=timeout, cwd=cwd)
+    return proc, time.monotonic() - t0
+
+
+def random_argv(rng, lab, physical):
+    argv = [lab, "--json"]
+    for name, kind, count, choices, defaults in rng.sample(
+            physical, min(len(physical), rng.randint(1, 3))):
+        value = value_for(rng, kind, count, choices, defaults)
+        argv += [name] if kind == "" else [name, value]
+    return argv
+
+
+def outputs_landed(csv, figures):
+    """(csv landed, figures landed) of a run; an output not asked for counts as landed
+    when the other did, so that "all or none" compares like with like."""
+    pngs = os.path.isdir(figures) and any(n.endswith(".png") for n in os.listdir(figures))
+    return os.path.exists(csv), pngs
+
+
+def output_argv(has_csv, has_figures, csv, figures):
+    return (["--csv", csv] if has_csv else []) + (["--figures", figures] if has_figures else [])
+
+
+def all_or_none(landed, has_csv, has_figures):
+    asked = [x for x, on in zip(landed, (has_csv, has_figures)) if on]
+    return all(asked) or not any(asked), all(asked)
+
+
+def can_mount():
+    if os.geteuid() != 0 or not shutil.which("mount"):
+        return False
+    with tempfile.TemporaryDirectory() as d:
+        ok = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", d],
+                            capture_output=True).returncode == 0
+        if ok:
+            subprocess.run(["umount", d], capture_output=True)
+        return ok
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("lab")
-    ap.add_argument("--cases", type=int, default=60)
+    ap.add_argument("--cases", type=int, default=60, help="cases of the numbers class")
+    ap.add_argument("--class-cases", type=int, default=12, help="cases of each other class")
     ap.add_argument("--seed", type=int, default=20261124)
     ap.add_argument("--timeout", type=float, default=10.0)
     args = ap.parse_args()
@@ -133,35 +273,138 @@ def main():
     lab_name = os.path.basename(args.lab)
     rng = random.Random(f"{args.seed}:{lab_name}")
     options = options_of(args.lab)
+    help_text = subprocess.run([args.lab, "--help"], capture_output=True, text=True).stdout
+    has_csv, has_figures = "--csv" in help_text, "--figures" in help_text
     physical = [o for o in options if o[0] not in ("--json", "--quiet", "--csv")]
+    words = [o for o in physical if o[3]]
     start = time.monotonic()
-    failures = 0
-    computed = 0  # runs that exited 0 (the rest refused their input)
-    for case in range(args.cases):
+    tried, held = {}, {}
+
+    def report(cls, argv, problems):
+        tried[cls] = tried.get(cls, 0) + 1
+        held[cls] = held.get(cls, 0) + (not problems)
+        if problems:
+            shown = [a if isinstance(a, str) else repr(a) for a in argv[1:]]
+            print(f"FAIL {lab_name} [{cls}]: {shown!r}"[:600] + f": {'; '.join(problems)}"[:600])
+
+    def attempt(cls, argv, workdir, **kw):
+        try:
+            proc, elapsed = run(argv, workdir, args.timeout * 3)
+        except subprocess.TimeoutExpired:
+            report(cls, argv, [f"hung (> {args.timeout * 3:.0f} s)"])
+            return None
+        problems = check(lab_name, proc, elapsed, args.timeout, workdir, **kw)
+        return proc, problems
+
+    for _ in range(args.cases):  # numbers
         with tempfile.TemporaryDirectory() as workdir:
-            argv = [args.lab, "--json"]
-            for name, kind, count, choices, defaults in rng.sample(
-                    physical, min(len(physical), rng.randint(1, 3))):
-                value = value_for(rng, kind, count, choices, defaults)
-                argv += [name] if kind == "" else [name, value]
-            if any(o[0] == "--csv" for o in options) and rng.random() < 0.3:
+            argv = random_argv(rng, args.lab, physical)
+            if has_csv and rng.random() < 0.3:
                 target = rng.choice(["out.csv", "sub/out.csv", ".", "x" * 300 + ".csv"])
                 argv += ["--csv", os.path.join(workdir, target)]
-            t0 = time.monotonic()
+            result = attempt("numbers", argv, workdir)
+            if result:
+                report("numbers", argv, result[1])
+
+    for _ in range(args.class_cases):  # bytes
+        with tempfile.TemporaryDirectory() as workdir:
+            argv = [os.fsencode(args.lab), b"--json"]
+            if words and (not has_csv or rng.random() < 0.5):
+                argv += [os.fsencode(rng.choice(words)[0]), random_bytes(rng)]
+            elif has_csv:
+                argv += [b"--csv", random_bytes(rng, True)]
+            result = attempt("bytes", argv, workdir)
+            if result:
+                report("bytes", argv, result[1])
+
+    for _ in range(args.class_cases if has_csv else 0):  # file names
+        with tempfile.TemporaryDirectory() as workdir:
+            name = file_name(rng)
+            made = decoys_for(workdir, name)
+            argv = [os.fsencode(args.lab), b"--json", b"--csv", name]
+            target = os.path.join(os.fsencode(workdir), name)
+            result = attempt("file names", argv, workdir, ours=set(made) | {target})
+            if result:
+                proc, problems = result
+                problems += decoys_intact(made)
+                if proc.returncode != 0:
+                    problems.append("a name the filesystem accepts was refused")
+                elif not os.path.isfile(os.path.join(os.fsencode(workdir), name)):
+                    problems.append("exit 0 but the file is not there")
+                report("file names", argv, problems)
+
+    for _ in range(args.class_cases if has_figures else 0):  # figures
+        with tempfile.TemporaryDirectory() as workdir:
+            figures = os.path.join(workdir, "figs")
+            argv = random_argv(rng, args.lab, physical) + ["--figures", figures]
+            result = attempt("figures", argv, workdir)
+            if result:
+                proc, problems = result
+                drawn = os.path.isdir(figures) and any(n.endswith(".png")
+                                                       for n in os.listdir(figures))
+                if proc.returncode == 0 and not drawn:
+                    problems.append("exit 0 without its figures")
+                if proc.returncode != 0 and os.path.exists(figures):
+                    problems.append("refused, yet made the figures folder")
+                report("figures", argv, problems)
+
+    writes = has_csv or has_figures
+    for _ in range(args.class_cases if writes else 0):  # signals
+        with tempfile.TemporaryDirectory() as workdir:
+            csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
+            argv = [args.lab, "--quiet"] + output_argv(has_csv, has_figures, csv, figures)
+            sig = rng.choice([signal.SIGINT, signal.SIGTERM])
+            proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
+                                    stderr=subprocess.PIPE)
+            time.sleep(rng.uniform(0.0, 0.4))
+            proc.send_signal(sig)
             try:
-                proc = subprocess.run(argv, capture_output=True, text=True, errors="replace",
-                                      timeout=args.timeout * 3, cwd=workdir)
+                _, err = proc.communicate(timeout=args.timeout * 3)
             except subprocess.TimeoutExpired:
-                print(f"FAIL {lab_name}: hung (> {args.timeout * 3:.0f} s): {argv[1:]!r}")
-                failures += 1
+                proc.kill()
+                report("signals", argv, ["did not end after the signal"])
                 continue
-            problems = check(lab_name, proc, time.monotonic() - t0, args.timeout, workdir)
-            computed += proc.returncode == 0
-            if problems:
-                failures += 1
-                print(f"FAIL {lab_name}: {argv[1:]!r}: {'; '.join(problems)}")
-    print(f"{lab_name}: {args.cases} cases ({computed} computed, {args.cases - computed} refused), "
-          f"{failures} failures, {time.monotonic() - start:.1f} s")
+            problems = leftovers(workdir)
+            landed = outputs_landed(csv, figures)
+            whole, every = all_or_none(landed, has_csv, has_figures)
+            if proc.returncode == 0:
+                if not every:
+                    problems.append(f"finished (exit 0) but landed {landed}")
+            elif proc.returncode == -sig:
+                if not whole:
+                    problems.append(f"killed by the signal with half its outputs: {landed}")
+            else:
+                problems.append(f"exit status {proc.returncode} after {sig.name}: {err[-200:]!r}")
+            report("signals", argv + [sig.name], problems)
+
+    mountable = writes and can_mount()
+    for _ in range(args.class_cases if mountable else 0):  # full disk
+        with tempfile.TemporaryDirectory() as workdir:
+            size = rng.choice(["8k", "32k", "128k", "512k"])
+            subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", workdir],
+                           check=True, capture_output=True)
+            try:
+                csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
+                argv = [args.lab, "--json"] + output_argv(has_csv, has_figures, csv, figures)
+                result = attempt("full disk", argv, workdir, allow_write_failure=True)
+                if result:
+                    proc, problems = result
+                    landed = outputs_landed(csv, figures)
+                    if proc.returncode == 0 and not all_or_none(landed, has_csv, has_figures)[1]:
+                        problems.append(f"exit 0 but landed {landed}")
+                    if proc.returncode != 0 and os.listdir(workdir):
+                        problems.append(f"failed, yet left {os.listdir(workdir)}")
+                    report("full disk", argv + [size], problems)
+            finally:
+                subprocess.run(["umount", workdir], capture_output=True)
+
+    failures = sum(tried.values()) - sum(held.values())
+    for cls in tried:
+        print(f"{lab_name} [{cls}]: {tried[cls]} tried, {held[cls]} held")
+    if writes and not mountable:
+        print(f"{lab_name} [full disk]: not tried (this user cannot mount a tmpfs)")
+    print(f"{lab_name}: {sum(tried.values())} cases, {failures} failures, "
+          f"{time.monotonic() - start:.1f} s")
     return 1 if failures else 0
 
 

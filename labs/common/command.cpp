@@ -545,6 +545,9 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     report = computed.report;
     if (computed.animation) animate(computed);
     if (!figures_failed_ && !figures_dir_.empty()) draw_figures(computed);
+    // A figure or the animation that failed (its error line is out): nothing lands,
+    // and the CSV is not written to fail a second time (a full disk) with a second line.
+    if (figures_failed_) return 1;
     if (!csv_path_.empty() && !report->time_series().columns.empty()) {
       const std::string text = csv_text(report->time_series());
       try {
@@ -554,8 +557,6 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
         throw InputError("--csv", e.what());
       }
     }
-    // A figure or the animation that failed (its error line is out): nothing lands.
-    if (figures_failed_) return 1;
     // The report as it will be printed, composed before any file lands: once the
     // renames are done, only writing it to stdout is left.
     outputs_.figures_dir = figures_dir_;

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <utility>
 
@@ -14,8 +15,9 @@ namespace rigid::lab {
 namespace fs = std::filesystem;
 
 namespace {
-// The longest file name written, leaving room for the temporary's suffix (NAME_MAX 255).
-constexpr std::size_t kMaxFileName = 224;
+// The longest file name the filesystem takes (NAME_MAX, 255 bytes): any of them is
+// written (a temporary whose suffix would not fit is a hidden one beside it).
+constexpr std::size_t kMaxFileName = NAME_MAX;
 }  // namespace
 
 bool can_create_in(const std::string& dir) {
@@ -45,7 +47,8 @@ void check_output_file(const std::string& option, const std::string& name) {
   std::error_code ec;
   const fs::path path = fs::absolute(name, ec);
   if (ec || path.filename().string().size() > kMaxFileName) {
-    throw InputError(option, fmt::format("file name longer than {} characters", kMaxFileName));
+    throw InputError(option, fmt::format("file name longer than {} bytes, the filesystem's limit",
+                                         kMaxFileName));
   }
   // Only a regular file is written (by rename, so a link would be replaced, not
   // followed, and a device or pipe replaced by a file): refuse anything else.

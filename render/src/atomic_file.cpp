@@ -178,16 +178,24 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     fail(path, std::strerror(e));
   }
   std::string error;
+  int stream_errno = 0;
   try {
+    errno = 0;
     write(f);
+    stream_errno = errno;
   } catch (const std::exception& e) {
+    stream_errno = errno;
     error = e.what();
   } catch (...) {
+    stream_errno = errno;
     error = "unknown error while writing";
   }
   // A short write (full disk, say) shows as the stream's error flag, or when
-  // the buffer is flushed and the file closed.
-  if (error.empty() && std::ferror(f)) error = "write error";
+  // the buffer is flushed and the file closed. The stream's errno is the cause:
+  // an encoder that gave up on it ("libpng failed while encoding") only echoes it.
+  if (std::ferror(f)) {
+    error = stream_errno != 0 ? std::strerror(stream_errno) : error.empty() ? "write error" : error;
+  }
   if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
   if (std::fclose(f) != 0 && error.empty()) error = std::strerror(errno);
   if (error.empty() && g_transaction != nullptr) {
