@@ -136,9 +136,10 @@ TEST_CASE("top_nutation: integrated runs report their theta error and keep the i
     CHECK(value(r, "energy_drift_rel") < m.energy);
     if (std::string(method).rfind("splitting", 0) == 0) {
       // A rotation or a torque normal to z and 3 at every sub-step: roundoff only, a
-      // random walk of ~eps sqrt(30 n) = 1e-13 over n = 6000 steps of 15 sub-steps.
-      CHECK(value(r, "p_phi_drift_rel") < 1e-12);
-      CHECK(value(r, "p_psi_drift_rel") < 1e-12);
+      // random walk of ~eps sqrt(30 n) = 1e-13 over n = 6000 steps of 15 sub-steps
+      // (measured 8.4e-14).
+      CHECK(value(r, "p_phi_drift_rel") < 5e-13);
+      CHECK(value(r, "p_psi_drift_rel") < 5e-13);
     }
   }
 }
@@ -567,8 +568,8 @@ TEST_CASE("top_nutation: the exact top keeps E, p_phi and p_psi to roundoff thro
   // deg swings through the bottom 2e-11 rad from the south pole, where phi_dot ~ 1e8 and
   // sin of the rounded theta holds ulp(pi) / 2e-11 = 2e-5: built from it, the state read
   // drifts of 3e-5. From (1 - u)(1 + u), with omega_3 = S, and p_phi, p_psi against the
-  // largest |L| the motion can reach, all three stay at roundoff (measured at most
-  // 2.0e-15 over these): the bound is 32 eps.
+  // largest |L| the motion can reach, all three stay at roundoff: measured at most
+  // 2.0e-15 in E (bound 32 eps), 2.3e-16 in p_phi and 0 in p_psi (omega_3 = S; 8 eps).
   for (const auto& [arm, rpm] : {std::pair{1e6, 500.0}, std::pair{0.04, 1e-3}, std::pair{1e6, 1e-3},
                                  std::pair{0.04, 500.0}}) {
     INFO("arm " << arm << " m, spin " << rpm << " rpm");
@@ -577,7 +578,7 @@ TEST_CASE("top_nutation: the exact top keeps E, p_phi and p_psi to roundoff thro
     const auto report = compute(in);
     const auto& r = report.results();
     CHECK(value(r, "energy_drift_rel") < 32 * DBL_EPSILON);
-    CHECK(value(r, "p_phi_drift_rel") < 32 * DBL_EPSILON);
-    CHECK(value(r, "p_psi_drift_rel") < 32 * DBL_EPSILON);
+    CHECK(value(r, "p_phi_drift_rel") < 8 * DBL_EPSILON);
+    CHECK(value(r, "p_psi_drift_rel") < 8 * DBL_EPSILON);
   }
 }
