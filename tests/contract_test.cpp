@@ -464,14 +464,45 @@ TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave n
     // Every lab it ran has stopped (none still writes into the folder) and left no temporary.
     const std::string still = "pgrep -f -- '[-]-figures " + dir.string() + "' > /dev/null 2>&1";
     CHECK(std::system(still.c_str()) != 0);  // (the bracket keeps pgrep's own shell out)
-    if (fs::exists(dir)) {
-      for (const auto& entry : fs::directory_iterator(dir)) {
-        CHECK(entry.path().filename().string().find(".rigidlab-tmp-") == std::string::npos);
-      }
-    }
+    // Nothing landed (the labs drew into a staging folder), and the folder it made is gone.
+    CHECK(!fs::exists(dir));
     fs::remove_all(dir);
     fs::remove(status_file);
   }
+}
+
+TEST_CASE("contract: rigidlab figures lands every lab's figures or none") {
+  namespace fs = std::filesystem;
+  const fs::path base = fs::temp_directory_path() / ("rigid_all_" + std::to_string(::getpid()));
+  fs::create_directories(base);
+  const fs::path out = base / "figs";
+  const std::string rigidlab = std::string(RIGID_LAB_DIR) + "/rigidlab figures --out '";
+  REQUIRE(std::system((rigidlab + out.string() + "' >/dev/null 2>&1").c_str()) == 0);
+  std::size_t pngs = 0;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    CHECK(entry.path().extension() == ".png");  // no staging folder or temporary left
+    ++pngs;
+  }
+  CHECK(pngs >= all_labs().size());
+  fs::remove_all(out);
+  // A full disk (a 200 kB tmpfs, where this user may mount one): every lab fails, none
+  // of their figures lands, the folder rigidlab made goes, a file of the user's stays.
+  const fs::path disk = base / "disk";
+  fs::create_directories(disk);
+  const std::string mount = "mount -t tmpfs -o size=200k tmpfs '" + disk.string() + "' 2>/dev/null";
+  if (std::system(mount.c_str()) == 0) {
+    std::ofstream(disk / "mine.txt") << "keep\n";
+    const int status =
+        std::system((rigidlab + (disk / "figs").string() + "' >/dev/null 2>&1").c_str());
+    CHECK(WEXITSTATUS(status) == 1);
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(disk)) left.push_back(entry.path().filename());
+    CHECK(left == std::vector<std::string>{"mine.txt"});
+    CHECK(std::system(("umount '" + disk.string() + "'").c_str()) == 0);
+  } else {
+    WARN("cannot mount a tmpfs here: the full-disk half is not run");
+  }
+  fs::remove_all(base);
 }
 
 TEST_CASE("contract: a number a double cannot hold breaks the magnitude rule, quoted short") {

@@ -204,18 +204,81 @@ int run_captured(const std::string& lab, const std::vector<std::string>& args, s
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+// Every lab's figures land in `out` together or not at all: the labs draw into a
+// staging folder, OUT/.rigidlab-stage-PID, whose files are renamed into `out` only once
+// every lab has succeeded. A failure or a signal removes the staging folder, and `out`
+// too if this run made it and it is left empty.
+class Staging {
+ public:
+  explicit Staging(const std::string& out)
+      : out_(out),
+        dir_((fs::path(out) / (".rigidlab-stage-" + std::to_string(::getpid()))).string()) {
+    std::error_code ec;
+    made_out_ = !fs::exists(out, ec) && !ec;
+  }
+  const std::string& dir() const { return dir_; }
+  // A lab's message about the staging folder, said of `out`.
+  std::string said_of_out(std::string text) const {
+    for (std::size_t at; (at = text.find(dir_)) != std::string::npos;)
+      text.replace(at, dir_.size(), out_);
+    return text;
+  }
+  void discard() const {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+    if (made_out_) fs::remove(out_, ec);  // only if left empty
+  }
+  // Renames every staged file into `out`; "" or what failed, with how many had landed.
+  std::string land() const {
+    std::error_code ec;
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(dir_, ec)) files.push_back(entry.path());
+    if (ec) return "cannot read " + dir_ + ": " + ec.message();
+    std::size_t landed = 0;
+    for (const fs::path& file : files) {
+      if (std::rename(file.c_str(), (fs::path(out_) / file.filename()).c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        discard();
+        return "moving the figures into " + out_ + " failed after " + std::to_string(landed) +
+               " of " + std::to_string(files.size()) + " (" + why + "); those " +
+               std::to_string(landed) + " landed";
+      }
+      ++landed;
+    }
+    fs::remove(dir_, ec);
+    return "";
+  }
+
+ private:
+  std::string out_, dir_;
+  bool made_out_ = false;
+};
+
 // Every lab's figures into `out`, as many labs at once as there are processors.
 int figures(const std::string& out, const std::string& size, const std::string& prefix) {
   forward_signals();
-  std::vector<std::string> args{"--quiet", "--figures", out, "--figure-size", size};
+  const Staging stage(out);
+  const auto end_if_signalled = [&] {
+    if (g_signal == 0) return;
+    stage.discard();
+    die_if_signalled();
+  };
+  // Made here, not by a lab: a lab that fails removes the folders it made, and would
+  // take the staging folder from under the others. If it cannot be made, the first
+  // lab says why, by its own rules.
+  std::error_code ignored;
+  fs::create_directories(stage.dir(), ignored);
+  std::vector<std::string> args{"--quiet", "--figures", stage.dir(), "--figure-size", size};
   if (!prefix.empty()) args.insert(args.end(), {"--figure-prefix", prefix});
   // The first lab alone: it checks the options by the labs' own rules, so bad ones are
   // one line and exit status 2 here, not one failure per lab.
   const std::vector<std::string> labs = lab_names();
   std::string err;
   const int first = run_captured(labs.front(), args, err);
-  die_if_signalled();
+  end_if_signalled();
+  err = stage.said_of_out(err);
   if (first == 2) {
+    stage.discard();
     const std::string prefix_of_lab = labs.front() + ": error: ";
     if (err.rfind(prefix_of_lab, 0) == 0) err.erase(0, prefix_of_lab.size());
     // the labs' --figures is rigidlab's --out
@@ -251,9 +314,15 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     running.emplace_back(start(lab, args), lab);
   }
   while (!running.empty()) wait_one();
-  die_if_signalled();
+  end_if_signalled();
   if (failed > 0) {
-    std::cerr << "rigidlab: error: figures: " << failed << " lab(s) failed (their lines above)\n";
+    stage.discard();
+    std::cerr << "rigidlab: error: figures: " << failed
+              << " lab(s) failed (their lines above); no figure landed\n";
+    return 1;
+  }
+  if (const std::string why = stage.land(); !why.empty()) {
+    std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(why) << "\n";
     return 1;
   }
   std::cout << "figures of " << labs.size() << " labs in "
