@@ -3,12 +3,14 @@
 // tolerance, and bad input.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "rigid/free_body_exact.h"
 #include "rigid/free_body_integrate.h"
+#include "rigid/ode.h"
 #include "rigid/rotation.h"
 #include "rigid/splitting.h"
 #include "rigid/units.h"
@@ -468,4 +470,29 @@ TEST_CASE("integrate: at equal cost the splittings' energy does not drift, the o
     // above 2e-7: a factor of 30 at least, where a band's trend only falls with the run.
     CHECK(worst_split * 10 < best_other);
   }
+}
+
+TEST_CASE("integrate: the tolerance at equal cost, searched only where it can be met") {
+  OdeOptions o;
+  o.method = Method::kDopri5;
+  // A cost that halves with each decade the tolerance loosens: 1e4 at 1e-10, 156 at
+  // 1e-4, 78 at 1e-3. The target 100 a period lies between, found by bisection.
+  int trials = 0;
+  const auto falling = [&trials](const OdeOptions& t) {
+    ++trials;
+    return 1e4 * std::pow(2.0, -(std::log10(t.rel_tol) + 10.0));
+  };
+  const OdeOptions met = options_at_cost(o, 1.0, 100.0, falling);
+  CHECK(std::abs(falling(met) / 100.0 - 1.0) < 0.05);
+  CHECK(trials > 2);
+  // A budget in which even 1e-1 cannot finish (a spin the evaluations cannot resolve;
+  // each trial would run to its step cap): one trial, and the loosest tolerance.
+  trials = 0;
+  const auto dear = [&trials](const OdeOptions&) {
+    ++trials;
+    return std::numeric_limits<double>::infinity();
+  };
+  const OdeOptions loosest = options_at_cost(o, 1.0, 100.0, dear);
+  CHECK(trials == 1);
+  CHECK(loosest.rel_tol == Approx(0.1).epsilon(4 * DBL_EPSILON));
 }

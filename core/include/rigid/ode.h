@@ -336,7 +336,8 @@ OdeStats integrate_on_grid(Stepper& stepper, const System& system, State& x,
 /// runs with options o and returns its evaluations a period (infinity if it could not
 /// finish). Cost falls as the tolerance loosens, though not strictly (the step control
 /// jumps), so bisection on log10(tol) over [1e-14, 1e-1] keeps the tolerance whose cost
-/// came nearest the target from below (5 % over allowed); if even 1e-1 costs more, 1e-1.
+/// came nearest the target from below (5 % over allowed); if even 1e-1 costs more, 1e-1
+/// (by one trial where 1e-1 cannot finish at all).
 template <class Cost>
 OdeOptions options_at_cost(OdeOptions options, double period, double evaluations_per_period,
                            Cost cost) {
@@ -350,6 +351,10 @@ OdeOptions options_at_cost(OdeOptions options, double period, double evaluations
     return o;
   };
   double lo = -14.0, hi = -1.0;  // log10 of the tolerance: tight, loose
+  // Where even the loosest tolerance cannot finish within its step cap (4x the budget:
+  // a fast spin the budget cannot resolve), one trial says so, not 24 at the cap. A
+  // finite cost above the target is searched on: Bulirsch-Stoer's can fall again.
+  if (std::isinf(cost(at(hi)))) return at(hi);
   double best = hi, best_miss = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 24; ++k) {
     const double mid = 0.5 * (lo + hi);
