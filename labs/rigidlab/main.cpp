@@ -217,10 +217,14 @@ class Staging {
     made_out_ = !fs::exists(out, ec) && !ec;
   }
   const std::string& dir() const { return dir_; }
-  // A lab's message about the staging folder, said of `out`.
+  // A lab's message about the staging folder, said of `out` (both as the lab escapes
+  // them: its lines show user text through terminal_safe).
   std::string said_of_out(std::string text) const {
-    for (std::size_t at; (at = text.find(dir_)) != std::string::npos;)
-      text.replace(at, dir_.size(), out_);
+    const std::string from = rigid::support::terminal_safe(dir_);
+    const std::string to = rigid::support::terminal_safe(out_);
+    for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) {
+      text.replace(at, from.size(), to);
+    }
     return text;
   }
   void discard() const {
@@ -291,7 +295,14 @@ int figures(const std::string& out, const std::string& size, const std::string& 
   std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED")
             << "\n";
   const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
-  std::vector<std::pair<pid_t, std::string>> running;
+  // Each lab's stderr into a file of its own, shown when it ends with the staging
+  // folder's name said as `out` (its lines name the paths it wrote to).
+  struct Running {
+    pid_t pid;
+    std::string lab;
+    std::FILE* err;
+  };
+  std::vector<Running> running;
   const auto wait_one = [&] {
     int status = 0;
     pid_t pid = 0;
@@ -299,9 +310,19 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     }
     track(pid, false);
     for (auto it = running.begin(); it != running.end(); ++it) {
-      if (it->first != pid) continue;
+      if (it->pid != pid) continue;
+      if (it->err != nullptr) {
+        std::string text;
+        std::rewind(it->err);
+        std::array<char, 4096> buffer{};
+        for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), it->err)) > 0;) {
+          text.append(buffer.data(), n);
+        }
+        std::fclose(it->err);
+        std::cerr << stage.said_of_out(text);
+      }
       const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-      std::cerr << "rigidlab: " << it->second << (ok ? ": figures drawn" : ": FAILED") << "\n";
+      std::cerr << "rigidlab: " << it->lab << (ok ? ": figures drawn" : ": FAILED") << "\n";
       failed += ok ? 0 : 1;
       running.erase(it);
       return;
@@ -311,7 +332,9 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     const std::string& lab = labs[k];
     if (static_cast<long>(running.size()) >= cpus) wait_one();
     if (g_signal != 0) break;
-    running.emplace_back(start(lab, args), lab);
+    std::FILE* err = std::tmpfile();  // null: the lab's stderr is rigidlab's own
+    const pid_t pid = start(lab, args, err != nullptr ? ::fileno(err) : -1);
+    running.push_back({pid, lab, err});
   }
   while (!running.empty()) wait_one();
   end_if_signalled();
