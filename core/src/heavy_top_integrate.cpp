@@ -48,12 +48,13 @@ class HeavyTopProblem::Invariants {
     const double L0 = Eigen::Vector3d(top.I * w0.x(), top.I * w0.y(), top.Is * w0.z()).norm();
     const double L_reach = std::sqrt(2.0 * std::max(top.I, top.Is) * (scale_E_ + top.mgl));
     const double L_scale = std::max(L0, L_reach);
-    inv_L0_ = L_scale > 0.0 ? 1.0 / L_scale : 0.0;
+    inv_L_scale_ = L_scale > 0.0 ? 1.0 / L_scale : 0.0;
   }
   std::array<double, kInvariantCount> operator()(const State& x) const {
     double E, p_phi, p_psi;
     measure(omega_body(x), attitude(x), E, p_phi, p_psi);
-    return {(E - E0_) / scale_E_, (p_phi - p_phi0_) * inv_L0_, (p_psi - p_psi0_) * inv_L0_};
+    return {(E - E0_) / scale_E_, (p_phi - p_phi0_) * inv_L_scale_,
+            (p_psi - p_psi0_) * inv_L_scale_};
   }
 
  private:
@@ -66,7 +67,7 @@ class HeavyTopProblem::Invariants {
     p_psi = L.z();
   }
   HeavyTop top_;
-  double E0_ = 0, p_phi0_ = 0, p_psi0_ = 0, scale_E_ = 1, inv_L0_ = 0;
+  double E0_ = 0, p_phi0_ = 0, p_psi0_ = 0, scale_E_ = 1, inv_L_scale_ = 0;
 };
 
 // Free flow and kicks of the heavy top (header comment) on L_body and the

@@ -145,10 +145,10 @@ std::string InputRule::broken(double value, const std::string& text) const {
   const std::string magnitude_rule = bound_ == Bound::kPositive
                                          ? "must be between 1e-60 and 1e60"
                                          : "must be 0 or between 1e-60 and 1e60 in magnitude";
+  const std::string open_range_rule = fmt::format("must be between {} and {}{}, exclusive", lo_,
+                                                  hi_, unit_.empty() ? "" : " " + unit_);
   if (beyond_double(value, text)) {
-    if (bound_ != Bound::kOpenRange) return fail(magnitude_rule);
-    return fail(fmt::format("must be between {} and {}{}, exclusive", lo_, hi_,
-                            unit_.empty() ? "" : " " + unit_));
+    return fail(bound_ == Bound::kOpenRange ? open_range_rule : magnitude_rule);
   }
   if (!std::isfinite(value)) return fail("must be finite");
   switch (bound_) {
@@ -159,10 +159,7 @@ std::string InputRule::broken(double value, const std::string& text) const {
       if (value < 0.0) return fail("must not be negative");
       break;
     case Bound::kOpenRange:
-      if (!(value > lo_ && value < hi_)) {
-        return fail(fmt::format("must be between {} and {}{}, exclusive", lo_, hi_,
-                                unit_.empty() ? "" : " " + unit_));
-      }
+      if (!(value > lo_ && value < hi_)) return fail(open_range_rule);
       break;
     case Bound::kRangeFrom:
       if (!(value >= lo_ && value < hi_)) {
