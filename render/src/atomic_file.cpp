@@ -65,8 +65,12 @@ void install_handlers_once() {
   (void)installed;
 }
 
+// Files may be written from more than one thread (an animation encodes on its own).
+std::mutex g_mutex;
+
 int hold(const std::string& tmp) {
   install_handlers_once();
+  const std::lock_guard<std::mutex> lock(g_mutex);
   for (int i = 0; i < kMaxHeld; ++i) {
     if (!g_used[i] && tmp.size() < PATH_MAX) {
       std::memcpy(g_held[i], tmp.c_str(), tmp.size() + 1);
@@ -78,6 +82,7 @@ int hold(const std::string& tmp) {
 }
 
 void release(int slot) {
+  const std::lock_guard<std::mutex> lock(g_mutex);
   if (slot >= 0) g_used[slot] = 0;
 }
 
@@ -198,9 +203,12 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   }
   if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
   if (std::fclose(f) != 0 && error.empty()) error = std::strerror(errno);
-  if (error.empty() && g_transaction != nullptr) {
-    g_transaction->push_back({tmp, path, slot});  // renamed at commit()
-    return;
+  if (error.empty()) {
+    const std::lock_guard<std::mutex> lock(g_mutex);
+    if (g_transaction != nullptr) {
+      g_transaction->push_back({tmp, path, slot});  // renamed at commit()
+      return;
+    }
   }
   if (error.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) error = std::strerror(errno);
   if (!error.empty()) std::remove(tmp.c_str());

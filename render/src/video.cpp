@@ -1,16 +1,20 @@
 #include "rigid/render/video.h"
 
 #include <dlfcn.h>
+#include <sys/types.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <deque>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -49,13 +53,15 @@ bool bind(void* lib, const char* name, F& fn) {
   return fn != nullptr;
 }
 
-// One encoding, fed frames in order on the worker thread.
+// One encoding, fed frames in order on the worker thread, writing into the file
+// it is given before the first frame.
 class Encoder {
  public:
   virtual ~Encoder() = default;
+  virtual void begin(std::FILE* file) = 0;
   virtual void encode(const Image& frame, int index) = 0;
-  /// Ends the stream: the whole file's bytes.
-  virtual std::vector<std::uint8_t> finish(int frames) = 0;
+  /// Ends the stream and writes what is left of the file.
+  virtual void finish(int frames) = 0;
 };
 
 // ---- animated WebP ------------------------------------------------------------
@@ -128,14 +134,18 @@ class WebpEncoder final : public Encoder {
     if (!added) throw std::runtime_error(std::string("libwebp: ") + api_.get_error(encoder_));
   }
 
-  std::vector<std::uint8_t> finish(int frames) override {
+  void begin(std::FILE* file) override { file_ = file; }
+
+  // WebPAnimEncoder keeps every encoded frame until the file is assembled (the
+  // animation's bytes, not its pixels): the file is written here in one piece.
+  void finish(int frames) override {
     WebPData data{nullptr, 0};
     if (!api_.add(encoder_, nullptr, timestamp_ms(frames), nullptr) ||
         !api_.assemble(encoder_, &data))
       throw std::runtime_error(std::string("libwebp: ") + api_.get_error(encoder_));
-    std::vector<std::uint8_t> bytes(data.bytes, data.bytes + data.size);
+    const bool written = std::fwrite(data.bytes, 1, data.size, file_) == data.size;
     api_.free(const_cast<std::uint8_t*>(data.bytes));
-    return bytes;
+    if (!written) throw std::runtime_error("short write");
   }
 
  private:
@@ -152,6 +162,7 @@ class WebpEncoder final : public Encoder {
   VideoSettings settings_;
   WebPAnimEncoder* encoder_ = nullptr;
   WebPConfig config_{};
+  std::FILE* file_ = nullptr;
 };
 
 // ---- H.264 in MP4 ---------------------------------------------------------------
@@ -175,6 +186,7 @@ struct AvApi {
   decltype(&avformat_free_context) free_format = nullptr;
   decltype(&avio_alloc_context) avio_alloc = nullptr;
   decltype(&avio_context_free) avio_free = nullptr;
+  decltype(&::avio_flush) flush_io = nullptr;
   decltype(&av_frame_alloc) frame_alloc = nullptr;
   decltype(&av_frame_get_buffer) frame_get_buffer = nullptr;
   decltype(&av_frame_make_writable) frame_make_writable = nullptr;
@@ -223,6 +235,7 @@ const AvApi& av_api() {
         bind(format, "avformat_free_context", a.free_format) &&
         bind(format, "avio_alloc_context", a.avio_alloc) &&
         bind(format, "avio_context_free", a.avio_free) &&
+        bind(format, "avio_flush", a.flush_io) &&
         bind(util, "av_frame_alloc", a.frame_alloc) &&
         bind(util, "av_frame_get_buffer", a.frame_get_buffer) &&
         bind(util, "av_frame_make_writable", a.frame_make_writable) &&
@@ -241,28 +254,30 @@ const AvApi& av_api() {
   return api;
 }
 
-// The MP4 is built in memory: libavformat writes through these callbacks (the MP4
-// muxer seeks back to patch its headers), finish() hands the bytes over.
-struct MemoryFile {
-  std::vector<std::uint8_t> bytes;
-  std::size_t position = 0;
+// The MP4 streams into the file as it is encoded: libavformat writes through these
+// callbacks and seeks back at the end to patch its headers. A failed write keeps
+// its errno, the cause to report (libavformat's own message would only echo it).
+struct StreamFile {
+  std::FILE* file = nullptr;
+  std::int64_t size = 0;  // the largest offset written: the file's length
+  int error = 0;
 
   static int write(void* opaque, std::uint8_t* buf, int size) {
-    auto& f = *static_cast<MemoryFile*>(opaque);
-    if (f.position + size > f.bytes.size()) f.bytes.resize(f.position + size);
-    std::memcpy(f.bytes.data() + f.position, buf, static_cast<std::size_t>(size));
-    f.position += static_cast<std::size_t>(size);
+    auto& f = *static_cast<StreamFile*>(opaque);
+    const std::size_t n = static_cast<std::size_t>(size);
+    if (std::fwrite(buf, 1, n, f.file) != n) {
+      f.error = errno != 0 ? errno : EIO;
+      return AVERROR(f.error);
+    }
+    f.size = std::max<std::int64_t>(f.size, ::ftello(f.file));
     return size;
   }
   static std::int64_t seek(void* opaque, std::int64_t offset, int whence) {
-    auto& f = *static_cast<MemoryFile*>(opaque);
-    if (whence & AVSEEK_SIZE) return static_cast<std::int64_t>(f.bytes.size());
-    const std::int64_t base = (whence & 3) == SEEK_CUR   ? static_cast<std::int64_t>(f.position)
-                              : (whence & 3) == SEEK_END ? static_cast<std::int64_t>(f.bytes.size())
-                                                         : 0;
-    if (base + offset < 0) return -1;
-    f.position = static_cast<std::size_t>(base + offset);
-    return static_cast<std::int64_t>(f.position);
+    auto& f = *static_cast<StreamFile*>(opaque);
+    if (whence & AVSEEK_SIZE) return f.size;
+    const int from = (whence & 3) == SEEK_CUR ? SEEK_CUR : (whence & 3) == SEEK_END ? SEEK_END : SEEK_SET;
+    if (::fseeko(f.file, static_cast<off_t>(offset), from) != 0) return -1;
+    return ::ftello(f.file);
   }
 };
 
@@ -301,14 +316,6 @@ class Mp4Encoder final : public Encoder {
     stream_->time_base = codec_->time_base;
     check(api_.parameters_from_context(stream_->codecpar, codec_), "stream parameters");
 
-    constexpr int kBuffer = 1 << 16;
-    auto* buffer = static_cast<unsigned char*>(api_.malloc(kBuffer));
-    io_ =
-        api_.avio_alloc(buffer, kBuffer, 1, &file_, nullptr, &MemoryFile::write, &MemoryFile::seek);
-    format_->pb = io_;
-    format_->flags |= AVFMT_FLAG_CUSTOM_IO;
-    check(api_.write_header(format_, nullptr), "cannot write the MP4 header");
-
     frame_ = api_.frame_alloc();
     frame_->format = AV_PIX_FMT_YUV420P;
     frame_->width = s.width;
@@ -332,6 +339,18 @@ class Mp4Encoder final : public Encoder {
     if (format_) api_.free_format(format_);
   }
 
+  void begin(std::FILE* file) override {
+    file_.file = file;
+    constexpr int kBuffer = 1 << 16;
+    auto* buffer = static_cast<unsigned char*>(api_.malloc(kBuffer));
+    io_ =
+        api_.avio_alloc(buffer, kBuffer, 1, &file_, nullptr, &StreamFile::write, &StreamFile::seek);
+    if (!io_) throw std::runtime_error("libavformat: out of memory");
+    format_->pb = io_;
+    format_->flags |= AVFMT_FLAG_CUSTOM_IO;
+    check(api_.write_header(format_, nullptr), "cannot write the MP4 header");
+  }
+
   void encode(const Image& image, int index) override {
     check(api_.frame_make_writable(frame_), "frame buffer");
     const std::uint8_t* src[] = {image.rgb.data()};
@@ -342,11 +361,12 @@ class Mp4Encoder final : public Encoder {
     drain();
   }
 
-  std::vector<std::uint8_t> finish(int /*frames*/) override {
+  void finish(int /*frames*/) override {
     check(api_.send_frame(codec_, nullptr), "libx264 could not flush");
     drain();
     check(api_.write_trailer(format_), "cannot finish the MP4");
-    return std::move(file_.bytes);
+    api_.flush_io(io_);
+    if (file_.error != 0) throw std::runtime_error(std::strerror(file_.error));
   }
 
  private:
@@ -370,6 +390,7 @@ class Mp4Encoder final : public Encoder {
 
   void check(int r, const char* what) const {
     if (r >= 0) return;
+    if (file_.error != 0) throw std::runtime_error(std::strerror(file_.error));
     char text[128] = {};
     api_.strerror(r, text, sizeof text);
     throw std::runtime_error(std::string(what) + ": " + text);
@@ -384,7 +405,7 @@ class Mp4Encoder final : public Encoder {
   AVFrame* frame_ = nullptr;
   AVPacket* packet_ = nullptr;
   SwsContext* sws_ = nullptr;
-  MemoryFile file_;
+  StreamFile file_;
 };
 
 std::unique_ptr<Encoder> make_encoder(VideoFormat format, const VideoSettings& s) {
@@ -396,6 +417,10 @@ std::unique_ptr<Encoder> make_encoder(VideoFormat format, const VideoSettings& s
 
 // ---- the writer: a queue in front of the encoder on its own thread ------------------
 
+// The encoder thread owns the file: it opens the temporary (write_file_atomically),
+// encodes each frame into it as it arrives and, at finish(), ends the stream and
+// renames it in. A writer abandoned without finish() makes the thread give up
+// inside the write, which removes the temporary.
 struct VideoWriter::Impl {
   std::string path;
   VideoSettings settings;
@@ -405,40 +430,56 @@ struct VideoWriter::Impl {
   std::condition_variable changed;
   std::deque<Image> queue;
   bool closing = false;
+  bool abandoned = false;
   std::exception_ptr failure;
   int added = 0, encoded = 0;
+  std::size_t bytes = 0;
 
   static constexpr std::size_t kMaxQueued = 2;
 
-  void run() {
-    for (;;) {
-      Image frame;
-      {
-        std::unique_lock<std::mutex> lock(mutex);
-        changed.wait(lock, [&] { return !queue.empty() || closing; });
-        if (queue.empty()) return;
-        frame = std::move(queue.front());
-        queue.pop_front();
-      }
-      changed.notify_all();
-      try {
-        encoder->encode(frame, encoded);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        failure = std::current_exception();
-        queue.clear();
-        closing = true;
-        changed.notify_all();
-        return;
-      }
-      ++encoded;
-    }
+  struct Abandoned {};
+
+  // The next frame, or none once the queue is closed and empty.
+  std::optional<Image> next() {
+    std::unique_lock<std::mutex> lock(mutex);
+    changed.wait(lock, [&] { return !queue.empty() || closing; });
+    if (abandoned) throw Abandoned{};
+    if (queue.empty()) return std::nullopt;
+    Image frame = std::move(queue.front());
+    queue.pop_front();
+    lock.unlock();
+    changed.notify_all();
+    return frame;
   }
 
-  void stop() {
+  void run() {
+    std::exception_ptr error;
+    try {
+      write_file_atomically(path, [&](std::FILE* f) {
+        encoder->begin(f);
+        while (std::optional<Image> frame = next()) {
+          encoder->encode(*frame, encoded);
+          ++encoded;
+        }
+        encoder->finish(encoded);
+        std::fflush(f);
+        bytes = static_cast<std::size_t>(std::max<off_t>(0, ::ftello(f)));
+      });
+    } catch (...) {
+      error = std::current_exception();
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    if (error && !abandoned) failure = error;
+    queue.clear();
+    closing = true;
+    changed.notify_all();
+  }
+
+  void stop(bool abandon) {
     {
       std::lock_guard<std::mutex> lock(mutex);
       closing = true;
+      abandoned = abandon;
     }
     changed.notify_all();
     if (worker.joinable()) worker.join();
@@ -457,7 +498,7 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, const Vide
 }
 
 VideoWriter::~VideoWriter() {
-  if (impl_) impl_->stop();
+  if (impl_) impl_->stop(/*abandon=*/true);
 }
 
 void VideoWriter::add(Image frame) {
@@ -468,6 +509,7 @@ void VideoWriter::add(Image frame) {
     return impl_->queue.size() < Impl::kMaxQueued || impl_->failure || impl_->closing;
   });
   if (impl_->failure) std::rethrow_exception(impl_->failure);
+  if (impl_->closing) throw std::logic_error("VideoWriter: a frame added after finish()");
   impl_->queue.push_back(std::move(frame));
   ++impl_->added;
   lock.unlock();
@@ -475,14 +517,9 @@ void VideoWriter::add(Image frame) {
 }
 
 std::size_t VideoWriter::finish() {
-  impl_->stop();
+  impl_->stop(/*abandon=*/false);
   if (impl_->failure) std::rethrow_exception(impl_->failure);
-  const std::vector<std::uint8_t> bytes = impl_->encoder->finish(impl_->encoded);
-  write_file_atomically(impl_->path, [&](std::FILE* f) {
-    if (std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size())
-      throw std::runtime_error("short write");
-  });
-  return bytes.size();
+  return impl_->bytes;
 }
 
 int VideoWriter::frames() const {

@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 using namespace rigid;
@@ -38,6 +39,26 @@ State exact(double t) {
 double error(const State& x, double t) {
   const State e = exact(t);
   return std::hypot(x[0] - e[0], (x[1] - e[1]) / kW);
+}
+
+// Every run goes through integrate_sampled with the observer and hook type-erased:
+// each lambda type would otherwise instantiate all ten methods once more, which
+// under the sanitizers costs minutes of compilation per call site.
+template <class S>
+using Observe = std::function<void(const S&, double)>;
+
+template <class System, class S, class Observer>
+OdeStats integrate(const System& system, const S& x0, const std::vector<double>& times,
+                   const OdeOptions& options, Observer&& observe) {
+  const Observe<S> erased = std::ref(observe);
+  return integrate_sampled(system, x0, times, options, erased);
+}
+
+template <class System, class S, class Observer, class Hook>
+OdeStats integrate(const System& system, const S& x0, const std::vector<double>& times,
+                   const OdeOptions& options, Observer&& observe, Hook hook) {
+  const Observe<S> erased = std::ref(observe);
+  return integrate_sampled(system, x0, times, options, erased, std::function<void(S&)>(hook));
 }
 
 // Records each sample and the largest error at the samples.
@@ -141,7 +162,7 @@ TEST_CASE("ode: every method integrates the harmonic oscillator within its own a
     const double h = 0.01;
     Samples seen;
     const OdeStats stats =
-        integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(Method::kRk4, h), seen);
+        integrate(Oscillator{}, State{1, 0}, times, options_for(Method::kRk4, h), seen);
     CHECK(seen.t == times);
     CHECK(stats.steps == 1001);
     const double bound = 2 * kW * 10.01 * std::pow(kW * h, 4) / 120;
@@ -154,7 +175,7 @@ TEST_CASE("ode: every method integrates the harmonic oscillator within its own a
       for (double tol : {1e-6, 1e-9, 1e-12}) {
         Samples seen;
         const OdeStats stats =
-            integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(m, tol), seen);
+            integrate(Oscillator{}, State{1, 0}, times, options_for(m, tol), seen);
         CHECK(seen.t == times);
         // odeint holds each step's local error below tol (1 + |x| + h |x'|) <= 5 tol
         // per component here (|x|, |v| <= 2); the flow is a rotation, so the global
@@ -170,9 +191,9 @@ TEST_CASE("ode: every method integrates the harmonic oscillator within its own a
     for (Method m : {Method::kRk4, Method::kDopri5, Method::kRkf78, Method::kBulirschStoer}) {
       const OdeOptions o = options_for(m, is_adaptive(m) ? 1e-10 : 0.01);
       Samples arr;
-      integrate_sampled(Oscillator{}, State{1, 0}, times, o, arr);
+      integrate(Oscillator{}, State{1, 0}, times, o, arr);
       Eigen::Vector2d last;
-      integrate_sampled(Oscillator{}, Eigen::Vector2d(1, 0), times, o,
+      integrate(Oscillator{}, Eigen::Vector2d(1, 0), times, o,
                         [&](const Eigen::Vector2d& x, double) { last = x; });
       INFO(method_name(m));
       // the same steps in another algebra: roundoff apart
@@ -188,7 +209,7 @@ TEST_CASE("ode: rk4 through the generic layer converges at order 4 when the step
   double errors[3];
   for (int k = 0; k < 3; ++k) {
     Samples seen;
-    integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 10.03},
+    integrate(Oscillator{}, State{1, 0}, {0.0, 10.03},
                       options_for(Method::kRk4, 0.1 / (1 << k)), seen);
     errors[k] = seen.worst;
   }
@@ -211,7 +232,7 @@ TEST_CASE(
   for (Method m : {Method::kRk4, Method::kRkf78, Method::kVern6, Method::kVern7, Method::kVern8,
                    Method::kVern9}) {
     State end{};
-    const OdeStats stats = integrate_sampled(
+    const OdeStats stats = integrate(
         Oscillator{}, State{1, 0}, times, options_for(m, is_adaptive(m) ? 1e-8 : 0.05),
         [&](const State& x, double) { end = x; }, onto_energy);
     INFO(method_name(m) << ": " << stats.steps << " steps");
@@ -219,13 +240,13 @@ TEST_CASE(
     CHECK(std::abs(std::hypot(end[0], end[1] / kW) - 1.0) < 1e-15);
   }
   // dense output interpolates between steps the hook never sees: refused
-  CHECK_THROWS_WITH(integrate_sampled(
+  CHECK_THROWS_WITH(integrate(
                         Oscillator{}, State{1, 0}, times, options_for(Method::kDopri5, 1e-8),
                         [](const State&, double) {}, onto_energy),
                     Contains("cannot apply an after-step projection"));
   // the free body's splittings need no right-hand side: not here
   CHECK_THROWS_AS(
-      integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(Method::kSplitting, 0.1),
+      integrate(Oscillator{}, State{1, 0}, times, options_for(Method::kSplitting, 0.1),
                         [](const State&, double) {}),
       std::invalid_argument);
 }
@@ -238,21 +259,21 @@ TEST_CASE("ode: the step cap counts the whole run and stops it at once") {
   for (int i = 0; i <= 1000; ++i) times.push_back(0.1 * i);
   for (Method m : {Method::kDopri5, Method::kRkf78, Method::kBulirschStoer}) {
     INFO(method_name(m));
-    CHECK_THROWS_AS(integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
+    CHECK_THROWS_AS(integrate(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
                                       [](const State&, double) {}),
                     std::runtime_error);
-    CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
+    CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
                                         [](const State&, double) {}),
                       Contains(std::string(method_name(m))) && Contains("more than 50 steps") &&
                           Contains("t = 100 s"));
   }
   // A fixed step is refused before the first step: 1e5 steps asked, 1000 allowed.
   CHECK_THROWS_WITH(
-      integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 100.0},
+      integrate(Oscillator{}, State{1, 0}, {0.0, 100.0},
                         options_for(Method::kRk4, 1e-3, 1000), [](const State&, double) {}),
       Contains("rk4") && Contains("more than 1000 steps") && Contains("t = 100 s"));
   // Exactly the cap is allowed: 1000 steps of 0.1 to t = 100.
-  CHECK_NOTHROW(integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 100.0},
+  CHECK_NOTHROW(integrate(Oscillator{}, State{1, 0}, {0.0, 100.0},
                                   options_for(Method::kRk4, 0.1, 1000),
                                   [](const State&, double) {}));
   const double seconds =
@@ -266,7 +287,7 @@ TEST_CASE("ode: a purely relative tolerance copes with a zero component") {
     OdeOptions o = options_for(m, 1e-10);
     o.abs_tol = 0.0;
     Samples seen;
-    const OdeStats stats = integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 1.0, 10.0}, o, seen);
+    const OdeStats stats = integrate(Oscillator{}, State{1, 0}, {0.0, 1.0, 10.0}, o, seen);
     INFO(method_name(m) << ": " << stats.steps << " steps, error " << seen.worst);
     // as above, 5 tol per step (|x| + h |x'| <= 4 here), summed over the steps
     CHECK(seen.worst < 5e-10 * static_cast<double>(stats.steps));
@@ -275,16 +296,16 @@ TEST_CASE("ode: a purely relative tolerance copes with a zero component") {
 
 TEST_CASE("ode: bad input is refused by name") {
   const auto none = [](const State&, double) {};
-  CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{NAN, 0}, {0.0, 1.0},
+  CHECK_THROWS_WITH(integrate(Oscillator{}, State{NAN, 0}, {0.0, 1.0},
                                       options_for(Method::kRk4, 0.1), none),
                     Contains("finite"));
-  CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, {1.0, 0.0},
+  CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, {1.0, 0.0},
                                       options_for(Method::kRk4, 0.1), none),
                     Contains("nondecreasing"));
-  CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 1.0},
+  CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, {0.0, 1.0},
                                       options_for(Method::kRk4, 0.0), none),
                     Contains("step must be positive"));
-  CHECK_THROWS_WITH(integrate_sampled(Oscillator{}, State{1, 0}, {0.0, 1.0},
+  CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, {0.0, 1.0},
                                       options_for(Method::kDopri5, 2.0), none),
                     Contains("tolerances must lie in [0, 1)"));
 }
@@ -295,7 +316,7 @@ TEST_CASE("ode: an adaptive run may take exactly max_steps steps, and not one mo
     INFO(method_name(m));
     const auto run = [&](std::size_t cap) {
       Samples seen;
-      return integrate_sampled(Oscillator{}, State{1, 0}, times, options_for(m, 1e-8, cap), seen);
+      return integrate(Oscillator{}, State{1, 0}, times, options_for(m, 1e-8, cap), seen);
     };
     const std::size_t n = run(1'000'000).steps;
     REQUIRE(n > 2);
@@ -312,7 +333,7 @@ TEST_CASE("ode: a sample time repeated, at the start or later, gives the same st
     if (!is_adaptive(m)) continue;
     std::vector<double> seen;
     double worst = 0.0;
-    integrate_sampled(Oscillator{}, exact(0.5), times, options_for(m, 1e-10),
+    integrate(Oscillator{}, exact(0.5), times, options_for(m, 1e-10),
                       [&](const State& x, double t) {
                         seen.push_back(t);
                         // exact() starts at t = 0: the run starts at 0.5 from exact(0.5)
@@ -353,9 +374,9 @@ TEST_CASE("ode: a run shorter than machine epsilon in absolute time is integrate
         ++seen;
       };
       const OdeStats stats =
-          hooked ? integrate_sampled(Fast{}, State{1, 0}, times, options_for(m, tol), observe,
+          hooked ? integrate(Fast{}, State{1, 0}, times, options_for(m, tol), observe,
                                      [](State&) {})
-                 : integrate_sampled(Fast{}, State{1, 0}, times, options_for(m, tol), observe);
+                 : integrate(Fast{}, State{1, 0}, times, options_for(m, tol), observe);
       INFO(method_name(m) << (hooked ? " with a hook" : "") << ": " << stats.steps
                           << " steps, error " << worst);
       CHECK(seen == times.size());

@@ -203,6 +203,48 @@ TEST_CASE("video: a writer that is not finished, or is given a wrong frame, leav
   fs::remove_all(dir);
 }
 
+TEST_CASE("video: an MP4 streams into its temporary file as it is encoded, not into memory") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("rigid_video_test3_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string path = (dir / "c.mp4").string();
+  // the size on disk before finish(): the temporary beside the target
+  const auto on_disk = [&] {
+    std::uintmax_t bytes = 0;
+    for (const auto& e : fs::directory_iterator(dir)) bytes += fs::file_size(e.path());
+    return bytes;
+  };
+  // Noise does not compress: each 320x240 frame costs tens of kB at CRF 20, so
+  // 120 frames are megabytes, far past libx264's lookahead and the 64 kB I/O buffer.
+  std::uint32_t seed = 12345;
+  const auto noise = [&] {
+    Image img{320, 240, std::vector<std::uint8_t>(3 * 320 * 240)};
+    for (auto& b : img.rgb) {
+      seed = seed * 1664525u + 1013904223u;  // Numerical Recipes' LCG
+      b = static_cast<std::uint8_t>(seed >> 24);
+    }
+    return img;
+  };
+  {
+    VideoWriter w(path, VideoFormat::kMp4, {320, 240, 30});
+    for (int k = 0; k < 120; ++k) w.add(noise());
+    const std::uintmax_t before = on_disk();
+    CHECK_FALSE(fs::exists(path));  // not in place before finish()
+    const std::size_t bytes = w.finish();
+    INFO("on disk before finish: " << before << " of " << bytes << " bytes");
+    CHECK(before > bytes / 2);
+    CHECK(fs::file_size(path) == bytes);
+  }
+  // abandoned part-way: its temporary goes too
+  {
+    VideoWriter w((dir / "d.mp4").string(), VideoFormat::kMp4, {320, 240, 30});
+    for (int k = 0; k < 60; ++k) w.add(noise());
+  }
+  CHECK_FALSE(fs::exists(dir / "d.mp4"));
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("video: the README's animations are what the figures target makes") {
   // figures/<lab>_motion.webp: 640x360, 12 fps, 8 s (scripts/figures.cmake)
   int found = 0;

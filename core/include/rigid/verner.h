@@ -40,7 +40,10 @@
 // A step inlines everything it calls, the right-hand side included: its stages are
 // one long function, and without this GCC stops inlining into it (measured: the
 // free body's right-hand side then costs half of a Verner step).
-#if defined(__GNUC__)
+// Under AddressSanitizer flattening makes one instrumented function of every
+// Verner step and its callers, which GCC compiles for tens of minutes; a
+// sanitizer build checks memory, not speed, so it goes without.
+#if defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
 #define RIGID_FLATTEN __attribute__((flatten))
 #else
 #define RIGID_FLATTEN

@@ -5,8 +5,10 @@
 // so a run without an animation loads nothing new.
 //
 // Frames are handed over as Images and encoded on a second thread while the
-// caller draws the next one (at most two frames wait); the encoded file is
-// built in memory and written atomically (atomic_file.h) by finish().
+// caller draws the next one (at most two frames wait). The MP4 streams into its
+// temporary file as it is encoded, so memory does not grow with its length; the
+// WebP encoder keeps the encoded frames (the file's bytes) until finish(). The
+// file appears atomically (atomic_file.h) when finish() returns.
 #pragma once
 
 #include <cstddef>

@@ -78,7 +78,7 @@ inline std::string terminal_safe(const std::string& text) {
     if (code < 0x20 || code == 0x7f) return detail::hex_escape(static_cast<unsigned char>(code));
     if ((code >= 0x80 && code <= 0x9f) || (code >= 0x202a && code <= 0x202e) ||
         (code >= 0x2066 && code <= 0x2069)) {
-      char buffer[12];
+      char buffer[16];  // "\\u{" + up to 8 hex digits + "}"
       std::snprintf(buffer, sizeof buffer, "\\u{%04x}", static_cast<unsigned>(code));
       return buffer;
     }
