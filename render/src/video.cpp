@@ -234,8 +234,7 @@ const AvApi& av_api() {
         bind(format, "av_write_trailer", a.write_trailer) &&
         bind(format, "avformat_free_context", a.free_format) &&
         bind(format, "avio_alloc_context", a.avio_alloc) &&
-        bind(format, "avio_context_free", a.avio_free) &&
-        bind(format, "avio_flush", a.flush_io) &&
+        bind(format, "avio_context_free", a.avio_free) && bind(format, "avio_flush", a.flush_io) &&
         bind(util, "av_frame_alloc", a.frame_alloc) &&
         bind(util, "av_frame_get_buffer", a.frame_get_buffer) &&
         bind(util, "av_frame_make_writable", a.frame_make_writable) &&
@@ -275,7 +274,9 @@ struct StreamFile {
   static std::int64_t seek(void* opaque, std::int64_t offset, int whence) {
     auto& f = *static_cast<StreamFile*>(opaque);
     if (whence & AVSEEK_SIZE) return f.size;
-    const int from = (whence & 3) == SEEK_CUR ? SEEK_CUR : (whence & 3) == SEEK_END ? SEEK_END : SEEK_SET;
+    const int from = (whence & 3) == SEEK_CUR   ? SEEK_CUR
+                     : (whence & 3) == SEEK_END ? SEEK_END
+                                                : SEEK_SET;
     if (::fseeko(f.file, static_cast<off_t>(offset), from) != 0) return -1;
     return ::ftello(f.file);
   }

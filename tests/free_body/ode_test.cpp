@@ -194,7 +194,7 @@ TEST_CASE("ode: every method integrates the harmonic oscillator within its own a
       integrate(Oscillator{}, State{1, 0}, times, o, arr);
       Eigen::Vector2d last;
       integrate(Oscillator{}, Eigen::Vector2d(1, 0), times, o,
-                        [&](const Eigen::Vector2d& x, double) { last = x; });
+                [&](const Eigen::Vector2d& x, double) { last = x; });
       INFO(method_name(m));
       // the same steps in another algebra: roundoff apart
       CHECK(std::abs(last[0] - arr.last[0]) < 1e-13);
@@ -209,8 +209,8 @@ TEST_CASE("ode: rk4 through the generic layer converges at order 4 when the step
   double errors[3];
   for (int k = 0; k < 3; ++k) {
     Samples seen;
-    integrate(Oscillator{}, State{1, 0}, {0.0, 10.03},
-                      options_for(Method::kRk4, 0.1 / (1 << k)), seen);
+    integrate(Oscillator{}, State{1, 0}, {0.0, 10.03}, options_for(Method::kRk4, 0.1 / (1 << k)),
+              seen);
     errors[k] = seen.worst;
   }
   const double p1 = std::log2(errors[0] / errors[1]), p2 = std::log2(errors[1] / errors[2]);
@@ -245,10 +245,9 @@ TEST_CASE(
                         [](const State&, double) {}, onto_energy),
                     Contains("cannot apply an after-step projection"));
   // the free body's splittings need no right-hand side: not here
-  CHECK_THROWS_AS(
-      integrate(Oscillator{}, State{1, 0}, times, options_for(Method::kSplitting, 0.1),
-                        [](const State&, double) {}),
-      std::invalid_argument);
+  CHECK_THROWS_AS(integrate(Oscillator{}, State{1, 0}, times, options_for(Method::kSplitting, 0.1),
+                            [](const State&, double) {}),
+                  std::invalid_argument);
 }
 
 TEST_CASE("ode: the step cap counts the whole run and stops it at once") {
@@ -260,22 +259,20 @@ TEST_CASE("ode: the step cap counts the whole run and stops it at once") {
   for (Method m : {Method::kDopri5, Method::kRkf78, Method::kBulirschStoer}) {
     INFO(method_name(m));
     CHECK_THROWS_AS(integrate(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
-                                      [](const State&, double) {}),
+                              [](const State&, double) {}),
                     std::runtime_error);
     CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, times, options_for(m, 1e-10, 50),
-                                        [](const State&, double) {}),
+                                [](const State&, double) {}),
                       Contains(std::string(method_name(m))) && Contains("more than 50 steps") &&
                           Contains("t = 100 s"));
   }
   // A fixed step is refused before the first step: 1e5 steps asked, 1000 allowed.
-  CHECK_THROWS_WITH(
-      integrate(Oscillator{}, State{1, 0}, {0.0, 100.0},
-                        options_for(Method::kRk4, 1e-3, 1000), [](const State&, double) {}),
-      Contains("rk4") && Contains("more than 1000 steps") && Contains("t = 100 s"));
+  CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, {0.0, 100.0},
+                              options_for(Method::kRk4, 1e-3, 1000), [](const State&, double) {}),
+                    Contains("rk4") && Contains("more than 1000 steps") && Contains("t = 100 s"));
   // Exactly the cap is allowed: 1000 steps of 0.1 to t = 100.
   CHECK_NOTHROW(integrate(Oscillator{}, State{1, 0}, {0.0, 100.0},
-                                  options_for(Method::kRk4, 0.1, 1000),
-                                  [](const State&, double) {}));
+                          options_for(Method::kRk4, 0.1, 1000), [](const State&, double) {}));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CHECK(seconds < 0.5);
@@ -296,18 +293,18 @@ TEST_CASE("ode: a purely relative tolerance copes with a zero component") {
 
 TEST_CASE("ode: bad input is refused by name") {
   const auto none = [](const State&, double) {};
-  CHECK_THROWS_WITH(integrate(Oscillator{}, State{NAN, 0}, {0.0, 1.0},
-                                      options_for(Method::kRk4, 0.1), none),
-                    Contains("finite"));
-  CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, {1.0, 0.0},
-                                      options_for(Method::kRk4, 0.1), none),
-                    Contains("nondecreasing"));
-  CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, {0.0, 1.0},
-                                      options_for(Method::kRk4, 0.0), none),
-                    Contains("step must be positive"));
-  CHECK_THROWS_WITH(integrate(Oscillator{}, State{1, 0}, {0.0, 1.0},
-                                      options_for(Method::kDopri5, 2.0), none),
-                    Contains("tolerances must lie in [0, 1)"));
+  CHECK_THROWS_WITH(
+      integrate(Oscillator{}, State{NAN, 0}, {0.0, 1.0}, options_for(Method::kRk4, 0.1), none),
+      Contains("finite"));
+  CHECK_THROWS_WITH(
+      integrate(Oscillator{}, State{1, 0}, {1.0, 0.0}, options_for(Method::kRk4, 0.1), none),
+      Contains("nondecreasing"));
+  CHECK_THROWS_WITH(
+      integrate(Oscillator{}, State{1, 0}, {0.0, 1.0}, options_for(Method::kRk4, 0.0), none),
+      Contains("step must be positive"));
+  CHECK_THROWS_WITH(
+      integrate(Oscillator{}, State{1, 0}, {0.0, 1.0}, options_for(Method::kDopri5, 2.0), none),
+      Contains("tolerances must lie in [0, 1)"));
 }
 
 TEST_CASE("ode: an adaptive run may take exactly max_steps steps, and not one more") {
@@ -334,11 +331,11 @@ TEST_CASE("ode: a sample time repeated, at the start or later, gives the same st
     std::vector<double> seen;
     double worst = 0.0;
     integrate(Oscillator{}, exact(0.5), times, options_for(m, 1e-10),
-                      [&](const State& x, double t) {
-                        seen.push_back(t);
-                        // exact() starts at t = 0: the run starts at 0.5 from exact(0.5)
-                        worst = std::max(worst, error(x, t));
-                      });
+              [&](const State& x, double t) {
+                seen.push_back(t);
+                // exact() starts at t = 0: the run starts at 0.5 from exact(0.5)
+                worst = std::max(worst, error(x, t));
+              });
     INFO(method_name(m) << ": worst error " << worst);
     CHECK(seen == times);
     CHECK(worst < 1e-8);  // tolerance 1e-10 over 1.5 s of a period-pi oscillation
@@ -374,9 +371,9 @@ TEST_CASE("ode: a run shorter than machine epsilon in absolute time is integrate
         ++seen;
       };
       const OdeStats stats =
-          hooked ? integrate(Fast{}, State{1, 0}, times, options_for(m, tol), observe,
-                                     [](State&) {})
-                 : integrate(Fast{}, State{1, 0}, times, options_for(m, tol), observe);
+          hooked
+              ? integrate(Fast{}, State{1, 0}, times, options_for(m, tol), observe, [](State&) {})
+              : integrate(Fast{}, State{1, 0}, times, options_for(m, tol), observe);
       INFO(method_name(m) << (hooked ? " with a hook" : "") << ": " << stats.steps
                           << " steps, error " << worst);
       CHECK(seen == times.size());
