@@ -110,31 +110,26 @@ void validate_run(const OdeOptions& o, const std::vector<double>& times, bool af
   }
 }
 
-TotalStepCap::TotalStepCap(Method m, std::size_t max_steps, double t_end, double max_seconds)
-    : method_(m),
-      max_steps_(max_steps),
-      t_end_(t_end),
-      max_seconds_(max_seconds),
-      start_(std::chrono::steady_clock::now()) {}
+TotalStepCap::TotalStepCap(Method m, std::size_t max_steps, double t_end)
+    : method_(m), max_steps_(max_steps), t_end_(t_end) {}
 
 void TotalStepCap::operator()() {
   if (++steps_ > max_steps_) {
     throw std::runtime_error(too_many_steps(method_, max_steps_, t_end_, 0.0));
   }
-  if (max_seconds_ > 0.0 && steps_ % 256 == 0) {
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (seconds > max_seconds_) {
-      std::ostringstream os;
-      os << method_name(method_) << " would take more than " << format_number(max_seconds_)
-         << " s to reach t = " << format_number(t_end_) << " s (" << steps_
-         << " steps so far); shorten the run, or loosen the tolerance or lengthen the step";
-      throw std::runtime_error(os.str());
-    }
-  }
 }
 
 namespace detail {
+
+std::string too_many_evaluations(const OdeOptions& o) {
+  std::ostringstream os;
+  os << method_name(o.method) << " needs more than "
+     << format_number(static_cast<double>(o.max_evaluations))
+     << " right-hand-side evaluations, the budget of a run; "
+     << (is_adaptive(o.method) ? "loosen the tolerance" : "lengthen the step")
+     << " or shorten the run";
+  return os.str();
+}
 
 std::vector<GridSample> plan_grid(const std::vector<double>& times, const OdeOptions& o) {
   validate_run(o, times);

@@ -67,10 +67,11 @@ OdeOptions integration_options(Report& report, const IntegrationInputs& in, bool
   options.abs_tol = options.rel_tol = in.tolerance;
   options.step = in.step.value_or(default_step);
   options.max_steps = kMaxRunSteps;
-  // Every lab finishes or refuses within seconds, whatever the step count.
-  options.max_seconds = kMaxRunSeconds;
   options.method = in.method == "exact" ? Method::kDopri5 : method_from_name(in.method);
   options.project_invariants = in.project;
+  // Every lab finishes or refuses within seconds, whatever the step count.
+  options.max_evaluations =
+      options.method == Method::kBulirschStoer ? kMaxBulirschStoerEvaluations : kMaxRunEvaluations;
   // Never silent: an option nothing uses is said to be unused.
   const bool exact = in.method == "exact";
   const bool tolerance_set = in.tolerance != IntegrationInputs{}.tolerance;

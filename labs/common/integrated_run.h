@@ -22,9 +22,15 @@ namespace rigid::lab {
 
 /// A lab's own run takes at most this many steps: more is refused rather than left to hang.
 inline constexpr std::size_t kMaxRunSteps = 20'000'000;
-/// The wall-clock budget of a lab's own run, s (a step count alone does not bound a
-/// Bulirsch-Stoer run's work); the comparisons are capped in steps.
-inline constexpr double kMaxRunSeconds = 4.0;
+/// The work of a lab's own run, in right-hand-side evaluations: rk4's 20M steps, so a
+/// fixed-step run is refused by its step count before it starts, never half-way; an
+/// adaptive run is refused when it reaches the cap. The same on every machine, unlike
+/// a wall-clock budget.
+inline constexpr std::size_t kMaxRunEvaluations = 4 * kMaxRunSteps;
+/// Bulirsch-Stoer's cap: the bookkeeping of its extrapolation tables costs several
+/// times an evaluation of these small right-hand sides, so a tenth of the others'
+/// keeps its longest run about as long.
+inline constexpr std::size_t kMaxBulirschStoerEvaluations = kMaxRunEvaluations / 10;
 /// Each method of the comparison at the lab's settings takes at most this many steps:
 /// the comparison is an aside, 2e5 steps in all whatever the lab's own run takes.
 inline constexpr std::size_t kMaxComparisonSteps = 20'000;
@@ -72,7 +78,7 @@ void add_end_time_inputs(InputTable<In>& table, Field t_end, Field periods,
 bool fixed_step(const IntegrationInputs& in);
 
 /// The options of the chosen method: the tolerance, the step (`default_step` unless
-/// --step was given), --project, at most kMaxRunSteps steps and kMaxRunSeconds. Warns
+/// --step was given), --project, at most kMaxRunSteps steps and kMaxRunEvaluations. Warns
 /// (Report::warn) of --step or --tolerance given where nothing uses them.
 OdeOptions integration_options(Report& report, const IntegrationInputs& in, bool compared,
                                double default_step);

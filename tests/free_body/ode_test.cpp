@@ -322,6 +322,27 @@ TEST_CASE("ode: an adaptive run may take exactly max_steps steps, and not one mo
   }
 }
 
+TEST_CASE("ode: a run may make exactly max_evaluations evaluations, and not one more") {
+  // The work cap counts every right-hand side, rejected steps' included, so it refuses
+  // the same run on every machine; every method, fixed-step ones too.
+  const std::vector<double> times{0.0, 5.0, 10.0};
+  for (const Method m : kAllMethods) {
+    if (m == Method::kSplitting || m == Method::kSplitting4) continue;  // no right-hand side
+    INFO(method_name(m));
+    const auto run = [&](std::size_t cap) {
+      Samples seen;
+      OdeOptions o = options_for(m, is_adaptive(m) ? 1e-8 : 0.01);
+      o.max_evaluations = cap;
+      return integrate(Oscillator{}, State{1, 0}, times, o, seen);
+    };
+    const std::size_t n = run(0).evaluations;  // 0: no cap
+    REQUIRE(n > 10);
+    CHECK(run(n).evaluations == n);
+    CHECK_THROWS_WITH(run(n - 1), Contains(std::string(method_name(m)) + " needs more than " +
+                                           std::to_string(n - 1) + " right-hand-side evaluations"));
+  }
+}
+
 TEST_CASE("ode: a sample time repeated, at the start or later, gives the same state each time") {
   // dense output asked for a state before its first step once interpolated a step not
   // yet taken: dopri5 returned a wrong state, the Verner pairs threw, at a repeated t0

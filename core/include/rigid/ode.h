@@ -30,7 +30,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -128,8 +127,8 @@ class AfterStepStepper {
 /// calls reset() at every observation, which leaves the total alone.
 class TotalStepCap {
  public:
-  /// A cap of max_steps (and max_seconds, if > 0) for a run of method m to t_end.
-  TotalStepCap(Method m, std::size_t max_steps, double t_end, double max_seconds = 0.0);
+  /// A cap of max_steps for a run of method m to t_end.
+  TotalStepCap(Method m, std::size_t max_steps, double t_end);
   /// Counts one step; throws std::runtime_error naming the method, the cap and t_end past the cap.
   void operator()();
   /// Called by odeint at each observation: a cap per run, not per sample, so nothing to do.
@@ -140,8 +139,6 @@ class TotalStepCap {
   std::size_t max_steps_;
   double t_end_;
   std::size_t steps_ = 0;
-  double max_seconds_;
-  std::chrono::steady_clock::time_point start_;
 };
 
 namespace detail {
@@ -157,6 +154,9 @@ struct GridSample {
 // std::invalid_argument naming the method, step and t_end when the run would
 // need more than options.max_steps steps, before any is taken.
 std::vector<GridSample> plan_grid(const std::vector<double>& times, const OdeOptions& options);
+
+// The one wording of "this run needs more than options.max_evaluations evaluations".
+std::string too_many_evaluations(const OdeOptions& options);
 
 // Throws std::invalid_argument unless every component of x is finite.
 template <class State>
@@ -203,7 +203,7 @@ std::size_t integrate_times_capped(Stepper& stepper, const System& system, State
                                    const std::vector<double>& times, double dt0,
                                    const OdeOptions& o, Observer& observe, double t_end) {
   // t_end in the caller's time, for its message
-  TotalStepCap cap(o.method, o.max_steps, t_end, o.max_seconds);
+  TotalStepCap cap(o.method, o.max_steps, t_end);
   return boost::numeric::odeint::integrate_times(std::ref(stepper), system, x, times.begin(),
                                                  times.end(), dt0, std::ref(observe),
                                                  std::ref(cap));
@@ -307,8 +307,8 @@ OdeStats integrate_on_grid(Stepper& stepper, const System& system, State& x,
   OdeStats stats;
   std::size_t n = 0;  // the last grid point reached or passed
   double t = t0;      // the time of x
-  TotalStepCap cap(options.method, std::numeric_limits<std::size_t>::max(), times.back(),
-                   options.max_seconds);  // the step count was checked by plan_grid
+  // the step count was checked by plan_grid
+  TotalStepCap cap(options.method, std::numeric_limits<std::size_t>::max(), times.back());
   const auto advance = [&](double t_next) {
     stepper.do_step(system, x, t, t_next - t);
     t = t_next;
@@ -401,10 +401,14 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
   validate_run(options, times, kHasHook);
   detail::require_finite(x0);
   State x = x0;
-  // Every evaluation counted, the starting step's two included: the cost of a run.
+  // Every evaluation counted, the starting step's two included: the cost of a run,
+  // capped by options.max_evaluations.
   std::size_t evaluations = 0;
-  const auto counted = [&system, &evaluations](const State& xs, State& dxdt, double t) {
-    ++evaluations;
+  const std::size_t cap = options.max_evaluations > 0 ? options.max_evaluations
+                                                      : std::numeric_limits<std::size_t>::max();
+  const auto counted = [&system, &evaluations, cap, &options](const State& xs, State& dxdt,
+                                                              double t) {
+    if (++evaluations > cap) throw std::runtime_error(detail::too_many_evaluations(options));
     system(xs, dxdt, t);
   };
   switch (options.method) {

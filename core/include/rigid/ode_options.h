@@ -60,10 +60,11 @@ struct OdeOptions {
   double rel_tol = 1e-10;  ///< adaptive methods: relative tolerance
   double step = 1e-2;      ///< fixed-step methods: the step, s
   std::size_t max_steps = 50'000'000;  ///< accepted steps; a run needing more throws
-  /// Wall-clock budget of a run in seconds, checked every 256 steps; a run past it
-  /// throws std::runtime_error (0: none). A step count alone does not bound the
-  /// work: a Bulirsch-Stoer step may cost hundreds of right-hand sides.
-  double max_seconds = 0.0;
+  /// Right-hand-side evaluations a run may make, rejected steps' included (0: no
+  /// cap); a run that needs more throws std::runtime_error. The work of a run, the
+  /// same on every machine: a step count alone does not bound it (a Bulirsch-Stoer
+  /// step may cost hundreds of right-hand sides).
+  std::size_t max_evaluations = 0;
   /// A problem's run (compare.h) with rk4, rkf78 or vern6..vern9 only: after every
   /// step, project the state back onto the problem's invariants (the standard
   /// projection, Hairer, Lubich & Wanner IV.4); other methods throw if asked.
