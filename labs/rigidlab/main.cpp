@@ -217,13 +217,21 @@ class Staging {
     made_out_ = !fs::exists(out, ec) && !ec;
   }
   const std::string& dir() const { return dir_; }
-  // A lab's message about the staging folder, said of `out` (both as the lab escapes
-  // them: its lines show user text through terminal_safe).
+  // A lab's message about the staging folder, said of `out`, in both forms a lab's
+  // line may show a path: escaped (terminal_safe) or, in a file writer's message,
+  // with control characters as spaces first.
   std::string said_of_out(std::string text) const {
-    const std::string from = rigid::support::terminal_safe(dir_);
-    const std::string to = rigid::support::terminal_safe(out_);
-    for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) {
-      text.replace(at, from.size(), to);
+    const auto spaced = [](std::string s) {
+      for (char& c : s)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+      return s;
+    };
+    for (const bool space : {false, true}) {
+      const std::string from = rigid::support::terminal_safe(space ? spaced(dir_) : dir_);
+      const std::string to = rigid::support::terminal_safe(space ? spaced(out_) : out_);
+      for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) {
+        text.replace(at, from.size(), to);
+      }
     }
     return text;
   }
