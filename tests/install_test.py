@@ -32,6 +32,8 @@ def main():
                        stdout=subprocess.DEVNULL)
         bin_dir = os.path.join(stage, "bin")
         env = {"PATH": bin_dir + ":/usr/bin:/bin", "HOME": stage}
+        # a sanitizer build's options (its leak suppressions for the GL libraries) carried over
+        env.update({k: v for k, v in os.environ.items() if k.endswith("SAN_OPTIONS")})
         run = lambda *args: subprocess.run(list(args), capture_output=True, text=True, env=env,
                                            cwd=stage)
         version = run("rigidlab", "--version")

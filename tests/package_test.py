@@ -68,6 +68,8 @@ def main():
         subprocess.run(["dpkg-deb", "-x", deb, root], check=True)
         figures = os.path.join(work, "figures")
         env = {"PATH": os.path.join(root, "usr", "bin") + ":/usr/bin:/bin", "HOME": work}
+        # a sanitizer build's options (its leak suppressions for the GL libraries) carried over
+        env.update({k: v for k, v in os.environ.items() if k.endswith("SAN_OPTIONS")})
         run = subprocess.run(["poinsot", "--figures", figures, "--json"], capture_output=True,
                              text=True, env=env, cwd=work)
         if run.returncode != 0:
