@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "lab_common.h"
@@ -107,6 +108,47 @@ TEST_CASE("contract: input no lab accepts exits 2 with one line naming the optio
       CHECK(run.err.rfind(lab + ": error: " + option, 0) == 0);
       CHECK(run.out.empty());
     }
+  }
+}
+
+TEST_CASE("contract: a report that cannot be written leaves none of the run's files") {
+  // The report is printed before the files are renamed in: a full stdout is a failed
+  // run, and a failed run leaves nothing.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_full_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string csv = (dir / "c.csv").string(), figures = (dir / "F").string();
+  for (const char* redirect : {"> /dev/full", ">&-"}) {
+    INFO(redirect);
+    const auto run = run_lab("poinsot", "--csv " + csv + " --figures " + figures + " " + redirect);
+    CHECK(run.status == 1);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind("poinsot: error: stdout: ", 0) == 0);
+    CHECK(fs::is_empty(dir));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("contract: a name no file can have is refused before any work, quoted short") {
+  // 100,000 bytes in one name (NAME_MAX is 255), and a path of 5,000 bytes in parts
+  // of 200 (PATH_MAX is 4096): refused up front, naming the option, the name cut to
+  // its first 32 characters and its length.
+  const std::string long_name(100000, 'a');
+  std::string long_path;
+  for (int i = 0; i < 25; ++i) long_path += std::string(200, 'd') + "/";
+  for (const auto& [args, option, rule] :
+       {std::tuple{"--animate " + long_name + ".mp4", "--animate",
+                   "holds a name longer than 255 bytes"},
+        std::tuple{"--csv " + long_name + ".csv", "--csv", "holds a name longer than 255 bytes"},
+        std::tuple{"--figures " + long_path, "--figures", "is a path longer than 4095 bytes"}}) {
+    INFO(option);
+    const auto run = run_lab("poinsot", args);
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(std::string("poinsot: error: ") + option + ": '", 0) == 0);
+    CHECK(run.err.find(rule) != std::string::npos);
+    CHECK(run.err.size() < 200);
+    CHECK(run.out.empty());
   }
 }
 

@@ -454,7 +454,12 @@ void Command::check_output_paths() const {
   if (app_.count("--figures") > 0 && figures_dir_.empty()) {
     throw InputError("--figures", "needs a directory name");
   }
-  if (!figures_dir_.empty()) check_output_dir("--figures", figures_dir_);
+  if (!figures_dir_.empty()) {
+    // a figure's file: PREFIX + LAB + "_" + its name (a word of at most 32 bytes) + ".png",
+    // within NAME_MAX by --figure-prefix's rule
+    const std::size_t longest_figure = figure_prefix_.size() + name_.size() + 1 + 32 + 4;
+    check_output_dir("--figures", figures_dir_, longest_figure);
+  }
   const bool csv = csv_enabled_ && app_.count("--csv") > 0;
   if (csv) {
     if (csv_path_.empty()) throw InputError("--csv", "needs a file name");
@@ -520,7 +525,6 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
   // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   const Report* report = nullptr;
-  std::string printed;
   // Unless the run's files landed, the folders it made go too (if still empty).
   bool landed = false;
   const std::shared_ptr<void> unmake(nullptr, [&](void*) {
@@ -571,13 +575,29 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
     } else if (!quiet_) {
       write_table(text, *report, outputs_);
     }
+    // Printed before the files land: a report that cannot be written (a full disk,
+    // a closed pipe) leaves no file behind (the transaction removes them).
+    for (const std::string& warning : warnings_) {
+      std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
+    }
+    for (const std::string& warning : report->warnings()) {
+      std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
+    }
+    std::cout << text.str();
+    if (const int status = stdout_written(0); status != 0) return status;
     try {
       files.commit();
-    } catch (const std::runtime_error& e) {
-      throw InputError(csv_path_.empty() ? "--figures" : "--csv", e.what());
+    } catch (const render::CommitError& e) {
+      // The renames themselves failed (the disk or a folder changed under the run):
+      // an output error, said of the file it names, with what had landed.
+      const std::string option = e.path == csv_path_         ? "--csv"
+                                 : e.path == animation_path_ ? "--animate"
+                                                             : "--figures";
+      std::cerr << name_ << ": error: " << support::terminal_safe(option + ": " + e.what()) << '\n';
+      return 1;
     }
     landed = true;
-    printed = text.str();
+    return 0;
   } catch (const InputError& e) {
     const std::string what = e.input.empty()   ? blamed_option() + ": " + e.rule
                              : e.joint.empty() ? e.what()
@@ -591,14 +611,6 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
               << '\n';
     return 2;
   }
-  for (const std::string& warning : warnings_) {
-    std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
-  }
-  for (const std::string& warning : report->warnings()) {
-    std::cerr << name_ << ": warning: " << support::terminal_safe(warning) << '\n';
-  }
-  std::cout << printed;
-  return stdout_written(0);
 }
 
 // ---- Figures ----------------------------------------------------------------

@@ -18,6 +18,29 @@ namespace {
 // The longest file name the filesystem takes (NAME_MAX, 255 bytes): any of them is
 // written (a temporary whose suffix would not fit is a hidden one beside it).
 constexpr std::size_t kMaxFileName = NAME_MAX;
+// The longest path the system opens (PATH_MAX, 4096 bytes with its end).
+constexpr std::size_t kMaxPath = PATH_MAX - 1;
+
+// A name no file can have is refused before any work: each part at most NAME_MAX
+// bytes, the whole path (as the program will open it) under PATH_MAX. `longest_leaf`
+// is the longest file name that will be written inside `name` (a figure's, for a
+// folder).
+void check_name_length(const std::string& option, const std::string& name,
+                       std::size_t longest_leaf = 0) {
+  std::error_code ec;
+  const fs::path path = fs::absolute(name, ec);
+  for (const fs::path& part : path) {
+    if (part.string().size() > kMaxFileName) {
+      throw InputError(option, fmt::format("'{}' holds a name longer than {} bytes, the "
+                                           "filesystem's limit",
+                                           quoted_text(name), kMaxFileName));
+    }
+  }
+  if (ec || path.string().size() + (longest_leaf ? longest_leaf + 1 : 0) > kMaxPath) {
+    throw InputError(option, fmt::format("'{}' is a path longer than {} bytes, the system's limit",
+                                         quoted_text(name), kMaxPath));
+  }
+}
 }  // namespace
 
 bool can_create_in(const std::string& dir) {
@@ -30,7 +53,9 @@ bool can_create_in(const std::string& dir) {
   return true;
 }
 
-void check_output_dir(const std::string& option, const std::string& dir_name) {
+void check_output_dir(const std::string& option, const std::string& dir_name,
+                      std::size_t longest_file) {
+  check_name_length(option, dir_name, longest_file);
   std::error_code ec;  // every filesystem question is asked without throwing
   // Nothing is created before the lab has computed its results: find the
   // nearest existing ancestor and check that it can be written.
@@ -39,49 +64,48 @@ void check_output_dir(const std::string& option, const std::string& dir_name) {
     dir = dir.parent_path();
   }
   if (ec || !fs::is_directory(dir, ec) || !can_create_in(dir.string())) {
-    throw InputError(option, "cannot create or write directory '" + dir_name + "'");
+    throw InputError(option, "cannot create or write directory '" + quoted_text(dir_name) + "'");
   }
 }
 
 void check_output_file(const std::string& option, const std::string& name) {
+  check_name_length(option, name);
   std::error_code ec;
   const fs::path path = fs::absolute(name, ec);
-  if (ec || path.filename().string().size() > kMaxFileName) {
-    throw InputError(option, fmt::format("file name longer than {} bytes, the filesystem's limit",
-                                         kMaxFileName));
-  }
   // Only a regular file is written (by rename, so a link would be replaced, not
   // followed, and a device or pipe replaced by a file): refuse anything else.
   const fs::file_status status = fs::symlink_status(path, ec);
   if (!ec && fs::exists(status)) {
     if (fs::is_symlink(status)) {
-      throw InputError(option, "'" + name + "' is a symbolic link; give the file itself");
+      throw InputError(option,
+                       "'" + quoted_text(name) + "' is a symbolic link; give the file itself");
     }
     if (fs::is_directory(status)) {
-      throw InputError(option, "'" + name + "' is a directory, not a file");
+      throw InputError(option, "'" + quoted_text(name) + "' is a directory, not a file");
     }
     if (!fs::is_regular_file(status)) {
-      throw InputError(option, "'" + name +
+      throw InputError(option, "'" + quoted_text(name) +
                                    "' is not a regular file (a device, pipe or "
                                    "socket); give a file name");
     }
   }
   const fs::path parent = path.parent_path();
   if (!fs::is_directory(parent, ec) || !can_create_in(parent.string())) {
-    throw InputError(option, "cannot write into directory '" + parent.string() + "'");
+    throw InputError(option, "cannot write into directory '" + quoted_text(parent.string()) + "'");
   }
 }
 
 void check_animation_file(const std::string& option, const std::string& name) {
+  check_name_length(option, name);
   std::error_code ec;
   const fs::path path = fs::absolute(name, ec);
   const fs::file_status status = fs::symlink_status(path, ec);
   if (!ec && fs::exists(status) && !fs::is_regular_file(status)) {
-    throw InputError(option, "'" + name + "' exists and is not a regular file");
+    throw InputError(option, "'" + quoted_text(name) + "' exists and is not a regular file");
   }
   const fs::path parent = path.parent_path();
   if (!fs::is_directory(parent, ec) || !can_create_in(parent.string())) {
-    throw InputError(option, "cannot write into directory '" + parent.string() + "'");
+    throw InputError(option, "cannot write into directory '" + quoted_text(parent.string()) + "'");
   }
 }
 
@@ -103,8 +127,8 @@ bool within(const fs::path& inner, const fs::path& outer) {
 void check_distinct_outputs(const std::string& csv, const std::string& animation,
                             const std::string& figures_dir, const std::string& figure_stem) {
   if (!csv.empty() && !animation.empty() && place(csv) == place(animation)) {
-    throw InputError("--animate",
-                     "'" + animation + "' is the file --csv writes; give each its own");
+    throw InputError("--animate", "'" + quoted_text(animation) +
+                                      "' is the file --csv writes; give each its own");
   }
   if (figures_dir.empty()) return;
   const fs::path figures = place(figures_dir);
@@ -112,15 +136,17 @@ void check_distinct_outputs(const std::string& csv, const std::string& animation
     if (name.empty()) continue;
     const fs::path file = place(name);
     if (within(figures, file)) {
-      throw InputError("--figures", "'" + figures_dir + "' would lie inside the file " + option +
-                                        " writes ('" + name + "')");
+      throw InputError("--figures", "'" + quoted_text(figures_dir) +
+                                        "' would lie inside the file " + option + " writes ('" +
+                                        quoted_text(name) + "')");
     }
     const std::string leaf = file.filename().string();
     if (file.parent_path() == figures && leaf.rfind(figure_stem, 0) == 0 && leaf.size() >= 4 &&
         leaf.compare(leaf.size() - 4, 4, ".png") == 0) {
-      throw InputError(option, "'" + name + "' is where --figures writes its figures (" +
-                                   figure_stem + "*.png in '" + figures_dir +
-                                   "'); give another name");
+      throw InputError(option, "'" + quoted_text(name) +
+                                   "' is where --figures writes its figures (" +
+                                   quoted_text(figure_stem) + "*.png in '" +
+                                   quoted_text(figures_dir) + "'); give another name");
     }
   }
 }

@@ -11,8 +11,9 @@ namespace rigid::lab {
 /// them, yet not into /proc or a read-only mount).
 bool can_create_in(const std::string& dir);
 
-/// The directory `dir` (--figures) exists and can be written, or can be created.
-void check_output_dir(const std::string& option, const std::string& dir);
+/// The directory `dir` (--figures) exists and can be written, or can be created, and a
+/// file name of `longest_file` bytes inside it is a path the system can open.
+void check_output_dir(const std::string& option, const std::string& dir, std::size_t longest_file);
 /// `path` (--csv) can be written as a regular file by rename.
 void check_output_file(const std::string& option, const std::string& path);
 /// `path` (--animate) is not something other than a regular file, and its directory

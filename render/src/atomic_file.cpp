@@ -236,15 +236,25 @@ void FileTransaction::commit() {
   delete g_transaction;
   g_transaction = nullptr;
   std::string error, failed;
+  std::size_t landed = 0;
   for (const Pending& p : pending) {
-    if (error.empty() && std::rename(p.tmp.c_str(), p.path.c_str()) != 0) {
-      error = std::strerror(errno);
-      failed = p.path;
+    if (error.empty()) {
+      if (std::rename(p.tmp.c_str(), p.path.c_str()) == 0) {
+        ++landed;
+      } else {
+        error = std::strerror(errno);
+        failed = p.path;
+      }
     }
     if (!error.empty()) std::remove(p.tmp.c_str());
     release(p.slot);
   }
-  if (!error.empty()) fail(failed, error);
+  if (!error.empty()) {
+    throw CommitError("cannot write '" + one_line(failed) + "': " + one_line(error) + "; " +
+                          std::to_string(landed) + " of " + std::to_string(pending.size()) +
+                          " files had landed before it, the rest were removed",
+                      failed, landed, pending.size());
+  }
 }
 
 }  // namespace rigid::render

@@ -13,9 +13,12 @@
 // files of this user, whose process is gone. Nothing else is touched.
 #pragma once
 
+#include <cstddef>
 #include <cstdio>
 #include <functional>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rigid::render {
 
@@ -24,6 +27,19 @@ namespace rigid::render {
 /// (one line).
 void write_file_atomically(const std::string& path, const std::function<void(std::FILE*)>& write);
 
+/// What FileTransaction::commit() throws when a rename fails: the file it could not
+/// put in place, and how many of the transaction's files had landed before it.
+struct CommitError : std::runtime_error {
+  CommitError(const std::string& what, std::string failed_path, std::size_t landed_files,
+              std::size_t total_files)
+      : std::runtime_error(what),
+        path(std::move(failed_path)),
+        landed(landed_files),
+        total(total_files) {}
+  std::string path;
+  std::size_t landed, total;
+};
+
 /// Holds back the renames of write_file_atomically until commit() (one at a time).
 class FileTransaction {
  public:
@@ -31,8 +47,8 @@ class FileTransaction {
   ~FileTransaction();  ///< without commit(): removes every file written under it
   FileTransaction(const FileTransaction&) = delete;
   FileTransaction& operator=(const FileTransaction&) = delete;
-  /// Renames every file written under the transaction into place; throws
-  /// std::runtime_error (one line) if one cannot be, after removing the rest.
+  /// Renames every file written under the transaction into place; throws CommitError
+  /// (one line, saying how many had landed) if one cannot be, after removing the rest.
   void commit();
 };
 
