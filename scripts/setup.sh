@@ -13,6 +13,7 @@ RIGID_PACKAGES=(
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libpng-dev libfreetype-dev fonts-dejavu-core
   libgsl-dev python3-scipy python3-matplotlib python3-mpmath python3-jsonschema help2man
   libwebp-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
+  libglfw3-dev libimgui-dev xvfb xauth xdotool
   clang-format emscripten file
 )
 

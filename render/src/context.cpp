@@ -19,6 +19,33 @@ namespace {
 std::unique_ptr<ContextInfo> g_info;
 std::mutex g_mutex;
 
+// The context just made current: its functions loaded, its facts read.
+ContextInfo describe(Backend used, detail::GlProcLoader loader, const ContextOptions& options,
+                     std::chrono::steady_clock::time_point t0) {
+  const std::string missing = detail::load_gl(loader);
+  if (!missing.empty())
+    throw Unavailable(std::string("rigid::render: ") + backend_name(used) +
+                      " context lacks GL function " + missing);
+  auto& gl = detail::gl;
+  ContextInfo info;
+  info.backend = used;
+  info.gl_version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
+  info.gl_renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
+  info.es = info.gl_version.rfind("OpenGL ES", 0) == 0;
+  detail::set_shader_version(info.es);
+  GLint max_samples = 0;
+  gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  int samples = options.samples;
+  if (const char* env = std::getenv("RIGID_GL_SAMPLES"); env != nullptr && *env != '\0')
+    samples = std::atoi(env);
+  samples = std::min(samples, static_cast<int>(max_samples));
+  // Fewer than 2 samples is no antialiasing: use 2×2 supersampling instead.
+  info.samples = samples >= 2 ? samples : 0;
+  info.creation_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return info;
+}
+
 detail::GlProcLoader try_backend(Backend b, std::string& error) {
   return b == Backend::kEGL ? detail::make_egl_context(error) : detail::make_osmesa_context(error);
 }
@@ -51,26 +78,7 @@ ContextInfo create(const ContextOptions& options) {
   }
   if (loader == nullptr)
     throw Unavailable("rigid::render: no OpenGL context could be made (" + errors + ")");
-  const std::string missing = detail::load_gl(loader);
-  if (!missing.empty())
-    throw Unavailable(std::string("rigid::render: ") + backend_name(used) +
-                      " context lacks GL function " + missing);
-  auto& gl = detail::gl;
-  ContextInfo info;
-  info.backend = used;
-  info.gl_version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
-  info.gl_renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
-  GLint max_samples = 0;
-  gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  int samples = options.samples;
-  if (const char* env = std::getenv("RIGID_GL_SAMPLES"); env != nullptr && *env != '\0')
-    samples = std::atoi(env);
-  samples = std::min(samples, static_cast<int>(max_samples));
-  // Fewer than 2 samples is no antialiasing: use 2×2 supersampling instead.
-  info.samples = samples >= 2 ? samples : 0;
-  info.creation_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return info;
+  return describe(used, loader, options, t0);
 }
 
 }  // namespace
@@ -78,6 +86,14 @@ ContextInfo create(const ContextOptions& options) {
 const ContextInfo& context(const ContextOptions& options) {
   std::lock_guard<std::mutex> lock(g_mutex);
   if (!g_info) g_info = std::make_unique<ContextInfo>(create(options));
+  return *g_info;
+}
+
+const ContextInfo& use_current_context(ProcAddress get_proc, const ContextOptions& options) {
+  std::lock_guard<std::mutex> lock(g_mutex);
+  if (g_info) throw Unavailable("rigid::render: a GL context is in use already");
+  g_info = std::make_unique<ContextInfo>(
+      describe(Backend::kCurrent, get_proc, options, std::chrono::steady_clock::now()));
   return *g_info;
 }
 
@@ -101,6 +117,8 @@ const char* backend_name(Backend backend) {
       return "osmesa";
     case Backend::kEGL:
       return "egl";
+    case Backend::kCurrent:
+      return "current";
     case Backend::kAuto:
       break;
   }

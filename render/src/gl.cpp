@@ -19,9 +19,14 @@ std::string load_gl(GlProc (*get_proc)(const char*)) {
 
 namespace {
 
+bool g_es = false;
+
 GLuint compile(GLenum kind, const char* src) {
   GLuint s = gl.CreateShader(kind);
-  gl.ShaderSource(s, 1, &src, nullptr);
+  const char* version = g_es ? "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                             : "#version 330 core\n";
+  const char* parts[] = {version, src};
+  gl.ShaderSource(s, 2, parts, nullptr);
   gl.CompileShader(s);
   GLint ok = 0;
   gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -34,6 +39,10 @@ GLuint compile(GLenum kind, const char* src) {
 }
 
 }  // namespace
+
+void set_shader_version(bool es) {
+  g_es = es;
+}
 
 GLuint build_program(const char* vertex_src, const char* fragment_src,
                      const char* const* attributes, int attribute_count) {

@@ -1,4 +1,5 @@
-// Internal: the GL 3.3 core functions rigid::render calls, loaded through the
+// Internal: the GL 3.3 core functions rigid::render calls (all of them also in
+// OpenGL ES 3.0 but glTexImage2DMultisample, which an ES context never calls), loaded through the
 // active backend's GetProcAddress into one table (no loader library needed).
 #pragma once
 
@@ -82,9 +83,7 @@ namespace rigid::render::detail {
   X(void, EnableVertexAttribArray, (GLuint))                                             \
   X(void, VertexAttribPointer, (GLuint, GLint, GLenum, GLboolean, GLsizei, const void*)) \
   X(void, DrawArrays, (GLenum, GLint, GLsizei))                                          \
-  X(void, DrawElements, (GLenum, GLsizei, GLenum, const void*))                          \
-  X(void, ReadBuffer, (GLenum))                                                          \
-  X(void, DrawBuffer, (GLenum))
+  X(void, DrawElements, (GLenum, GLsizei, GLenum, const void*))
 
 struct GlFunctions {
 #define RIGID_GL_MEMBER(ret, name, params) ret(APIENTRY* name) params = nullptr;
@@ -99,7 +98,12 @@ extern GlFunctions gl;
 using GlProc = void (*)();
 std::string load_gl(GlProc (*get_proc)(const char*));
 
-/// Compiles and links a vertex + fragment shader pair; throws std::runtime_error with the log on
+/// The shaders' first lines for the context: "#version 330 core", or for OpenGL ES
+/// "#version 300 es" with the precision ES asks a fragment shader to state.
+void set_shader_version(bool es);
+
+/// Compiles and links a vertex + fragment shader pair, each source without its version
+/// line (set_shader_version's is put first); throws std::runtime_error with the log on
 /// failure.
 GLuint build_program(const char* vertex_src, const char* fragment_src,
                      const char* const* attributes, int attribute_count);

@@ -15,7 +15,7 @@ namespace rigid::render::detail {
 
 namespace {
 
-const char* kVertexSrc = R"(#version 330 core
+const char* kVertexSrc = R"(
 in vec3 a_pos;
 in vec4 a_color;
 in vec3 a_uv;
@@ -30,7 +30,7 @@ void main() {
 )";
 
 // Glyph coverage is lightly darkened (exponent 0.8) so thin strokes stay legible.
-const char* kFragmentSrc = R"(#version 330 core
+const char* kFragmentSrc = R"(
 in vec4 v_color;
 in vec3 v_uv;
 uniform sampler2D u_atlas;

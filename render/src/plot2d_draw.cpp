@@ -745,13 +745,11 @@ Plot2D::Layout layout(const Plot2D& plot, int width, int height) {
   return out;
 }
 
-Image draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {
-  detail::PhaseClock clock(timing);
+void detail::render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock) {
   const FigurePlan fp = plan_figure(plot, width, height);
   clock.lap(&FigureTiming::layout);
-  detail::Target& tgt = detail::target();
   // No depth buffer for 2D.
-  tgt.begin(width, height, false, kWhite);
+  detail::target().begin(width, height, false, kWhite);
   clock.lap(&FigureTiming::setup, true);
   detail::Painter& p = detail::painter();
   p.begin(width, height);
@@ -759,7 +757,12 @@ Image draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {
   for (const PanelPlan& panel : fp.panels) panel.draw(p);
   p.flush();
   clock.lap(&FigureTiming::draw, true);
-  Image img = tgt.finish();
+}
+
+Image draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {
+  detail::PhaseClock clock(timing);
+  detail::render_into_target(plot, width, height, clock);
+  Image img = detail::target().finish();
   clock.lap(&FigureTiming::resolve);
   return img;
 }

@@ -240,19 +240,22 @@ Camera fitted_camera(const Scene3D& scene, int width, int height) {
   return c;
 }
 
-Image draw(const Scene3D& scene, int width, int height, FigureTiming* timing) {
+void detail::render_into_target(const Scene3D& scene, int width, int height, PhaseClock& clock) {
   const double k = detail::normalising_scale(scene);
-  if (k != 1.0) return draw(scene.scaled(k), width, height, timing);
-  detail::PhaseClock clock(timing);
-  detail::Target& tgt = detail::target();
-  tgt.begin(width, height, true, kWhite);
+  if (k != 1.0) return render_into_target(scene.scaled(k), width, height, clock);
+  detail::target().begin(width, height, true, kWhite);
   clock.lap(&FigureTiming::setup, true);
   const detail::SceneFrame fr = detail::frame_scene(scene, width, height);
   clock.lap(&FigureTiming::layout);
   detail::draw_geometry(scene, fr);
   detail::draw_overlay(scene, fr);
   clock.lap(&FigureTiming::draw, true);
-  Image img = tgt.finish();
+}
+
+Image draw(const Scene3D& scene, int width, int height, FigureTiming* timing) {
+  detail::PhaseClock clock(timing);
+  detail::render_into_target(scene, width, height, clock);
+  Image img = detail::target().finish();
   clock.lap(&FigureTiming::resolve);
   return img;
 }

@@ -11,7 +11,7 @@ namespace rigid::render::detail {
 
 namespace {
 
-const char* kMeshVertex = R"(#version 330 core
+const char* kMeshVertex = R"(
 in vec3 a_pos;
 in vec3 a_normal;
 uniform mat4 u_mvp;
@@ -30,7 +30,7 @@ void main() {
 // Lambert from a key light (upper left, in front) and a weaker fill (right),
 // and a mild Blinn-Phong highlight from the key. Back faces are lit as their
 // own side so open surfaces and the insides of translucent shells look right.
-const char* kMeshFragment = R"(#version 330 core
+const char* kMeshFragment = R"(
 in vec3 v_n;
 in vec3 v_p;
 uniform vec4 u_color;

@@ -11,24 +11,42 @@
 
 namespace rigid::render::detail {
 
+namespace {
+Target* g_current = nullptr;
+}  // namespace
+
 Target& target() {
-  static Target t;
-  return t;
+  // never destroyed: its buffers die with the context, which outlives every static
+  static Target* const process_target = new Target;
+  return g_current != nullptr ? *g_current : *process_target;
+}
+
+UseTarget::UseTarget(Target& t) : previous_(g_current) {
+  g_current = &t;
+}
+
+UseTarget::~UseTarget() {
+  g_current = previous_;
+}
+
+Target::~Target() {
+  if (color_fbo_ != 0) release();
 }
 
 void Target::release() {
   GLuint fbos[] = {color_fbo_, depth_fbo_, resolve_fbo_};
-  GLuint rbs[] = {color_rb_, depth_rb_, resolve_rb_};
+  GLuint rbs[] = {color_rb_, depth_rb_};
+  GLuint texs[] = {color_tex_, resolve_tex_};
   gl.DeleteFramebuffers(3, fbos);
-  gl.DeleteRenderbuffers(3, rbs);
-  gl.DeleteTextures(1, &color_tex_);
-  color_fbo_ = depth_fbo_ = resolve_fbo_ = color_rb_ = depth_rb_ = resolve_rb_ = color_tex_ = 0;
+  gl.DeleteRenderbuffers(2, rbs);
+  gl.DeleteTextures(2, texs);
+  color_fbo_ = depth_fbo_ = resolve_fbo_ = color_rb_ = depth_rb_ = resolve_tex_ = color_tex_ = 0;
 }
 
 namespace {
 
 // The resolve: one triangle covering the viewport; each pixel the mean of its samples.
-const char* kResolveVertex = R"(#version 330 core
+const char* kResolveVertex = R"(
 void main() {
   vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
   gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
@@ -38,7 +56,7 @@ void main() {
 // The sample count is a constant of the source, so the compiler unrolls the
 // loop (a uniform count kept it a loop, and the resolve measurably slower).
 std::string resolve_fragment(int samples) {
-  return "#version 330 core\nconst int kSamples = " + std::to_string(samples) + ";\n" + R"(
+  return "const int kSamples = " + std::to_string(samples) + ";\n" + R"(
 uniform sampler2DMS u_samples;
 out vec4 frag;
 void main() {
@@ -114,7 +132,7 @@ void Target::begin(int width, int height, bool depth, Color clear) {
     samples_ = info.samples;
     scale_ = samples_ >= 2 ? 1 : 2;
     const int pw = width * scale_, ph = height * scale_;
-    if (scale_ == 1) {
+    if (scale_ == 1 && !info.es) {
       // fixed sample locations: required to share the FBO with a multisampled renderbuffer (depth)
       gl.GenTextures(1, &color_tex_);
       gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, color_tex_);
@@ -123,7 +141,7 @@ void Target::begin(int width, int height, bool depth, Color clear) {
     } else {
       gl.GenRenderbuffers(1, &color_rb_);
       gl.BindRenderbuffer(GL_RENDERBUFFER, color_rb_);
-      storage(0, GL_RGBA8, pw, ph);
+      storage(scale_ == 1 ? samples_ : 0, GL_RGBA8, pw, ph);
     }
     gl.GenFramebuffers(1, &color_fbo_);
     gl.BindFramebuffer(GL_FRAMEBUFFER, color_fbo_);
@@ -131,10 +149,14 @@ void Target::begin(int width, int height, bool depth, Color clear) {
     check_complete("drawing");
     gl.GenFramebuffers(1, &resolve_fbo_);
     gl.BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
-    gl.GenRenderbuffers(1, &resolve_rb_);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, resolve_rb_);
-    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_rb_);
+    // a texture, so that a live view shows the image where it is
+    gl.GenTextures(1, &resolve_tex_);
+    gl.BindTexture(GL_TEXTURE_2D, resolve_tex_);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolve_tex_, 0);
     check_complete("resolve");
   }
   if (depth && depth_rb_ == 0) add_depth();
@@ -150,11 +172,12 @@ void Target::begin(int width, int height, bool depth, Color clear) {
 void Target::resolve() {
   gl.Disable(GL_SCISSOR_TEST);
   if (color_tex_ == 0) {
-    // supersampling: 2× down, linear = the mean of each 2×2 block
+    // supersampling: 2× down, linear = the mean of each 2×2 block; or (OpenGL ES) the
+    // samples of a multisampled renderbuffer averaged by the blit itself
     gl.BindFramebuffer(GL_READ_FRAMEBUFFER, depth_ ? depth_fbo_ : color_fbo_);
     gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
     gl.BlitFramebuffer(0, 0, width_ * scale_, height_ * scale_, 0, 0, width_, height_,
-                       GL_COLOR_BUFFER_BIT, GL_LINEAR);
+                       GL_COLOR_BUFFER_BIT, scale_ == 1 ? GL_NEAREST : GL_LINEAR);
     return;
   }
   const ResolveProgram& r = resolve_program(samples_);
@@ -175,6 +198,10 @@ void Target::resolve() {
 
 Image Target::finish() {
   resolve();
+  return read();
+}
+
+Image Target::read() {
   gl.BindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_);
   Image img;
   img.width = width_;
@@ -185,7 +212,15 @@ Image Target::finish() {
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   // GL rows run bottom-up: read them straight into the image, then swap rows
   // in place (no second image-sized buffer to fault in).
-  gl.ReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, img.rgb.data());
+  if (context().es) {
+    // OpenGL ES promises only RGBA reads
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width_) * height_ * 4);
+    gl.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    for (std::size_t i = 0, n = rgba.size() / 4; i < n; ++i)
+      std::copy_n(&rgba[4 * i], 3, &img.rgb[3 * i]);
+  } else {
+    gl.ReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, img.rgb.data());
+  }
   const std::size_t row = static_cast<std::size_t>(width_) * 3;
   for (int y = 0; y < height_ / 2; ++y)
     std::swap_ranges(img.rgb.begin() + y * row, img.rgb.begin() + (y + 1) * row,

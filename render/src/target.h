@@ -1,8 +1,10 @@
 // Internal: the framebuffer a figure is drawn into. With MSAA it is a
 // multisampled texture resolved by a shader of our own (averaging the samples
-// of each pixel); without, a 2×-size FBO filtered down by glBlitFramebuffer
-// (supersampling). The shader, not glBlitFramebuffer, resolves the samples
-// because llvmpipe builds its blit shaders afresh in every process, before the
+// of each pixel); in an OpenGL ES 3.0 context (which has no multisampled
+// textures) a multisampled renderbuffer resolved by glBlitFramebuffer; without
+// MSAA, a 2×-size FBO filtered down by glBlitFramebuffer (supersampling). The
+// resolved image is a texture, which a live view shows as it is. The shader, not glBlitFramebuffer,
+// resolves the samples because llvmpipe builds its blit shaders afresh in every process, before the
 // first figure, while ours is found in Mesa's shader cache like the other
 // programs (bench/'s figure timings show the difference). Reused between
 // figures of the same size: the
@@ -20,16 +22,30 @@
 #include "gl.h"
 #include "rigid/render/image.h"
 #include "rigid/render/palette.h"
+#include "rigid/render/plot2d.h"
+#include "rigid/render/scene3d.h"
 
 namespace rigid::render::detail {
 
 class Target {
  public:
+  Target() = default;
+  ~Target();
+  Target(const Target&) = delete;
+  Target& operator=(const Target&) = delete;
   /// Makes the context if needed, binds a width × height drawing buffer (with depth if asked) and
   /// clears it.
   void begin(int width, int height, bool depth, Color clear);
+  /// Resolves the samples into the texture (texture()).
+  void resolve();
   /// Resolves the samples and reads the image back (rows top to bottom).
   Image finish();
+  /// Reads the resolved image back (rows top to bottom).
+  Image read();
+  /// The resolved image as a GL texture (RGBA8, rows bottom-up), valid after resolve().
+  GLuint texture() const { return resolve_tex_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
   /// Takes back a finished image's pixels for the next finish() to fill: a 1600x1200
   /// image is 1400 fresh pages, each faulted in on first touch, when allocated anew.
   void recycle(std::vector<std::uint8_t>&& pixels);
@@ -42,16 +58,28 @@ class Target {
   int width_ = 0, height_ = 0, scale_ = 1, samples_ = 0;
   bool depth_ = false;
   void attach_color();
-  void resolve();
   GLuint color_fbo_ = 0, depth_fbo_ = 0, depth_rb_ = 0;
   GLuint color_tex_ = 0;  // multisampled colour (MSAA)
-  GLuint color_rb_ = 0;   // 2×-size colour (supersampling)
-  GLuint resolve_fbo_ = 0, resolve_rb_ = 0;
+  GLuint color_rb_ = 0;   // 2×-size colour (supersampling), or multisampled (OpenGL ES)
+  GLuint resolve_fbo_ = 0, resolve_tex_ = 0;
   std::vector<std::uint8_t> spare_;
 };
 
-/// The process's drawing target (valid after context()).
+/// The drawing target figures go to: the process's own, or a live view's while it draws
+/// (valid after context()).
 Target& target();
+
+/// Makes `t` the drawing target until this goes out of scope.
+class UseTarget {
+ public:
+  explicit UseTarget(Target& t);
+  ~UseTarget();
+  UseTarget(const UseTarget&) = delete;
+  UseTarget& operator=(const UseTarget&) = delete;
+
+ private:
+  Target* previous_;
+};
 
 /// Times the phases of one figure into a FigureTiming (a no-op without one):
 /// lap(&FigureTiming::draw, true) waits for the GL to finish, then adds the time
@@ -65,6 +93,11 @@ class PhaseClock {
   FigureTiming* timing_;
   double last_ = 0;
 };
+
+/// Draws a figure into target() at width × height, unresolved (draw.h's draw() resolves
+/// and reads it back; a live view shows the resolved texture).
+void render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock);
+void render_into_target(const Scene3D& scene, int width, int height, PhaseClock& clock);
 
 /// Writes img as a PNG (png.h), its time as timing's encode phase, then gives its
 /// pixels back to the target.

@@ -1,0 +1,903 @@
+// The explorer's frame: the panels, the views and the exports (explorer.h).
+#include "explorer.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "common/writers.h"
+#include "rigid/render/atomic_file.h"
+#include "rigid/render/draw.h"
+#include "rigid/render/png.h"
+#include "rigid/support/text.h"
+#include "script.h"
+
+extern char** environ;
+
+namespace rigid::explore {
+
+namespace fs = std::filesystem;
+using lab::InputKind;
+using lab::InputRule;
+using lab::InputValue;
+
+namespace {
+
+// The window's layout at any size: inputs on the left, numbers on the right, the
+// scene between them over the time bar and the plot.
+constexpr float kInputsWidth = 340.0f;
+constexpr float kNumbersWidth = 390.0f;
+constexpr float kTimeBarHeight = 64.0f;
+constexpr float kPlotShare = 0.34f;  // of the height under the scene's top
+
+// A script's frame: 1/30 s of wall time, so a script plays the same on any machine.
+constexpr double kScriptFrameSeconds = 1.0 / 30.0;
+constexpr double kMinSpeed = 0.1, kMaxSpeed = 10.0;
+
+const ImVec4 kRuleColor(0.80f, 0.18f, 0.10f, 1.0f);
+const ImVec4 kErrataColor(0.70f, 0.35f, 0.0f, 1.0f);
+const ImVec4 kDimColor(0.40f, 0.40f, 0.45f, 1.0f);
+const ImVec4 kHeadingColor(0.0f, 0.35f, 0.60f, 1.0f);
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A slider's span for an input: its own range, or about its textbook value.
+struct SliderSpan {
+  double lo = 0, hi = 1;
+  bool log = false;
+};
+
+SliderSpan slider_span(const InputRule& r, double textbook) {
+  const double d = std::abs(textbook);
+  switch (r.bound()) {
+    case InputRule::Bound::kOpenRange:
+    case InputRule::Bound::kRangeFrom:
+      return {r.lo(), r.hi(), false};
+    case InputRule::Bound::kPositive:
+      return d > 0 ? SliderSpan{d / 10, d * 10, true} : SliderSpan{1e-3, 1.0, true};
+    case InputRule::Bound::kNonNegative:
+      return {0.0, d > 0 ? 10 * d : 1.0, false};
+    case InputRule::Bound::kFinite:
+      break;
+  }
+  if (r.unit_text() == "deg") return {-180.0, 180.0, false};
+  return d > 0 ? SliderSpan{-10 * d, 10 * d, false} : SliderSpan{-1.0, 1.0, false};
+}
+
+// A word a shell would read as itself, else single-quoted.
+std::string shell_word(const std::string& word) {
+  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_./=,:+-@%") == std::string::npos) {
+    return word;
+  }
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// "1600x1200" into a size a figure can have; false if it is not one.
+bool read_size(const std::string& text, int& w, int& h) {
+  int a = 0, b = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X'))
+    return false;
+  if (a < 16 || b < 16 || a > 8192 || b > 8192) return false;
+  w = a;
+  h = b;
+  return true;
+}
+
+fs::path own_directory() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::current_path() : self.parent_path();
+}
+
+}  // namespace
+
+// What a field shows: the text as typed, and the rule it broke.
+struct Explorer::Field {
+  std::string text;
+  std::string refusal;
+};
+
+// An animation written by the lab's own command (`LAB ... --animate FILE`) while the
+// window goes on.
+struct Explorer::Recording {
+  pid_t pid = 0;
+  std::string path;
+  int err_fd = -1;
+  std::string err;
+};
+
+Explorer::Explorer(std::vector<LabEntry> labs, const std::string& lab, Window window)
+    : labs_(std::move(labs)), window_(std::move(window)) {
+  open(lab);
+}
+
+Explorer::~Explorer() {
+  if (recording_ && recording_->pid > 0) {
+    ::kill(recording_->pid, SIGTERM);
+    int status = 0;
+    ::waitpid(recording_->pid, &status, 0);
+    if (recording_->err_fd >= 0) ::close(recording_->err_fd);
+  }
+}
+
+void Explorer::open(const std::string& name) {
+  for (std::size_t k = 0; k < labs_.size(); ++k) {
+    if (labs_[k].name != name) continue;
+    lab_index_ = k;
+    session_ = labs_[k].make();
+    fields_.assign(session_->input_count(), Field{});
+    orbit_ = {};
+    scene_choice_ = plot_choice_ = export_figure_ = 0;
+    time_ = 0.0;
+    playing_ = session_->animation() != nullptr;
+    message_.clear();
+    after_change();
+    return;
+  }
+  throw std::invalid_argument("no lab named '" + support::terminal_safe(name) + "'");
+}
+
+void Explorer::after_change() {
+  for (std::size_t i = 0; i < fields_.size(); ++i) {
+    fields_[i].text = lab::argument_text(session_->value(i));
+  }
+  const lab::Animation* motion = session_->animation();
+  if (motion != nullptr && time_ > motion->seconds) time_ = 0.0;
+}
+
+std::string Explorer::set_text(const std::string& flag, const std::string& text) {
+  const std::size_t i = session_->find(flag);
+  if (i >= session_->input_count()) {
+    return flag + ": " + session_->name() + " has no such input";
+  }
+  Field& field = fields_[i];
+  field.text = text;
+  const auto parsed = lab::parse_input(session_->rule(i), text);
+  if (const auto* why = std::get_if<std::string>(&parsed)) {
+    field.refusal = flag + ": " + *why;
+    return field.refusal;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  if (auto refusal = session_->set(i, std::get<InputValue>(parsed))) {
+    field.refusal = refusal->message;
+    return field.refusal;
+  }
+  field.refusal.clear();
+  const std::string typed = field.text;
+  after_change();
+  last_update_ = seconds_since(t0);
+  (void)typed;
+  return "";
+}
+
+void Explorer::textbook() {
+  session_->reset();
+  for (Field& f : fields_) f.refusal.clear();
+  after_change();
+}
+
+void Explorer::run(std::unique_ptr<Script> script) {
+  script_ = std::move(script);
+  playing_ = false;
+}
+
+bool Explorer::animating() const {
+  return playing_ || script_ != nullptr || recording_ != nullptr;
+}
+
+void Explorer::say(const std::string& text, bool error) {
+  message_ = text;
+  message_error_ = error;
+  if (script_) (error ? std::cerr : std::cout) << text << '\n';
+}
+
+// ---- the frame ---------------------------------------------------------------
+
+void Explorer::frame(double seconds) {
+  if (script_) {
+    seconds = kScriptFrameSeconds;
+    step_script();
+  }
+  ImGuiIO& io = ImGui::GetIO();
+  const lab::Animation* motion = session_->animation();
+  if (motion != nullptr && playing_) {
+    time_ += seconds * speed_;
+    // a motion plays in a loop
+    if (time_ > motion->seconds) time_ = std::fmod(time_, motion->seconds);
+  }
+  // space plays and pauses, the arrows step a frame, while no field is being typed in
+  if (!io.WantTextInput && motion != nullptr) {
+    if (ImGui::IsKeyPressed(ImGuiKey_Space, false)) playing_ = !playing_;
+    const double step = kScriptFrameSeconds * speed_;
+    if (ImGui::IsKeyPressed(ImGuiKey_RightArrow)) time_ = std::min(time_ + step, motion->seconds);
+    if (ImGui::IsKeyPressed(ImGuiKey_LeftArrow)) time_ = std::max(time_ - step, 0.0);
+  }
+  if (recording_) {
+    // the recording's stderr, and whether it has ended
+    char buffer[512];
+    ssize_t n = 0;
+    while ((n = ::read(recording_->err_fd, buffer, sizeof buffer)) > 0)
+      recording_->err.append(buffer, n);
+    int status = 0;
+    if (::waitpid(recording_->pid, &status, WNOHANG) == recording_->pid) {
+      ::close(recording_->err_fd);
+      const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+      std::string err = recording_->err;
+      while (!err.empty() && err.back() == '\n') err.pop_back();
+      if (const auto nl = err.rfind('\n'); nl != std::string::npos) err = err.substr(nl + 1);
+      say(ok ? "wrote " + support::terminal_safe(recording_->path)
+             : "recording failed: " + support::terminal_safe(err),
+          !ok);
+      recording_.reset();
+    }
+  }
+
+  const float W = io.DisplaySize.x, H = io.DisplaySize.y;
+  const float center_w = std::max(W - kInputsWidth - kNumbersWidth, 160.0f);
+  const float plot_h = std::floor((H - kTimeBarHeight) * kPlotShare);
+  const float scene_h = std::max(H - kTimeBarHeight - plot_h, 80.0f);
+  constexpr ImGuiWindowFlags kPanel =
+      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+      ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
+
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(kInputsWidth, H));
+  ImGui::Begin("Inputs", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar);
+  inputs_panel();
+  ImGui::End();
+
+  ImGui::SetNextWindowPos(ImVec2(W - kNumbersWidth, 0));
+  ImGui::SetNextWindowSize(ImVec2(kNumbersWidth, H));
+  ImGui::Begin("Numbers", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar);
+  numbers_panel();
+  ImGui::End();
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool changed = shown_generation_ != session_->generation();
+  scene_view(kInputsWidth, 0, center_w, scene_h);
+  time_panel(kInputsWidth, scene_h, center_w, kTimeBarHeight);
+  plot_view(kInputsWidth, scene_h + kTimeBarHeight, center_w, plot_h);
+  if (changed) {
+    last_update_ += seconds_since(t0);
+    shown_generation_ = session_->generation();
+  }
+}
+
+// ---- inputs ------------------------------------------------------------------
+
+void Explorer::inputs_panel() {
+  ImGui::PushStyleColor(ImGuiCol_Text, kHeadingColor);
+  ImGui::TextUnformatted("rigidlab explore");
+  ImGui::PopStyleColor();
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##lab", session_->name().c_str())) {
+    for (const LabEntry& entry : labs_) {
+      if (ImGui::Selectable(entry.name.c_str(), entry.name == session_->name())) open(entry.name);
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+  ImGui::TextWrapped("%s", session_->title().c_str());
+  ImGui::PopStyleColor();
+  const bool at_textbook = session_->at_textbook();
+  if (at_textbook) ImGui::BeginDisabled();
+  if (ImGui::Button("Textbook example")) textbook();
+  if (at_textbook) ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextColored(kDimColor, at_textbook ? "(the text's inputs)" : "");
+  ImGui::Separator();
+
+  ImGui::BeginChild("fields", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 7.5f));
+  bool numerical_heading = false;
+  for (std::size_t i = 0; i < session_->input_count(); ++i) {
+    if (!session_->rule(i).physical() && !numerical_heading) {
+      numerical_heading = true;
+      ImGui::Spacing();
+      ImGui::TextColored(kHeadingColor, "Numerical method");
+      ImGui::Separator();
+    }
+    input_widget(i);
+  }
+  ImGui::EndChild();
+  export_section();
+}
+
+void Explorer::input_widget(std::size_t i) {
+  const InputRule& r = session_->rule(i);
+  Field& field = fields_[i];
+  const InputValue value = session_->value(i);
+  const bool optional = !r.lab_default_text().empty();
+  const bool absent = std::holds_alternative<std::monostate>(value);
+  ImGui::PushID(static_cast<int>(i));
+  std::string label = r.help();
+  if (!r.unit_text().empty()) label += " [" + r.unit_text() + "]";
+  ImGui::TextWrapped("%s", label.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.flag().c_str());
+  const auto apply = [&](const InputValue& v) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto refusal = session_->set(i, v)) {
+      field.refusal = refusal->message;
+    } else {
+      field.refusal.clear();
+      after_change();
+    }
+    last_update_ = seconds_since(t0);
+  };
+  const auto text_field = [&](const char* hint) {
+    ImGui::SetNextItemWidth(-1);
+    const bool entered =
+        ImGui::InputTextWithHint("##text", hint, &field.text, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (entered || ImGui::IsItemDeactivatedAfterEdit()) set_text(r.flag(), field.text);
+  };
+  const std::string lab_default = "the lab's: " + r.lab_default_text();
+  switch (r.kind()) {
+    case InputKind::kNumber: {
+      if (!absent) {
+        double x = std::get<double>(value);
+        const InputValue book = session_->textbook_value(i);
+        const double textbook = std::holds_alternative<double>(book) ? std::get<double>(book) : x;
+        const SliderSpan span = slider_span(r, textbook);
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+        ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput;
+        if (span.log) flags |= ImGuiSliderFlags_Logarithmic;
+        if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &x, &span.lo, &span.hi, "%.4g",
+                                flags)) {
+          apply(x);
+        }
+        ImGui::SameLine();
+      }
+      text_field(optional ? lab_default.c_str() : "");
+      break;
+    }
+    case InputKind::kPair:
+    case InputKind::kVector: {
+      const int n = r.kind() == InputKind::kVector ? 3 : 2;
+      double v[3] = {0, 0, 0};
+      bool numeric = false;
+      if (const auto* p = std::get_if<Eigen::Vector3d>(&value)) {
+        v[0] = (*p)[0], v[1] = (*p)[1], v[2] = (*p)[2];
+        numeric = true;
+      } else if (const auto* p = std::get_if<Eigen::Vector2d>(&value)) {
+        v[0] = (*p)[0], v[1] = (*p)[1];
+        numeric = true;
+      }
+      if (numeric) {
+        // a drag's speed: a hundredth of the largest component per pixel
+        double size = 0;
+        for (int k = 0; k < n; ++k) size = std::max(size, std::abs(v[k]));
+        const float speed = static_cast<float>(size > 0 ? size / 100 : 0.01);
+        ImGui::SetNextItemWidth(-1);
+        if (ImGui::DragScalarN("##drag", ImGuiDataType_Double, v, n, speed, nullptr, nullptr,
+                               "%.4g")) {
+          apply(n == 3 ? InputValue(Eigen::Vector3d(v[0], v[1], v[2]))
+                       : InputValue(Eigen::Vector2d(v[0], v[1])));
+        }
+      }
+      text_field(optional
+                     ? lab_default.c_str()
+                     : (r.word_names().empty() ? "X,Y,Z" : ("X,Y,Z or " + r.word_list()).c_str()));
+      break;
+    }
+    case InputKind::kChoice: {
+      const std::string current = absent ? lab_default : std::get<std::string>(value);
+      ImGui::SetNextItemWidth(-1);
+      if (ImGui::BeginCombo("##choice", current.c_str())) {
+        for (const std::string& c : r.choices()) {
+          if (ImGui::Selectable(c.c_str(), c == current)) apply(c);
+        }
+        ImGui::EndCombo();
+      }
+      break;
+    }
+    case InputKind::kFlag: {
+      bool on = !absent && std::get<bool>(value);
+      if (ImGui::Checkbox(r.flag().c_str(), &on)) apply(on);
+      break;
+    }
+  }
+  if (optional && !absent) {
+    if (ImGui::SmallButton("use the lab's")) apply(InputValue());
+  }
+  if (!field.refusal.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kRuleColor);
+    ImGui::TextWrapped("%s", support::terminal_safe(field.refusal).c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::Spacing();
+  ImGui::PopID();
+}
+
+// ---- numbers -----------------------------------------------------------------
+
+void Explorer::numbers_panel() {
+  const lab::Report& report = session_->report();
+  ImGui::TextColored(kHeadingColor, "%s", report.lab().c_str());
+  ImGui::SameLine();
+  ImGui::TextColored(kDimColor, report.textbook_inputs() ? "the text's values beside" : "");
+  for (const std::string& w : report.warnings()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrataColor);
+    ImGui::TextWrapped("%s", support::terminal_safe(w).c_str());
+    ImGui::PopStyleColor();
+  }
+  constexpr ImGuiTableFlags kTable = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp |
+                                     ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerH;
+  const float notes_h = std::min(ImGui::GetContentRegionAvail().y * 0.35f,
+                                 ImGui::GetTextLineHeightWithSpacing() *
+                                     (2.0f + 2.0f * static_cast<float>(report.notes().size())));
+  if (ImGui::BeginTable("report", 3, kTable, ImVec2(0, -notes_h))) {
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("quantity", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+    ImGui::TableSetupColumn("text", ImGuiTableColumnFlags_WidthStretch, 0.7f);
+    ImGui::TableHeadersRow();
+    for (const lab::TableRow& row : report.rows()) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      if (row.heading) {
+        ImGui::TextColored(kHeadingColor, "%s", row.label.c_str());
+        continue;
+      }
+      ImGui::TextWrapped("%s", row.label.c_str());
+      ImGui::TableSetColumnIndex(1);
+      const std::string value = row.unit.empty() ? row.value : row.value + " " + row.unit;
+      ImGui::TextWrapped("%s", value.c_str());
+      if (!row.remark.empty() && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", row.remark.c_str());
+      ImGui::TableSetColumnIndex(2);
+      ImGui::TextColored(kDimColor, "%s", row.textbook.c_str());
+    }
+    ImGui::EndTable();
+  }
+  ImGui::BeginChild("notes");
+  for (const std::string& note : report.notes()) {
+    const bool errata = note.rfind("errata", 0) == 0;
+    ImGui::PushStyleColor(ImGuiCol_Text, errata ? kErrataColor : kDimColor);
+    ImGui::TextWrapped("%s", support::terminal_safe(note).c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::EndChild();
+}
+
+// ---- the views ---------------------------------------------------------------
+
+namespace {
+
+// The names a view offers: the motion first (if any), then the lab's figures of a kind.
+std::vector<std::string> choices_of(const lab::Session& s, bool scenes, bool has_motion_part) {
+  std::vector<std::string> names;
+  if (has_motion_part) names.push_back(scenes ? "motion" : "the motion's strip");
+  for (const lab::NamedFigure& f : s.figures()) {
+    if (f.is_scene() == scenes) names.push_back(f.name);
+  }
+  return names;
+}
+
+const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& name) {
+  for (const lab::NamedFigure& f : s.figures()) {
+    if (f.name == name) return &f;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+const render::Scene3D* Explorer::shown_scene(render::Scene3D& storage) const {
+  const lab::Animation* motion = session_->animation();
+  const auto names = choices_of(*session_, true, motion != nullptr);
+  if (names.empty()) return nullptr;
+  const std::string& name = names[std::min<std::size_t>(scene_choice_, names.size() - 1)];
+  if (motion != nullptr && name == "motion") {
+    storage = motion->scene(time_);
+    storage.title = session_->report().figure_title(storage.title);
+    return &storage;
+  }
+  return &std::get<render::Scene3D>(figure_named(*session_, name)->figure);
+}
+
+// The camera of the view before the orbit: the lab's own, fitted once to the figure, or
+// to the whole motion (frames spread over it), so that playing does not move it.
+render::Camera Explorer::base_camera(int width, int height) {
+  if (fit_.generation == session_->generation() && fit_.choice == scene_choice_ &&
+      fit_.width == width && fit_.height == height) {
+    return fit_.camera;
+  }
+  render::Scene3D storage;
+  const render::Scene3D* shown = shown_scene(storage);
+  const lab::Animation* motion = session_->animation();
+  render::Scene3D envelope = *shown;
+  if (motion != nullptr && scene_choice_ == 0) {
+    constexpr int kFitSamples = 16;  // as the command line's --animate fits its camera
+    envelope = motion->scene(0.0);
+    envelope.title = session_->report().figure_title(envelope.title);
+    for (int k = 1; k < kFitSamples; ++k)
+      envelope.merge(motion->scene(motion->seconds * k / kFitSamples));
+  }
+  fit_ = {session_->generation(), scene_choice_, width, height,
+          render::fitted_camera(envelope, width, height)};
+  return fit_.camera;
+}
+
+render::Scene3D Explorer::view_scene(int width, int height) {
+  render::Scene3D storage;
+  const render::Scene3D* shown = shown_scene(storage);
+  render::Scene3D scene = *shown;
+  scene.camera = orbit_.apply(base_camera(width, height));
+  return scene;
+}
+
+void Explorer::scene_view(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::Begin("Scene", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PopStyleVar();
+  const ImGuiIO& io = ImGui::GetIO();
+  const int pw = std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x));
+  const int ph = std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y));
+  render::Scene3D storage;
+  const bool any = shown_scene(storage) != nullptr;
+  if (any) {
+    const Drawn want{session_->generation(), scene_choice_, pw, ph, time_, orbit_, true};
+    const Drawn& had = scene_drawn_;
+    const bool stale = !had.valid || had.generation != want.generation ||
+                       had.choice != want.choice || had.width != pw || had.height != ph ||
+                       had.time != want.time || had.orbit.yaw_deg != orbit_.yaw_deg ||
+                       had.orbit.pitch_deg != orbit_.pitch_deg || had.orbit.zoom != orbit_.zoom;
+    if (stale) {
+      try {
+        scene_image_.draw(view_scene(pw, ph), pw, ph);
+        draw_error_.clear();
+      } catch (const std::exception& e) {
+        draw_error_ = e.what();
+      }
+      scene_drawn_ = want;
+    }
+  }
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("view", ImVec2(w, h));
+  if (any && scene_image_.texture() != 0) {
+    // GL's rows run bottom-up: the texture is shown flipped
+    ImGui::GetWindowDrawList()->AddImage(
+        reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(scene_image_.texture())), origin,
+        ImVec2(origin.x + w, origin.y + h), ImVec2(0, 1), ImVec2(1, 0));
+  }
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+    orbit_.drag(io.MouseDelta.x, io.MouseDelta.y, h);
+  }
+  if (ImGui::IsItemHovered()) {
+    if (io.MouseWheel != 0.0f) orbit_.wheel(io.MouseWheel);
+    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) orbit_ = {};
+  }
+  if (!draw_error_.empty()) {
+    ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + h - 2 * ImGui::GetTextLineHeight()));
+    ImGui::TextColored(kRuleColor, "%s", support::terminal_safe(draw_error_).c_str());
+  }
+  if (!any) {
+    ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
+    ImGui::TextColored(kDimColor, "this lab draws no 3D scene");
+  }
+  ImGui::End();
+}
+
+std::optional<render::Plot2D> Explorer::shown_plot() const {
+  const lab::Animation* motion = session_->animation();
+  const bool strip = motion != nullptr && motion->strip;
+  const auto names = choices_of(*session_, false, strip);
+  if (names.empty()) return std::nullopt;
+  const std::size_t k = std::min<std::size_t>(plot_choice_, names.size() - 1);
+  if (strip && k == 0) {
+    render::Plot2D plot = motion->strip(time_);
+    return plot;
+  }
+  return std::get<render::Plot2D>(figure_named(*session_, names[k])->figure);
+}
+
+void Explorer::plot_view(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::Begin("Plot", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PopStyleVar();
+  const ImGuiIO& io = ImGui::GetIO();
+  const int pw = std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x));
+  const int ph = std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y));
+  const lab::Animation* motion = session_->animation();
+  const bool strip = motion != nullptr && motion->strip && plot_choice_ == 0;
+  const Drawn want{session_->generation(), plot_choice_, pw, ph, strip ? time_ : 0.0, {}, true};
+  const Drawn& had = plot_drawn_;
+  const bool stale = !had.valid || had.generation != want.generation || had.choice != want.choice ||
+                     had.width != pw || had.height != ph || had.time != want.time;
+  std::optional<render::Plot2D> plot;
+  if (stale) {
+    plot = shown_plot();
+    if (plot) {
+      try {
+        plot_image_.draw(*plot, pw, ph);
+      } catch (const std::exception& e) {
+        draw_error_ = e.what();
+      }
+    }
+    plot_drawn_ = want;
+    plot_drawn_.valid = plot.has_value();
+  }
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  if (plot_drawn_.valid && plot_image_.texture() != 0) {
+    ImGui::GetWindowDrawList()->AddImage(
+        reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(plot_image_.texture())), origin,
+        ImVec2(origin.x + w, origin.y + h), ImVec2(0, 1), ImVec2(1, 0));
+  } else {
+    ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
+    ImGui::TextColored(kDimColor, "this lab draws no plot");
+  }
+  ImGui::End();
+}
+
+void Explorer::time_panel(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin(
+      "Time", nullptr,
+      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  const lab::Animation* motion = session_->animation();
+  // what the two views show
+  const auto scenes = choices_of(*session_, true, motion != nullptr);
+  const auto plots = choices_of(*session_, false, motion != nullptr && motion->strip);
+  const auto combo = [](const char* id, const std::vector<std::string>& names, int& choice,
+                        float width) {
+    if (names.empty()) return;
+    choice = std::min<int>(choice, static_cast<int>(names.size()) - 1);
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo(id, names[choice].c_str())) {
+      for (int k = 0; k < static_cast<int>(names.size()); ++k) {
+        if (ImGui::Selectable(names[k].c_str(), k == choice)) choice = k;
+      }
+      ImGui::EndCombo();
+    }
+  };
+  if (motion != nullptr) {
+    if (ImGui::Button(playing_ ? "Pause" : "Play", ImVec2(60, 0))) playing_ = !playing_;
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("back", ImGuiDir_Left))
+      time_ = std::max(0.0, time_ - kScriptFrameSeconds * speed_);
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("on", ImGuiDir_Right))
+      time_ = std::min(motion->seconds, time_ + kScriptFrameSeconds * speed_);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - 130.0f));
+    double t = time_, lo = 0.0, hi = motion->seconds;
+    if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &t, &lo, &hi, "t = %.3f s",
+                            ImGuiSliderFlags_AlwaysClamp)) {
+      time_ = t;
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    double s = speed_, slo = kMinSpeed, shi = kMaxSpeed;
+    if (ImGui::SliderScalar("##speed", ImGuiDataType_Double, &s, &slo, &shi, "%.2gx",
+                            ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic)) {
+      speed_ = s;
+    }
+  } else {
+    ImGui::TextColored(kDimColor, "no motion: the figures follow the inputs");
+  }
+  ImGui::TextUnformatted("scene");
+  ImGui::SameLine();
+  combo("##scene", scenes, scene_choice_, w * 0.36f);
+  ImGui::SameLine();
+  ImGui::TextUnformatted("plot");
+  ImGui::SameLine();
+  combo("##plot", plots, plot_choice_, w * 0.36f);
+  ImGui::End();
+}
+
+// ---- exports -----------------------------------------------------------------
+
+void Explorer::export_section() {
+  ImGui::Separator();
+  ImGui::TextColored(kHeadingColor, "Export");
+  const auto& figures = session_->figures();
+  if (!figures.empty()) {
+    export_figure_ = std::min<int>(export_figure_, static_cast<int>(figures.size()) - 1);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
+    if (ImGui::BeginCombo("##figure", figures[export_figure_].name.c_str())) {
+      for (int k = 0; k < static_cast<int>(figures.size()); ++k) {
+        if (ImGui::Selectable(figures[k].name.c_str(), k == export_figure_)) export_figure_ = k;
+      }
+      ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputText("##size", &figure_size_);
+  }
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputTextWithHint("##path", "file (empty: named after the lab, here)", &export_path_);
+  const auto path_or = [this](const std::string& fallback) {
+    return export_path_.empty() ? fallback : export_path_;
+  };
+  const auto done = [this](const std::string& error, const std::string& path) {
+    if (error.empty()) {
+      say("wrote " + support::terminal_safe(path));
+    } else {
+      say(support::terminal_safe(error), true);
+    }
+  };
+  int w = 0, h = 0;
+  const bool size_ok = read_size(figure_size_, w, h);
+  if (!figures.empty()) {
+    if (ImGui::Button("PNG")) {
+      const std::string name = figures[export_figure_].name;
+      const std::string path = path_or(session_->name() + "_" + name + ".png");
+      done(size_ok ? save_figure(name, path, w, h) : "size: must be WxH, each 16 to 8192", path);
+    }
+    ImGui::SameLine();
+  }
+  if (ImGui::Button("View PNG")) {
+    const std::string path = path_or(session_->name() + "_view.png");
+    done(size_ok ? save_view(path, w, h) : "size: must be WxH, each 16 to 8192", path);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("JSON")) {
+    const std::string path = path_or(session_->name() + ".json");
+    done(export_json(path), path);
+  }
+  if (session_->has_time_series()) {
+    ImGui::SameLine();
+    if (ImGui::Button("CSV")) {
+      const std::string path = path_or(session_->name() + ".csv");
+      done(export_csv(path), path);
+    }
+  }
+  if (session_->animation() != nullptr) {
+    ImGui::SameLine();
+    if (recording_) ImGui::BeginDisabled();
+    if (ImGui::Button("MP4")) {
+      const std::string path = path_or(session_->name() + ".mp4");
+      if (std::string error = record(path); !error.empty()) say(error, true);
+    }
+    if (recording_) ImGui::EndDisabled();
+  }
+  if (ImGui::Button("Copy command")) {
+    const std::string command = command_line();
+    if (window_.set_clipboard) window_.set_clipboard(command);
+    say(command);
+  }
+  if (!message_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, message_error_ ? kRuleColor : kDimColor);
+    ImGui::TextWrapped("%s", message_.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (recording_) ImGui::TextColored(kDimColor, "recording %s ...", recording_->path.c_str());
+}
+
+std::string Explorer::command_line() const {
+  std::string line = session_->name();
+  for (const std::string& a : session_->arguments()) line += " " + shell_word(a);
+  return line;
+}
+
+std::string Explorer::save_figure(const std::string& name, const std::string& path, int w, int h) {
+  const lab::NamedFigure* f = figure_named(*session_, name);
+  if (f == nullptr) return "save-figure: " + session_->name() + " has no figure named " + name;
+  try {
+    std::visit([&](const auto& figure) { render::save_png(figure, path, w, h); }, f->figure);
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+  return "";
+}
+
+std::string Explorer::save_view(const std::string& path, int w, int h) {
+  render::Scene3D storage;
+  if (shown_scene(storage) == nullptr) return "this lab draws no 3D scene";
+  try {
+    render::Scene3D scene = view_scene(w, h);
+    render::save_png(scene, path, w, h);
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+  return "";
+}
+
+std::string Explorer::export_json(const std::string& path) {
+  std::ostringstream text;
+  lab::write_json(text, session_->report(), lab::RunOutputs{}, RIGID_VERSION);
+  const std::string s = text.str();
+  try {
+    render::write_file_atomically(
+        path, [&](std::FILE* file) { std::fwrite(s.data(), 1, s.size(), file); });
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string Explorer::export_csv(const std::string& path) {
+  const lab::TimeSeries& series = session_->report().time_series();
+  if (series.columns.empty()) return "this run has no time series";
+  const std::string s = lab::csv_text(series);
+  try {
+    render::write_file_atomically(
+        path, [&](std::FILE* file) { std::fwrite(s.data(), 1, s.size(), file); });
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The lab's own command writes the animation (`LAB ARGS --animate FILE --quiet`), so
+// the file is the command line's, byte for byte, and the window goes on meanwhile.
+std::string Explorer::record(const std::string& path) {
+  if (recording_) return "a recording is under way";
+  const std::string program = (own_directory() / session_->name()).string();
+  std::vector<std::string> args{program};
+  for (const std::string& a : session_->arguments()) args.push_back(a);
+  for (const char* a : {"--animate", "--quiet"}) args.emplace_back(a);
+  args.insert(args.end() - 1, path);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int err[2];
+  if (::pipe2(err, O_CLOEXEC | O_NONBLOCK) != 0) return "record: cannot make a pipe";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, err[1], STDERR_FILENO);
+  pid_t pid = 0;
+  const int spawned = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(err[1]);
+  if (spawned != 0) {
+    ::close(err[0]);
+    return "record: cannot run " + support::terminal_safe(program);
+  }
+  recording_ = std::make_unique<Recording>();
+  recording_->pid = pid;
+  recording_->path = path;
+  recording_->err_fd = err[0];
+  say("recording " + support::terminal_safe(path) + " ...");
+  return "";
+}
+
+void Explorer::after_render() {
+  if (screenshot_path_.empty()) return;
+  const std::string path = std::move(screenshot_path_);
+  screenshot_path_.clear();
+  try {
+    render::write_png(window_.read_frame(), path);
+    say("wrote " + support::terminal_safe(path));
+  } catch (const std::exception& e) {
+    say(std::string("screenshot: ") + e.what(), true);
+    if (script_) status_ = 1;
+  }
+}
+
+void Explorer::step_script() {
+  if (script_ && !script_->step(*this)) {
+    if (script_->failed()) status_ = 1;
+    script_.reset();
+    if (window_.close) window_.close();
+  }
+}
+
+}  // namespace rigid::explore

@@ -1,0 +1,242 @@
+// rigidlab-explore: a lab live in a window (explorer.h). The adapter between the
+// desktop and the explorer: options, the GLFW window and its OpenGL 3.3 context,
+// Dear ImGui's GLFW and OpenGL 3 backends, and a loop that calls Explorer::frame()
+// and waits for events while nothing moves.
+//
+//   rigidlab-explore [LAB] [--script FILE] [--size WxH] [LAB'S OPTIONS...]
+//   rigidlab explore LAB ...  and  LAB --explore ...  run it.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "explorer.h"
+#include "rigid/render/context.h"
+#include "rigid/support/text.h"
+#include "script.h"
+
+namespace {
+
+using rigid::support::terminal_safe;
+constexpr const char* kName = "rigidlab-explore";
+
+// The few GL calls the loop makes itself, from the window's context.
+struct WindowGl {
+  void (*Viewport)(int, int, int, int) = nullptr;
+  void (*ClearColor)(float, float, float, float) = nullptr;
+  void (*Clear)(unsigned) = nullptr;
+  void (*BindFramebuffer)(unsigned, unsigned) = nullptr;
+  void (*ReadBuffer)(unsigned) = nullptr;
+  void (*PixelStorei)(unsigned, int) = nullptr;
+  void (*ReadPixels)(int, int, int, int, unsigned, unsigned, void*) = nullptr;
+  template <class F>
+  static void load(F& f, const char* name) {
+    f = reinterpret_cast<F>(glfwGetProcAddress(name));
+  }
+  bool load_all() {
+    load(Viewport, "glViewport");
+    load(ClearColor, "glClearColor");
+    load(Clear, "glClear");
+    load(BindFramebuffer, "glBindFramebuffer");
+    load(ReadBuffer, "glReadBuffer");
+    load(PixelStorei, "glPixelStorei");
+    load(ReadPixels, "glReadPixels");
+    return Viewport && ClearColor && Clear && BindFramebuffer && ReadBuffer && PixelStorei &&
+           ReadPixels;
+  }
+};
+
+int fail(const std::string& option, const std::string& rule) {
+  std::cerr << kName << ": error: " << terminal_safe(option.empty() ? rule : option + ": " + rule)
+            << '\n';
+  return 2;
+}
+
+// The lab's options as on its command line: "--flag value", "--flag=value", "--switch".
+std::string apply_lab_options(rigid::explore::Explorer& explorer,
+                              const std::vector<std::string>& args) {
+  rigid::lab::Session& s = explorer.session();
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    std::string flag = args[k], value;
+    bool has_value = false;
+    if (const auto eq = flag.find('='); flag.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = flag.substr(eq + 1);
+      flag = flag.substr(0, eq);
+      has_value = true;
+    }
+    const std::size_t i = s.find(flag);
+    if (i >= s.input_count()) return flag + ": " + s.name() + " has no such option";
+    if (!has_value && s.rule(i).kind() != rigid::lab::InputKind::kFlag) {
+      if (k + 1 >= args.size()) return flag + ": needs a value";
+      value = args[++k];
+    }
+    if (std::string why = explorer.set_text(flag, value); !why.empty()) return why;
+  }
+  return "";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app(
+      "rigidlab-explore: a lab live in a window: its inputs as sliders and fields, its scene "
+      "turned with the mouse, its motion played, its numbers and plots recomputed on every "
+      "change. Any other options are the lab's own (see LAB --help).",
+      kName);
+  std::string lab = "top_nutation", script_path, size = "1280x720";
+  app.add_option("lab", lab, "the lab to open (rigidlab list names them)")->capture_default_str();
+  app.add_option("--script", script_path,
+                 "run the commands of FILE, one a frame, then close (see the man page)")
+      ->type_name("FILE");
+  app.add_option("--size", size, "the window's size in pixels")->capture_default_str();
+  app.set_version_flag("--version", std::string(kName) + " " + RIGID_VERSION);
+  app.allow_extras();
+  app.positionals_at_end(false);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    return fail("", e.what());
+  }
+  std::vector<rigid::explore::LabEntry> labs = rigid::explore::all_labs();
+  if (std::none_of(labs.begin(), labs.end(), [&](const auto& l) { return l.name == lab; })) {
+    std::string names;
+    for (const auto& l : labs) names += (names.empty() ? "" : ", ") + l.name;
+    return fail("LAB", "'" + lab + "' is not a lab (one of " + names + ")");
+  }
+  int width = 0, height = 0;
+  {
+    char x = 0, extra = 0;
+    if (std::sscanf(size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || x != 'x' ||
+        width < 640 || height < 400 || width > 8192 || height > 8192) {
+      return fail("--size",
+                  "must be WxH with 640 <= W <= 8192 and 400 <= H <= 8192 (got '" + size + "')");
+    }
+  }
+  std::unique_ptr<rigid::explore::Script> script;
+  if (!script_path.empty()) {
+    try {
+      script = std::make_unique<rigid::explore::Script>(rigid::explore::Script::read(script_path));
+    } catch (const std::invalid_argument& e) {
+      return fail("--script", e.what());
+    }
+  }
+
+  glfwSetErrorCallback([](int, const char* what) {
+    std::cerr << kName << ": GLFW: " << terminal_safe(what) << '\n';
+  });
+  if (!glfwInit()) {
+    std::cerr << kName << ": error: no window can be opened (is there a display? "
+              << "headless: xvfb-run -a rigidlab-explore ...)\n";
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  const std::string title = "rigidlab explore: " + lab;
+  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (window == nullptr) {
+    std::cerr << kName << ": error: no OpenGL 3.3 window could be made\n";
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+  WindowGl gl;
+  int status = 0;
+  try {
+    if (!gl.load_all()) throw std::runtime_error("the window's OpenGL lacks a function");
+    rigid::render::use_current_context(glfwGetProcAddress);
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // the layout is the explorer's, not remembered
+    ImGui::StyleColorsLight();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.FrameRounding = 3.0f;
+    style.WindowBorderSize = 0.0f;
+    // the figures' own font, so the window and its figures read alike
+    if (io.Fonts->AddFontFromFileTTF(RIGID_FONT_PATH, 15.0f) == nullptr) io.Fonts->AddFontDefault();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    rigid::explore::Window hooks;
+    hooks.set_clipboard = [window](const std::string& text) {
+      glfwSetClipboardString(window, text.c_str());
+    };
+    hooks.close = [window] { glfwSetWindowShouldClose(window, GLFW_TRUE); };
+    hooks.read_frame = [window, &gl] {
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      rigid::render::Image img;
+      img.width = w;
+      img.height = h;
+      img.rgb.resize(static_cast<std::size_t>(w) * h * 3);
+      gl.BindFramebuffer(0x8CA8 /*GL_READ_FRAMEBUFFER*/, 0);
+      gl.ReadBuffer(0x0405 /*GL_BACK*/);
+      gl.PixelStorei(0x0D05 /*GL_PACK_ALIGNMENT*/, 1);
+      gl.ReadPixels(0, 0, w, h, 0x1907 /*GL_RGB*/, 0x1401 /*GL_UNSIGNED_BYTE*/, img.rgb.data());
+      const std::size_t row = static_cast<std::size_t>(w) * 3;
+      for (int y = 0; y < h / 2; ++y)
+        std::swap_ranges(img.rgb.begin() + y * row, img.rgb.begin() + (y + 1) * row,
+                         img.rgb.begin() + (h - 1 - y) * row);
+      return img;
+    };
+    rigid::explore::Explorer explorer(std::move(labs), lab, hooks);
+    if (const std::string why = apply_lab_options(explorer, app.remaining()); !why.empty()) {
+      status = fail("", why);
+    } else {
+      if (script) explorer.run(std::move(script));
+      // After an event ImGui needs a frame or two to settle (hover, release): a few more
+      // frames are drawn before the loop waits again.
+      int settle = 3;
+      auto last = std::chrono::steady_clock::now();
+      while (!glfwWindowShouldClose(window)) {
+        if (explorer.animating() || settle > 0) {
+          glfwPollEvents();
+        } else {
+          glfwWaitEvents();
+          settle = 3;
+        }
+        --settle;
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::chrono::duration<double>(now - last).count();
+        last = now;
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        explorer.frame(dt);
+        ImGui::Render();
+        int fw = 0, fh = 0;
+        glfwGetFramebufferSize(window, &fw, &fh);
+        gl.BindFramebuffer(0x8D40 /*GL_FRAMEBUFFER*/, 0);
+        gl.Viewport(0, 0, fw, fh);
+        gl.ClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+        gl.Clear(0x00004000 /*GL_COLOR_BUFFER_BIT*/);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        explorer.after_render();
+        glfwSwapBuffers(window);
+      }
+      status = explorer.status();
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  } catch (const std::exception& e) {
+    std::cerr << kName << ": error: " << terminal_safe(e.what()) << '\n';
+    status = 1;
+  }
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return status;
+}

@@ -1,0 +1,261 @@
+// A scripted session (script.h).
+#include "script.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/writers.h"
+#include "explorer.h"
+#include "rigid/support/text.h"
+
+namespace rigid::explore {
+
+namespace {
+
+// Each command and how many words follow it: at least, at most.
+struct Arity {
+  int min = 0, max = 0;
+};
+const std::map<std::string, Arity>& commands() {
+  static const std::map<std::string, Arity> table{
+      {"set", {1, 2}},         {"unset", {1, 1}},      {"textbook", {0, 0}},
+      {"lab", {1, 1}},         {"play", {1, 1}},       {"pause", {0, 0}},
+      {"seek", {1, 1}},        {"speed", {1, 1}},      {"turn", {2, 2}},
+      {"zoom", {1, 1}},        {"reset-view", {0, 0}}, {"show-scene", {1, 1}},
+      {"show-plot", {1, 1}},   {"frames", {1, 1}},     {"screenshot", {1, 1}},
+      {"save-figure", {2, 3}}, {"save-view", {1, 2}},  {"export-json", {1, 1}},
+      {"export-csv", {1, 1}},  {"record", {1, 1}},     {"print-command", {0, 0}},
+      {"print-json", {0, 0}},  {"quit", {0, 0}},
+  };
+  return table;
+}
+
+// Words of a line: split at blanks; a word in double quotes may hold blanks.
+std::vector<std::string> words_of(const std::string& line) {
+  std::vector<std::string> words;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size()) break;
+    std::string word;
+    if (line[i] == '"') {
+      const std::size_t end = line.find('"', i + 1);
+      if (end == std::string::npos) throw std::invalid_argument("a quote is not closed");
+      word = line.substr(i + 1, end - i - 1);
+      i = end + 1;
+    } else {
+      const std::size_t end = line.find_first_of(" \t", i);
+      word = line.substr(i, end == std::string::npos ? std::string::npos : end - i);
+      i = end == std::string::npos ? line.size() : end;
+    }
+    words.push_back(word);
+  }
+  return words;
+}
+
+double number_word(const std::string& word, const std::string& what) {
+  std::size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(word, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != word.size() || !std::isfinite(x)) {
+    throw std::invalid_argument(what + " must be a number (got '" + support::terminal_safe(word) +
+                                "')");
+  }
+  return x;
+}
+
+}  // namespace
+
+Script Script::read(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(support::terminal_safe(path) + ": cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), path);
+}
+
+Script Script::parse(const std::string& text, const std::string& path) {
+  Script s;
+  s.path_ = path;
+  std::stringstream lines(text);
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    const auto where = [&](const std::string& rule) {
+      return std::invalid_argument(support::terminal_safe(path) + ":" + std::to_string(number) +
+                                   ": " + rule);
+    };
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    std::vector<std::string> words;
+    try {
+      words = words_of(line);
+    } catch (const std::invalid_argument& e) {
+      throw where(e.what());
+    }
+    if (words.empty()) continue;
+    const auto c = commands().find(words[0]);
+    if (c == commands().end()) {
+      std::string all;
+      for (const auto& [name, arity] : commands()) all += (all.empty() ? "" : ", ") + name;
+      throw where("unknown command '" + support::terminal_safe(words[0]) + "' (one of " + all +
+                  ")");
+    }
+    const int n = static_cast<int>(words.size()) - 1;
+    if (n < c->second.min || n > c->second.max) {
+      throw where(words[0] + " takes " +
+                  (c->second.min == c->second.max
+                       ? std::to_string(c->second.min)
+                       : std::to_string(c->second.min) + " to " + std::to_string(c->second.max)) +
+                  " words (got " + std::to_string(n) + ")");
+    }
+    try {
+      if (words[0] == "play" || words[0] == "seek" || words[0] == "speed" || words[0] == "zoom" ||
+          words[0] == "frames") {
+        const double x = number_word(words[1], words[0]);
+        if (x < 0 || (words[0] == "speed" && !(x > 0)) || (words[0] == "zoom" && !(x > 0)))
+          throw std::invalid_argument(words[0] + " must be positive (got " + words[1] + ")");
+        if (words[0] == "frames" && x > 100000)
+          throw std::invalid_argument("frames: at most 100000");
+        if (words[0] == "play" && x > 3600) throw std::invalid_argument("play: at most 3600 s");
+      }
+      if (words[0] == "turn") {
+        number_word(words[1], "turn's first angle");
+        number_word(words[2], "turn's second angle");
+      }
+    } catch (const std::invalid_argument& e) {
+      throw where(e.what());
+    }
+    s.commands_.push_back({number, words});
+  }
+  return s;
+}
+
+void Script::report(const Command& c, const std::string& error) {
+  std::cout << path_ << ":" << c.line << ": " << support::terminal_safe(error) << std::endl;
+}
+
+bool Script::step(Explorer& e) {
+  if (frames_left_ > 0) {
+    --frames_left_;
+    if (frames_left_ == 0) e.playing_ = false;
+    return true;
+  }
+  if (e.recording_) return true;  // a `record` waits for the file
+  if (next_ >= commands_.size()) return false;
+  const Command& c = commands_[next_++];
+  const std::vector<std::string>& w = c.words;
+  const std::string& op = w[0];
+  const auto size_of = [&](std::size_t k, int& width, int& height) {
+    width = 1600, height = 1200;
+    if (w.size() <= k) return true;
+    int a = 0, b = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(w[k].c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || x != 'x' || a < 16 ||
+        b < 16 || a > 8192 || b > 8192) {
+      report(c, "size: must be WxH, each 16 to 8192 (got " + w[k] + ")");
+      failed_ = true;
+      return false;
+    }
+    width = a, height = b;
+    return true;
+  };
+  const auto exported = [&](const std::string& error) {
+    if (error.empty()) return;
+    report(c, op + ": " + error);
+    failed_ = true;
+  };
+  try {
+    if (op == "set" || op == "unset") {
+      const std::string refusal = e.set_text(w[1], op == "unset" ? "" : w.size() > 2 ? w[2] : "");
+      if (!refusal.empty()) report(c, "refused: " + refusal);
+    } else if (op == "textbook") {
+      e.textbook();
+    } else if (op == "lab") {
+      e.open(w[1]);
+      e.playing_ = false;
+    } else if (op == "play") {
+      const lab::Animation* motion = e.session_->animation();
+      if (motion == nullptr) {
+        report(c, "play: " + e.session_->name() + " has no motion");
+        failed_ = true;
+      } else {
+        e.playing_ = true;
+        frames_left_ = static_cast<int>(std::lround(std::stod(w[1]) / (e.speed_ / 30.0)));
+        if (frames_left_ == 0) e.playing_ = false;
+      }
+    } else if (op == "pause") {
+      e.playing_ = false;
+    } else if (op == "seek") {
+      const lab::Animation* motion = e.session_->animation();
+      e.time_ = motion == nullptr ? 0.0 : std::min(std::stod(w[1]), motion->seconds);
+    } else if (op == "speed") {
+      e.speed_ = std::clamp(std::stod(w[1]), 0.1, 10.0);
+    } else if (op == "turn") {
+      e.orbit_.yaw_deg += std::stod(w[1]);
+      e.orbit_.pitch_deg += std::stod(w[2]);
+      e.orbit_.clamp();
+    } else if (op == "zoom") {
+      e.orbit_.zoom *= std::stod(w[1]);
+      e.orbit_.clamp();
+    } else if (op == "reset-view") {
+      e.orbit_ = {};
+    } else if (op == "show-scene" || op == "show-plot") {
+      const bool scenes = op == "show-scene";
+      const lab::Animation* motion = e.session_->animation();
+      const bool lead = scenes ? motion != nullptr : motion != nullptr && bool(motion->strip);
+      std::vector<std::string> names;
+      if (lead) names.push_back(scenes ? "motion" : "strip");
+      for (const auto& f : e.session_->figures()) {
+        if (f.is_scene() == scenes) names.push_back(f.name);
+      }
+      const auto at = std::find(names.begin(), names.end(), w[1]);
+      if (at == names.end()) {
+        report(c, op + ": " + e.session_->name() + " shows no " + w[1]);
+        failed_ = true;
+      } else {
+        (scenes ? e.scene_choice_ : e.plot_choice_) = static_cast<int>(at - names.begin());
+      }
+    } else if (op == "frames") {
+      frames_left_ = static_cast<int>(std::stod(w[1]));
+    } else if (op == "screenshot") {
+      e.screenshot_path_ = w[1];
+    } else if (op == "save-figure") {
+      int width = 0, height = 0;
+      if (size_of(3, width, height)) exported(e.save_figure(w[1], w[2], width, height));
+    } else if (op == "save-view") {
+      int width = 0, height = 0;
+      if (size_of(2, width, height)) exported(e.save_view(w[1], width, height));
+    } else if (op == "export-json") {
+      exported(e.export_json(w[1]));
+    } else if (op == "export-csv") {
+      exported(e.export_csv(w[1]));
+    } else if (op == "record") {
+      exported(e.record(w[1]));
+    } else if (op == "print-command") {
+      std::cout << e.command_line() << std::endl;
+    } else if (op == "print-json") {
+      std::ostringstream text;
+      lab::write_json(text, e.session_->report(), lab::RunOutputs{}, RIGID_VERSION);
+      std::cout << text.str() << std::flush;
+    } else if (op == "quit") {
+      next_ = commands_.size();
+      return false;
+    }
+  } catch (const std::exception& ex) {
+    report(c, op + ": " + ex.what());
+    failed_ = true;
+  }
+  return true;
+}
+
+}  // namespace rigid::explore

@@ -1,0 +1,57 @@
+// A session without a person: one command a line, run a command a frame, for the
+// tests and for an instructor's reproducible demo (`rigidlab explore LAB --script FILE`).
+//
+//   # comments and blank lines are skipped
+//   set --mass 2              the input, as typed in its field (a refusal is printed)
+//   unset --spin              an optional input back to the lab's default
+//   textbook                  the text's example
+//   lab top_nutation          another lab
+//   play 2.5                  plays 2.5 s of the motion (frames of 1/30 s at the speed set)
+//   seek 1.2 | speed 2 | pause
+//   turn 30 -10 | zoom 1.5 | reset-view      the view: degrees right and up, a factor
+//   show-scene NAME|motion | show-plot NAME|strip
+//   frames 3                  draws 3 frames
+//   screenshot FILE           the window as a PNG
+//   save-figure NAME FILE [WxH]   a figure of the lab, as its --figures writes it
+//   save-view FILE [WxH]      the scene as shown (time, view) at a size
+//   export-json FILE | export-csv FILE | record FILE (.mp4 or .webp, as --animate)
+//   print-command | print-json   to stdout
+//   quit
+//
+// A script is read whole before the window opens: an unknown command or a wrong
+// count of words is one line naming the file, the line and the rule, exit 2.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rigid::explore {
+
+class Explorer;
+
+class Script {
+ public:
+  /// Reads and checks `path`; throws std::invalid_argument with "PATH:LINE: rule".
+  static Script read(const std::string& path);
+  /// Parses `text` (the file's contents) as read() does, naming `path` in its errors.
+  static Script parse(const std::string& text, const std::string& path);
+
+  /// Runs the next command (or continues a long one); false once the script is done.
+  bool step(Explorer& explorer);
+  /// Whether a refusal or a failed export happened (the exit status is then 1).
+  bool failed() const { return failed_; }
+
+ private:
+  struct Command {
+    int line = 0;
+    std::vector<std::string> words;
+  };
+  void report(const Command& c, const std::string& error);
+  std::string path_;
+  std::vector<Command> commands_;
+  std::size_t next_ = 0;
+  int frames_left_ = 0;  // of a `play` or `frames` under way
+  bool failed_ = false;
+};
+
+}  // namespace rigid::explore

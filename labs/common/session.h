@@ -1,0 +1,195 @@
+// A lab held live, as a window shows it: its inputs, always a set that computes,
+// changed one at a time and held to the lab's own rules (a change that breaks one
+// is refused with the rule, and the last valid state stays); the report, figures
+// and motion of those inputs; and the command line that reproduces them. One type
+// for every lab (the explorer holds any of them), and no GL, files or windows:
+// the tests drive it in-process.
+//
+//   std::unique_ptr<Session> s = make_session(poinsot::program());
+//   if (std::string why = s->set(s->find("--mass"), -1.0); !why.empty()) show(why);
+//   draw(s->animation()->scene(t));
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "common/program.h"
+
+namespace rigid::lab {
+
+/// A lab's figure as its figures() hands it over, titled as the command line titles it.
+struct NamedFigure {
+  std::string name, caption;
+  std::variant<render::Plot2D, render::Scene3D> figure;
+  bool is_scene() const { return std::holds_alternative<render::Scene3D>(figure); }
+};
+
+/// The refusal of a change: the rule, as the command line words it, and the inputs it names.
+struct Refusal {
+  std::string message;              ///< "--mass: must be positive (got -1)"
+  std::vector<std::string> inputs;  ///< the options the rule names (empty: none in particular)
+};
+
+class Session {
+ public:
+  /// How finely an integrated motion is sampled ahead for a live view: the motion is then
+  /// integrated once through these times and from the nearest one to any other.
+  static constexpr int kMotionSamples = 600;
+
+  virtual ~Session() = default;
+
+  virtual const std::string& name() const = 0;
+  virtual const std::string& title() const = 0;
+  /// Whether the lab writes a time series (--csv).
+  virtual bool has_time_series() const = 0;
+
+  /// The inputs, in the table's order.
+  virtual std::size_t input_count() const = 0;
+  virtual const InputRule& rule(std::size_t i) const = 0;
+  /// The index of the input named `flag`; input_count() if none.
+  std::size_t find(const std::string& flag) const;
+  /// Input i's value in the current (valid) state; std::monostate for an optional one not given.
+  virtual InputValue value(std::size_t i) const = 0;
+  /// Input i's textbook value (the lab's default).
+  virtual InputValue textbook_value(std::size_t i) const = 0;
+
+  /// Sets input i and computes. Refused (the state unchanged) when the value breaks its
+  /// rule, or the inputs together break one of the lab's.
+  virtual std::optional<Refusal> set(std::size_t i, const InputValue& value) = 0;
+  /// Back to the textbook's example.
+  virtual void reset() = 0;
+  /// Whether every input is the textbook's (numerical ones too).
+  bool at_textbook() const;
+
+  /// What the current inputs give.
+  virtual const Report& report() const = 0;
+  /// Its figures (described on first asking after a change).
+  virtual const std::vector<NamedFigure>& figures() const = 0;
+  /// Its motion (made on first asking after a change), or nullptr for a lab without one.
+  virtual const Animation* animation() const = 0;
+  /// How many times the inputs have changed (a view redraws when this moves).
+  virtual long generation() const = 0;
+
+  /// The lab's arguments that reproduce the current state: every input that is not the
+  /// textbook's, as `--option=value` (numbers to their last digit).
+  std::vector<std::string> arguments() const;
+};
+
+/// An input's value as the command line takes it: "2", "1,2,3", a word; "" for a switch.
+std::string argument_text(const InputValue& value);
+
+/// The value of `text` typed for an input of `rule` (its numbers, a word, "on"/"off" for a
+/// switch; "" is no value for an optional input), or the rule the text breaks, worded as
+/// the command line words it.
+std::variant<InputValue, std::string> parse_input(const InputRule& rule, const std::string& text);
+
+namespace detail {
+
+template <class In, class Rep>
+class ProgramSession final : public Session {
+ public:
+  explicit ProgramSession(LabProgram<In, Rep> lab) : lab_(std::move(lab)) { compute(In{}); }
+
+  const std::string& name() const override { return lab_.name; }
+  const std::string& title() const override { return lab_.title; }
+  bool has_time_series() const override { return lab_.csv; }
+  std::size_t input_count() const override { return fields().size(); }
+  const InputRule& rule(std::size_t i) const override { return fields().at(i).rule; }
+  InputValue value(std::size_t i) const override { return fields().at(i).get(in_); }
+  InputValue textbook_value(std::size_t i) const override { return fields().at(i).get(In{}); }
+
+  std::optional<Refusal> set(std::size_t i, const InputValue& value) override {
+    const InputField<In>& f = fields().at(i);
+    if (const std::string why = f.rule.broken(value); !why.empty()) {
+      return Refusal{f.rule.flag() + ": " + why, {f.rule.flag()}};
+    }
+    In next = in_;
+    f.set(next, value);
+    try {
+      compute(next);
+    } catch (const InputError& e) {
+      std::vector<std::string> named = e.joint;
+      if (named.empty()) named.push_back(e.input.empty() ? f.rule.flag() : e.input);
+      return Refusal{e.input.empty() ? f.rule.flag() + ": " + e.rule : e.what(), named};
+    } catch (const std::exception& e) {
+      // a rule of core's the lab names no input for: the one just changed broke it
+      return Refusal{f.rule.flag() + ": " + e.what(), {f.rule.flag()}};
+    }
+    return std::nullopt;
+  }
+
+  void reset() override { compute(In{}); }
+
+  const Report& report() const override { return *report_; }
+
+  const std::vector<NamedFigure>& figures() const override {
+    if (!figures_) {
+      Collect sink(*report_);
+      lab_.figures(*report_, sink);
+      figures_ = std::move(sink.figures);
+    }
+    return *figures_;
+  }
+
+  const Animation* animation() const override {
+    if (lab_.animation == nullptr) return nullptr;
+    if (!animation_) {
+      animation_ = lab_.animation(*report_, [](double seconds) {
+        std::vector<double> times;
+        for (int k = 0; k <= kMotionSamples; ++k) times.push_back(seconds * k / kMotionSamples);
+        return times;
+      });
+    }
+    return &*animation_;
+  }
+
+  long generation() const override { return generation_; }
+
+ private:
+  // The figures as the command line titles them.
+  struct Collect : FigureSink {
+    explicit Collect(const Report& report) : report(report) {}
+    void add(const std::string& name, const std::string& caption, render::Plot2D plot) override {
+      plot.title = report.figure_title(plot.title);
+      figures.push_back({name, caption, std::move(plot)});
+    }
+    void add(const std::string& name, const std::string& caption, render::Scene3D scene) override {
+      scene.title = report.figure_title(scene.title);
+      figures.push_back({name, caption, std::move(scene)});
+    }
+    const Report& report;
+    std::vector<NamedFigure> figures;
+  };
+
+  const std::vector<InputField<In>>& fields() const { return lab_.inputs.fields(); }
+
+  // Computes `next`; only if that succeeds does it become the state.
+  void compute(const In& next) {
+    auto report = std::make_shared<Rep>(lab_.compute(next));
+    in_ = next;
+    report_ = std::move(report);
+    figures_.reset();
+    animation_.reset();
+    ++generation_;
+  }
+
+  LabProgram<In, Rep> lab_;
+  In in_{};
+  std::shared_ptr<const Rep> report_;
+  mutable std::optional<std::vector<NamedFigure>> figures_;
+  mutable std::optional<Animation> animation_;
+  long generation_ = 0;
+};
+
+}  // namespace detail
+
+/// A session of `lab`, at the textbook's example.
+template <class In, class Rep>
+std::unique_ptr<Session> make_session(LabProgram<In, Rep> lab) {
+  return std::make_unique<detail::ProgramSession<In, Rep>>(std::move(lab));
+}
+
+}  // namespace rigid::lab
