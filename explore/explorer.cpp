@@ -21,6 +21,7 @@
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/draw.h"
 #include "rigid/render/png.h"
+#include "rigid/support/programs.h"
 #include "rigid/support/text.h"
 #include "script.h"
 
@@ -55,29 +56,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// A slider's span for an input: its own range, or about its textbook value.
-struct SliderSpan {
-  double lo = 0, hi = 1;
-  bool log = false;
-};
-
-SliderSpan slider_span(const InputRule& r, double textbook) {
-  const double d = std::abs(textbook);
-  switch (r.bound()) {
-    case InputRule::Bound::kOpenRange:
-    case InputRule::Bound::kRangeFrom:
-      return {r.lo(), r.hi(), false};
-    case InputRule::Bound::kPositive:
-      return d > 0 ? SliderSpan{d / 10, d * 10, true} : SliderSpan{1e-3, 1.0, true};
-    case InputRule::Bound::kNonNegative:
-      return {0.0, d > 0 ? 10 * d : 1.0, false};
-    case InputRule::Bound::kFinite:
-      break;
-  }
-  if (r.unit_text() == "deg") return {-180.0, 180.0, false};
-  return d > 0 ? SliderSpan{-10 * d, 10 * d, false} : SliderSpan{-1.0, 1.0, false};
-}
-
 // A word a shell would read as itself, else single-quoted.
 std::string shell_word(const std::string& word) {
   if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -99,12 +77,6 @@ bool read_size(const std::string& text, int& w, int& h) {
   w = a;
   h = b;
   return true;
-}
-
-fs::path own_directory() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::current_path() : self.parent_path();
 }
 
 }  // namespace
@@ -156,8 +128,10 @@ void Explorer::open(const std::string& name) {
 }
 
 void Explorer::after_change() {
+  // every field shows the state now taken; a refusal shown was of a value not taken
   for (std::size_t i = 0; i < fields_.size(); ++i) {
     fields_[i].text = lab::argument_text(session_->value(i));
+    fields_[i].refusal.clear();
   }
   const lab::Animation* motion = session_->animation();
   if (motion != nullptr && time_ > motion->seconds) time_ = 0.0;
@@ -170,21 +144,14 @@ std::string Explorer::set_text(const std::string& flag, const std::string& text)
   }
   Field& field = fields_[i];
   field.text = text;
-  const auto parsed = lab::parse_input(session_->rule(i), text);
-  if (const auto* why = std::get_if<std::string>(&parsed)) {
-    field.refusal = flag + ": " + *why;
-    return field.refusal;
-  }
   const auto t0 = std::chrono::steady_clock::now();
-  if (auto refusal = session_->set(i, std::get<InputValue>(parsed))) {
+  if (auto refusal = session_->set_text(i, text)) {
     field.refusal = refusal->message;
     return field.refusal;
   }
   field.refusal.clear();
-  const std::string typed = field.text;
   after_change();
   last_update_ = seconds_since(t0);
-  (void)typed;
   return "";
 }
 
@@ -354,12 +321,14 @@ void Explorer::input_widget(std::size_t i) {
         double x = std::get<double>(value);
         const InputValue book = session_->textbook_value(i);
         const double textbook = std::holds_alternative<double>(book) ? std::get<double>(book) : x;
-        const SliderSpan span = slider_span(r, textbook);
+        const lab::SliderSpan span = lab::slider_span(r, textbook);
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
         ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput;
         if (span.log) flags |= ImGuiSliderFlags_Logarithmic;
-        if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &x, &span.lo, &span.hi, "%.4g",
-                                flags)) {
+        // the slider's ends as its text; the value itself is in the field beside it
+        const std::string ends = fmt::format("{:.3g} .. {:.3g}", span.lo, span.hi);
+        if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &x, &span.lo, &span.hi,
+                                ends.c_str(), flags)) {
           apply(x);
         }
         ImGui::SameLine();
@@ -437,35 +406,51 @@ void Explorer::numbers_panel() {
     ImGui::TextWrapped("%s", support::terminal_safe(w).c_str());
     ImGui::PopStyleColor();
   }
-  constexpr ImGuiTableFlags kTable = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp |
-                                     ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerH;
+  // The rows as the command line's table has them: each section's heading across the
+  // panel, its rows in three columns aligned from one section to the next.
   const float notes_h = std::min(ImGui::GetContentRegionAvail().y * 0.35f,
                                  ImGui::GetTextLineHeightWithSpacing() *
-                                     (2.0f + 2.0f * static_cast<float>(report.notes().size())));
-  if (ImGui::BeginTable("report", 3, kTable, ImVec2(0, -notes_h))) {
-    ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("quantity", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.4f);
-    ImGui::TableSetupColumn("text", ImGuiTableColumnFlags_WidthStretch, 0.7f);
-    ImGui::TableHeadersRow();
-    for (const lab::TableRow& row : report.rows()) {
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      if (row.heading) {
-        ImGui::TextColored(kHeadingColor, "%s", row.label.c_str());
-        continue;
-      }
-      ImGui::TextWrapped("%s", row.label.c_str());
-      ImGui::TableSetColumnIndex(1);
-      const std::string value = row.unit.empty() ? row.value : row.value + " " + row.unit;
-      ImGui::TextWrapped("%s", value.c_str());
-      if (!row.remark.empty() && ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s", row.remark.c_str());
-      ImGui::TableSetColumnIndex(2);
-      ImGui::TextColored(kDimColor, "%s", row.textbook.c_str());
+                                     (1.0f + 2.5f * static_cast<float>(report.notes().size())));
+  ImGui::BeginChild("rows", ImVec2(0, -notes_h));
+  constexpr ImGuiTableFlags kTable = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp |
+                                     ImGuiTableFlags_BordersInnerH;
+  bool open = false;
+  int table = 0;
+  const auto begin_table = [&] {
+    open = ImGui::BeginTable(fmt::format("rows{}", table++).c_str(), 3, kTable);
+    if (open) {
+      ImGui::TableSetupColumn("quantity", ImGuiTableColumnFlags_WidthStretch, 1.5f);
+      ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+      ImGui::TableSetupColumn("the text", ImGuiTableColumnFlags_WidthStretch, 0.8f);
     }
-    ImGui::EndTable();
+  };
+  begin_table();
+  if (open) ImGui::TableHeadersRow();
+  for (const lab::TableRow& row : report.rows()) {
+    if (row.heading) {
+      if (open) ImGui::EndTable();
+      ImGui::Spacing();
+      ImGui::PushStyleColor(ImGuiCol_Text, kHeadingColor);
+      ImGui::TextWrapped("%s", row.label.c_str());
+      ImGui::PopStyleColor();
+      begin_table();
+      continue;
+    }
+    if (!open) continue;
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextWrapped("%s", row.label.c_str());
+    ImGui::TableSetColumnIndex(1);
+    const std::string value = row.unit.empty() ? row.value : row.value + " " + row.unit;
+    ImGui::TextWrapped("%s", value.c_str());
+    if (!row.remark.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", row.remark.c_str());
+    ImGui::TableSetColumnIndex(2);
+    ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+    ImGui::TextWrapped("%s", row.textbook.c_str());
+    ImGui::PopStyleColor();
   }
+  if (open) ImGui::EndTable();
+  ImGui::EndChild();
   ImGui::BeginChild("notes");
   for (const std::string& note : report.notes()) {
     const bool errata = note.rfind("errata", 0) == 0;
@@ -790,6 +775,16 @@ void Explorer::export_section() {
   if (recording_) ImGui::TextColored(kDimColor, "recording %s ...", recording_->path.c_str());
 }
 
+std::string Explorer::json_text() const {
+  // the command line that reproduces it, as the command's own JSON names its argv
+  lab::RunOutputs outputs;
+  outputs.command.push_back(session_->name());
+  for (const std::string& a : session_->arguments()) outputs.command.push_back(a);
+  std::ostringstream text;
+  lab::write_json(text, session_->report(), outputs, RIGID_VERSION);
+  return text.str();
+}
+
 std::string Explorer::command_line() const {
   std::string line = session_->name();
   for (const std::string& a : session_->arguments()) line += " " + shell_word(a);
@@ -820,9 +815,7 @@ std::string Explorer::save_view(const std::string& path, int w, int h) {
 }
 
 std::string Explorer::export_json(const std::string& path) {
-  std::ostringstream text;
-  lab::write_json(text, session_->report(), lab::RunOutputs{}, RIGID_VERSION);
-  const std::string s = text.str();
+  const std::string s = json_text();
   try {
     render::write_file_atomically(
         path, [&](std::FILE* file) { std::fwrite(s.data(), 1, s.size(), file); });
@@ -849,7 +842,7 @@ std::string Explorer::export_csv(const std::string& path) {
 // the file is the command line's, byte for byte, and the window goes on meanwhile.
 std::string Explorer::record(const std::string& path) {
   if (recording_) return "a recording is under way";
-  const std::string program = (own_directory() / session_->name()).string();
+  const std::string program = support::program_path(session_->name(), "labs").string();
   std::vector<std::string> args{program};
   for (const std::string& a : session_->arguments()) args.push_back(a);
   for (const char* a : {"--animate", "--quiet"}) args.emplace_back(a);

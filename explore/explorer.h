@@ -64,6 +64,8 @@ class Explorer {
   /// Whether the next frame must come without waiting for an event (playing, a script,
   /// a recording under way).
   bool animating() const;
+  /// Whether a script runs (its frames are not paced to the display).
+  bool scripted() const { return script_ != nullptr; }
   /// The exit status once the window has closed: 0, or what a failed script asks.
   int status() const { return status_; }
 
@@ -102,6 +104,7 @@ class Explorer {
   std::string export_csv(const std::string& path);
   std::string record(const std::string& path);
   std::string command_line() const;
+  std::string json_text() const;
 
   std::vector<LabEntry> labs_;
   std::size_t lab_index_ = 0;

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <thread>
@@ -61,10 +62,11 @@ int fail(const std::string& option, const std::string& rule) {
   return 2;
 }
 
-// The lab's options as on its command line: "--flag value", "--flag=value", "--switch".
-std::string apply_lab_options(rigid::explore::Explorer& explorer,
-                              const std::vector<std::string>& args) {
-  rigid::lab::Session& s = explorer.session();
+// The lab's options as on its command line ("--flag value", "--flag=value", "--switch"),
+// each handed to `set` (flag, text); the first refusal, or "".
+std::string apply_lab_options(const rigid::lab::Session& s, const std::vector<std::string>& args,
+                              const std::function<std::string(const std::string&,
+                                                              const std::string&)>& set) {
   for (std::size_t k = 0; k < args.size(); ++k) {
     std::string flag = args[k], value;
     bool has_value = false;
@@ -74,12 +76,14 @@ std::string apply_lab_options(rigid::explore::Explorer& explorer,
       has_value = true;
     }
     const std::size_t i = s.find(flag);
-    if (i >= s.input_count()) return flag + ": " + s.name() + " has no such option";
+    if (i >= s.input_count()) {
+      return flag + ": not an input of " + s.name() + " (the explorer takes the lab's inputs)";
+    }
     if (!has_value && s.rule(i).kind() != rigid::lab::InputKind::kFlag) {
       if (k + 1 >= args.size()) return flag + ": needs a value";
       value = args[++k];
     }
-    if (std::string why = explorer.set_text(flag, value); !why.empty()) return why;
+    if (std::string why = set(flag, value); !why.empty()) return why;
   }
   return "";
 }
@@ -121,6 +125,19 @@ int main(int argc, char** argv) {
       return fail("--size",
                   "must be WxH with 640 <= W <= 8192 and 400 <= H <= 8192 (got '" + size + "')");
     }
+  }
+  // The lab's inputs checked before any window opens: bad input is exit 2 anywhere.
+  {
+    std::unique_ptr<rigid::lab::Session> check;
+    for (const auto& l : labs) {
+      if (l.name == lab) check = l.make();
+    }
+    const std::string why = apply_lab_options(
+        *check, app.remaining(), [&check](const std::string& flag, const std::string& text) {
+          const auto refusal = check->set_text(check->find(flag), text);
+          return refusal ? refusal->message : std::string();
+        });
+    if (!why.empty()) return fail("", why);
   }
   std::unique_ptr<rigid::explore::Script> script;
   if (!script_path.empty()) {
@@ -193,7 +210,12 @@ int main(int argc, char** argv) {
       return img;
     };
     rigid::explore::Explorer explorer(std::move(labs), lab, hooks);
-    if (const std::string why = apply_lab_options(explorer, app.remaining()); !why.empty()) {
+    const std::string why = apply_lab_options(
+        explorer.session(), app.remaining(),
+        [&explorer](const std::string& flag, const std::string& text) {
+          return explorer.set_text(flag, text);
+        });
+    if (!why.empty()) {
       status = fail("", why);
     } else {
       if (script) explorer.run(std::move(script));
@@ -226,6 +248,11 @@ int main(int argc, char** argv) {
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         explorer.after_render();
         glfwSwapBuffers(window);
+        // A display without vertical sync (Xvfb, some drivers) would let a playing motion
+        // take every cycle: frames are paced to 60 a second (a script runs unpaced).
+        if (!explorer.scripted()) {
+          std::this_thread::sleep_until(now + std::chrono::microseconds(16667));
+        }
       }
       status = explorer.status();
     }

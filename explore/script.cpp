@@ -10,7 +10,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/writers.h"
 #include "explorer.h"
 #include "rigid/support/text.h"
 
@@ -244,9 +243,7 @@ bool Script::step(Explorer& e) {
     } else if (op == "print-command") {
       std::cout << e.command_line() << std::endl;
     } else if (op == "print-json") {
-      std::ostringstream text;
-      lab::write_json(text, e.session_->report(), lab::RunOutputs{}, RIGID_VERSION);
-      std::cout << text.str() << std::flush;
+      std::cout << e.json_text() << std::flush;
     } else if (op == "quit") {
       next_ = commands_.size();
       return false;

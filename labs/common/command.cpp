@@ -25,6 +25,7 @@
 #include "rigid/render/draw.h"
 #include "rigid/render/video.h"
 #include "rigid/support/progress.h"
+#include "rigid/support/programs.h"
 #include "rigid/support/text.h"
 #endif
 
@@ -99,6 +100,7 @@ class Command {
   Command(const std::string& name, const std::string& title, const std::vector<BoundInput>& inputs,
           bool csv, bool animation);
   int run(int argc, char** argv, const std::function<Computed()>& compute);
+  int explore(int argc, char** argv, int at) const;
   /// `status`, or 1 with one line on stderr if what went to stdout did not arrive.
   int stdout_written(int status) const;
 
@@ -146,6 +148,9 @@ Command::Command(const std::string& name, const std::string& title,
       animation_enabled_(animation) {
   app_.add_flag("--json", json_, "print one JSON object on stdout instead of the table");
   app_.add_flag("--quiet", quiet_, "print no table (files are still written)");
+  // taken before parsing (run()): the other options are the explorer's to check
+  app_.add_flag("--explore",
+                "open this lab live in a window with the inputs given (rigidlab-explore)");
   app_.add_flag("--timing", timing_,
                 "with --json: the wall time of each figure and where it went, for bench/");
   app_.add_option("--figures", figures_dir_, "write this lab's PNG figures into DIR")
@@ -521,7 +526,30 @@ int Command::stdout_written(int status) const {
   return status;
 }
 
+// LAB --explore ...: the explorer opens the lab with the other options as its inputs.
+int Command::explore(int argc, char** argv, int at) const {
+  const fs::path path = support::explorer_path();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    std::cerr << name_
+              << ": error: --explore: this build has no explorer (it is built where "
+                 "libglfw3-dev and libimgui-dev are installed)\n";
+    return 2;
+  }
+  std::vector<std::string> args{"rigidlab-explore", name_};
+  for (int k = 1; k < argc; ++k) {
+    if (k != at) args.emplace_back(argv[k]);
+  }
+  const std::string why = support::exec(path, args);
+  std::cerr << name_ << ": error: --explore: cannot run "
+            << support::terminal_safe(path.string()) << " (" << why << ")\n";
+  return 1;
+}
+
 int Command::run(int argc, char** argv, const std::function<Computed()>& compute) {
+  for (int k = 1; k < argc; ++k) {
+    if (std::strcmp(argv[k], "--explore") == 0) return explore(argc, argv, k);
+  }
   // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   const Report* report = nullptr;

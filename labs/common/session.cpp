@@ -24,6 +24,23 @@ bool Session::at_textbook() const {
   return true;
 }
 
+SliderSpan slider_span(const InputRule& r, double textbook) {
+  const double d = std::abs(textbook);
+  switch (r.bound()) {
+    case InputRule::Bound::kOpenRange:
+    case InputRule::Bound::kRangeFrom:
+      return {r.lo(), r.hi(), false};
+    case InputRule::Bound::kPositive:
+      return d > 0 ? SliderSpan{d / 10, d * 10, true} : SliderSpan{1e-3, 1.0, true};
+    case InputRule::Bound::kNonNegative:
+      return {0.0, d > 0 ? 10 * d : 1.0, false};
+    case InputRule::Bound::kFinite:
+      break;
+  }
+  if (r.unit_text() == "deg") return {-180.0, 180.0, false};
+  return d > 0 ? SliderSpan{-10 * d, 10 * d, false} : SliderSpan{-1.0, 1.0, false};
+}
+
 std::string argument_text(const InputValue& value) {
   // "{}" is the shortest text that reads back as the same double
   struct Text {
@@ -102,6 +119,15 @@ std::variant<InputValue, std::string> parse_input(const InputRule& rule, const s
       return "is a switch: on or off (got '" + quoted_text(text) + "')";
   }
   return std::string("cannot be read");
+}
+
+std::optional<Refusal> Session::set_text(std::size_t i, const std::string& text) {
+  const InputRule& r = rule(i);
+  const auto parsed = parse_input(r, text);
+  if (const auto* why = std::get_if<std::string>(&parsed)) {
+    return Refusal{r.flag() + ": " + *why, {r.flag()}};
+  }
+  return set(i, std::get<InputValue>(parsed));
 }
 
 std::vector<std::string> Session::arguments() const {

@@ -59,6 +59,9 @@ class Session {
   /// Sets input i and computes. Refused (the state unchanged) when the value breaks its
   /// rule, or the inputs together break one of the lab's.
   virtual std::optional<Refusal> set(std::size_t i, const InputValue& value) = 0;
+  /// Sets input i from its text, as typed in a field or given on the command line
+  /// (parse_input), and computes; refused as set() is, or when the text is not a value.
+  std::optional<Refusal> set_text(std::size_t i, const std::string& text);
   /// Back to the textbook's example.
   virtual void reset() = 0;
   /// Whether every input is the textbook's (numerical ones too).
@@ -77,6 +80,14 @@ class Session {
   /// textbook's, as `--option=value` (numbers to their last digit).
   std::vector<std::string> arguments() const;
 };
+
+/// A slider's span for a number input: its rule's range, or about its textbook value
+/// (logarithmic for a positive one, a decade either side).
+struct SliderSpan {
+  double lo = 0, hi = 1;
+  bool log = false;
+};
+SliderSpan slider_span(const InputRule& rule, double textbook);
 
 /// An input's value as the command line takes it: "2", "1,2,3", a word; "" for a switch.
 std::string argument_text(const InputValue& value);

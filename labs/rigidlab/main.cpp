@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/support/programs.h"
 #include "rigid/support/text.h"
 
 namespace fs = std::filesystem;
@@ -46,15 +47,9 @@ bool is_lab(const std::string& name) {
   return false;
 }
 
-// The directory this executable lives in: the labs are beside it.
-fs::path own_directory() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::current_path() : self.parent_path();
-}
-
+// The labs are beside this executable.
 fs::path lab_path(const std::string& lab) {
-  return own_directory() / lab;
+  return rigid::support::own_directory() / lab;
 }
 
 // A lab's title: the first line of its --help, read from the lab run directly (no
@@ -368,6 +363,7 @@ void usage(std::ostream& os) {
      << "  rigidlab LAB [options]         run a lab (rigidlab LAB --help for its options)\n"
      << "  rigidlab figures --out DIR [--figure-size WxH] [--figure-prefix P]\n"
      << "                                 every lab's figures into DIR\n"
+     << "  rigidlab explore [LAB] [options]  a lab live in a window (rigidlab-explore --help)\n"
      << "  rigidlab --version             the version\n";
 }
 
@@ -416,6 +412,21 @@ int run(int argc, char** argv) {
       return 2;
     }
     return figures(out, size, prefix);
+  }
+  if (command == "explore") {
+    const fs::path path = rigid::support::explorer_path();
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+      std::cerr << "rigidlab: error: explore: this build has no explorer (it is built where "
+                   "libglfw3-dev and libimgui-dev are installed)\n";
+      return 2;
+    }
+    std::vector<std::string> explore_args{"rigidlab-explore"};
+    explore_args.insert(explore_args.end(), args.begin() + 1, args.end());
+    const std::string why = rigid::support::exec(path, explore_args);
+    std::cerr << "rigidlab: error: explore: cannot run "
+              << rigid::support::terminal_safe(path.string()) << " (" << why << ")\n";
+    return 1;
   }
   if (is_lab(command)) {
     const std::string path = lab_path(command).string();
