@@ -166,8 +166,12 @@ void Explorer::run(std::unique_ptr<Script> script) {
   playing_ = false;
 }
 
+bool Explorer::scripted() const {
+  return script_ != nullptr && !script_->waiting();
+}
+
 bool Explorer::animating() const {
-  return playing_ || script_ != nullptr || recording_ != nullptr;
+  return playing_ || script_ != nullptr || recording_ != nullptr || session_->pending();
 }
 
 void Explorer::say(const std::string& text, bool error) {
@@ -183,6 +187,8 @@ void Explorer::frame(double seconds) {
     seconds = kScriptFrameSeconds;
     step_script();
   }
+  // the whole report, if it has come (the numbers and plots follow it)
+  session_->poll();
   ImGuiIO& io = ImGui::GetIO();
   const lab::Animation* motion = session_->animation();
   if (motion != nullptr && playing_) {
@@ -401,6 +407,15 @@ void Explorer::numbers_panel() {
   ImGui::TextColored(kHeadingColor, "%s", report.lab().c_str());
   ImGui::SameLine();
   ImGui::TextColored(kDimColor, report.textbook_inputs() ? "the text's values beside" : "");
+  if (session_->pending()) {
+    ImGui::TextColored(kDimColor, "comparing every method with the exact motion ...");
+  }
+  if (!session_->whole_error().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kRuleColor);
+    ImGui::TextWrapped("the command line refuses these inputs: %s",
+                       support::terminal_safe(session_->whole_error()).c_str());
+    ImGui::PopStyleColor();
+  }
   for (const std::string& w : report.warnings()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrataColor);
     ImGui::TextWrapped("%s", support::terminal_safe(w).c_str());
@@ -412,8 +427,8 @@ void Explorer::numbers_panel() {
                                  ImGui::GetTextLineHeightWithSpacing() *
                                      (1.0f + 2.5f * static_cast<float>(report.notes().size())));
   ImGui::BeginChild("rows", ImVec2(0, -notes_h));
-  constexpr ImGuiTableFlags kTable = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp |
-                                     ImGuiTableFlags_BordersInnerH;
+  constexpr ImGuiTableFlags kTable =
+      ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerH;
   bool open = false;
   int table = 0;
   const auto begin_table = [&] {
@@ -776,6 +791,7 @@ void Explorer::export_section() {
 }
 
 std::string Explorer::json_text() const {
+  session_->wait();  // the numbers the command line prints, the whole report's
   // the command line that reproduces it, as the command's own JSON names its argv
   lab::RunOutputs outputs;
   outputs.command.push_back(session_->name());
@@ -792,6 +808,7 @@ std::string Explorer::command_line() const {
 }
 
 std::string Explorer::save_figure(const std::string& name, const std::string& path, int w, int h) {
+  session_->wait();  // the figure the command line draws, from the whole report
   const lab::NamedFigure* f = figure_named(*session_, name);
   if (f == nullptr) return "save-figure: " + session_->name() + " has no figure named " + name;
   try {
@@ -826,6 +843,7 @@ std::string Explorer::export_json(const std::string& path) {
 }
 
 std::string Explorer::export_csv(const std::string& path) {
+  session_->wait();
   const lab::TimeSeries& series = session_->report().time_series();
   if (series.columns.empty()) return "this run has no time series";
   const std::string s = lab::csv_text(series);

@@ -15,20 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "common/session.h"
+#include "common/registry.h"
 #include "orbit.h"
 #include "rigid/render/live.h"
 
 namespace rigid::explore {
 
-/// A lab the explorer offers.
-struct LabEntry {
-  std::string name;
-  std::function<std::unique_ptr<lab::Session>()> make;
-};
-
-/// Every lab, in section order (generated from the build's list of labs).
-std::vector<LabEntry> all_labs();
+using lab::LabEntry;
 
 class Script;
 
@@ -64,8 +57,8 @@ class Explorer {
   /// Whether the next frame must come without waiting for an event (playing, a script,
   /// a recording under way).
   bool animating() const;
-  /// Whether a script runs (its frames are not paced to the display).
-  bool scripted() const { return script_ != nullptr; }
+  /// Whether a script runs, not waiting (its frames are not paced to the display).
+  bool scripted() const;
   /// The exit status once the window has closed: 0, or what a failed script asks.
   int status() const { return status_; }
 

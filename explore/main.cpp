@@ -64,9 +64,9 @@ int fail(const std::string& option, const std::string& rule) {
 
 // The lab's options as on its command line ("--flag value", "--flag=value", "--switch"),
 // each handed to `set` (flag, text); the first refusal, or "".
-std::string apply_lab_options(const rigid::lab::Session& s, const std::vector<std::string>& args,
-                              const std::function<std::string(const std::string&,
-                                                              const std::string&)>& set) {
+std::string apply_lab_options(
+    const rigid::lab::Session& s, const std::vector<std::string>& args,
+    const std::function<std::string(const std::string&, const std::string&)>& set) {
   for (std::size_t k = 0; k < args.size(); ++k) {
     std::string flag = args[k], value;
     bool has_value = false;
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);
     return fail("", e.what());
   }
-  std::vector<rigid::explore::LabEntry> labs = rigid::explore::all_labs();
+  std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs();
   if (std::none_of(labs.begin(), labs.end(), [&](const auto& l) { return l.name == lab; })) {
     std::string names;
     for (const auto& l : labs) names += (names.empty() ? "" : ", ") + l.name;
@@ -210,11 +210,11 @@ int main(int argc, char** argv) {
       return img;
     };
     rigid::explore::Explorer explorer(std::move(labs), lab, hooks);
-    const std::string why = apply_lab_options(
-        explorer.session(), app.remaining(),
-        [&explorer](const std::string& flag, const std::string& text) {
-          return explorer.set_text(flag, text);
-        });
+    const std::string why =
+        apply_lab_options(explorer.session(), app.remaining(),
+                          [&explorer](const std::string& flag, const std::string& text) {
+                            return explorer.set_text(flag, text);
+                          });
     if (!why.empty()) {
       status = fail("", why);
     } else {

@@ -2,6 +2,7 @@
 #include "script.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -126,6 +127,7 @@ Script Script::parse(const std::string& text, const std::string& path) {
         if (words[0] == "frames" && x > 100000)
           throw std::invalid_argument("frames: at most 100000");
         if (words[0] == "play" && x > 3600) throw std::invalid_argument("play: at most 3600 s");
+        if (words[0] == "wait" && x > 600) throw std::invalid_argument("wait: at most 600 s");
       }
       if (words[0] == "turn") {
         number_word(words[1], "turn's first angle");
@@ -144,6 +146,10 @@ void Script::report(const Command& c, const std::string& error) {
 }
 
 bool Script::step(Explorer& e) {
+  if (wait_until_) {
+    if (std::chrono::steady_clock::now() < *wait_until_) return true;
+    wait_until_.reset();
+  }
   if (frames_left_ > 0) {
     --frames_left_;
     if (frames_left_ == 0) e.playing_ = false;
@@ -183,15 +189,14 @@ bool Script::step(Explorer& e) {
       e.open(w[1]);
       e.playing_ = false;
     } else if (op == "play") {
-      const lab::Animation* motion = e.session_->animation();
-      if (motion == nullptr) {
-        report(c, "play: " + e.session_->name() + " has no motion");
-        failed_ = true;
-      } else {
-        e.playing_ = true;
-        frames_left_ = static_cast<int>(std::lround(std::stod(w[1]) / (e.speed_ / 30.0)));
-        if (frames_left_ == 0) e.playing_ = false;
-      }
+      // a lab without motion draws the frames all the same
+      e.playing_ = e.session_->animation() != nullptr;
+      frames_left_ = static_cast<int>(std::lround(std::stod(w[1]) / (e.speed_ / 30.0)));
+      if (frames_left_ == 0) e.playing_ = false;
+    } else if (op == "wait") {
+      wait_until_ = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(std::stod(w[1])));
     } else if (op == "pause") {
       e.playing_ = false;
     } else if (op == "seek") {

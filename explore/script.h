@@ -6,11 +6,13 @@
 //   unset --spin              an optional input back to the lab's default
 //   textbook                  the text's example
 //   lab top_nutation          another lab
-//   play 2.5                  plays 2.5 s of the motion (frames of 1/30 s at the speed set)
+//   play 2.5                  plays 2.5 s of the motion (frames of 1/30 s at the speed set);
+//                             a lab without motion draws as many frames
 //   seek 1.2 | speed 2 | pause
 //   turn 30 -10 | zoom 1.5 | reset-view      the view: degrees right and up, a factor
 //   show-scene NAME|motion | show-plot NAME|strip
 //   frames 3                  draws 3 frames
+//   wait 5                    5 s of wall time, the window live (a person or xdotool acts)
 //   screenshot FILE           the window as a PNG
 //   save-figure NAME FILE [WxH]   a figure of the lab, as its --figures writes it
 //   save-view FILE [WxH]      the scene as shown (time, view) at a size
@@ -22,6 +24,8 @@
 // count of words is one line naming the file, the line and the rule, exit 2.
 #pragma once
 
+#include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +42,8 @@ class Script {
 
   /// Runs the next command (or continues a long one); false once the script is done.
   bool step(Explorer& explorer);
+  /// Whether a `wait` is under way.
+  bool waiting() const { return wait_until_.has_value(); }
   /// Whether a refusal or a failed export happened (the exit status is then 1).
   bool failed() const { return failed_; }
 
@@ -51,6 +57,7 @@ class Script {
   std::vector<Command> commands_;
   std::size_t next_ = 0;
   int frames_left_ = 0;  // of a `play` or `frames` under way
+  std::optional<std::chrono::steady_clock::time_point> wait_until_;  // of a `wait`
   bool failed_ = false;
 };
 

@@ -24,8 +24,8 @@
 #include "rigid/render/context.h"
 #include "rigid/render/draw.h"
 #include "rigid/render/video.h"
-#include "rigid/support/progress.h"
 #include "rigid/support/programs.h"
+#include "rigid/support/progress.h"
 #include "rigid/support/text.h"
 #endif
 
@@ -541,8 +541,8 @@ int Command::explore(int argc, char** argv, int at) const {
     if (k != at) args.emplace_back(argv[k]);
   }
   const std::string why = support::exec(path, args);
-  std::cerr << name_ << ": error: --explore: cannot run "
-            << support::terminal_safe(path.string()) << " (" << why << ")\n";
+  std::cerr << name_ << ": error: --explore: cannot run " << support::terminal_safe(path.string())
+            << " (" << why << ")\n";
   return 1;
 }
 

@@ -46,6 +46,10 @@ struct IntegrationInputs {
   double tolerance = 1e-10;
   std::optional<double> step;  ///< the lab's default step unless set
   bool project = false;
+  /// Compare every method with the exact motion (not an option: the command line always
+  /// does). A live view's first look at new inputs leaves it out, as it is the one slow
+  /// part (LabProgram::preview), and shows it when it is done.
+  bool compare = true;
 };
 
 /// The table of the numerical inputs: --method, --tolerance, --step (whose default

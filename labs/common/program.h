@@ -24,6 +24,10 @@ struct LabProgram {
   /// animation will ask for, at which an integrated motion is best sampled.
   Animation (*animation)(const Rep&, const FrameTimes& frame_times) = nullptr;
   bool csv = false;  ///< the lab writes a time series with --csv
+  /// What a live view computes first when the inputs change, if the whole compute can
+  /// take long: the inputs with the slow part left out (nullptr: nothing is slow). The
+  /// whole report follows when it is done (session.h).
+  void (*preview)(In&) = nullptr;
 };
 
 }  // namespace rigid::lab

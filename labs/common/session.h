@@ -5,11 +5,18 @@
 // for every lab (the explorer holds any of them), and no GL, files or windows:
 // the tests drive it in-process.
 //
+// A lab whose whole compute can take long (every integrator compared with the exact
+// motion: LabProgram::preview) is computed in two steps: at once without the slow
+// part, which a view shows at the next frame, then whole on a second thread; poll()
+// takes the whole report in when it is done, if the inputs are still the same.
+//
 //   std::unique_ptr<Session> s = make_session(poinsot::program());
 //   if (std::string why = s->set(s->find("--mass"), -1.0); !why.empty()) show(why);
 //   draw(s->animation()->scene(t));
 #pragma once
 
+#include <chrono>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,8 +80,18 @@ class Session {
   virtual const std::vector<NamedFigure>& figures() const = 0;
   /// Its motion (made on first asking after a change), or nullptr for a lab without one.
   virtual const Animation* animation() const = 0;
-  /// How many times the inputs have changed (a view redraws when this moves).
+  /// How many times what is shown has changed (a view redraws when this moves).
   virtual long generation() const = 0;
+
+  /// Whether the whole report is still being computed (the report is the preview's).
+  virtual bool pending() const = 0;
+  /// Takes the whole report in if it is done; true if it was.
+  virtual bool poll() = 0;
+  /// Waits for the whole report (an export writes what the command line would).
+  virtual void wait() = 0;
+  /// Why the whole report could not be computed for the inputs shown ("" if it could):
+  /// the command line refuses them, though their preview computed.
+  virtual const std::string& whole_error() const = 0;
 
   /// The lab's arguments that reproduce the current state: every input that is not the
   /// textbook's, as `--option=value` (numbers to their last digit).
@@ -102,7 +119,10 @@ namespace detail {
 template <class In, class Rep>
 class ProgramSession final : public Session {
  public:
-  explicit ProgramSession(LabProgram<In, Rep> lab) : lab_(std::move(lab)) { compute(In{}); }
+  explicit ProgramSession(LabProgram<In, Rep> lab) : lab_(std::move(lab)) {
+    compute(In{});
+    wait();
+  }
 
   const std::string& name() const override { return lab_.name; }
   const std::string& title() const override { return lab_.title; }
@@ -133,6 +153,22 @@ class ProgramSession final : public Session {
   }
 
   void reset() override { compute(In{}); }
+
+  bool pending() const override { return whole_.valid(); }
+
+  bool poll() override {
+    if (!whole_.valid() || whole_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      return false;
+    }
+    take_whole();
+    return true;
+  }
+
+  void wait() override {
+    while (whole_.valid()) take_whole();
+  }
+
+  const std::string& whole_error() const override { return whole_error_; }
 
   const Report& report() const override { return *report_; }
 
@@ -177,14 +213,58 @@ class ProgramSession final : public Session {
 
   const std::vector<InputField<In>>& fields() const { return lab_.inputs.fields(); }
 
-  // Computes `next`; only if that succeeds does it become the state.
+  // Computes `next` (its preview, if the lab has one, and the whole on a second thread);
+  // only if that succeeds does it become the state.
   void compute(const In& next) {
-    auto report = std::make_shared<Rep>(lab_.compute(next));
+    In quick = next;
+    if (lab_.preview != nullptr) lab_.preview(quick);
+    auto report = std::make_shared<Rep>(lab_.compute(quick));
     in_ = next;
+    show(std::move(report));
+    whole_error_.clear();
+    if (lab_.preview != nullptr && !whole_.valid()) start_whole();
+  }
+
+  void show(std::shared_ptr<const Rep> report) {
     report_ = std::move(report);
     figures_.reset();
     animation_.reset();
     ++generation_;
+  }
+
+  void start_whole() {
+    whole_in_ = in_;
+    whole_ = std::async(std::launch::async, [compute = lab_.compute, in = in_] {
+      return std::make_shared<const Rep>(compute(in));
+    });
+  }
+
+  // Waits for the whole report under way and takes it if its inputs are still the
+  // state's; else starts the whole report of the state's.
+  void take_whole() {
+    std::shared_ptr<const Rep> whole;
+    std::string error;
+    try {
+      whole = whole_.get();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    if (!same_inputs(whole_in_, in_)) {
+      start_whole();
+      return;
+    }
+    if (whole) {
+      show(std::move(whole));
+    } else {
+      whole_error_ = error;
+    }
+  }
+
+  bool same_inputs(const In& a, const In& b) const {
+    for (const InputField<In>& f : fields()) {
+      if (!(f.get(a) == f.get(b))) return false;
+    }
+    return true;
   }
 
   LabProgram<In, Rep> lab_;
@@ -193,6 +273,9 @@ class ProgramSession final : public Session {
   mutable std::optional<std::vector<NamedFigure>> figures_;
   mutable std::optional<Animation> animation_;
   long generation_ = 0;
+  std::future<std::shared_ptr<const Rep>> whole_;  // the whole report, under way
+  In whole_in_{};
+  std::string whole_error_;
 };
 
 }  // namespace detail

@@ -188,8 +188,10 @@ Report compute(const Inputs& in) {
   // Every method at --step and --tolerance, and "which method drifts" answered at
   // equal cost, over enough periods for a symplectic method's bounded band to tell
   // from a steady drift.
-  report.comparisons =
-      compare_every_method(report, problem, exact, plan, scale, true, free_body_words());
+  if (in.integration.compare) {
+    report.comparisons =
+        compare_every_method(report, problem, exact, plan, scale, true, free_body_words());
+  }
 
   report_ellipsoids(report, regime);
   report_text_example(report);
@@ -208,7 +210,14 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/true};
+  return {kName,
+          kTitle,
+          input_table(),
+          compute,
+          figures,
+          animation,
+          /*csv=*/true,
+          /*preview=*/[](Inputs& in) { in.integration.compare = false; }};
 }
 
 }  // namespace rigid::lab::poinsot

@@ -222,6 +222,8 @@ void figures(const Report& report, FigureSink& sink) {
   // A sleeping top has no comparison at equal cost: the one at the lab's settings.
   const MethodComparisons& compared = report.comparisons;
   const bool equal_cost = !compared.at_cost.empty();
+  // (a live view's first look at new inputs has not compared the methods yet)
+  if (compared.at_settings.empty() && !equal_cost) return;
   const double evaluations = kEqualCostEvaluations;
   sink.add(
       "integrators",

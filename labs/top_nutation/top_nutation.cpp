@@ -299,8 +299,10 @@ Report compute(const Inputs& in) {
   // "Which method drifts" at equal cost too: a sleeping top has no nutation to count
   // periods by, nor anything to drift through.
   const bool at_cost = !sleeping && std::isfinite(motion.nutation_period());
-  report.comparisons =
-      compare_every_method(report, problem, motion, plan, report.scale, at_cost, top_words());
+  if (in.integration.compare) {
+    report.comparisons =
+        compare_every_method(report, problem, motion, plan, report.scale, at_cost, top_words());
+  }
   report_errata(report, S, theta0);
 
   TimeSeries series{{"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw",
@@ -316,7 +318,14 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/true};
+  return {kName,
+          kTitle,
+          input_table(),
+          compute,
+          figures,
+          animation,
+          /*csv=*/true,
+          /*preview=*/[](Inputs& in) { in.integration.compare = false; }};
 }
 
 }  // namespace rigid::lab::top_nutation
