@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -28,7 +29,9 @@
 namespace {
 
 using rigid::support::terminal_safe;
-constexpr const char* kName = "rigidlab-explore";
+// The name its messages go by: its own, or the lab's when a lab's --explore ran it.
+std::string g_name = "rigidlab-explore";
+std::string g_glfw_error = "GLFW gave no reason";
 
 // The few GL calls the loop makes itself, from the window's context.
 struct WindowGl {
@@ -57,7 +60,7 @@ struct WindowGl {
 };
 
 int fail(const std::string& option, const std::string& rule) {
-  std::cerr << kName << ": error: " << terminal_safe(option.empty() ? rule : option + ": " + rule)
+  std::cerr << g_name << ": error: " << terminal_safe(option.empty() ? rule : option + ": " + rule)
             << '\n';
   return 2;
 }
@@ -77,7 +80,7 @@ std::string apply_lab_options(
     }
     const std::size_t i = s.find(flag);
     if (i >= s.input_count()) {
-      return flag + ": not an input of " + s.name() + " (the explorer takes the lab's inputs)";
+      return flag + ": not an input of " + s.name() + " (the explorer takes only the lab's inputs)";
     }
     if (!has_value && s.rule(i).kind() != rigid::lab::InputKind::kFlag) {
       if (k + 1 >= args.size()) return flag + ": needs a value";
@@ -91,18 +94,19 @@ std::string apply_lab_options(
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 0 && argv[0][0] != '\0') g_name = std::filesystem::path(argv[0]).filename().string();
   CLI::App app(
       "rigidlab-explore: a lab live in a window: its inputs as sliders and fields, its scene "
       "turned with the mouse, its motion played, its numbers and plots recomputed on every "
       "change. Any other options are the lab's own (see LAB --help).",
-      kName);
+      "rigidlab-explore");
   std::string lab = "top_nutation", script_path, size = "1280x720";
   app.add_option("lab", lab, "the lab to open (rigidlab list names them)")->capture_default_str();
   app.add_option("--script", script_path,
                  "run the commands of FILE, one a frame, then close (see the man page)")
       ->type_name("FILE");
   app.add_option("--size", size, "the window's size in pixels")->capture_default_str();
-  app.set_version_flag("--version", std::string(kName) + " " + RIGID_VERSION);
+  app.set_version_flag("--version", std::string("rigidlab-explore ") + RIGID_VERSION);
   app.allow_extras();
   app.positionals_at_end(false);
   try {
@@ -148,12 +152,11 @@ int main(int argc, char** argv) {
     }
   }
 
-  glfwSetErrorCallback([](int, const char* what) {
-    std::cerr << kName << ": GLFW: " << terminal_safe(what) << '\n';
-  });
+  // GLFW's own words on a failure, said in the one line that reports it
+  glfwSetErrorCallback([](int, const char* what) { g_glfw_error = what; });
   if (!glfwInit()) {
-    std::cerr << kName << ": error: no window can be opened (is there a display? "
-              << "headless: xvfb-run -a rigidlab-explore ...)\n";
+    std::cerr << g_name << ": error: no window can be opened (" << terminal_safe(g_glfw_error)
+              << "; headless: xvfb-run -a rigidlab-explore ...)\n";
     return 1;
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
@@ -163,7 +166,8 @@ int main(int argc, char** argv) {
   const std::string title = "rigidlab explore: " + lab;
   GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (window == nullptr) {
-    std::cerr << kName << ": error: no OpenGL 3.3 window could be made\n";
+    std::cerr << g_name << ": error: no OpenGL 3.3 window could be made ("
+              << terminal_safe(g_glfw_error) << ")\n";
     glfwTerminate();
     return 1;
   }
@@ -260,7 +264,7 @@ int main(int argc, char** argv) {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
   } catch (const std::exception& e) {
-    std::cerr << kName << ": error: " << terminal_safe(e.what()) << '\n';
+    std::cerr << g_name << ": error: " << terminal_safe(e.what()) << '\n';
     status = 1;
   }
   glfwDestroyWindow(window);

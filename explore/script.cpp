@@ -31,7 +31,7 @@ const std::map<std::string, Arity>& commands() {
       {"show-plot", {1, 1}},   {"frames", {1, 1}},     {"screenshot", {1, 1}},
       {"save-figure", {2, 3}}, {"save-view", {1, 2}},  {"export-json", {1, 1}},
       {"export-csv", {1, 1}},  {"record", {1, 1}},     {"print-command", {0, 0}},
-      {"print-json", {0, 0}},  {"quit", {0, 0}},
+      {"print-json", {0, 0}},  {"wait", {1, 1}},       {"quit", {0, 0}},
   };
   return table;
 }

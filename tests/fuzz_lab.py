@@ -53,8 +53,10 @@ def options_of(lab):
         name, kind, default, count, rest = (m.group(1), m.group(2) or "", m.group(3), m.group(4),
                                             m.group(5))
         if name in ("--help", "--version", "--figures", "--figure-size", "--figure-prefix", "--timing",
-                    "--animate"):
-            continue  # drawing is covered by the figure and animation tests; here only the contract
+                    "--animate", "--explore"):
+            # drawing is covered by the figure and animation tests, the window (--explore) by
+            # the explorer's; here only the contract
+            continue
         if kind.startswith("NUMBER") or kind.startswith("WORD") or kind.startswith("FILE"):
             kind = kind.split("=")[0]
         choices = []

@@ -536,7 +536,8 @@ int Command::explore(int argc, char** argv, int at) const {
                  "libglfw3-dev and libimgui-dev are installed)\n";
     return 2;
   }
-  std::vector<std::string> args{"rigidlab-explore", name_};
+  // named as the lab, so that its messages ("LAB: error: ...") read as the lab's
+  std::vector<std::string> args{name_, name_};
   for (int k = 1; k < argc; ++k) {
     if (k != at) args.emplace_back(argv[k]);
   }

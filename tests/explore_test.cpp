@@ -1,0 +1,304 @@
+// The explorer as a student and an instructor meet it, under Xvfb (ctest runs this
+// program inside xvfb-run): a scripted session of every lab saves the figure the
+// command line draws and the numbers its JSON prints, and the command it copies
+// reproduces them; a value that breaks a rule shows the rule and the view stays the
+// last valid one; real mouse input (xdotool) moves a slider and turns the view; bad
+// options are one line and exit 2, before any window opens.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "common/registry.h"
+#include "image_match.h"
+#include "lab_common.h"
+#include "rigid/render/png.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using rigid::test::Run;
+
+namespace {
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(RIGID_BINARY_DIR) / "explore-test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Runs the explorer with `args` (and `script`, if any, as its --script file in `dir`).
+Run run_explorer(const std::string& args, const std::string& script = "",
+                 const fs::path& dir = fs::temp_directory_path()) {
+  std::string command = std::string(RIGID_EXPLORER) + " " + args;
+  if (!script.empty()) {
+    const fs::path file = dir / "session.txt";
+    std::ofstream(file) << script;
+    command += " --script " + file.string();
+  }
+  const fs::path err_file = dir / ("explorer-" + std::to_string(::getpid()) + ".err");
+  command += " 2>" + err_file.string();
+  Run run;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = read_file(err_file);
+  fs::remove(err_file);
+  return run;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// One change a student might make to a lab: its first number input moved along its
+// slider, else another choice of its first choice input; as the flag and its text.
+std::pair<std::string, std::string> a_change(rigid::lab::Session& s) {
+  for (std::size_t i = 0; i < s.input_count(); ++i) {
+    const auto& rule = s.rule(i);
+    const auto value = s.value(i);
+    if (rule.kind() != rigid::lab::InputKind::kNumber || !rule.physical() ||
+        !std::holds_alternative<double>(value)) {
+      continue;
+    }
+    for (double factor : {1.25, 0.8, 1.5}) {
+      const std::string text = rigid::lab::argument_text(std::get<double>(value) * factor);
+      if (!s.set_text(i, text)) return {rule.flag(), text};
+    }
+  }
+  for (std::size_t i = 0; i < s.input_count(); ++i) {
+    const auto& rule = s.rule(i);
+    if (rule.kind() != rigid::lab::InputKind::kChoice) continue;
+    for (const std::string& c : rule.choices()) {
+      if (!(s.value(i) == rigid::lab::InputValue(c)) && !s.set_text(i, c)) return {rule.flag(), c};
+    }
+  }
+  FAIL("no input of " << s.name() << " to change");
+  return {};
+}
+
+// Pixels of `img` inside [x0, x1) x [y0, y1) that are not the background's white.
+long drawn_pixels(const rigid::render::Image& img, int x0, int y0, int x1, int y1) {
+  long n = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* p = img.at(x, y);
+      if (p[0] < 200 || p[1] < 200 || p[2] < 200) ++n;
+    }
+  }
+  return n;
+}
+
+// The explorer's layout at 1280x720 (explorer.cpp): inputs on the left 340 px, numbers
+// on the right 390 px, the scene between them above the time bar.
+constexpr int kSceneX0 = 340, kSceneX1 = 1280 - 390, kSceneY1 = 400;
+
+void check_scripted_session(const std::string& lab) {
+  auto session = [&] {
+    for (const auto& e : rigid::lab::all_labs()) {
+      if (e.name == lab) return e.make();
+    }
+    return std::unique_ptr<rigid::lab::Session>();
+  }();
+  REQUIRE(session);
+  const auto [flag, value] = a_change(*session);
+  session->wait();
+  REQUIRE(!session->figures().empty());
+  const std::string figure = session->figures().front().name;
+  const fs::path dir = fresh_dir(lab);
+  std::string script = "set " + flag + " " + value +
+                       "\n"
+                       "play 0.5\n"
+                       "turn 25 10\n"
+                       "zoom 1.2\n"
+                       "frames 2\n"
+                       "screenshot " +
+                       (dir / "shot.png").string() + "\nsave-figure " + figure + " " +
+                       (dir / "explorer.png").string() + " 800x600\nexport-json " +
+                       (dir / "explorer.json").string() + "\n";
+  if (session->has_time_series()) script += "export-csv " + (dir / "explorer.csv").string() + "\n";
+  script += "print-command\nquit\n";
+  const Run run = run_explorer(lab, script, dir);
+  INFO(run.out << run.err);
+  REQUIRE(run.status == 0);
+  const auto lines = lines_of(run.out);
+  REQUIRE(!lines.empty());
+  // the command it copies: the lab and the one input changed
+  const std::string command = lines.back();
+  CHECK(command == lab + " " + flag + "=" + value);
+
+  // that command, run as a process, prints the numbers the explorer exported and draws
+  // the figure it saved
+  std::string cli_args = command.substr(lab.size()) + " --json --figure-size 800x600 --figures " +
+                         (dir / "cli").string();
+  if (session->has_time_series()) cli_args += " --csv " + (dir / "cli.csv").string();
+  const Run cli = rigid::test::run_lab(lab, cli_args);
+  INFO(cli.err);
+  REQUIRE(cli.status == 0);
+  const auto expected = cli.json();
+  const auto shown = nlohmann::json::parse(read_file(dir / "explorer.json"));
+  CHECK(shown["inputs"] == expected["inputs"]);
+  CHECK(shown["results"] == expected["results"]);
+  CHECK(shown["notes"] == expected["notes"]);
+  // and names that command as the command line's JSON names its own argv
+  CHECK(shown["command"] == nlohmann::json({lab, flag + "=" + value}));
+  const auto drawn = rigid::render::read_png((dir / "explorer.png").string());
+  const auto by_cli =
+      rigid::render::read_png((dir / "cli" / (lab + "_" + figure + ".png")).string());
+  CHECK(drawn.width == 800);
+  CHECK(rigid::test::mismatch(drawn, by_cli).empty());
+  if (session->has_time_series()) {
+    CHECK(read_file(dir / "explorer.csv") == read_file(dir / "cli.csv"));
+  }
+  // the window as shown: its size, a scene drawn in the middle
+  const auto shot = rigid::render::read_png((dir / "shot.png").string());
+  CHECK(shot.width == 1280);
+  CHECK(shot.height == 720);
+  CHECK(drawn_pixels(shot, kSceneX0, 0, kSceneX1, kSceneY1) > 2000);
+}
+
+}  // namespace
+
+TEST_CASE("explore: a scripted session saves the command line's figure and numbers") {
+  for (const std::string& lab : rigid::test::all_labs()) {
+    SECTION(lab) {
+      check_scripted_session(lab);
+    }
+  }
+}
+
+TEST_CASE("explore: a typed value that breaks a rule shows the rule and the view stays valid") {
+  const fs::path dir = fresh_dir("refused");
+  const Run run = run_explorer("top_nutation",
+                               "frames 2\n"
+                               "set --mass -1\n"
+                               "set --arm abc\n"
+                               "set --theta0-deg 1e400\n"
+                               "frames 2\n"
+                               "screenshot " +
+                                   (dir / "shot.png").string() + "\nprint-json\nquit\n",
+                               dir);
+  INFO(run.out << run.err);
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("refused: --mass: must be positive (got -1)") != std::string::npos);
+  CHECK(run.out.find("refused: --arm: must be a number (got 'abc')") != std::string::npos);
+  CHECK(run.out.find("refused: --theta0-deg: must be a number (got '1e400')") != std::string::npos);
+  // the numbers are the last valid inputs' (the textbook's), whole and finite
+  const auto json = nlohmann::json::parse(run.out.substr(run.out.find('{')));
+  const Run cli = rigid::test::run_lab("top_nutation", "--json");
+  CHECK(json["results"] == cli.json()["results"]);
+  // the rule is shown in red beside its field, in the inputs panel
+  const auto shot = rigid::render::read_png((dir / "shot.png").string());
+  long red = 0;
+  for (int y = 0; y < shot.height; ++y) {
+    for (int x = 0; x < kSceneX0; ++x) {
+      const std::uint8_t* p = shot.at(x, y);
+      if (p[0] > 150 && p[1] < 90 && p[2] < 90) ++red;
+    }
+  }
+  CHECK(red > 100);
+  CHECK(drawn_pixels(shot, kSceneX0, 0, kSceneX1, kSceneY1) > 2000);
+}
+
+TEST_CASE("explore: real mouse input moves a slider and turns the view (xdotool)") {
+  const fs::path dir = fresh_dir("mouse");
+  const fs::path before = dir / "before.png", after = dir / "after.png";
+  std::ofstream(dir / "session.txt")
+      << "frames 3\nscreenshot " << before.string() << "\nwait 6\nframes 2\nscreenshot "
+      << after.string() << "\nprint-command\nquit\n";
+  const std::string command = std::string(RIGID_EXPLORER) + " top_nutation --script " +
+                              (dir / "session.txt").string() + " >" + (dir / "out.txt").string() +
+                              " 2>&1";
+  pid_t pid = 0;
+  const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+  REQUIRE(::posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) == 0);
+  // the first screenshot says the window is up
+  for (int k = 0; k < 300 && !fs::exists(before); ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  REQUIRE(fs::exists(before));
+  // the mass slider (the first, at y = 144) dragged right, then the scene dragged
+  const std::string xdotool =
+      "W=$(xdotool search --sync --name 'rigidlab explore') && "
+      "xdotool mousemove --window $W 60 144 sleep 0.3 mousedown 1 sleep 0.3 "
+      "mousemove --window $W 120 144 sleep 0.3 mousemove --window $W 150 144 sleep 0.3 "
+      "mouseup 1 sleep 0.3 "
+      "mousemove --window $W 600 250 sleep 0.3 mousedown 1 sleep 0.3 "
+      "mousemove --window $W 650 260 sleep 0.3 mousemove --window $W 700 270 sleep 0.3 "
+      "mouseup 1";
+  CHECK(std::system(xdotool.c_str()) == 0);
+  int status = 0;
+  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  const std::string out = read_file(dir / "out.txt");
+  INFO(out);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  // the slider moved the mass up from the text's 2 kg
+  const auto at = out.find("top_nutation --mass=");
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(out.substr(at + 20)) > 2.0);
+  // and the scene is another picture
+  const auto a = rigid::render::read_png(before.string());
+  const auto b = rigid::render::read_png(after.string());
+  const auto scene_of = [](const rigid::render::Image& img) {
+    rigid::render::Image scene;
+    scene.width = kSceneX1 - kSceneX0;
+    scene.height = kSceneY1;
+    for (int y = 0; y < kSceneY1; ++y) {
+      for (int x = kSceneX0; x < kSceneX1; ++x) {
+        const std::uint8_t* p = img.at(x, y);
+        scene.rgb.insert(scene.rgb.end(), p, p + 3);
+      }
+    }
+    return scene;
+  };
+  CHECK(rigid::render::compare_images(scene_of(a), scene_of(b)).differing_pixels > 1000);
+}
+
+TEST_CASE("explore: bad options are one line and exit 2 before any window opens") {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"nosuch", "LAB: 'nosuch' is not a lab"},
+      {"top_nutation --size 10x10", "--size: must be WxH"},
+      {"top_nutation --mass -1", "--mass: must be positive (got -1)"},
+      {"top_nutation --mass", "--mass: needs a value"},
+      {"top_nutation --json", "--json: not an input of top_nutation"},
+      {"poinsot --inertia 1,1,3", "I1 + I2 >= I3"},
+      {"top_nutation --script /nonexistent/s.txt", "--script: /nonexistent/s.txt: cannot be read"},
+  };
+  for (const auto& [args, says] : cases) {
+    INFO(args);
+    const Run run = run_explorer(args + " </dev/null", "", fs::temp_directory_path());
+    CHECK(run.status == 2);
+    CHECK(run.one_error_line());
+    CHECK(run.err.find(says) != std::string::npos);
+    CHECK(run.out.empty());
+  }
+  // a script's mistakes are found before the window opens, by file and line
+  const fs::path dir = fresh_dir("bad-script");
+  const Run run = run_explorer("poinsot", "frames 2\nfly 3\n", dir);
+  CHECK(run.status == 2);
+  CHECK(run.one_error_line());
+  CHECK(run.err.find("session.txt:2: unknown command 'fly'") != std::string::npos);
+}
