@@ -279,6 +279,7 @@ void Explorer::inputs_panel() {
   ImGui::Separator();
 
   ImGui::BeginChild("fields", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 7.5f));
+  interacting_ = script_dragging_;
   bool numerical_heading = false;
   for (std::size_t i = 0; i < session_->input_count(); ++i) {
     if (!session_->rule(i).physical() && !numerical_heading) {
@@ -337,6 +338,8 @@ void Explorer::input_widget(std::size_t i) {
                                 ends.c_str(), flags)) {
           apply(x);
         }
+        // a slider held: the frames show the new inputs with the camera kept
+        if (ImGui::IsItemActive()) interacting_ = true;
         ImGui::SameLine();
       }
       text_field(optional ? lab_default.c_str() : "");
@@ -365,6 +368,7 @@ void Explorer::input_widget(std::size_t i) {
           apply(n == 3 ? InputValue(Eigen::Vector3d(v[0], v[1], v[2]))
                        : InputValue(Eigen::Vector2d(v[0], v[1])));
         }
+        if (ImGui::IsItemActive()) interacting_ = true;
       }
       text_field(optional
                      ? lab_default.c_str()
@@ -515,8 +519,12 @@ const render::Scene3D* Explorer::shown_scene(render::Scene3D& storage) const {
 // The camera of the view before the orbit: the lab's own, fitted once to the figure, or
 // to the whole motion (frames spread over it), so that playing does not move it.
 render::Camera Explorer::base_camera(int width, int height) {
-  if (fit_.generation == session_->generation() && fit_.choice == scene_choice_ &&
-      fit_.width == width && fit_.height == height) {
+  const bool same_view = fit_.choice == scene_choice_ && fit_.width == width &&
+                         fit_.height == height && fit_.lab == lab_index_;
+  // While a slider is dragged the camera holds still (a refit each step would make the
+  // view breathe under the hand, and is most of a step's time); it is fitted again
+  // when the hand lets go.
+  if (same_view && (fit_.generation == session_->generation() || interacting_)) {
     return fit_.camera;
   }
   render::Scene3D storage;
@@ -530,7 +538,11 @@ render::Camera Explorer::base_camera(int width, int height) {
     for (int k = 1; k < kFitSamples; ++k)
       envelope.merge(motion->scene(motion->seconds * k / kFitSamples));
   }
-  fit_ = {session_->generation(), scene_choice_, width, height,
+  fit_ = {session_->generation(),
+          scene_choice_,
+          width,
+          height,
+          lab_index_,
           render::fitted_camera(envelope, width, height)};
   return fit_.camera;
 }

@@ -115,8 +115,11 @@ class Explorer {
   struct Fit {
     long generation = -1;
     int choice = -1, width = 0, height = 0;
+    std::size_t lab = 0;
     render::Camera camera;
   } fit_;
+  bool interacting_ = false;      // an input's slider or drag is held this frame
+  bool script_dragging_ = false;  // a script's `drag` acts as one
   render::LiveImage scene_image_, plot_image_;
   struct Drawn {
     long generation = -1;

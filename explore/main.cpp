@@ -17,11 +17,13 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "explorer.h"
+#include "rigid/render/atomic_file.h"
 #include "rigid/render/context.h"
 #include "rigid/support/text.h"
 #include "script.h"
@@ -106,6 +108,11 @@ int main(int argc, char** argv) {
                  "run the commands of FILE, one a frame, then close (see the man page)")
       ->type_name("FILE");
   app.add_option("--size", size, "the window's size in pixels")->capture_default_str();
+  std::string frame_log;
+  app.add_option("--frame-log", frame_log,
+                 "write each frame's wall time (and whether the inputs changed in it) to FILE "
+                 "as JSON on exit, for bench/")
+      ->type_name("FILE");
   app.set_version_flag("--version", std::string("rigidlab-explore ") + RIGID_VERSION);
   app.allow_extras();
   app.positionals_at_end(false);
@@ -227,6 +234,7 @@ int main(int argc, char** argv) {
       // frames are drawn before the loop waits again.
       int settle = 3;
       auto last = std::chrono::steady_clock::now();
+      nlohmann::json frames = nlohmann::json::array();
       while (!glfwWindowShouldClose(window)) {
         if (explorer.animating() || settle > 0) {
           glfwPollEvents();
@@ -238,6 +246,7 @@ int main(int argc, char** argv) {
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;
+        const long generation = explorer.session().generation();
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
@@ -252,6 +261,12 @@ int main(int argc, char** argv) {
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         explorer.after_render();
         glfwSwapBuffers(window);
+        if (!frame_log.empty()) {
+          frames.push_back(
+              {{"seconds",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count()},
+               {"changed", explorer.session().generation() != generation}});
+        }
         // A display without vertical sync (Xvfb, some drivers) would let a playing motion
         // take every cycle: frames are paced to 60 a second (a script runs unpaced).
         if (!explorer.scripted()) {
@@ -259,6 +274,18 @@ int main(int argc, char** argv) {
         }
       }
       status = explorer.status();
+      if (!frame_log.empty()) {
+        const auto& info = rigid::render::context();
+        const nlohmann::json log = {{"lab", lab},
+                                    {"width", width},
+                                    {"height", height},
+                                    {"gl_renderer", info.gl_renderer},
+                                    {"samples", info.samples},
+                                    {"frames", frames}};
+        const std::string text = log.dump();
+        rigid::render::write_file_atomically(
+            frame_log, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+      }
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();

@@ -32,6 +32,7 @@ const std::map<std::string, Arity>& commands() {
       {"save-figure", {2, 3}}, {"save-view", {1, 2}},  {"export-json", {1, 1}},
       {"export-csv", {1, 1}},  {"record", {1, 1}},     {"print-command", {0, 0}},
       {"print-json", {0, 0}},  {"wait", {1, 1}},       {"quit", {0, 0}},
+      {"drag", {2, 2}},
   };
   return table;
 }
@@ -150,6 +151,7 @@ bool Script::step(Explorer& e) {
     if (std::chrono::steady_clock::now() < *wait_until_) return true;
     wait_until_.reset();
   }
+  e.script_dragging_ = false;
   if (frames_left_ > 0) {
     --frames_left_;
     if (frames_left_ == 0) e.playing_ = false;
@@ -158,6 +160,7 @@ bool Script::step(Explorer& e) {
   if (e.recording_) return true;  // a `record` waits for the file
   if (next_ >= commands_.size()) return false;
   const Command& c = commands_[next_++];
+  e.script_dragging_ = c.words[0] == "drag";
   const std::vector<std::string>& w = c.words;
   const std::string& op = w[0];
   const auto size_of = [&](std::size_t k, int& width, int& height) {
@@ -180,7 +183,7 @@ bool Script::step(Explorer& e) {
     failed_ = true;
   };
   try {
-    if (op == "set" || op == "unset") {
+    if (op == "set" || op == "unset" || op == "drag") {
       const std::string refusal = e.set_text(w[1], op == "unset" ? "" : w.size() > 2 ? w[2] : "");
       if (!refusal.empty()) report(c, "refused: " + refusal);
     } else if (op == "textbook") {

@@ -3,6 +3,8 @@
 //
 //   # comments and blank lines are skipped
 //   set --mass 2              the input, as typed in its field (a refusal is printed)
+//   drag --mass 2.5           the input, as its slider held and moved there (the camera
+//                             holds still until the next command lets go)
 //   unset --spin              an optional input back to the lab's default
 //   textbook                  the text's example
 //   lab top_nutation          another lab

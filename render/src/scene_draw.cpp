@@ -234,7 +234,7 @@ Camera fitted_camera(const Scene3D& scene, int width, int height) {
     c.target /= k;
     c.ortho_height /= k;
   } else {
-    c = detail::frame_scene(scene, width, height).camera;
+    c = detail::frame_scene(scene, width, height, /*place_labels=*/false).camera;
   }
   c.fit = false;
   return c;

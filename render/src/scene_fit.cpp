@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -177,18 +178,54 @@ Camera fitted(Camera cam, std::vector<FitPoint> points, const ScreenRect& region
     if (!ortho) d_min = std::max(d_min, r - z);
     extent = std::max(extent, q.norm() + r);
   }
+  // Most points share their bounds' slopes (all but those carrying text boxes): of such
+  // bounds only the tightest constrains, at every d, and rounding keeps that order
+  // (c + m d rounds monotonically in c). So each kind keeps one bound a slope, and the
+  // legend's corners those no other corner of the same slopes contains: the fit is the
+  // same, bit for bit, at a cost in distinct slopes rather than points (a live view
+  // fits a motion's many frames at once).
+  const auto tightest = [](std::vector<Bound>& bounds, bool keep_max) {
+    std::map<double, double> by_slope;
+    for (const Bound& bd : bounds) {
+      auto [it, fresh] = by_slope.emplace(bd.m, bd.c);
+      if (!fresh) it->second = keep_max ? std::max(it->second, bd.c) : std::min(it->second, bd.c);
+    }
+    bounds.clear();
+    for (const auto& [m, c] : by_slope) bounds.push_back({c, m});
+  };
+  tightest(a_min, true);
+  tightest(b_min, true);
+  tightest(a_max, false);
+  tightest(b_max, false);
+  if (has_legend) {
+    std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> corners;
+    for (std::size_t i = 0; i < n; ++i) {
+      corners[{a_legend[i].m, b_legend[i].m}].push_back({a_legend[i].c, b_legend[i].c});
+    }
+    a_legend.clear();
+    b_legend.clear();
+    for (auto& [slopes, cs] : corners) {
+      // by alpha descending: a corner is kept only if its beta beats every wider one's
+      std::sort(cs.begin(), cs.end(), std::greater<>());
+      double best_beta = -std::numeric_limits<double>::infinity();
+      for (const auto& [ca, cb] : cs) {
+        if (cb <= best_beta) continue;
+        best_beta = cb;
+        a_legend.push_back({ca, slopes.first});
+        b_legend.push_back({cb, slopes.second});
+      }
+    }
+  }
   struct Window {
     double a_lo, a_hi, b_lo, b_hi;
   };
   auto window = [&](double d) {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     Window w{-kInf, kInf, -kInf, kInf};
-    for (std::size_t i = 0; i < n; ++i) {
-      w.a_lo = std::max(w.a_lo, a_min[i].at(d));
-      w.a_hi = std::min(w.a_hi, a_max[i].at(d));
-      w.b_lo = std::max(w.b_lo, b_min[i].at(d));
-      w.b_hi = std::min(w.b_hi, b_max[i].at(d));
-    }
+    for (const Bound& bd : a_min) w.a_lo = std::max(w.a_lo, bd.at(d));
+    for (const Bound& bd : a_max) w.a_hi = std::min(w.a_hi, bd.at(d));
+    for (const Bound& bd : b_min) w.b_lo = std::max(w.b_lo, bd.at(d));
+    for (const Bound& bd : b_max) w.b_hi = std::min(w.b_hi, bd.at(d));
     return w;
   };
   auto clear_of_legend = [&](double d, double a, double b) {

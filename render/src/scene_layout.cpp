@@ -127,7 +127,7 @@ std::vector<ScreenRect> label_candidates(const Vector2d& q, const TextExtent& e,
 
 }  // namespace
 
-SceneFrame frame_scene(const Scene3D& scene, int width, int height) {
+SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_labels) {
   SceneFrame fr;
   fr.st = figure_style(width, height);
   const Style& st = fr.st;
@@ -160,6 +160,8 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height) {
 
   // Labels in order, each clear of the geometry where it can be, never over the title,
   // the legend or an earlier label, and inside the region the scene was fitted into.
+  // (A camera asked for alone needs none of it: the geometry's grid is most of the work.)
+  if (!place_labels) return fr;
   const Occupancy grid = scene_grid(scene, fr.view, st);
   std::vector<ScreenRect> taken;
   if (!fr.title.box.empty()) taken.push_back(fr.title.box);

@@ -23,6 +23,6 @@ struct SceneFrame {
 };
 
 /// Frames a scene (already normalised to about unit size) at width × height.
-SceneFrame frame_scene(const Scene3D& scene, int width, int height);
+SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_labels = true);
 
 }  // namespace rigid::render::detail
