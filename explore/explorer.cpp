@@ -617,11 +617,20 @@ std::optional<render::Plot2D> Explorer::shown_plot() const {
   const auto names = choices_of(*session_, false, strip);
   if (names.empty()) return std::nullopt;
   const std::size_t k = std::min<std::size_t>(plot_choice_, names.size() - 1);
-  if (strip && k == 0) {
-    render::Plot2D plot = motion->strip(time_);
-    return plot;
+  if (strip && k == 0) return motion->strip(time_);
+  render::Plot2D plot = std::get<render::Plot2D>(figure_named(*session_, names[k])->figure);
+  // the time shown, on the axes that are the motion's time
+  for (int r = 0; r < plot.rows(); ++r) {
+    for (int c = 0; c < plot.cols(); ++c) {
+      render::Panel& panel = plot.panel(r, c);
+      if (!panel.x.motion_time || motion == nullptr) continue;
+      render::RefLine& line = panel.add_ref_line(time_, true);
+      line.color = render::kBlack;
+      line.dash = render::Dash::kSolid;
+      line.width = 2.0;
+    }
   }
-  return std::get<render::Plot2D>(figure_named(*session_, names[k])->figure);
+  return plot;
 }
 
 void Explorer::plot_view(float x, float y, float w, float h) {
@@ -636,8 +645,22 @@ void Explorer::plot_view(float x, float y, float w, float h) {
   const int pw = std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x));
   const int ph = std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y));
   const lab::Animation* motion = session_->animation();
-  const bool strip = motion != nullptr && motion->strip && plot_choice_ == 0;
-  const Drawn want{session_->generation(), plot_choice_, pw, ph, strip ? time_ : 0.0, {}, true};
+  // a plot that follows the motion's time is drawn again as it plays
+  bool follows = motion != nullptr && motion->strip && plot_choice_ == 0;
+  if (motion != nullptr && !follows) {
+    const auto names = choices_of(*session_, false, bool(motion->strip));
+    if (!names.empty()) {
+      const auto* f =
+          figure_named(*session_, names[std::min<std::size_t>(plot_choice_, names.size() - 1)]);
+      if (f != nullptr) {
+        const auto& plot = std::get<render::Plot2D>(f->figure);
+        for (int r = 0; r < plot.rows(); ++r) {
+          for (int c = 0; c < plot.cols(); ++c) follows = follows || plot.panel(r, c).x.motion_time;
+        }
+      }
+    }
+  }
+  const Drawn want{session_->generation(), plot_choice_, pw, ph, follows ? time_ : 0.0, {}, true};
   const Drawn& had = plot_drawn_;
   const bool stale = !had.valid || had.generation != want.generation || had.choice != want.choice ||
                      had.width != pw || had.height != ph || had.time != want.time;

@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   std::string lab = "top_nutation", script_path, size = "1280x720";
   app.add_option("lab", lab, "the lab to open (rigidlab list names them)")->capture_default_str();
   app.add_option("--script", script_path,
-                 "run the commands of FILE, one a frame, then close (see the man page)")
+                 "run the commands of FILE, one a frame, then close (the commands: below)")
       ->type_name("FILE");
   app.add_option("--size", size, "the window's size in pixels")->capture_default_str();
   std::string frame_log;
@@ -114,6 +114,30 @@ int main(int argc, char** argv) {
                  "as JSON on exit, for bench/")
       ->type_name("FILE");
   app.set_version_flag("--version", std::string("rigidlab-explore ") + RIGID_VERSION);
+  app.footer(
+      "In the window: drag the scene to turn it, the wheel to zoom, a double click to reset the "
+      "view; space plays and pauses, the arrow keys step a frame. A value typed into a field "
+      "is taken on Enter; one that breaks a rule shows the rule and the view keeps the last "
+      "valid inputs.\n\n"
+      "A script (--script FILE) runs one command a frame, then closes the window:\n"
+      "  set --OPTION VALUE       an input, as typed in its field (a refusal is printed)\n"
+      "  drag --OPTION VALUE      an input, as its slider held and moved there\n"
+      "  unset --OPTION           an optional input back to the lab's own choice\n"
+      "  textbook                 the text's example\n"
+      "  lab NAME                 another lab\n"
+      "  play SECONDS             plays that much of the motion, a frame each 1/30 s of it\n"
+      "  pause | seek T | speed X\n"
+      "  turn RIGHT UP | zoom F | reset-view    the view (degrees, a factor)\n"
+      "  show-scene NAME | show-plot NAME       motion, strip or a figure of the lab\n"
+      "  frames N | wait SECONDS  draws N frames; waits, the window live\n"
+      "  screenshot FILE          the window as a PNG\n"
+      "  save-figure NAME FILE [WxH]            a figure, as the lab's --figures draws it\n"
+      "  save-view FILE [WxH]     the scene as shown\n"
+      "  export-json FILE | export-csv FILE | record FILE.mp4|FILE.webp\n"
+      "  print-command | print-json             on stdout\n"
+      "  quit\n"
+      "Blank lines and text after # are skipped. A wrong command is found before the window "
+      "opens (exit 2, naming the file and the line). Examples: explore/demos/.");
   app.allow_extras();
   app.positionals_at_end(false);
   try {

@@ -51,6 +51,7 @@ render::Plot2D omega_plot(const Vector3d& omega0, const std::vector<FreeBodyRun:
   render::Panel& left = plot.panel(0, 0);
   left.title = "angular velocity in body axes";
   left.x.label = "t (s)";
+  left.x.motion_time = true;
   left.y.label = "\\omega_i (rad/s)";
   for (int i = 0; i < 3; ++i) {
     left.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = colors::kPrincipal[i];

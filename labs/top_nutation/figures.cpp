@@ -180,6 +180,7 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
   top.add_ref_line(rad_to_deg(motion.theta_max()), false, "\\theta_{max}");
   render::Panel& bottom = plot.panel(1, 0);
   bottom.x.label = "t (s)";
+  top.x.motion_time = bottom.x.motion_time = true;
   bottom.y.label = "\\phi-dot (rad/s)";
   bottom.add_line(t, phi_dot, "exact").color = render::kBlue;
   if (integrated_run) bottom.add_points(ti, phi_doti, integrated).color = render::kVermillion;

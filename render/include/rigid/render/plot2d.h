@@ -47,6 +47,9 @@ struct Axis {
   double min = std::numeric_limits<double>::quiet_NaN();
   double max = std::numeric_limits<double>::quiet_NaN();
   bool grid = true;  ///< light grid lines at the major ticks
+  /// The axis is the time of the motion a figure goes with: a live view playing that
+  /// motion marks the time it shows on it.
+  bool motion_time = false;
 };
 
 /// A curve y(x) drawn as a line and/or markers.
