@@ -67,7 +67,7 @@ bool has_extension(const char* list, const char* name) {
 
 }  // namespace
 
-GlProcLoader make_egl_context(std::string& error) {
+GlProcLoader make_egl_context(std::string& error, bool es) {
   if (!load(error)) return nullptr;
   const char* client_ext = api.eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (!has_extension(client_ext, "EGL_MESA_platform_surfaceless")) {
@@ -87,13 +87,13 @@ GlProcLoader make_egl_context(std::string& error) {
     error = "eglInitialize failed on the surfaceless platform";
     return nullptr;
   }
-  if (!api.eglBindAPI(EGL_OPENGL_API)) {
-    error = "eglBindAPI(EGL_OPENGL_API) failed";
+  if (!api.eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) {
+    error = es ? "eglBindAPI(EGL_OPENGL_ES_API) failed" : "eglBindAPI(EGL_OPENGL_API) failed";
     return nullptr;
   }
-  // Any config that renders desktop GL; no surface type is needed.
-  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0,
-                                   EGL_NONE};
+  // Any config that renders the API; no surface type is needed.
+  const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT,
+                                   EGL_SURFACE_TYPE, 0, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint count = 0;
   if (!api.eglChooseConfig(dpy, config_attribs, &config, 1, &count) || count < 1) config = nullptr;
@@ -109,9 +109,14 @@ GlProcLoader make_egl_context(std::string& error) {
                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                     EGL_NONE};
-  EGLContext ctx = api.eglCreateContext(dpy, config, EGL_NO_CONTEXT, context_attribs);
+  // OpenGL ES 3.0, as WebGL2 is: what a browser build of the explorer will have
+  const EGLint es_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0,
+                               EGL_NONE};
+  EGLContext ctx =
+      api.eglCreateContext(dpy, config, EGL_NO_CONTEXT, es ? es_attribs : context_attribs);
   if (ctx == EGL_NO_CONTEXT) {
-    error = "eglCreateContext failed for a GL 3.3 core profile";
+    error = es ? "eglCreateContext failed for OpenGL ES 3.0"
+               : "eglCreateContext failed for a GL 3.3 core profile";
     return nullptr;
   }
   if (!api.eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {

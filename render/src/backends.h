@@ -15,7 +15,8 @@ void* open_library(std::initializer_list<const char*> names, const char* what, s
 
 /// Makes an OSMesa GL 3.3+ core context current (tiny dummy buffer; drawing goes to FBOs).
 GlProcLoader make_osmesa_context(std::string& error);
-/// Makes an EGL surfaceless GL 3.3+ core context current (no surface at all).
-GlProcLoader make_egl_context(std::string& error);
+/// Makes an EGL surfaceless GL 3.3+ core context current (no surface at all), or with
+/// `es` an OpenGL ES 3.0 one.
+GlProcLoader make_egl_context(std::string& error, bool es = false);
 
 }  // namespace rigid::render::detail

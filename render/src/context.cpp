@@ -47,7 +47,8 @@ ContextInfo describe(Backend used, detail::GlProcLoader loader, const ContextOpt
 }
 
 detail::GlProcLoader try_backend(Backend b, std::string& error) {
-  return b == Backend::kEGL ? detail::make_egl_context(error) : detail::make_osmesa_context(error);
+  if (b == Backend::kOSMesa) return detail::make_osmesa_context(error);
+  return detail::make_egl_context(error, b == Backend::kGLES);
 }
 
 ContextInfo create(const ContextOptions& options) {
@@ -59,15 +60,15 @@ ContextInfo create(const ContextOptions& options) {
       if (env != nullptr && *env != '\0') wanted = parse_backend(env);
     } catch (const std::invalid_argument&) {
       throw Unavailable(std::string("rigid::render: RIGID_GL_BACKEND=") + env +
-                        " is not one of osmesa, egl, auto");
+                        " is not one of osmesa, egl, gles, auto");
     }
   }
-  // Auto tries OSMesa first, then EGL; an explicit choice has no fallback.
+  // Auto tries OSMesa first, then EGL (never ES); an explicit choice has no fallback.
   std::string errors;
   detail::GlProcLoader loader = nullptr;
   Backend used = Backend::kAuto;
-  for (Backend b : {Backend::kOSMesa, Backend::kEGL}) {
-    if (wanted != Backend::kAuto && wanted != b) continue;
+  for (Backend b : {Backend::kOSMesa, Backend::kEGL, Backend::kGLES}) {
+    if (wanted != Backend::kAuto ? wanted != b : b == Backend::kGLES) continue;
     std::string error;
     loader = try_backend(b, error);
     if (loader != nullptr) {
@@ -107,8 +108,9 @@ Backend parse_backend(const std::string& name) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   if (s == "osmesa") return Backend::kOSMesa;
   if (s == "egl") return Backend::kEGL;
+  if (s == "gles") return Backend::kGLES;
   if (s == "auto") return Backend::kAuto;
-  throw std::invalid_argument("unknown GL backend '" + name + "' (use osmesa, egl or auto)");
+  throw std::invalid_argument("unknown GL backend '" + name + "' (use osmesa, egl, gles or auto)");
 }
 
 const char* backend_name(Backend backend) {
@@ -117,6 +119,8 @@ const char* backend_name(Backend backend) {
       return "osmesa";
     case Backend::kEGL:
       return "egl";
+    case Backend::kGLES:
+      return "gles";
     case Backend::kCurrent:
       return "current";
     case Backend::kAuto:

@@ -21,11 +21,13 @@ class Unavailable : public std::runtime_error {
 };
 
 /// Which library provides the GL context.
-enum class Backend { kAuto, kOSMesa, kEGL, kCurrent };
+enum class Backend { kAuto, kOSMesa, kEGL, kGLES, kCurrent };
 
 /// Options for the process's context; only honoured by the first call that creates it.
 struct ContextOptions {
-  /// kAuto reads RIGID_GL_BACKEND (osmesa|egl), else OSMesa, else EGL.
+  /// kAuto reads RIGID_GL_BACKEND (osmesa|egl|gles), else OSMesa, else EGL. kGLES is EGL
+  /// with an OpenGL ES 3.0 context: what WebGL2 offers, for checking that the drawing
+  /// needs no more.
   Backend backend = Backend::kAuto;
   /// MSAA samples wanted; 0 forces the supersampling fallback (also RIGID_GL_SAMPLES=0).
   int samples = 4;
