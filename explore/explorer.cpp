@@ -46,6 +46,13 @@ constexpr float kPlotShare = 0.34f;  // of the height under the scene's top
 // A script's frame: 1/30 s of wall time, so a script plays the same on any machine.
 constexpr double kScriptFrameSeconds = 1.0 / 30.0;
 constexpr double kMinSpeed = 0.1, kMaxSpeed = 10.0;
+// A motion longer than this plays faster than real time at first (the Earth's
+// precession takes two days): in kLongMotionPlay seconds, and the speed reaches that far.
+constexpr double kLongMotionPlay = 10.0;
+
+double fastest(const lab::Animation& motion) {
+  return std::max(kMaxSpeed, motion.seconds / kLongMotionPlay);
+}
 
 const ImVec4 kRuleColor(0.80f, 0.18f, 0.10f, 1.0f);
 const ImVec4 kErrataColor(0.70f, 0.35f, 0.0f, 1.0f);
@@ -120,6 +127,8 @@ void Explorer::open(const std::string& name) {
     scene_choice_ = plot_choice_ = export_figure_ = 0;
     time_ = 0.0;
     playing_ = session_->animation() != nullptr;
+    speed_ = 1.0;
+    long_motion_ = false;
     message_.clear();
     after_change();
     return;
@@ -135,6 +144,14 @@ void Explorer::after_change() {
   }
   const lab::Animation* motion = session_->animation();
   if (motion != nullptr && time_ > motion->seconds) time_ = 0.0;
+  // real time, unless the motion is too long to watch so (then as fast as it goes,
+  // from when it became so)
+  if (motion != nullptr) {
+    const bool long_motion = motion->seconds > kMaxSpeed * kLongMotionPlay;
+    if (long_motion && !long_motion_) speed_ = fastest(*motion);
+    long_motion_ = long_motion;
+    set_speed(speed_);
+  }
 }
 
 std::string Explorer::set_text(const std::string& flag, const std::string& text) {
@@ -153,6 +170,11 @@ std::string Explorer::set_text(const std::string& flag, const std::string& text)
   after_change();
   last_update_ = seconds_since(t0);
   return "";
+}
+
+void Explorer::set_speed(double speed) {
+  const lab::Animation* motion = session_->animation();
+  speed_ = std::clamp(speed, kMinSpeed, motion != nullptr ? fastest(*motion) : kMaxSpeed);
 }
 
 void Explorer::textbook() {
@@ -728,7 +750,7 @@ void Explorer::time_panel(float x, float y, float w, float h) {
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
-    double s = speed_, slo = kMinSpeed, shi = kMaxSpeed;
+    double s = speed_, slo = kMinSpeed, shi = fastest(*motion);
     if (ImGui::SliderScalar("##speed", ImGuiDataType_Double, &s, &slo, &shi, "%.2gx",
                             ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic)) {
       speed_ = s;
@@ -806,7 +828,7 @@ void Explorer::export_section() {
   if (session_->animation() != nullptr) {
     ImGui::SameLine();
     if (recording_) ImGui::BeginDisabled();
-    if (ImGui::Button("MP4")) {
+    if (ImGui::Button("MP4/WebP")) {
       const std::string path = path_or(session_->name() + ".mp4");
       if (std::string error = record(path); !error.empty()) say(error, true);
     }

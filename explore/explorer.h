@@ -44,6 +44,9 @@ class Explorer {
   /// Sets a lab's input from its text (as typed in its field or given on the command
   /// line); the refusal's one line, or "" if taken.
   std::string set_text(const std::string& flag, const std::string& text);
+  /// The playing speed (times real time), within 0.1 and 10, or up to playing a long
+  /// motion in 10 s.
+  void set_speed(double speed);
   /// Back to the text's example, refusals cleared.
   void textbook();
   /// Runs `script` (script.h) from the next frame, a step a frame.
@@ -112,6 +115,7 @@ class Explorer {
   int plot_choice_ = 0;   // 0: the motion's strip (if any), else a 2D figure of the lab
   double time_ = 0.0, speed_ = 1.0;
   bool playing_ = false;
+  bool long_motion_ = false;  // the motion shown is longer than 10 s at 10x
   struct Fit {
     long generation = -1;
     int choice = -1, width = 0, height = 0;

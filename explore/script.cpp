@@ -206,7 +206,7 @@ bool Script::step(Explorer& e) {
       const lab::Animation* motion = e.session_->animation();
       e.time_ = motion == nullptr ? 0.0 : std::min(std::stod(w[1]), motion->seconds);
     } else if (op == "speed") {
-      e.speed_ = std::clamp(std::stod(w[1]), 0.1, 10.0);
+      e.set_speed(std::stod(w[1]));
     } else if (op == "turn") {
       e.orbit_.yaw_deg += std::stod(w[1]);
       e.orbit_.pitch_deg += std::stod(w[2]);
