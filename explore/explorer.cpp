@@ -128,6 +128,8 @@ void Explorer::open(const std::string& name) {
     time_ = 0.0;
     playing_ = session_->animation() != nullptr;
     speed_ = 1.0;
+    exact_session_.reset();
+    exact_generation_ = -1;
     long_motion_ = false;
     message_.clear();
     after_change();
@@ -533,9 +535,28 @@ const render::Scene3D* Explorer::shown_scene(render::Scene3D& storage) const {
   if (motion != nullptr && name == "motion") {
     storage = motion->scene(time_);
     storage.title = session_->report().figure_title(storage.title);
+    // an integrator's motion, with the exact one laid over it faintly: drift is seen
+    if (const lab::Animation* exact = exact_motion()) {
+      storage.merge(exact->scene(std::min(time_, exact->seconds))
+                        .faded("the exact motion (faint): the drift is the gap"));
+    }
     return &storage;
   }
   return &std::get<render::Scene3D>(figure_named(*session_, name)->figure);
+}
+
+// The same inputs with the exact method, when an integrator's motion is shown (and the
+// lab has a closed form to offer); nullptr otherwise.
+const lab::Animation* Explorer::exact_motion() const {
+  const std::size_t m = session_->find("--method");
+  if (m >= session_->input_count()) return nullptr;
+  const lab::InputValue exact = std::string("exact");
+  if (session_->value(m) == exact || !session_->rule(m).broken(exact).empty()) return nullptr;
+  if (exact_generation_ != session_->inputs_generation()) {
+    exact_session_ = session_->with(m, exact);
+    exact_generation_ = session_->inputs_generation();
+  }
+  return exact_session_ ? exact_session_->animation() : nullptr;
 }
 
 // The camera of the view before the orbit: the lab's own, fitted once to the figure, or
@@ -546,7 +567,7 @@ render::Camera Explorer::base_camera(int width, int height) {
   // While a slider is dragged the camera holds still (a refit each step would make the
   // view breathe under the hand, and is most of a step's time); it is fitted again
   // when the hand lets go.
-  if (same_view && (fit_.generation == session_->generation() || interacting_)) {
+  if (same_view && (fit_.generation == session_->inputs_generation() || interacting_)) {
     return fit_.camera;
   }
   render::Scene3D storage;
@@ -560,7 +581,7 @@ render::Camera Explorer::base_camera(int width, int height) {
     for (int k = 1; k < kFitSamples; ++k)
       envelope.merge(motion->scene(motion->seconds * k / kFitSamples));
   }
-  fit_ = {session_->generation(),
+  fit_ = {session_->inputs_generation(),
           scene_choice_,
           width,
           height,

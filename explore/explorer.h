@@ -92,6 +92,7 @@ class Explorer {
   render::Camera base_camera(int width, int height);
   std::optional<render::Plot2D> shown_plot() const;
   render::Scene3D view_scene(int width, int height);
+  const lab::Animation* exact_motion() const;
 
   // Exports, each through the lab's own writers; "" or the error.
   std::string save_figure(const std::string& name, const std::string& path, int w, int h);
@@ -116,6 +117,9 @@ class Explorer {
   double time_ = 0.0, speed_ = 1.0;
   bool playing_ = false;
   bool long_motion_ = false;  // the motion shown is longer than 10 s at 10x
+  // the exact motion beside an integrator's, for the inputs of exact_generation_
+  mutable std::unique_ptr<lab::Session> exact_session_;
+  mutable long exact_generation_ = -1;
   struct Fit {
     long generation = -1;
     int choice = -1, width = 0, height = 0;

@@ -82,6 +82,8 @@ class Session {
   virtual const Animation* animation() const = 0;
   /// How many times what is shown has changed (a view redraws when this moves).
   virtual long generation() const = 0;
+  /// How many times the inputs have changed (the whole report's coming is not one).
+  virtual long inputs_generation() const = 0;
 
   /// Whether the whole report is still being computed (the report is the preview's).
   virtual bool pending() const = 0;
@@ -92,6 +94,11 @@ class Session {
   /// Why the whole report could not be computed for the inputs shown ("" if it could):
   /// the command line refuses them, though their preview computed.
   virtual const std::string& whole_error() const = 0;
+
+  /// A session at this one's inputs but input i set to `value`, computed as a preview
+  /// (nothing slow, never whole); nullptr if that is refused. A view draws it beside
+  /// this one (the exact motion beside an integrator's).
+  virtual std::unique_ptr<Session> with(std::size_t i, const InputValue& value) const = 0;
 
   /// The lab's arguments that reproduce the current state: every input that is not the
   /// textbook's, as `--option=value` (numbers to their last digit).
@@ -122,6 +129,22 @@ class ProgramSession final : public Session {
   explicit ProgramSession(LabProgram<In, Rep> lab) : lab_(std::move(lab)) {
     compute(In{});
     wait();
+  }
+  // A preview of `in`, never made whole (with()).
+  ProgramSession(LabProgram<In, Rep> lab, const In& in) : lab_(std::move(lab)), whole_never_(true) {
+    compute(in);
+  }
+
+  std::unique_ptr<Session> with(std::size_t i, const InputValue& value) const override {
+    const InputField<In>& f = fields().at(i);
+    if (!f.rule.broken(value).empty()) return nullptr;
+    In next = in_;
+    f.set(next, value);
+    try {
+      return std::make_unique<ProgramSession>(lab_, next);
+    } catch (const std::exception&) {
+      return nullptr;
+    }
   }
 
   const std::string& name() const override { return lab_.name; }
@@ -194,6 +217,7 @@ class ProgramSession final : public Session {
   }
 
   long generation() const override { return generation_; }
+  long inputs_generation() const override { return inputs_generation_; }
 
  private:
   // The figures as the command line titles them.
@@ -220,9 +244,10 @@ class ProgramSession final : public Session {
     if (lab_.preview != nullptr) lab_.preview(quick);
     auto report = std::make_shared<Rep>(lab_.compute(quick));
     in_ = next;
+    ++inputs_generation_;
     show(std::move(report));
     whole_error_.clear();
-    if (lab_.preview != nullptr && !whole_.valid()) start_whole();
+    if (lab_.preview != nullptr && !whole_never_ && !whole_.valid()) start_whole();
   }
 
   void show(std::shared_ptr<const Rep> report) {
@@ -272,7 +297,8 @@ class ProgramSession final : public Session {
   std::shared_ptr<const Rep> report_;
   mutable std::optional<std::vector<NamedFigure>> figures_;
   mutable std::optional<Animation> animation_;
-  long generation_ = 0;
+  long generation_ = 0, inputs_generation_ = 0;
+  bool whole_never_ = false;
   std::future<std::shared_ptr<const Rep>> whole_;  // the whole report, under way
   In whole_in_{};
   std::string whole_error_;

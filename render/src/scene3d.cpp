@@ -283,6 +283,25 @@ void Scene3D::merge(const Scene3D& other) {
   labels_.insert(labels_.end(), other.labels_.begin(), other.labels_.end());
 }
 
+Scene3D Scene3D::faded(const std::string& label, float opacity) const {
+  Scene3D out = *this;
+  for (Object& o : out.objects_) {
+    o.material.opacity *= opacity;
+    o.label.clear();
+  }
+  for (Polyline& pl : out.polylines_) {
+    pl.color.a *= opacity;
+    pl.label.clear();
+  }
+  out.labels_.clear();
+  if (!out.objects_.empty()) {
+    out.objects_.front().label = label;
+  } else if (!out.polylines_.empty()) {
+    out.polylines_.front().label = label;
+  }
+  return out;
+}
+
 Scene3D Scene3D::scaled(double k) const {
   Scene3D out = *this;
   const Eigen::Affine3d scale(Eigen::Scaling(k));

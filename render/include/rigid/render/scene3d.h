@@ -122,6 +122,10 @@ class Scene3D {
   /// the union of an animation's frames, to fit one camera to all of them.
   void merge(const Scene3D& other);
 
+  /// The scene as a faint ghost to lay over another: every surface and line at `opacity`
+  /// of its own, no labels, and one legend entry, `label`, for all of it.
+  Scene3D faded(const std::string& label, float opacity = 0.3f) const;
+
   /// What the scene holds; public so the renderer (and tests) can read it.
   enum class Shape { kSphere, kCone, kCylinder, kDisk, kBox, kTorus, kPlane, kTube, kCustom };
   struct Object {
