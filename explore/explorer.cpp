@@ -130,6 +130,8 @@ void Explorer::open(const std::string& name) {
     speed_ = 1.0;
     exact_session_.reset();
     exact_generation_ = -1;
+    hidden_.clear();
+    ++hidden_version_;
     long_motion_ = false;
     message_.clear();
     after_change();
@@ -222,10 +224,12 @@ void Explorer::frame(double seconds) {
   }
   // space plays and pauses, the arrows step a frame, while no field is being typed in
   if (!io.WantTextInput && motion != nullptr) {
-    if (ImGui::IsKeyPressed(ImGuiKey_Space, false)) playing_ = !playing_;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) playing_ = !playing_;
     const double step = kScriptFrameSeconds * speed_;
-    if (ImGui::IsKeyPressed(ImGuiKey_RightArrow)) time_ = std::min(time_ + step, motion->seconds);
-    if (ImGui::IsKeyPressed(ImGuiKey_LeftArrow)) time_ = std::max(time_ - step, 0.0);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow)))
+      time_ = std::min(time_ + step, motion->seconds);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)))
+      time_ = std::max(time_ - step, 0.0);
   }
   if (recording_) {
     // the recording's stderr, and whether it has ended
@@ -593,9 +597,25 @@ render::Camera Explorer::base_camera(int width, int height) {
 render::Scene3D Explorer::view_scene(int width, int height) {
   render::Scene3D storage;
   const render::Scene3D* shown = shown_scene(storage);
-  render::Scene3D scene = *shown;
+  render::Scene3D scene = shown->without(hidden_);
   scene.camera = orbit_.apply(base_camera(width, height));
   return scene;
+}
+
+void Explorer::toggle(const std::string& label) {
+  const auto at = std::find(hidden_.begin(), hidden_.end(), label);
+  if (at == hidden_.end()) {
+    hidden_.push_back(label);
+  } else {
+    hidden_.erase(at);
+  }
+  ++hidden_version_;
+}
+
+std::vector<std::string> Explorer::scene_parts() const {
+  render::Scene3D storage;
+  const render::Scene3D* shown = shown_scene(storage);
+  return shown == nullptr ? std::vector<std::string>{} : shown->legend_labels();
 }
 
 void Explorer::scene_view(float x, float y, float w, float h) {
@@ -612,12 +632,14 @@ void Explorer::scene_view(float x, float y, float w, float h) {
   render::Scene3D storage;
   const bool any = shown_scene(storage) != nullptr;
   if (any) {
-    const Drawn want{session_->generation(), scene_choice_, pw, ph, time_, orbit_, true};
+    const Drawn want{session_->generation(), scene_choice_, pw, ph, time_, orbit_, true,
+                     hidden_version_};
     const Drawn& had = scene_drawn_;
     const bool stale = !had.valid || had.generation != want.generation ||
                        had.choice != want.choice || had.width != pw || had.height != ph ||
                        had.time != want.time || had.orbit.yaw_deg != orbit_.yaw_deg ||
-                       had.orbit.pitch_deg != orbit_.pitch_deg || had.orbit.zoom != orbit_.zoom;
+                       had.orbit.pitch_deg != orbit_.pitch_deg || had.orbit.zoom != orbit_.zoom ||
+                       had.hidden != hidden_version_;
     if (stale) {
       try {
         scene_image_.draw(view_scene(pw, ph), pw, ph);
@@ -781,11 +803,31 @@ void Explorer::time_panel(float x, float y, float w, float h) {
   }
   ImGui::TextUnformatted("scene");
   ImGui::SameLine();
-  combo("##scene", scenes, scene_choice_, w * 0.36f);
+  combo("##scene", scenes, scene_choice_, w * 0.30f);
+  ImGui::SameLine();
+  // each part of the scene shown or not (its legend entry); keys 1 to 9 as well
+  const std::vector<std::string> parts = scene_parts();
+  if (ImGui::Button("Show")) ImGui::OpenPopup("parts");
+  if (ImGui::BeginPopup("parts")) {
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      bool on = std::find(hidden_.begin(), hidden_.end(), parts[k]) == hidden_.end();
+      const std::string label =
+          (k < 9 ? std::to_string(k + 1) + "  " : std::string("   ")) + parts[k];
+      if (ImGui::Checkbox(label.c_str(), &on)) toggle(parts[k]);
+    }
+    ImGui::EndPopup();
+  }
+  if (!ImGui::GetIO().WantTextInput) {
+    for (std::size_t k = 0; k < std::min<std::size_t>(parts.size(), 9); ++k) {
+      // (Dear ImGui 1.86 names no digit keys: the windowing backend's own codes, which
+      // for GLFW's digits are their characters)
+      if (ImGui::IsKeyPressed('1' + static_cast<int>(k), false)) toggle(parts[k]);
+    }
+  }
   ImGui::SameLine();
   ImGui::TextUnformatted("plot");
   ImGui::SameLine();
-  combo("##plot", plots, plot_choice_, w * 0.36f);
+  combo("##plot", plots, plot_choice_, w * 0.30f);
   ImGui::End();
 }
 

@@ -93,6 +93,10 @@ class Explorer {
   std::optional<render::Plot2D> shown_plot() const;
   render::Scene3D view_scene(int width, int height);
   const lab::Animation* exact_motion() const;
+  /// Shows or hides a part of the scene (a legend entry's label).
+  void toggle(const std::string& label);
+  /// The scene's parts that can be shown or hidden: its legend's entries.
+  std::vector<std::string> scene_parts() const;
 
   // Exports, each through the lab's own writers; "" or the error.
   std::string save_figure(const std::string& name, const std::string& path, int w, int h);
@@ -135,7 +139,10 @@ class Explorer {
     double time = -1.0;
     Orbit orbit;
     bool valid = false;
+    long hidden = 0;
   } scene_drawn_, plot_drawn_;
+  std::vector<std::string> hidden_;  // the scene's parts (legend entries) not shown
+  long hidden_version_ = 0;
   std::string draw_error_;
 
   // exports

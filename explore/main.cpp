@@ -116,7 +116,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("rigidlab-explore ") + RIGID_VERSION);
   app.footer(
       "In the window: drag the scene to turn it, the wheel to zoom, a double click to reset the "
-      "view; space plays and pauses, the arrow keys step a frame. A value typed into a field "
+      "view; space plays and pauses, the arrow keys step a frame, the keys 1 to 9 hide and "
+      "show the scene's parts (Show lists them). A value typed into a field "
       "is taken on Enter; one that breaks a rule shows the rule and the view keeps the last "
       "valid inputs.\n\n"
       "A script (--script FILE) runs one command a frame, then closes the window:\n"
@@ -129,6 +130,7 @@ int main(int argc, char** argv) {
       "  pause | seek T | speed X\n"
       "  turn RIGHT UP | zoom F | reset-view    the view (degrees, a factor)\n"
       "  show-scene NAME | show-plot NAME       motion, strip or a figure of the lab\n"
+      "  hide PART | show PART    a part of the scene, by its legend entry (\"in quotes\")\n"
       "  frames N | wait SECONDS  draws N frames; waits, the window live\n"
       "  screenshot FILE          the window as a PNG\n"
       "  save-figure NAME FILE [WxH]            a figure, as the lab's --figures draws it\n"

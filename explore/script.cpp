@@ -32,7 +32,7 @@ const std::map<std::string, Arity>& commands() {
       {"save-figure", {2, 3}}, {"save-view", {1, 2}},  {"export-json", {1, 1}},
       {"export-csv", {1, 1}},  {"record", {1, 1}},     {"print-command", {0, 0}},
       {"print-json", {0, 0}},  {"wait", {1, 1}},       {"quit", {0, 0}},
-      {"drag", {2, 2}},
+      {"drag", {2, 2}},        {"hide", {1, 1}},       {"show", {1, 1}},
   };
   return table;
 }
@@ -231,6 +231,15 @@ bool Script::step(Explorer& e) {
         failed_ = true;
       } else {
         (scenes ? e.scene_choice_ : e.plot_choice_) = static_cast<int>(at - names.begin());
+      }
+    } else if (op == "hide" || op == "show") {
+      const auto parts = e.scene_parts();
+      const bool hidden = std::find(e.hidden_.begin(), e.hidden_.end(), w[1]) != e.hidden_.end();
+      if (std::find(parts.begin(), parts.end(), w[1]) == parts.end()) {
+        report(c, op + ": the scene shows no part named '" + w[1] + "'");
+        failed_ = true;
+      } else if (hidden == (op == "show")) {
+        e.toggle(w[1]);
       }
     } else if (op == "frames") {
       frames_left_ = static_cast<int>(std::stod(w[1]));

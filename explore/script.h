@@ -13,6 +13,7 @@
 //   seek 1.2 | speed 2 | pause
 //   turn 30 -10 | zoom 1.5 | reset-view      the view: degrees right and up, a factor
 //   show-scene NAME|motion | show-plot NAME|strip
+//   hide "energy ellipsoid" | show "energy ellipsoid"   a part of the scene (its legend entry)
 //   frames 3                  draws 3 frames
 //   wait 5                    5 s of wall time, the window live (a person or xdotool acts)
 //   screenshot FILE           the window as a PNG

@@ -302,6 +302,40 @@ Scene3D Scene3D::faded(const std::string& label, float opacity) const {
   return out;
 }
 
+std::vector<std::string> Scene3D::legend_labels() const {
+  std::vector<std::string> out;
+  const auto add = [&out](const std::string& label) {
+    if (!label.empty() && std::find(out.begin(), out.end(), label) == out.end())
+      out.push_back(label);
+  };
+  for (const Object& o : objects_) add(o.label);
+  for (const Polyline& pl : polylines_) add(pl.label);
+  return out;
+}
+
+Scene3D Scene3D::without(const std::vector<std::string>& hidden) const {
+  if (hidden.empty()) return *this;
+  const auto is_hidden = [&hidden](const std::string& label) {
+    return std::find(hidden.begin(), hidden.end(), label) != hidden.end();
+  };
+  Scene3D out = *this;
+  // each list on its own: an unlabelled part goes with the labelled part before it
+  const auto filter = [&is_hidden](auto& parts) {
+    bool hiding = false;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      if (!parts[k].label.empty()) hiding = is_hidden(parts[k].label);
+      if (hiding) continue;
+      if (kept != k) parts[kept] = std::move(parts[k]);
+      ++kept;
+    }
+    parts.resize(kept);
+  };
+  filter(out.objects_);
+  filter(out.polylines_);
+  return out;
+}
+
 Scene3D Scene3D::scaled(double k) const {
   Scene3D out = *this;
   const Eigen::Affine3d scale(Eigen::Scaling(k));

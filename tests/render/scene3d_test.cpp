@@ -264,3 +264,40 @@ TEST_CASE("scene3d: the fitted camera is the one render uses, and a merge fits b
   const Camera wide = fitted_camera(both, 640, 480), tight = fitted_camera(a, 640, 480);
   CHECK((wide.eye - wide.target).norm() > (tight.eye - tight.target).norm());
 }
+
+TEST_CASE("scene3d: a part hidden by its legend entry takes its unlabelled followers, no more") {
+  Scene3D s;
+  s.add_sphere({0, 0, 0}, 1.0, {}, "body");
+  s.add_tube({{0, 0, 0}, {1, 0, 0}}, 0.1, {}, "polhode");
+  s.add_tube({{0, 1, 0}, {1, 1, 0}}, 0.1);  // the polhode's second loop
+  s.add_arrow({0, 0, 0}, {0, 0, 2}, 0.05, {}, "L");
+  s.add_polyline({{0, 0, 0}, {2, 2, 2}}, kBlack, 2.0, "path");
+  s.add_polyline({{0, 0, 0}, {-2, 2, 2}}, kBlack, 2.0);
+  CHECK(s.legend_labels() == std::vector<std::string>{"body", "polhode", "L", "path"});
+  const Scene3D without = s.without({"polhode", "path"});
+  std::vector<std::string> labels;
+  for (const auto& o : without.objects()) labels.push_back(o.label);
+  // the sphere and the arrow (its shaft, then its unlabelled head), their labels intact:
+  // both polhode loops gone
+  CHECK(labels == std::vector<std::string>{"body", "L", ""});
+  CHECK(without.polylines().empty());
+  CHECK(without.legend_labels() == std::vector<std::string>{"body", "L"});
+  CHECK(s.without({}).objects().size() == s.objects().size());
+}
+
+TEST_CASE("scene3d: a faded scene is the same geometry, faint, under one legend entry") {
+  Scene3D s;
+  s.add_sphere({0, 0, 0}, 1.0, {kBlue, 0.8f}, "body");
+  s.add_arrow({0, 0, 0}, {0, 0, 2}, 0.05, {kVermillion}, "L");
+  s.add_polyline({{0, 0, 0}, {2, 2, 2}}, kBlack, 2.0, "path");
+  s.add_label({1, 1, 1}, "P");
+  const Scene3D f = s.faded("exact", 0.25f);
+  REQUIRE(f.objects().size() == s.objects().size());
+  CHECK(f.objects()[0].material.opacity == 0.8f * 0.25f);
+  CHECK(f.objects()[1].material.opacity == 0.25f);
+  CHECK(f.objects()[2].label.empty());
+  CHECK(f.objects()[0].transform.matrix() == s.objects()[0].transform.matrix());
+  CHECK(f.polylines()[0].color.a == 0.25f);
+  CHECK(f.labels().empty());
+  CHECK(f.legend_labels() == std::vector<std::string>{"exact"});
+}
