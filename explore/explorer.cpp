@@ -122,6 +122,7 @@ void Explorer::open(const std::string& name) {
     if (labs_[k].name != name) continue;
     lab_index_ = k;
     session_ = labs_[k].make();
+    if (window_.set_title) window_.set_title("rigidlab explore: " + name);
     fields_.assign(session_->input_count(), Field{});
     orbit_ = {};
     scene_choice_ = plot_choice_ = export_figure_ = 0;
@@ -360,11 +361,16 @@ void Explorer::input_widget(std::size_t i) {
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
         ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput;
         if (span.log) flags |= ImGuiSliderFlags_Logarithmic;
-        // the slider's ends as its text; the value itself is in the field beside it
-        const std::string ends = fmt::format("{:.3g} .. {:.3g}", span.lo, span.hi);
-        if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &x, &span.lo, &span.hi,
-                                ends.c_str(), flags)) {
+        if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &x, &span.lo, &span.hi, "%.4g",
+                                flags)) {
           apply(x);
+        }
+        // the slider's ends; a value beyond them is typed in the field
+        if (ImGui::IsItemHovered()) {
+          ImGui::SetTooltip("%s", fmt::format("{:.4g} to {:.4g}{}; type any value the rule allows "
+                                              "in the field",
+                                              span.lo, span.hi, span.log ? ", logarithmic" : "")
+                                      .c_str());
         }
         // a slider held: the frames show the new inputs with the camera kept
         if (ImGui::IsItemActive()) interacting_ = true;

@@ -32,6 +32,8 @@ struct Window {
   std::function<render::Image()> read_frame;
   /// Asks the window to close after this frame.
   std::function<void()> close;
+  /// Names the window (the lab shown).
+  std::function<void(const std::string&)> set_title;
 };
 
 class Explorer {

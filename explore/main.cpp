@@ -229,6 +229,9 @@ int main(int argc, char** argv) {
       glfwSetClipboardString(window, text.c_str());
     };
     hooks.close = [window] { glfwSetWindowShouldClose(window, GLFW_TRUE); };
+    hooks.set_title = [window](const std::string& text) {
+      glfwSetWindowTitle(window, text.c_str());
+    };
     hooks.read_frame = [window, &gl] {
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
