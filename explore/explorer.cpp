@@ -537,20 +537,27 @@ const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& n
 
 }  // namespace
 
-const render::Scene3D* Explorer::shown_scene(render::Scene3D& storage) const {
+const render::Scene3D* Explorer::shown_scene() const {
   const lab::Animation* motion = session_->animation();
   const auto names = choices_of(*session_, true, motion != nullptr);
   if (names.empty()) return nullptr;
   const std::string& name = names[std::min<std::size_t>(scene_choice_, names.size() - 1)];
   if (motion != nullptr && name == "motion") {
-    storage = motion->scene(time_);
-    storage.title = session_->report().figure_title(storage.title);
-    // an integrator's motion, with the exact one laid over it faintly: drift is seen
-    if (const lab::Animation* exact = exact_motion()) {
-      storage.merge(exact->scene(std::min(time_, exact->seconds))
-                        .faded("the exact motion (faint): the drift is the gap"));
+    // made once for a state and a time: a frame asks for it more than once
+    MotionScene& m = motion_scene_;
+    if (!(m.generation == session_->generation() && m.time == time_ && m.lab == lab_index_)) {
+      m.scene = motion->scene(time_);
+      m.scene.title = session_->report().figure_title(m.scene.title);
+      // an integrator's motion, with the exact one laid over it faintly: drift is seen
+      if (const lab::Animation* exact = exact_motion()) {
+        m.scene.merge(exact->scene(std::min(time_, exact->seconds))
+                          .faded("the exact motion (faint): the drift is the gap"));
+      }
+      m.generation = session_->generation();
+      m.time = time_;
+      m.lab = lab_index_;
     }
-    return &storage;
+    return &m.scene;
   }
   return &std::get<render::Scene3D>(figure_named(*session_, name)->figure);
 }
@@ -580,8 +587,7 @@ render::Camera Explorer::base_camera(int width, int height) {
   if (same_view && (fit_.generation == session_->inputs_generation() || interacting_)) {
     return fit_.camera;
   }
-  render::Scene3D storage;
-  const render::Scene3D* shown = shown_scene(storage);
+  const render::Scene3D* shown = shown_scene();
   const lab::Animation* motion = session_->animation();
   render::Scene3D envelope = *shown;
   if (motion != nullptr && scene_choice_ == 0) {
@@ -601,8 +607,7 @@ render::Camera Explorer::base_camera(int width, int height) {
 }
 
 render::Scene3D Explorer::view_scene(int width, int height) {
-  render::Scene3D storage;
-  const render::Scene3D* shown = shown_scene(storage);
+  const render::Scene3D* shown = shown_scene();
   render::Scene3D scene = shown->without(hidden_);
   scene.camera = orbit_.apply(base_camera(width, height));
   return scene;
@@ -619,8 +624,7 @@ void Explorer::toggle(const std::string& label) {
 }
 
 std::vector<std::string> Explorer::scene_parts() const {
-  render::Scene3D storage;
-  const render::Scene3D* shown = shown_scene(storage);
+  const render::Scene3D* shown = shown_scene();
   return shown == nullptr ? std::vector<std::string>{} : shown->legend_labels();
 }
 
@@ -635,8 +639,7 @@ void Explorer::scene_view(float x, float y, float w, float h) {
   const ImGuiIO& io = ImGui::GetIO();
   const int pw = std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x));
   const int ph = std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y));
-  render::Scene3D storage;
-  const bool any = shown_scene(storage) != nullptr;
+  const bool any = shown_scene() != nullptr;
   if (any) {
     const Drawn want{session_->generation(), scene_choice_, pw, ph, time_, orbit_, true,
                      hidden_version_};
@@ -690,17 +693,6 @@ std::optional<render::Plot2D> Explorer::shown_plot() const {
   const std::size_t k = std::min<std::size_t>(plot_choice_, names.size() - 1);
   if (strip && k == 0) return motion->strip(time_);
   render::Plot2D plot = std::get<render::Plot2D>(figure_named(*session_, names[k])->figure);
-  // the time shown, on the axes that are the motion's time
-  for (int r = 0; r < plot.rows(); ++r) {
-    for (int c = 0; c < plot.cols(); ++c) {
-      render::Panel& panel = plot.panel(r, c);
-      if (!panel.x.motion_time || motion == nullptr) continue;
-      render::RefLine& line = panel.add_ref_line(time_, true);
-      line.color = render::kBlack;
-      line.dash = render::Dash::kSolid;
-      line.width = 2.0;
-    }
-  }
   return plot;
 }
 
@@ -716,31 +708,32 @@ void Explorer::plot_view(float x, float y, float w, float h) {
   const int pw = std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x));
   const int ph = std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y));
   const lab::Animation* motion = session_->animation();
-  // a plot that follows the motion's time is drawn again as it plays
-  bool follows = motion != nullptr && motion->strip && plot_choice_ == 0;
-  if (motion != nullptr && !follows) {
-    const auto names = choices_of(*session_, false, bool(motion->strip));
-    if (!names.empty()) {
-      const auto* f =
-          figure_named(*session_, names[std::min<std::size_t>(plot_choice_, names.size() - 1)]);
-      if (f != nullptr) {
-        const auto& plot = std::get<render::Plot2D>(f->figure);
-        for (int r = 0; r < plot.rows(); ++r) {
-          for (int c = 0; c < plot.cols(); ++c) follows = follows || plot.panel(r, c).x.motion_time;
-        }
-      }
-    }
-  }
-  const Drawn want{session_->generation(), plot_choice_, pw, ph, follows ? time_ : 0.0, {}, true};
+  // the motion's strip is drawn again as it plays; another plot once, its time cursor
+  // laid over it
+  const bool strip = motion != nullptr && motion->strip && plot_choice_ == 0;
+  const Drawn want{session_->generation(), plot_choice_, pw, ph, strip ? time_ : 0.0, {}, true};
   const Drawn& had = plot_drawn_;
   const bool stale = !had.valid || had.generation != want.generation || had.choice != want.choice ||
                      had.width != pw || had.height != ph || had.time != want.time;
-  std::optional<render::Plot2D> plot;
   if (stale) {
-    plot = shown_plot();
+    const std::optional<render::Plot2D> plot = shown_plot();
+    cursors_.clear();
     if (plot) {
       try {
         plot_image_.draw(*plot, pw, ph);
+        // where the panels against the motion's time are, for the cursor
+        if (motion != nullptr && !strip) {
+          const render::Plot2D::Layout layout = render::layout(*plot, pw, ph);
+          for (int r = 0, k = 0; r < plot->rows(); ++r) {
+            for (int c = 0; c < plot->cols(); ++c, ++k) {
+              const render::Axis& x = plot->panel(r, c).x;
+              if (x.motion_time && x.scale == render::Scale::kLinear) {
+                const auto& p = layout.panels[k];
+                cursors_.push_back({p.frame, p.x_lo, p.x_hi});
+              }
+            }
+          }
+        }
       } catch (const std::exception& e) {
         draw_error_ = e.what();
       }
@@ -750,9 +743,19 @@ void Explorer::plot_view(float x, float y, float w, float h) {
   }
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   if (plot_drawn_.valid && plot_image_.texture() != 0) {
-    ImGui::GetWindowDrawList()->AddImage(
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    list->AddImage(
         reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(plot_image_.texture())), origin,
         ImVec2(origin.x + w, origin.y + h), ImVec2(0, 1), ImVec2(1, 0));
+    const float sx = w / static_cast<float>(pw), sy = h / static_cast<float>(ph);
+    for (const Cursor& c : cursors_) {
+      if (!(time_ >= c.x_lo && time_ <= c.x_hi) || !(c.x_hi > c.x_lo)) continue;
+      const double px = c.frame.x0 + (time_ - c.x_lo) / (c.x_hi - c.x_lo) * c.frame.width();
+      const float X = origin.x + static_cast<float>(px) * sx;
+      list->AddLine(ImVec2(X, origin.y + static_cast<float>(c.frame.y0) * sy),
+                    ImVec2(X, origin.y + static_cast<float>(c.frame.y1) * sy),
+                    IM_COL32(0, 0, 0, 255), 2.0f);
+    }
   } else {
     ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
     ImGui::TextColored(kDimColor, "this lab draws no plot");
@@ -946,8 +949,7 @@ std::string Explorer::save_figure(const std::string& name, const std::string& pa
 }
 
 std::string Explorer::save_view(const std::string& path, int w, int h) {
-  render::Scene3D storage;
-  if (shown_scene(storage) == nullptr) return "this lab draws no 3D scene";
+  if (shown_scene() == nullptr) return "this lab draws no 3D scene";
   try {
     render::Scene3D scene = view_scene(w, h);
     render::save_png(scene, path, w, h);

@@ -18,6 +18,7 @@
 #include "common/registry.h"
 #include "orbit.h"
 #include "rigid/render/live.h"
+#include "rigid/render/rect.h"
 
 namespace rigid::explore {
 
@@ -90,7 +91,7 @@ class Explorer {
   void say(const std::string& text, bool error = false);
 
   // What is shown: the motion or a figure of the lab.
-  const render::Scene3D* shown_scene(render::Scene3D& storage) const;
+  const render::Scene3D* shown_scene() const;
   render::Camera base_camera(int width, int height);
   std::optional<render::Plot2D> shown_plot() const;
   render::Scene3D view_scene(int width, int height);
@@ -143,6 +144,20 @@ class Explorer {
     bool valid = false;
     long hidden = 0;
   } scene_drawn_, plot_drawn_;
+  // the motion's scene at a time, made once a frame
+  struct MotionScene {
+    long generation = -1;
+    double time = -1.0;
+    std::size_t lab = 0;
+    render::Scene3D scene;
+  };
+  mutable MotionScene motion_scene_;
+  // the plot's panels against the motion's time: where the time cursor goes
+  struct Cursor {
+    render::ScreenRect frame;
+    double x_lo = 0, x_hi = 1;
+  };
+  std::vector<Cursor> cursors_;
   std::vector<std::string> hidden_;  // the scene's parts (legend entries) not shown
   long hidden_version_ = 0;
   std::string draw_error_;
