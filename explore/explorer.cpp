@@ -10,7 +10,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -59,10 +58,6 @@ const ImVec4 kErrataColor(0.70f, 0.35f, 0.0f, 1.0f);
 const ImVec4 kDimColor(0.40f, 0.40f, 0.45f, 1.0f);
 const ImVec4 kHeadingColor(0.0f, 0.35f, 0.60f, 1.0f);
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // A word a shell would read as itself, else single-quoted.
 std::string shell_word(const std::string& word) {
   if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -74,19 +69,20 @@ std::string shell_word(const std::string& word) {
   return quoted + "'";
 }
 
-// "1600x1200" into a size a figure can have; false if it is not one.
-bool read_size(const std::string& text, int& w, int& h) {
+}  // namespace
+
+const char* const kFigureSizeRule = "size: must be WxH, each 16 to 8192";
+
+bool read_figure_size(const std::string& text, int& width, int& height) {
   int a = 0, b = 0;
   char x = 0, extra = 0;
   if (std::sscanf(text.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X'))
     return false;
   if (a < 16 || b < 16 || a > 8192 || b > 8192) return false;
-  w = a;
-  h = b;
+  width = a;
+  height = b;
   return true;
 }
-
-}  // namespace
 
 // What a field shows: the text as typed, and the rule it broke.
 struct Explorer::Field {
@@ -166,14 +162,12 @@ std::string Explorer::set_text(const std::string& flag, const std::string& text)
   }
   Field& field = fields_[i];
   field.text = text;
-  const auto t0 = std::chrono::steady_clock::now();
   if (auto refusal = session_->set_text(i, text)) {
     field.refusal = refusal->message;
     return field.refusal;
   }
   field.refusal.clear();
   after_change();
-  last_update_ = seconds_since(t0);
   return "";
 }
 
@@ -272,15 +266,9 @@ void Explorer::frame(double seconds) {
   numbers_panel();
   ImGui::End();
 
-  const auto t0 = std::chrono::steady_clock::now();
-  const bool changed = shown_generation_ != session_->generation();
   scene_view(kInputsWidth, 0, center_w, scene_h);
   time_panel(kInputsWidth, scene_h, center_w, kTimeBarHeight);
   plot_view(kInputsWidth, scene_h + kTimeBarHeight, center_w, plot_h);
-  if (changed) {
-    last_update_ += seconds_since(t0);
-    shown_generation_ = session_->generation();
-  }
 }
 
 // ---- inputs ------------------------------------------------------------------
@@ -335,14 +323,12 @@ void Explorer::input_widget(std::size_t i) {
   ImGui::TextWrapped("%s", label.c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.flag().c_str());
   const auto apply = [&](const InputValue& v) {
-    const auto t0 = std::chrono::steady_clock::now();
     if (auto refusal = session_->set(i, v)) {
       field.refusal = refusal->message;
     } else {
       field.refusal.clear();
       after_change();
     }
-    last_update_ = seconds_since(t0);
   };
   const auto text_field = [&](const char* hint) {
     ImGui::SetNextItemWidth(-1);
@@ -562,6 +548,25 @@ const render::Scene3D* Explorer::shown_scene() const {
   return &std::get<render::Scene3D>(figure_named(*session_, name)->figure);
 }
 
+namespace {
+
+// A window for a figure's image at (x, y), w × h, without padding or decoration; the
+// image's size in pixels of the framebuffer.
+std::pair<int, int> begin_view(const char* name, float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::Begin(name, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PopStyleVar();
+  const ImGuiIO& io = ImGui::GetIO();
+  return {std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x)),
+          std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y))};
+}
+
+}  // namespace
+
 // The same inputs with the exact method, when an integrator's motion is shown (and the
 // lab has a closed form to offer); nullptr otherwise.
 const lab::Animation* Explorer::exact_motion() const {
@@ -629,16 +634,8 @@ std::vector<std::string> Explorer::scene_parts() const {
 }
 
 void Explorer::scene_view(float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  ImGui::Begin("Scene", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::PopStyleVar();
+  const auto [pw, ph] = begin_view("Scene", x, y, w, h);
   const ImGuiIO& io = ImGui::GetIO();
-  const int pw = std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x));
-  const int ph = std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y));
   const bool any = shown_scene() != nullptr;
   if (any) {
     const Drawn want{session_->generation(), scene_choice_, pw, ph, time_, orbit_, true,
@@ -697,16 +694,7 @@ std::optional<render::Plot2D> Explorer::shown_plot() const {
 }
 
 void Explorer::plot_view(float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  ImGui::Begin("Plot", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::PopStyleVar();
-  const ImGuiIO& io = ImGui::GetIO();
-  const int pw = std::max(16, static_cast<int>(w * io.DisplayFramebufferScale.x));
-  const int ph = std::max(16, static_cast<int>(h * io.DisplayFramebufferScale.y));
+  const auto [pw, ph] = begin_view("Plot", x, y, w, h);
   const lab::Animation* motion = session_->animation();
   // the motion's strip is drawn again as it plays; another plot once, its time cursor
   // laid over it
@@ -872,18 +860,18 @@ void Explorer::export_section() {
     }
   };
   int w = 0, h = 0;
-  const bool size_ok = read_size(figure_size_, w, h);
+  const bool size_ok = read_figure_size(figure_size_, w, h);
   if (!figures.empty()) {
     if (ImGui::Button("PNG")) {
       const std::string name = figures[export_figure_].name;
       const std::string path = path_or(session_->name() + "_" + name + ".png");
-      done(size_ok ? save_figure(name, path, w, h) : "size: must be WxH, each 16 to 8192", path);
+      done(size_ok ? save_figure(name, path, w, h) : kFigureSizeRule, path);
     }
     ImGui::SameLine();
   }
   if (ImGui::Button("View PNG")) {
     const std::string path = path_or(session_->name() + "_view.png");
-    done(size_ok ? save_view(path, w, h) : "size: must be WxH, each 16 to 8192", path);
+    done(size_ok ? save_view(path, w, h) : kFigureSizeRule, path);
   }
   ImGui::SameLine();
   if (ImGui::Button("JSON")) {

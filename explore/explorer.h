@@ -26,6 +26,10 @@ using lab::LabEntry;
 
 class Script;
 
+/// The rule of an exported figure's size, and "1600x1200" read by it (false: broken).
+extern const char* const kFigureSizeRule;
+bool read_figure_size(const std::string& text, int& width, int& height);
+
 /// What the window does for the explorer: its size, time, clipboard and pixels.
 struct Window {
   std::function<void(const std::string&)> set_clipboard;
@@ -68,12 +72,8 @@ class Explorer {
   /// The exit status once the window has closed: 0, or what a failed script asks.
   int status() const { return status_; }
 
-  /// The frame's parts the tests and the bench read.
+  /// The lab shown.
   lab::Session& session() { return *session_; }
-  const Orbit& orbit() const { return orbit_; }
-  double time() const { return time_; }
-  /// Seconds spent recomputing and redrawing in the last frame that changed anything.
-  double last_update_seconds() const { return last_update_; }
 
  private:
   friend class Script;
@@ -115,7 +115,6 @@ class Explorer {
   std::unique_ptr<lab::Session> session_;
   Window window_;
   std::vector<Field> fields_;
-  long shown_generation_ = -1;
 
   // the view
   Orbit orbit_;
@@ -173,7 +172,6 @@ class Explorer {
   std::string screenshot_path_;
   std::unique_ptr<Script> script_;
   int status_ = 0;
-  double last_update_ = 0.0;
 };
 
 }  // namespace rigid::explore

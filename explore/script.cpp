@@ -165,17 +165,10 @@ bool Script::step(Explorer& e) {
   const std::string& op = w[0];
   const auto size_of = [&](std::size_t k, int& width, int& height) {
     width = 1600, height = 1200;
-    if (w.size() <= k) return true;
-    int a = 0, b = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(w[k].c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || x != 'x' || a < 16 ||
-        b < 16 || a > 8192 || b > 8192) {
-      report(c, "size: must be WxH, each 16 to 8192 (got " + w[k] + ")");
-      failed_ = true;
-      return false;
-    }
-    width = a, height = b;
-    return true;
+    if (w.size() <= k || read_figure_size(w[k], width, height)) return true;
+    report(c, std::string(kFigureSizeRule) + " (got " + w[k] + ")");
+    failed_ = true;
+    return false;
   };
   const auto exported = [&](const std::string& error) {
     if (error.empty()) return;

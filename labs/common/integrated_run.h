@@ -52,6 +52,13 @@ struct IntegrationInputs {
   bool compare = true;
 };
 
+/// A lab's preview (LabProgram::preview) that leaves out only the comparison of every
+/// method; `In` has its integration settings as `integration`.
+template <class In>
+void leave_out_comparisons(In& in) {
+  in.integration.compare = false;
+}
+
 /// The table of the numerical inputs: --method, --tolerance, --step (whose default
 /// the lab derives, described by `step_default`) and, if `offer_project`, --project.
 InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,

@@ -217,7 +217,7 @@ LabProgram<Inputs, Report> program() {
           figures,
           animation,
           /*csv=*/true,
-          /*preview=*/[](Inputs& in) { in.integration.compare = false; }};
+          /*preview=*/leave_out_comparisons<Inputs>};
 }
 
 }  // namespace rigid::lab::poinsot

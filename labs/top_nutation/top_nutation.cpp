@@ -325,7 +325,7 @@ LabProgram<Inputs, Report> program() {
           figures,
           animation,
           /*csv=*/true,
-          /*preview=*/[](Inputs& in) { in.integration.compare = false; }};
+          /*preview=*/leave_out_comparisons<Inputs>};
 }
 
 }  // namespace rigid::lab::top_nutation
