@@ -19,6 +19,7 @@ TEST_CASE("contract: every lab answers --help with its options, units and defaul
   for (const std::string& lab : all_labs()) {
     INFO(lab);
     const auto run = run_lab(lab, "--help");
+    INFO(run.err);
     CHECK(run.status == 0);
     for (const char* word : {"--json", "--figures", "--figure-size", "--quiet"}) {
       CHECK(run.out.find(word) != std::string::npos);
@@ -32,6 +33,7 @@ TEST_CASE("contract: every lab's JSON gives each result a unit and the textbook'
   for (const std::string& lab : all_labs()) {
     INFO(lab);
     const auto run = run_lab(lab, "--json");
+    INFO(run.err);
     REQUIRE(run.status == 0);
     CHECK(run.err.empty());
     const auto j = run.json();
@@ -62,6 +64,7 @@ TEST_CASE("contract: every lab prints a table that starts with its name") {
   for (const std::string& lab : all_labs()) {
     INFO(lab);
     const auto run = run_lab(lab, "");
+    INFO(run.err);
     CHECK(run.status == 0);
     CHECK(run.out.rfind(lab + " - ", 0) == 0);
     CHECK(run.out.find("textbook") != std::string::npos);
@@ -73,6 +76,7 @@ TEST_CASE("contract: a physical input changed from the text's drops the textbook
   // Any physical input changed from the text's changes the example: no printed value
   // may stand beside it.
   const auto run = run_lab("tire_balancing", "--json --omega 100");
+  INFO(run.err);
   REQUIRE(run.status == 0);
   CHECK(run.json()["textbook"].empty());
   // The text's own values typed out are the text's example still.
@@ -341,6 +345,7 @@ TEST_CASE(
                                                  "' --figure-size 800X600 --figure-prefix book- "
                                                  "--csv '" +
                                                  csv + "'");
+  INFO(run.err);
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const std::string version = j["version"];
@@ -436,6 +441,7 @@ TEST_CASE("contract: any bytes in a file name: JSON stays valid, stderr and stdo
   const std::string name = "c\xff\xc2\x9b\xe2\x80\xae.csv";
   const std::string quoted = "'" + (dir / name).string() + "'";
   const auto run = run_lab("poinsot", "--json --csv " + quoted);
+  INFO(run.err);
   REQUIRE(run.status == 0);
   const nlohmann::json json = run.json();  // parses: every string is UTF-8
   const std::string written = json["outputs"].back().get<std::string>();

@@ -144,6 +144,7 @@ void check_scripted_session(const std::string& lab) {
   script += "print-command\nquit\n";
   const Run run = run_explorer(lab, script, dir);
   INFO(run.out << run.err);
+  INFO(run.err);
   REQUIRE(run.status == 0);
   const auto lines = lines_of(run.out);
   REQUIRE(!lines.empty());
@@ -203,6 +204,7 @@ TEST_CASE("explore: a typed value that breaks a rule shows the rule and the view
                                    (dir / "shot.png").string() + "\nprint-json\nquit\n",
                                dir);
   INFO(run.out << run.err);
+  INFO(run.err);
   REQUIRE(run.status == 0);
   CHECK(run.out.find("refused: --mass: must be positive (got -1)") != std::string::npos);
   CHECK(run.out.find("refused: --arm: must be a number (got 'abc')") != std::string::npos);
@@ -315,6 +317,7 @@ TEST_CASE("explore: random slider moves through the window across every lab neve
   const Run run = run_explorer("lamina_tensor", script, dir);
   INFO(run.err.substr(0, 2000));
   CHECK(moves >= 150);
+  INFO(run.err);
   REQUIRE(run.status == 0);
   // each lab's last numbers: whole JSON objects, no NaN or infinity among them
   std::size_t at = 0;

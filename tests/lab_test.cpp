@@ -160,6 +160,7 @@ TEST_CASE("tennis_racquet: --csv holds the exact motion and the integrator's ome
   std::remove(path.c_str());
   const auto run =
       run_lab("tennis_racquet", "--json --method rkf78 --tolerance 1e-12 --csv " + path);
+  INFO(run.err);
   REQUIRE(run.status == 0);
   const double t_end = run.json()["results"]["t_end_s"];
   const rigid::test::Csv csv = rigid::test::read_csv(path);
@@ -229,6 +230,7 @@ TEST_CASE("top_nutation: --csv holds theta beside the exact theta, and a unit qu
   const std::string path = "/tmp/rigid_top_test_" + std::to_string(::getpid()) + ".csv";
   std::remove(path.c_str());
   const auto run = run_lab("top_nutation", "--json --method rkf78 --tolerance 1e-12 --csv " + path);
+  INFO(run.err);
   REQUIRE(run.status == 0);
   const double t_end = run.json()["results"]["t_end_s"];
   const rigid::test::Csv csv = rigid::test::read_csv(path);
@@ -306,6 +308,7 @@ TEST_CASE("labs: which integrator drifts, answered by the table at equal cost, a
   for (const char* lab : {"poinsot", "top_nutation"}) {
     INFO(lab);
     const auto run = run_lab(lab, "--json --method rk4 --periods 5");
+    INFO(run.err);
     REQUIRE(run.status == 0);
     const auto j = run.json();
     const auto& r = j["results"];
@@ -338,6 +341,7 @@ TEST_CASE("labs: which integrator drifts, answered by the table at equal cost, a
 
 TEST_CASE("labs: an option the method does not use is said so, once the run succeeds") {
   const auto run = run_lab("tennis_racquet", "--json --method rk4 --tolerance 1e-6");
+  INFO(run.err);
   REQUIRE(run.status == 0);
   CHECK(run.err ==
         "tennis_racquet: warning: --tolerance: rk4 takes a fixed step; it is not used "
@@ -358,6 +362,7 @@ TEST_CASE("labs: an option the method does not use is said so, once the run succ
 TEST_CASE("poinsot: a solid box (a phone) beside the ellipsoid, its moments by eq. 40") {
   const double m = 0.2, A = 0.16, B = 0.08, C = 0.008;
   const auto run = run_lab("poinsot", "--json --box 0.16,0.08,0.008 --mass 0.2 --omega 0,5,0.01");
+  INFO(run.err);
   REQUIRE(run.status == 0);
   const auto j = run.json();
   const auto& I = j["results"]["principal_moments"];
@@ -379,6 +384,7 @@ TEST_CASE("poinsot: --animate writes the motion as an MP4 or a WebP, and says so
     const std::string path = dir + "/poinsot." + ext;
     const rigid::test::Run run = rigid::test::run_lab(
         "poinsot", "--json --animate " + path + " --duration 0.5 --fps 8 --animation-size 480x270");
+    INFO(run.err);
     INFO(run.err);
     REQUIRE(run.status == 0);
     const nlohmann::json a = run.json()["animation"];
@@ -443,6 +449,7 @@ TEST_CASE("labs with motion: --animate writes a short animation of each") {
     const rigid::test::Run run =
         rigid::test::run_lab(lab, "--json --animate " + path + " --duration 0.2 --fps 10");
     INFO(lab << ": " << run.err);
+    INFO(run.err);
     REQUIRE(run.status == 0);
     CHECK(run.json()["animation"]["frames"] == 2);
     CHECK(std::filesystem::file_size(path) > 0);
@@ -458,6 +465,7 @@ TEST_CASE("labs with motion: --animate writes a short animation of each") {
     const rigid::test::Run run = rigid::test::run_lab(
         lab, method + " --json --animate " + dir + "/i.mp4 --duration 0.5 --fps 10");
     INFO(lab << " " << method << ": " << run.err);
+    INFO(run.err);
     CHECK(run.status == 0);
     CHECK(run.json()["animation"]["frames"] == 5);
   }
@@ -474,6 +482,7 @@ TEST_CASE("figures of extreme valid input are drawn, not an error") {
         {"lamina_tensor", "--a 1e-60 --b 1e-60 --mass 1e-60"}}) {
     const auto run = rigid::test::run_lab(lab, "--quiet " + args + " --figures " + dir);
     INFO(lab << " " << args << ": " << run.err);
+    INFO(run.err);
     CHECK(run.status == 0);
     CHECK(run.err.empty());
   }

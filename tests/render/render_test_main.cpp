@@ -3,7 +3,6 @@
 // --context-child FILE` it writes the facts of its context to FILE: the GL
 // context is one per process, so tests that need another backend, sample count
 // or thread count use a child.
-#define CATCH_CONFIG_RUNNER
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -13,6 +12,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "catch_runner.h"
 #include "render_fixtures.h"
 #include "rigid/render/context.h"
 #include "rigid/render/draw.h"
@@ -68,5 +68,5 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  return Catch::Session().run(argc, argv);
+  return rigid::test::run_catch(argc, argv);
 }
