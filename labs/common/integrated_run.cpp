@@ -32,7 +32,7 @@ InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,
   std::vector<std::string> methods{"exact"};
   for (const Method m : kAllMethods) methods.emplace_back(method_name(m));
   t.choice("--method", &IntegrationInputs::method, methods,
-           method_help + " (exact: the closed form; " + method_help_list() + ")")
+           method_help + " (exact: the closed form; " + method_help_list() + "); " + kMethodAdvice)
       .numerical();
   t.number("--tolerance", &IntegrationInputs::tolerance,
            "relative and absolute tolerance of adaptive methods")
@@ -197,10 +197,28 @@ void report_drifts(Report& report, const std::vector<double>& t,
   }
 }
 
+std::string method_choice(const OdeOptions& options) {
+  return std::string(method_name(options.method)) +
+         (options.project_invariants ? " --project" : "");
+}
+
+void rank_by_error(std::vector<MethodComparison>& at_cost) {
+  const auto ranked = [](const MethodComparison& c) {
+    return c.completed && std::isfinite(c.max_error);
+  };
+  std::stable_sort(at_cost.begin(), at_cost.end(),
+                   [&](const MethodComparison& a, const MethodComparison& b) {
+                     if (ranked(a) != ranked(b)) return ranked(a);
+                     return ranked(a) && a.max_error < b.max_error;
+                   });
+}
+
 void report_comparisons(Report& report, const MethodComparisons& comparisons,
                         const OdeOptions& settings, const ExactErrorWords& words) {
-  report.section(fmt::format("every integrator against {} (tolerance {:g}, step {:.4g} s)",
-                             words.against, settings.rel_tol, settings.step));
+  report.section(
+      fmt::format("every integrator against {} at its own cost: a fixed step of {:.4g} "
+                  "s, an adaptive method at tolerance {:g} (equal cost: below)",
+                  words.against, settings.step, settings.rel_tol));
   for (const MethodComparison& c : comparisons.at_settings) {
     const std::string name(method_name(c.options.method));
     const std::string key = words.method_key_prefix + json_key(name) + words.method_key_suffix;
@@ -208,16 +226,19 @@ void report_comparisons(Report& report, const MethodComparisons& comparisons,
     if (!c.completed) {
       report.result_none(key, label, words.unit,
                          fmt::format("not run: needs more than {} steps", kMaxComparisonSteps));
-    } else if (!std::isfinite(c.max_error)) {
+      continue;
+    }
+    if (!std::isfinite(c.max_error)) {
       report.result_none(key, label, words.unit, "diverged at this step");
     } else {
       report.result(key, label, words.in_unit ? words.in_unit(c.max_error) : c.max_error,
                     words.unit);
     }
+    report.remark(fmt::format("({} evaluations, {} steps)", c.evaluations, c.steps));
+    report.count_json("evaluations_" + json_key(name), c.evaluations);
+    report.count_json("steps_" + json_key(name), c.steps);
   }
-  if (!comparisons.at_cost.empty()) {
-    report_equal_cost(report, comparisons.at_cost, kEqualCostEvaluations, kEqualCostPeriods);
-  }
+  if (!comparisons.at_cost.empty()) report_equal_cost(report, comparisons, words);
 }
 
 double end_time(const std::optional<double>& t_end, const std::optional<double>& periods,
@@ -227,48 +248,74 @@ double end_time(const std::optional<double>& t_end, const std::optional<double>&
   return default_t_end;
 }
 
-void report_equal_cost(Report& report, const std::vector<MethodComparison>& at_cost,
-                       double evaluations_per_period, double periods) {
+void report_equal_cost(Report& report, const MethodComparisons& comparisons,
+                       const ExactErrorWords& words) {
+  const double periods = comparisons.at_cost_periods;
+  const std::string over = comparisons.run_periods > periods
+                               ? fmt::format("the first {:g} of the run's {:.6g} periods", periods,
+                                             comparisons.run_periods)
+                               : fmt::format("the run's {:.4g} periods", periods);
   report.section(
-      fmt::format("which method drifts: every method at {:g} evaluations a period, "
-                  "{:g} periods (a symplectic method's energy error stays in a band)",
-                  evaluations_per_period, periods));
+      fmt::format("which method to use: every method at {:g} evaluations a period "
+                  "over {}, the most accurate first ({})",
+                  kEqualCostEvaluations, over, words.label));
   report.result("equal_cost_evaluations_per_period", "evaluations a period (a Strang step: one)",
-                evaluations_per_period, "");
+                kEqualCostEvaluations, "");
   report.result("equal_cost_periods", "periods run", periods, "");
-  const InvariantError* least = nullptr;
-  Method least_method = Method::kSplitting;
-  for (const MethodComparison& c : at_cost) {
-    const std::string name(method_name(c.options.method));
-    const std::string key = json_key(name);
+  const auto error_in_unit = [&](double e) { return words.in_unit ? words.in_unit(e) : e; };
+  int rank = 0;
+  for (const MethodComparison& c : comparisons.at_cost) {
+    ++rank;
+    const std::string choice = method_choice(c.options);
+    const std::string key = json_key(std::string(method_name(c.options.method))) +
+                            (c.options.project_invariants ? "_project" : "");
+    const std::string error_key =
+        "equal_cost_" + words.method_key_prefix + key + words.method_key_suffix;
     const std::string setting = is_adaptive(c.options.method)
                                     ? fmt::format("tol {:.2g}", c.options.rel_tol)
                                     : fmt::format("h = {:.3g} s", c.options.step);
-    const std::string label = fmt::format("{:<15} {:<15} energy drift a period", name, setting);
+    const std::string label = fmt::format("{:>2}. {:<24} {}", rank, choice, setting);
+    report.count_json("equal_cost_rank_" + key, static_cast<std::size_t>(rank));
     if (!c.completed || !std::isfinite(c.max_error)) {
-      report.result_none("equal_cost_energy_drift_per_period_rel_" + key, label, "",
-                         "could not finish at this cost");
-      report.result_none("equal_cost_energy_error_max_rel_" + key, "  max |T - T0| / T0", "",
-                         "could not finish at this cost");
+      const std::string why =
+          c.completed ? "diverged at this cost" : "could not finish at this cost";
+      report.result_none(error_key, label, words.unit, why);
+      report.result_none("equal_cost_energy_drift_per_period_rel_" + key, "  energy drift", "",
+                         why);
+      report.result_none("equal_cost_energy_error_max_rel_" + key, "  largest energy error", "",
+                         why);
       continue;
     }
     const InvariantError& energy = c.invariants.at(kEnergyInvariant);
-    report.result("equal_cost_energy_drift_per_period_rel_" + key, label,
-                  energy.drift_per_period_rel, "");
-    report.result("equal_cost_energy_error_max_rel_" + key, "  largest energy error",
-                  energy.max_rel, "");
-    if (least == nullptr ||
-        std::abs(energy.drift_per_period_rel) < std::abs(least->drift_per_period_rel)) {
-      least = &energy;
-      least_method = c.options.method;
+    report.result(error_key, label, error_in_unit(c.max_error), words.unit);
+    report.remark(
+        fmt::format("({} evaluations, {} steps; energy drift {:.2g} a period, "
+                    "largest {:.2g})",
+                    c.evaluations, c.steps, energy.drift_per_period_rel, energy.max_rel));
+    report.count_json("equal_cost_evaluations_" + key, c.evaluations);
+    report.count_json("equal_cost_steps_" + key, c.steps);
+    report.result_json("equal_cost_energy_drift_per_period_rel_" + key, energy.drift_per_period_rel,
+                       "");
+    report.result_json("equal_cost_energy_error_max_rel_" + key, energy.max_rel, "");
+  }
+  const MethodComparison& best = comparisons.at_cost.front();
+  if (!best.completed || !std::isfinite(best.max_error)) {
+    report.result_none("recommended_method", "use", "",
+                       "no method finished at this cost: shorten the run");
+    return;
+  }
+  report.result_text("recommended_method", "use", method_choice(best.options));
+  std::string reason =
+      fmt::format("the least {} over {} at equal cost: {:.2g}{}", words.label, over,
+                  error_in_unit(best.max_error), words.unit.empty() ? "" : " " + words.unit);
+  if (comparisons.at_cost.size() > 1) {
+    const MethodComparison& next = comparisons.at_cost[1];
+    if (next.completed && std::isfinite(next.max_error)) {
+      reason += fmt::format(" (next: {}, {:.2g})", method_choice(next.options),
+                            error_in_unit(next.max_error));
     }
   }
-  if (least != nullptr) {
-    report.result_text("least_energy_drift", "least energy drift at equal cost",
-                       std::string(method_name(least_method)));
-    report.result_text("least_energy_drift_kind", "  its kind",
-                       std::string(method_kind(least_method)));
-  }
+  report.result_text("recommended_method_reason", "  why", reason);
 }
 
 std::string method_help_list() {

@@ -7,6 +7,7 @@
 // and the words its lab reports its errors in (ExactErrorWords).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <optional>
@@ -34,11 +35,19 @@ inline constexpr std::size_t kMaxBulirschStoerEvaluations = kMaxRunEvaluations /
 /// Each method of the comparison at the lab's settings takes at most this many steps:
 /// the comparison is an aside, 2e5 steps in all whatever the lab's own run takes.
 inline constexpr std::size_t kMaxComparisonSteps = 20'000;
-/// The comparison at equal cost: this many right-hand-side evaluations a period over
-/// this many periods (2e4 evaluations a method), enough for rk4's steady energy drift
-/// to leave the splittings' bounded band behind.
-inline constexpr double kEqualCostEvaluations = 200.0;
-inline constexpr double kEqualCostPeriods = 100.0;
+/// The comparison at equal cost, which names the method to use: every method at this
+/// many right-hand-side evaluations a period (rk4 at period / 250, a Strang splitting
+/// at period / 1000), over the run's own length up to kMaxRankedPeriods periods
+/// (1e6 evaluations a method), ranked by its largest error against the exact motion.
+inline constexpr double kEqualCostEvaluations = 1000.0;
+inline constexpr double kMaxRankedPeriods = 1000.0;
+
+/// Which method to use, as --method's help (and so the man pages) and the README give
+/// it: the answer of each lab's own ranking at equal cost ("which method to use") on
+/// the bodies of its tests, over 10 and over 1000 periods.
+inline constexpr char kMethodAdvice[] =
+    "to use: vern9 or vern8, with --project where the lab offers it: at equal cost the most "
+    "accurate here over 10 and 1000 periods (each run ranks every method for its own inputs)";
 
 /// The numerical inputs; `method` is "exact" (no integration) or an integrator's name.
 struct IntegrationInputs {
@@ -190,17 +199,29 @@ void report_drifts(Report& report, const Run& run, double period, bool exact,
 /// Every method compared with the exact motion.
 struct MethodComparisons {
   std::vector<MethodComparison> at_settings;  ///< at the lab's step and tolerance
-  std::vector<MethodComparison> at_cost;      ///< at kEqualCostEvaluations a period; or none
+  /// At kEqualCostEvaluations a period, ranked: the most accurate first; or none.
+  std::vector<MethodComparison> at_cost;
+  double at_cost_periods = 0.0;  ///< the periods the comparison at equal cost ran
+  double run_periods = 0.0;      ///< the run's own length in periods
 };
 
+/// A method as a command line chooses it: "vern8", or "vern8 --project".
+std::string method_choice(const OdeOptions& options);
+
+/// The comparisons at equal cost, the most accurate first (a run that could not
+/// finish or blew up last, in their order).
+void rank_by_error(std::vector<MethodComparison>& at_cost);
+
 /// Reports every method at the lab's settings (a section: each method's largest error,
-/// words.method_key_*) and, if there are any, at equal cost (report_equal_cost).
+/// words.method_key_*, with its evaluations and steps) and, if there are any, at equal
+/// cost (report_equal_cost).
 void report_comparisons(Report& report, const MethodComparisons& comparisons,
                         const OdeOptions& settings, const ExactErrorWords& words);
 
 /// Every method against the exact motion at the plan's settings (at most
 /// kMaxComparisonSteps steps each) and, with `at_cost`, at kEqualCostEvaluations
-/// evaluations a `period` over kEqualCostPeriods periods, reported (report_comparisons).
+/// evaluations a `period` over the run's length (at most kMaxRankedPeriods periods),
+/// ranked (rank_by_error), reported (report_comparisons).
 template <class Problem>
 MethodComparisons compare_every_method(Report& report, const Problem& problem,
                                        const typename Problem::Exact& exact, const RunPlan& plan,
@@ -208,9 +229,12 @@ MethodComparisons compare_every_method(Report& report, const Problem& problem,
   MethodComparisons c;
   c.at_settings =
       compare_methods(problem, exact, plan.times, period, plan.options, kMaxComparisonSteps);
+  c.run_periods = plan.t_end / period;
   if (at_cost) {
+    c.at_cost_periods = std::min(c.run_periods, kMaxRankedPeriods);
     c.at_cost =
-        compare_methods_at_cost(problem, exact, period, kEqualCostPeriods, kEqualCostEvaluations);
+        compare_methods_at_cost(problem, exact, period, c.at_cost_periods, kEqualCostEvaluations);
+    rank_by_error(c.at_cost);
   }
   report_comparisons(report, c, plan.options, words);
   return c;
@@ -239,12 +263,14 @@ inline constexpr double kClosedFormRoundoff = 64 * 2.220446049250313e-16;
 double end_time(const std::optional<double>& t_end, const std::optional<double>& periods,
                 double scale, double default_t_end);
 
-/// The section that answers "which method drifts": every method of `at_cost` (each at
-/// `evaluations_per_period` over `periods` periods), its energy drift per period and
-/// largest energy error (equal_cost_energy_drift_per_period_rel_<method>,
-/// equal_cost_energy_error_max_rel_<method>), and the method that drifts least.
-void report_equal_cost(Report& report, const std::vector<MethodComparison>& at_cost,
-                       double evaluations_per_period, double periods);
+/// The section that answers "which method to use": every run of `comparisons.at_cost`
+/// (each at kEqualCostEvaluations a period), most accurate first, with its error
+/// (equal_cost_<words.method_key_prefix><method><suffix>), rank, evaluations, steps,
+/// energy drift per period and largest energy error (equal_cost_*_<method>, a projected
+/// run's <method>_project), and the method to use: the first, with the reason
+/// (recommended_method, recommended_method_reason).
+void report_equal_cost(Report& report, const MethodComparisons& comparisons,
+                       const ExactErrorWords& words);
 /// A method and its kind for --help: "splitting (symplectic splitting, order 2)".
 std::string method_help_list();
 

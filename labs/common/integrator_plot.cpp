@@ -18,6 +18,9 @@ std::vector<MethodCurve> method_curves(const std::vector<MethodComparison>& comp
                                        double (*in_unit)(double)) {
   std::vector<MethodCurve> curves;
   for (const MethodComparison& c : comparisons) {
+    // One curve a method, in its own style: a projected run (the table ranks it
+    // beside its plain one) would share its method's.
+    if (c.options.project_invariants) continue;
     std::vector<double> error = c.error;
     if (in_unit != nullptr) {
       for (double& e : error) e = in_unit(e);

@@ -22,7 +22,8 @@ struct MethodCurve {
 std::string method_label(const OdeOptions& options);
 
 /// Each compared method's curves: its error against the exact motion (`in_unit` of it,
-/// or as it is) and its energy error; one that did not finish or blew up is not drawn.
+/// or as it is) and its energy error; one that did not finish or blew up is not drawn,
+/// nor a projected run (--project; its method's style is its plain run's).
 std::vector<MethodCurve> method_curves(const std::vector<MethodComparison>& comparisons,
                                        double (*in_unit)(double) = nullptr);
 

@@ -141,6 +141,19 @@ void Report::count(const std::string& key, const std::string& label, std::size_t
   rows_.emplace_back(label, std::to_string(value), "", "");
 }
 
+void Report::result_json(const std::string& key, double value, const std::string& unit) {
+  store(key, value + 0.0, std::isfinite(value), unit, std::nullopt);
+}
+
+void Report::count_json(const std::string& key, std::size_t value) {
+  results_[key] = value;
+  units_[key] = "1";
+}
+
+void Report::remark(const std::string& text) {
+  if (!rows_.empty()) rows_.back().remark = text;
+}
+
 void Report::warn(const std::string& input, const std::string& text) {
   warnings_.push_back(input + ": " + text);
   notes_.push_back("warning: " + input + ": " + text);

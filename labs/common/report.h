@@ -92,6 +92,12 @@ class Report {
                    const std::string& why);
   /// A count (JSON: an integer).
   void count(const std::string& key, const std::string& label, std::size_t value);
+  /// A result in JSON only: the table shows it in a row's remark (remark()).
+  void result_json(const std::string& key, double value, const std::string& unit);
+  /// A count in JSON only.
+  void count_json(const std::string& key, std::size_t value);
+  /// The last row's remark, printed after its unit: "(2000 evaluations, 500 steps)".
+  void remark(const std::string& text);
   /// A text result (e.g. a method name).
   void result_text(const std::string& key, const std::string& label, const std::string& value);
   /// A JSON-only second name for a result already reported (a key renamed, kept one

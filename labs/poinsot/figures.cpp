@@ -85,7 +85,7 @@ void figures(const Report& report, FigureSink& sink) {
     sink.add("integrators",
              fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
                          "{} against the exact solution",
-                         kEqualCostEvaluations, kEqualCostPeriods, period_name),
+                         kEqualCostEvaluations, report.comparisons.at_cost_periods, period_name),
              integrators_plot(
                  method_curves(report.comparisons.at_cost),
                  fmt::format("at equal cost: {:g} evaluations a period", kEqualCostEvaluations),

@@ -230,7 +230,7 @@ void figures(const Report& report, FigureSink& sink) {
       "integrators",
       equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
                                "nutation period) over {:g} periods against the exact theta",
-                               evaluations, kEqualCostPeriods)
+                               evaluations, compared.at_cost_periods)
                  : "every integrator against the exact theta",
       integrators_plot(
           method_curves(equal_cost ? compared.at_cost : compared.at_settings, rad_to_deg),

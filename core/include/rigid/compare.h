@@ -35,8 +35,11 @@
 
 namespace rigid {
 
-/// Every problem's first invariant: the energy (the comparison at equal cost ranks by it).
+/// Every problem's first invariant: the energy (the comparison at equal cost reports its drift).
 inline constexpr std::size_t kEnergyInvariant = 0;
+/// The periods an adaptive method's tolerance is calibrated on for a comparison at
+/// equal cost (compare_methods_at_cost): at most this many, however long the run.
+inline constexpr double kCostCalibrationPeriods = 10.0;
 
 /// One sample of a run.
 template <class State, std::size_t K>
@@ -92,6 +95,7 @@ struct MethodComparison {
   std::vector<double> energy_error;  ///< |the energy's relative error|
   double max_error = 0.0;            ///< the largest error (infinite if the run blew up)
   std::size_t evaluations = 0;       ///< right-hand-side evaluations of the run
+  std::size_t steps = 0;             ///< its accepted steps
   /// Each invariant's largest error and drift per period, by the problem's index (none
   /// if not completed).
   std::vector<InvariantError> invariants;
@@ -157,11 +161,15 @@ std::vector<MethodComparison> compare_methods(const Problem& problem,
                                                        max_steps);
 }
 
-/// Every method at the same cost, the question "which method drifts" answered fairly:
-/// `evaluations_per_period` right-hand-side evaluations a period (options_at_cost:
-/// fixed steps from evaluations_per_step, tolerances found by bisection) over
-/// `periods` periods of length `period`, each run sampled `samples_per_period` times a
-/// period (a fixed step's on its grid). A method that cannot finish is not completed.
+/// Every method at the same cost, the question "which method is most accurate for
+/// the work" answered fairly: `evaluations_per_period` right-hand-side evaluations a
+/// period (options_at_cost: fixed steps from evaluations_per_step, tolerances found by
+/// bisection on the first kCostCalibrationPeriods periods, as an adaptive method's
+/// cost a period is the same in every period of a periodic motion) over `periods`
+/// periods of length `period`, each run sampled `samples_per_period` times a period (a
+/// fixed step's on its grid). Where the problem has a projection, each method that can
+/// project runs a second time with it (options.project_invariants; the projection is
+/// not an evaluation). A method that cannot finish is not completed.
 template <class Problem>
 std::vector<MethodComparison> compare_methods_at_cost(const Problem& problem,
                                                       const typename Problem::Exact& exact,

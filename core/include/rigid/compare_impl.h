@@ -109,6 +109,7 @@ void measure(MethodComparison& c, const Problem& problem, const Run<Problem>& ru
              const typename Problem::Exact& exact, double period) {
   c.completed = true;
   c.evaluations = run.evaluations;
+  c.steps = run.steps;
   c.t = run.times();
   ExactErrors errors = problem.errors_against(exact, run.samples);
   c.error = std::move(errors.error);
@@ -160,26 +161,32 @@ std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
     const Problem& problem, const typename Problem::Exact& exact, double period, double periods,
     double evaluations_per_period, double samples_per_period) {
   const State x0 = problem.exact_state(exact, 0.0);
-  const double t_end = periods * period;
-  const auto max_samples = static_cast<std::size_t>(std::ceil(periods * samples_per_period)) + 1;
+  const double calibration = std::min(periods, kCostCalibrationPeriods);
   std::vector<MethodComparison> out;
   for (const Method m : kAllMethods) {
-    const auto run_with = [&](const OdeOptions& o) {
-      const std::vector<double> times = sample_times(t_end, period, is_adaptive(m) ? 0.0 : o.step,
-                                                     samples_per_period, max_samples);
-      return integrate(problem, x0, times, o);
-    };
-    const OdeOptions o =
-        settings_at_cost(m, period, periods, evaluations_per_period,
-                         [&](const OdeOptions& trial) { return run_with(trial).evaluations; });
-    MethodComparison c;
-    c.options = o;
-    try {
-      measure(c, problem, run_with(o), exact, period);
-    } catch (const std::exception&) {
-      c = not_completed(o);
+    for (const bool project : {false, true}) {
+      if (project && !(kHasProjection<Problem> && can_project(m))) continue;
+      const auto run_with = [&](OdeOptions o, double over) {
+        o.project_invariants = project;
+        const auto max_samples = static_cast<std::size_t>(std::ceil(over * samples_per_period)) + 1;
+        const std::vector<double> times = sample_times(
+            over * period, period, is_adaptive(m) ? 0.0 : o.step, samples_per_period, max_samples);
+        return integrate(problem, x0, times, o);
+      };
+      OdeOptions o = settings_at_cost(
+          m, period, calibration, evaluations_per_period,
+          [&](const OdeOptions& trial) { return run_with(trial, calibration).evaluations; });
+      o.project_invariants = project;
+      o.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
+      MethodComparison c;
+      c.options = o;
+      try {
+        measure(c, problem, run_with(o, periods), exact, period);
+      } catch (const std::exception&) {
+        c = not_completed(o);
+      }
+      out.push_back(std::move(c));
     }
-    out.push_back(std::move(c));
   }
   return out;
 }
