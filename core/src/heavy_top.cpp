@@ -83,12 +83,13 @@ double horizontal_precession_rate(const HeavyTop& top, double spin) {
 
 SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, double theta) {
   validate(top);
-  // A theta within its own rounding (half an ulp) of 90 deg is horizontal: the double
-  // nearest pi/2 has cos 6e-17, which would make the fast rate 5e17 rad/s where the
-  // angle meant, and all the input can tell, has it infinite.
+  // A theta within the rounding of its own conversion from degrees (2 ulps: 90 *
+  // (pi / 180) lands one ulp from the double nearest pi/2) of 90 deg is horizontal:
+  // those doubles have |cos| below 3e-16, which would make the fast rate 1e17 rad/s
+  // where the angle meant, and all the input can tell, has it infinite.
   const double c_raw = std::cos(theta);
-  const double half_ulp = 0.5 * (std::nextafter(std::abs(theta), HUGE_VAL) - std::abs(theta));
-  const double c = std::abs(c_raw) <= half_ulp ? 0.0 : c_raw;
+  const double ulp = std::nextafter(std::abs(theta), HUGE_VAL) - std::abs(theta);
+  const double c = std::abs(c_raw) <= 2.0 * ulp ? 0.0 : c_raw;
   const double L3 = top.Is * spin;
   const double D = L3 * L3 - 4.0 * top.mgl * top.I * c;  // eq. 188
   SteadyPrecession p;
@@ -101,6 +102,19 @@ SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, doubl
   p.fast = c == 0.0 ? std::copysign(std::numeric_limits<double>::infinity(), big)
                     : big / (2.0 * top.I * c);
   return p;
+}
+
+FastTopNutation fast_top_nutation(const HeavyTop& top, const TopStart& start) {
+  validate(top);
+  if (!(start.spin > 0.0)) throw std::invalid_argument("fast_top_nutation: the spin must be > 0");
+  FastTopNutation n;
+  const double L3 = top.Is * start.spin;
+  n.order = 2.0 * top.mgl * top.I / (L3 * L3);
+  n.frequency = L3 / top.I;
+  const double slow = top.mgl / L3;  // the fast top's slow precession (eq. 185)
+  n.range = 2.0 / n.frequency *
+            std::hypot(start.theta_dot, std::sin(start.theta) * (start.phi_dot - slow));
+  return n;
 }
 
 std::string to_string(TopRegime regime) {

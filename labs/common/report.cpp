@@ -145,6 +145,11 @@ void Report::result_json(const std::string& key, double value, const std::string
   store(key, value + 0.0, std::isfinite(value), unit, std::nullopt);
 }
 
+void Report::result_json_none(const std::string& key, const std::string& unit) {
+  results_[key] = nullptr;
+  units_[key] = unit.empty() ? "1" : unit;
+}
+
 void Report::count_json(const std::string& key, std::size_t value) {
   results_[key] = value;
   units_[key] = "1";

@@ -94,6 +94,8 @@ class Report {
   void count(const std::string& key, const std::string& label, std::size_t value);
   /// A result in JSON only: the table shows it in a row's remark (remark()).
   void result_json(const std::string& key, double value, const std::string& unit);
+  /// A result that does not exist, in JSON only (null): the table says why in another row.
+  void result_json_none(const std::string& key, const std::string& unit);
   /// A count in JSON only.
   void count_json(const std::string& key, std::size_t value);
   /// The last row's remark, printed after its unit: "(2000 evaluations, 500 steps)".

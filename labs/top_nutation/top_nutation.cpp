@@ -63,25 +63,80 @@ void report_section_8_1(Report& report, const Inputs& in, double S, double theta
   report.section(
       fmt::format("8.1 (c) steady precession at theta0 = {:g} deg (eq. 187)", in.theta0_deg));
   const SteadyPrecession steady = steady_precession_rates(top, S, theta0);
-  if (steady.exists && std::isfinite(steady.fast)) {
-    report.result("steady_precession_rates_rad_s", "phi_dot, slow and fast",
-                  Vector2d(steady.slow, steady.fast), "rad/s", report.textbook("(7.75, 26.2)"));
+  const std::string rates = "phi_dot, slow and fast";
+  if (theta0 == 0.0) {
+    // sin(theta0) = 0: an upright axis stays upright whatever phi does (eq. 184)
+    const std::string why = "upright (theta0 = 0): the axis stays on the vertical, no precession";
+    report.result_none("steady_precession_rates_rad_s", rates, "rad/s", why);
+    report.result_json_none("steady_precession_slow_rad_s", "rad/s");
+    report.result_json_none("steady_precession_fast_rad_s", "rad/s");
+  } else if (!steady.exists) {
+    report.result_none("steady_precession_rates_rad_s", rates, "rad/s",
+                       "Is^2 S^2 < 4 m g l I cos(theta0): no steady precession");
+    report.result_json_none("steady_precession_slow_rad_s", "rad/s");
+    report.result_json_none("steady_precession_fast_rad_s", "rad/s");
+  } else if (!std::isfinite(steady.fast)) {
+    // Horizontal: I cos(theta) phi_dot^2 drops out of eq. 187, which keeps one root.
+    report.result_none("steady_precession_rates_rad_s", rates, "rad/s",
+                       "horizontal: one steady rate, the slow one");
+    report.result("steady_precession_slow_rad_s", "phi_dot, slow = m g l / (Is S) (eq. 185)",
+                  steady.slow, "rad/s");
+    report.result_none("steady_precession_fast_rad_s", "phi_dot, fast", "rad/s",
+                       "horizontal: no second steady rate (the fast one is infinite)");
+  } else {
+    report.result("steady_precession_rates_rad_s", rates, Vector2d(steady.slow, steady.fast),
+                  "rad/s", report.textbook("(7.75, 26.2)"));
     report.result("steady_precession_periods_s", "  their periods",
                   Vector2d(2 * kPi / std::abs(steady.slow), 2 * kPi / std::abs(steady.fast)), "s",
                   report.textbook("(0.81, 0.24)"));
-  } else {
-    report.result_none("steady_precession_rates_rad_s", "phi_dot, slow and fast", "rad/s",
-                       steady.exists ? "horizontal: the fast rate is infinite"
-                                     : "Is^2 S^2 < 4 m g l I cos(theta0): no steady precession");
+    report.result_json("steady_precession_slow_rad_s", steady.slow, "rad/s");
+    report.result_json("steady_precession_fast_rad_s", steady.fast, "rad/s");
   }
 }
 
 // Section 9: the exact motion's invariants, turning circles and period, and the
 // fast-top estimates where they hold.
-void report_section_9(Report& report, double S, double theta0) {
+// The fast top (Goldstein 5.7): nodding at Is S / I, by (2 I / Is S) times the speed
+// of the axis at the start relative to the slow precession m g l / (Is S), both to
+// relative order 2 m g l I / (Is S)^2 = (S_min / S)^2 / 2. Printed for a top that
+// could sleep (S >= S_min, the order at most 1/2: the text's top 0.41); a slower one
+// has no such estimate (at S = 1e-10 it read 3e24 deg).
+void report_fast_top(Report& report, const TopStart& start) {
   const HeavyTop& top = report.top;
   const HeavyTopExact& motion = *report.motion;
-  const double I = top.I, Is = top.Is;
+  const double S = start.spin, S_min = sleeping_min_spin(top);
+  const std::string frequency_label = "fast-top estimate of 2 pi / period: Is S / I";
+  const bool rest = start.theta_dot == 0.0 && start.phi_dot == 0.0;
+  const std::string amplitude_label =
+      rest ? "fast-top estimate of theta_max - theta_min from rest: 2 m g l I sin(theta0) / "
+             "(Is S)^2"
+           : "fast-top estimate of theta_max - theta_min: (2 I / Is S) |axis speed at t = 0 "
+             "relative to the precession m g l / (Is S)|";
+  if (S < S_min) {
+    const std::string why = "the top spins too slowly to sleep (S < S_min)";
+    report.result_text(
+        "below_sleeping_spin", "S below S_min",
+        fmt::format("S = {:.4g} rpm is below S_min = {:.4g} rpm: the top cannot sleep, and from "
+                    "theta0 = {:.4g} deg it falls to theta_max = {:.4g} deg; the fast-top "
+                    "estimates do not apply",
+                    S / kRpm, S_min / kRpm, rad_to_deg(start.theta),
+                    rad_to_deg(motion.theta_max())));
+    report.result_none("fast_top_nutation_frequency_rad_s", frequency_label, "rad/s", why);
+    report.result_none("fast_top_nutation_amplitude_deg", amplitude_label, "deg", why);
+    report.result_json_none("fast_top_relative_order", "");
+    return;
+  }
+  const FastTopNutation fast = fast_top_nutation(top, start);
+  report.result("fast_top_nutation_frequency_rad_s", frequency_label, fast.frequency, "rad/s");
+  report.result("fast_top_nutation_amplitude_deg", amplitude_label, rad_to_deg(fast.range), "deg");
+  report.result("fast_top_relative_order", "  both to relative order 2 m g l I / (Is S)^2",
+                fast.order, "");
+}
+
+void report_section_9(Report& report, const TopStart& start) {
+  const double S = start.spin;
+  const HeavyTop& top = report.top;
+  const HeavyTopExact& motion = *report.motion;
   report.result("energy_j", "E (eq. 191)", motion.energy(), "J");
   report.result("p_phi", "p_phi = L_z (eq. 177)", motion.p_phi(), "kg m^2/s");
   report.result("p_psi", "p_psi = Is S (eq. 176)", motion.p_psi(), "kg m^2/s");
@@ -110,24 +165,7 @@ void report_section_9(Report& report, double S, double theta0) {
                   motion.mean_precession_rate(), "rad/s");
     report.result("phi_dot_turning_rad_s", "phi_dot at theta_max and at theta_min",
                   Vector2d(motion.phi_dot_at_u1(), motion.phi_dot_at_u2()), "rad/s");
-    // The fast top (Goldstein 5.7): nodding at Is S / I, by 2 m g l I sin(theta0)/(Is S)^2
-    // when released from rest; both to relative order 2 m g l I / (Is S)^2.
-    // Printed where that order is below 1 (the text's top: 0.41); a slower top has no
-    // such estimate (at S = 1e-10 it read 3e24 deg).
-    const std::string frequency_label = "fast-top estimate of 2 pi / period: Is S / I";
-    const std::string amplitude_label =
-        "fast-top estimate of theta_max - theta_min from rest: 2 m g l I sin(theta0) / (Is S)^2";
-    const double order = 2 * top.mgl * I / ((Is * S) * (Is * S));
-    if (S > 0 && order < 1.0) {
-      report.result("fast_top_nutation_frequency_rad_s", frequency_label, Is * S / I, "rad/s");
-      report.result("fast_top_nutation_amplitude_deg", amplitude_label,
-                    rad_to_deg(order * std::sin(theta0)), "deg");
-    } else if (S > 0) {
-      const std::string why =
-          fmt::format("not a fast top: 2 m g l I / (Is S)^2 = {:.3g} is not below 1", order);
-      report.result_none("fast_top_nutation_frequency_rad_s", frequency_label, "rad/s", why);
-      report.result_none("fast_top_nutation_amplitude_deg", amplitude_label, "deg", why);
-    }
+    report_fast_top(report, start);
   }
   // The sleeping top's stability a hair from upright, just above and below S_min.
   const double hair = 1e-3;
@@ -273,7 +311,7 @@ Report compute(const Inputs& in) {
     return HeavyTopExact(report.top, {theta0, in.thetadot0, in.phidot0, S});
   }));
   const HeavyTopExact& motion = *report.motion;
-  report_section_9(report, S, theta0);
+  report_section_9(report, {theta0, in.thetadot0, in.phidot0, S});
 
   // Sampling: 200 a nutation period (or a turn of the spin for a sleeping top).
   const bool sleeping = motion.regime() == TopRegime::kSleeping;

@@ -290,18 +290,64 @@ TEST_CASE("top_nutation: the method advised in --help and the README is the rank
 }
 
 TEST_CASE("top_nutation: the fast-top estimates only for a fast top") {
-  // their relative error is of order 2 m g l I / (Is S)^2: the text's top 0.41, printed;
-  // at S = 30 rad/s 1.24 and at 1e-10 rad/s 1e23 (it read 3e24 deg), none
+  // their relative error is of order 2 m g l I / (Is S)^2 = (S_min / S)^2 / 2: the
+  // text's top 0.41, printed with it; below S_min (the order above 1/2) none, and a
+  // line that says the top cannot sleep: at 400 rpm from 1 deg it falls to 55 deg
   const auto text = compute(Inputs{});
   CHECK(text.results().at("fast_top_nutation_amplitude_deg").is_number());
-  for (const double spin : {30.0, 1e-10}) {
-    INFO(spin);
+  CHECK(
+      value(text.results(), "fast_top_relative_order") ==
+      Approx(0.5 * std::pow(value(text.results(), "min_spin_rpm") / 500.0, 2)).epsilon(kRoundoff));
+  CHECK(!text.results().contains("below_sleeping_spin"));
+  for (const double spin_rpm : {400.0, 30.0 / (2 * M_PI / 60), 1e-9}) {
+    INFO(spin_rpm);
     Inputs in;
-    in.spin = spin;
+    in.spin_rpm = spin_rpm;
+    in.theta0_deg = 1;
     const auto slow = compute(in);
-    CHECK(slow.results().at("fast_top_nutation_amplitude_deg").is_null());
-    CHECK(slow.results().at("fast_top_nutation_frequency_rad_s").is_null());
+    const auto& r = slow.results();
+    CHECK(r.at("fast_top_nutation_amplitude_deg").is_null());
+    CHECK(r.at("fast_top_nutation_frequency_rad_s").is_null());
+    CHECK(r.at("fast_top_relative_order").is_null());
+    const std::string said = r.at("below_sleeping_spin");
+    CHECK_THAT(said, Catch::Contains("the top cannot sleep"));
+    CHECK_THAT(said,
+               Catch::Contains(fmt::format("theta_max = {:.4g} deg", value(r, "theta_max_deg"))));
   }
+}
+
+TEST_CASE("top_nutation: the fast-top amplitude fits the start - rest, theta_dot0 or phi_dot0") {
+  // The axis's speed at t = 0 relative to the slow precession turns at Is S / I, so the
+  // axis circles with radius speed / (Is S / I): from rest Goldstein's 2 m g l I
+  // sin(theta0) / (Is S)^2, with theta_dot0 or phi_dot0 more or less. Against the
+  // exact turning angles, the estimate is within twice its relative order (measured:
+  // up to 1.3 times, at 2000 rpm with theta_dot0 = 0.5 rad/s).
+  struct Start {
+    double rpm, theta0_deg, thetadot0, phidot0;
+  };
+  for (const Start& s : {Start{2000, 30, 0, 0}, Start{2000, 30, 0, -3}, Start{2000, 30, 0, 3},
+                         Start{2000, 30, 0.5, 0}, Start{5000, 30, 1, -2}, Start{1000, 30, 0, -3},
+                         Start{3000, 80, 0, -5}}) {
+    Inputs in;
+    in.spin_rpm = s.rpm, in.theta0_deg = s.theta0_deg;
+    in.thetadot0 = s.thetadot0, in.phidot0 = s.phidot0;
+    const auto r = compute(in).results();
+    const double exact = value(r, "theta_max_deg") - value(r, "theta_min_deg");
+    const double estimate = value(r, "fast_top_nutation_amplitude_deg");
+    const double order = value(r, "fast_top_relative_order");
+    INFO(s.rpm << " rpm, " << s.theta0_deg << " deg, theta_dot0 " << s.thetadot0 << ", phi_dot0 "
+               << s.phidot0 << ": exact " << exact << " deg, estimate " << estimate
+               << " deg, order " << order);
+    CHECK(order < 0.11);
+    CHECK(std::abs(estimate - exact) <= 2 * order * exact);
+  }
+  // From rest it is Goldstein's formula itself.
+  Inputs rest;
+  rest.spin_rpm = 2000;
+  const auto r = compute(rest).results();
+  CHECK(value(r, "fast_top_nutation_amplitude_deg") ==
+        Approx(value(r, "fast_top_relative_order") * std::sin(30 * M_PI / 180) * 180 / M_PI)
+            .epsilon(kRoundoff));
 }
 
 // top_nutation's rows of lab_test.cpp's "labs: extreme but legal inputs end with finite
@@ -542,9 +588,24 @@ TEST_CASE("top_nutation: no steady rates says why: horizontal, or too slow a spi
     }
     return "no row";
   };
-  Inputs horizontal;
-  horizontal.theta0_deg = 90;
-  CHECK(why(horizontal) == "none (horizontal: the fast rate is infinite)");
+  // horizontal: only the slow root, m g l / (Is S) (eq. 185); also one ulp either side
+  // of 90 deg, which the conversion from degrees cannot tell from it
+  for (const double deg : {90.0, std::nextafter(90.0, 0.0), std::nextafter(90.0, 180.0)}) {
+    INFO(deg);
+    Inputs horizontal;
+    horizontal.theta0_deg = deg;
+    CHECK(why(horizontal) == "none (horizontal: one steady rate, the slow one)");
+    const auto r = compute(horizontal).results();
+    CHECK(r.at("steady_precession_fast_rad_s").is_null());
+    CHECK(value(r, "steady_precession_slow_rad_s") ==
+          Approx(value(r, "horizontal_precession_rate_rad_s")).epsilon(kRoundoff));
+  }
+  // upright: the axis stays on the vertical; no rate of either kind
+  Inputs upright;
+  upright.theta0_deg = 0;
+  CHECK(why(upright) ==
+        "none (upright (theta0 = 0): the axis stays on the vertical, no precession)");
+  CHECK(compute(upright).results().at("steady_precession_slow_rad_s").is_null());
   Inputs slow;  // the text's top at 30 deg: S_min = sqrt(4 mgl I cos 30) / Is = 44.0 rad/s
   slow.spin = 40.0;
   CHECK(why(slow) == "none (Is^2 S^2 < 4 m g l I cos(theta0): no steady precession)");

@@ -61,7 +61,7 @@ struct SteadyPrecession {
   bool exists = false;  ///< false when Is^2 S^2 < 4 mgl I cos(theta) (eq. 188)
   double slow = 0.0;    ///< (Is S - sqrt(D)) / (2 I cos theta), formed as 2 mgl / (Is S + sqrt(D))
   double fast = 0.0;    ///< (Is S + sqrt(D)) / (2 I cos theta); +inf at theta = 90 deg
-                        ///< (any theta within half an ulp of it)
+                        ///< (any theta within 2 ulps of it)
 };
 SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, double theta);
 
@@ -74,6 +74,22 @@ struct TopStart {
   double phi = 0.0;        ///< rad
   double psi = 0.0;        ///< rad
 };
+
+/// The fast top (Goldstein 5.7, Is S much more than sqrt(m g l I)): its nodding, to
+/// relative order `order`.
+struct FastTopNutation {
+  /// 2 m g l I / (Is S)^2 = (S_min / S)^2 / 2: the relative order of the estimates.
+  double order = 0.0;
+  /// The nutation frequency, a = Is S / I, rad/s.
+  double frequency = 0.0;
+  /// theta_max - theta_min, rad: relative to the slow precession mgl / (Is S), the
+  /// axis starts with the velocity (theta_dot0, sin(theta0) (phi_dot0 - mgl / (Is S)))
+  /// on the sphere, which turns at the rate a, so the axis circles with radius
+  /// |velocity| / a; from rest, 2 m g l I sin(theta0) / (Is S)^2.
+  double range = 0.0;
+};
+/// The fast-top estimates for a start (any theta_dot0, phi_dot0) with spin S > 0.
+FastTopNutation fast_top_nutation(const HeavyTop& top, const TopStart& start);
 
 /// The figure the symmetry axis traces on the unit sphere.
 enum class TopRegime {
