@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "rigid/free_body_integrate.h"
+#include "rigid/racquet.h"
 #include "rigid/units.h"
 
 namespace rigid::lab {
@@ -64,6 +65,7 @@ void report_motion(Report& report, const FreeBodyExact& motion) {
     // ln(4/k') and omega lingers by the intermediate axis between flips: the orbit of
     // a spin about that axis, nudged, whose fate a further nudge may change.
     if (kp2 < 0.01) {
+      report.remark("(just outside the separatrix: the body flips, see below)");
       stability = "unstable";
       words = fmt::format(
           "near the separatrix (k'^2 = {:.2g}): unstable, omega lingers by the "
@@ -78,6 +80,88 @@ void report_motion(Report& report, const FreeBodyExact& motion) {
   }
   report.result_text("motion", "  in words", words);
   report.result_text("motion_stability", "  stability", stability);
+}
+
+void report_flips(Report& report, const FreeBodyExact& motion) {
+  const Eigen::Vector3d I = motion.moments().vector(), w0 = motion.omega_body(0.0);
+  // The intermediate axis: the one whose moment lies strictly between the others.
+  int m = -1;
+  for (int i = 0; i < 3; ++i) {
+    if ((I.array() < I(i)).count() == 1 && (I.array() > I(i)).count() == 1) m = i;
+  }
+  const std::string axis = fmt::format("axis {}", m + 1);
+  const std::string growth_label =
+      m < 0 ? "growth rate of a nudge" : "growth rate of a nudge about " + axis + ", eqs. 86-88";
+  const std::string measured_label = "  fitted to the exact motion's first growth";
+  const std::string first_label = m < 0 ? "first flip"
+                                        : fmt::format(
+                                              "first flip: omega_{} "
+                                              "changes sign",
+                                              m + 1);
+  const std::string interval_label = "time between flips: half the polhode period";
+  const auto none = [&](const std::string& why) {
+    report.result_none("first_flip_s", first_label, "s", why);
+    report.result_none("flip_interval_s", interval_label, "s", why);
+  };
+  if (m < 0) {
+    const std::string why = "two equal moments: no intermediate axis to flip about";
+    report.result_none("growth_rate_per_s", growth_label, "1/s", why);
+    report.result_none("growth_rate_measured_per_s", measured_label, "1/s", why);
+    none(why);
+    return;
+  }
+  const double spin = w0(m);
+  const SpinStability linear = linear_stability(euler_coefficients(motion.moments()), m, spin);
+  report.result("growth_rate_per_s", growth_label, linear.rate, "1/s");
+  report.remark(fmt::format("(from omega_{}(0) = {:.6g} rad/s)", m + 1, spin));
+  // Flips: omega_m changes sign, which needs the polhode to pass the intermediate axis's
+  // side of the separatrix, i.e. the spin mostly about m. A spin mostly about the largest
+  // or smallest axis only wobbles, though omega_m changes sign there too.
+  const double share = transverse_share(w0, m);
+  const FreeMotionRegime regime = motion.regime();
+  const bool near = regime != FreeMotionRegime::kSteady &&
+                    regime != FreeMotionRegime::kSeparatrix &&
+                    motion.complementary_parameter() < 0.01;
+  if (regime == FreeMotionRegime::kSteady) {
+    const std::string why = share == 0.0 ? "exactly on the axis: no nudge to grow, it never flips"
+                                         : "a steady spin: it does not flip";
+    report.result_none("growth_rate_measured_per_s", measured_label, "1/s", why);
+    none(why);
+    return;
+  }
+  if (regime == FreeMotionRegime::kSeparatrix) {
+    const std::string why = "on the separatrix: omega leaves the axis and never returns past it";
+    report.result_none("growth_rate_measured_per_s", measured_label, "1/s", why);
+    none(why);
+    return;
+  }
+  if (!near) {
+    const std::string why =
+        fmt::format("not spun near {}: a {}, omega circles that axis: a wobble, not a flip", axis,
+                    to_string(regime));
+    report.result_none("growth_rate_measured_per_s", measured_label, "1/s", why);
+    none(why);
+    return;
+  }
+  // The rate fitted from launch until the disturbance is a tenth of omega (or twice
+  // its start): its deviation from the linear rate is of the order of that share
+  // squared (racquet.h). Where the start is already past it, there is no first growth.
+  const double share_limit = std::min(std::max(0.1, 2.0 * share), 0.5 * (1.0 + share));
+  try {
+    const GrowthFit fit = measure_growth_rate(motion, m, share_limit);
+    report.result("growth_rate_measured_per_s", measured_label, fit.rate, "1/s");
+    report.remark(
+        fmt::format("(t from {:.4g} to {:.4g} s, omega's share off the axis from "
+                    "{:.2g} to {:.2g})",
+                    fit.t_begin, fit.t_end, fit.share_begin, fit.share_end));
+  } catch (const std::invalid_argument&) {
+    report.result_none("growth_rate_measured_per_s", measured_label, "1/s",
+                       fmt::format("omega starts {:.2g} off the axis: too far for a first "
+                                   "growth to fit",
+                                   share));
+  }
+  report.result("first_flip_s", first_label, first_sign_change(motion, m), "s");
+  report.result("flip_interval_s", interval_label, 0.5 * motion.period(), "s");
 }
 
 double time_scale(const FreeBodyExact& motion) {

@@ -15,6 +15,17 @@ namespace rigid::lab {
 /// "complementary_parameter" (k'^2: 0 on the separatrix, null for a steady spin).
 void report_motion(Report& report, const FreeBodyExact& motion);
 
+/// The flip of a body spun near its intermediate axis (the tennis racquet theorem, for
+/// any body): the linear growth rate of a disturbance, lambda = |omega_m(0)| sqrt((I_m -
+/// I_s)(I_l - I_m) / (I_s I_l)) with omega_m(0) the spin's component on the intermediate
+/// axis m (eqs. 86-88), the rate fitted to the exact motion, the first time omega_m
+/// changes sign (the first flip) and the time between flips (half the polhode period).
+/// Reports growth_rate_per_s, growth_rate_measured_per_s, first_flip_s and
+/// flip_interval_s, each null with the reason where the body does not flip: a stable
+/// spin, two equal moments, a spin exactly on the axis (it never starts) or on the
+/// separatrix (it never finishes).
+void report_flips(Report& report, const FreeBodyExact& motion);
+
 /// The motion's time scale: its polhode period, or one turn for a steady rotation
 /// (no polhode to go round).
 double time_scale(const FreeBodyExact& motion);

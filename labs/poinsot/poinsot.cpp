@@ -163,6 +163,7 @@ Report compute(const Inputs& in) {
                        "no polhode to go round: " + regime);
   }
   report_motion(report, exact);
+  report_flips(report, exact);
 
   report.scale = time_scale(exact);
   const double scale = report.scale;

@@ -85,17 +85,27 @@ Report compute(const Inputs& in) {
       fmt::format("4.1.1-4.1.2 a spin omega = {:g} rad/s about each axis, "
                   "to first order (eqs. 86-103)",
                   in.omega));
+  // The same disturbance for each axis; the exact motion of each launch.
+  std::vector<FreeBodyExact>& launches = report.launches;
+  for (int axis = 0; axis < 3; ++axis) {
+    launches.emplace_back(I, launch_omega(axis, in.omega, in.perturbation));
+  }
+  // The linear theory's rate is that of the spin's own component, omega_i(0) (eqs.
+  // 86-88 hold it constant to first order), not |omega|: sqrt(1 - share^2) of it.
   const EulerCoefficients full = euler_coefficients(I);
   const EulerCoefficients text = simplified_racquet_coefficients();
   std::array<SpinStability, 3>& predicted = report.predicted;
   std::array<SpinStability, 3> simplified;
   for (int axis = 0; axis < 3; ++axis) {
-    predicted[axis] = linear_stability(full, axis, in.omega);
-    simplified[axis] = linear_stability(text, axis, in.omega);
+    const double spin = launches[axis].omega_body(0.0)(axis);
+    predicted[axis] = linear_stability(full, axis, spin);
+    simplified[axis] = linear_stability(text, axis, spin);
   }
   report.textbook_rate = simplified[1].rate;
   report.result("growth_rate_per_s", "axis 2: growth rate, eqs. 86-88 in full", predicted[1].rate,
                 "1/s");
+  report.remark(fmt::format("(from omega_2(0) = {:.6g} rad/s, the spin's component)",
+                            launches[1].omega_body(0.0)(1)));
   report.result("growth_rate_textbook_per_s", "axis 2: growth rate, eq. 92 (omega_2)",
                 simplified[1].rate, "1/s", report.textbook("omega_2 (eqs. 100-101)"));
   report.result("wobble_frequencies_rad_s", "axes 1, 3: wobble frequency, eqs. 86-88 in full",
@@ -113,11 +123,6 @@ Report compute(const Inputs& in) {
                        "two moments equal to double precision: no wobble to shape");
   }
 
-  // The same disturbance for each axis; the exact motion of each launch.
-  std::vector<FreeBodyExact>& launches = report.launches;
-  for (int axis = 0; axis < 3; ++axis) {
-    launches.emplace_back(I, launch_omega(axis, in.omega, in.perturbation));
-  }
   // The fit runs from launch until the disturbance reaches a tenth of omega (or
   // twice its start, if that is larger): its deviation from the linear rate is
   // of the order of the share squared (racquet.h).

@@ -625,3 +625,53 @@ TEST_CASE("poinsot: the phase plot starts each curve at its own t = 0 point") {
     CHECK(phase.series[j].y.front() == Approx(start->y[j]).epsilon(kRoundoff));
   }
 }
+
+TEST_CASE("poinsot: any body spun near its middle axis - growth rate, first flip, flips") {
+  // The book of the issue: 24 x 16 x 4 cm, 0.8 kg, spun at 6 rad/s about its middle
+  // axis with 0.06 rad/s on each of the others.
+  const double m = 0.8, a = 0.24, b = 0.16, c = 0.04;
+  const double I1 = m * (b * b + c * c) / 12, I2 = m * (a * a + c * c) / 12,
+               I3 = m * (a * a + b * b) / 12;
+  const Report book = compute(given("--box 0.24,0.16,0.04 --mass 0.8 --omega 0.06,6,0.06"));
+  const auto& r = book.results();
+  // eqs. 86-88 about axis 2, at the spin's own component omega_2(0) = 6 rad/s
+  CHECK(value(r, "growth_rate_per_s") ==
+        Approx(6 * std::sqrt((I2 - I1) * (I3 - I2) / (I1 * I3))).epsilon(kRoundoff));
+  // fitted to the exact motion up to a share of 0.1: the linear rate to ~share^2
+  CHECK(value(r, "growth_rate_measured_per_s") ==
+        Approx(value(r, "growth_rate_per_s")).epsilon(0.01));
+  CHECK(value(r, "flip_interval_s") ==
+        Approx(0.5 * value(r, "polhode_period_s")).epsilon(kRoundoff));
+  // The first flip against a second method: an integration at tolerance 1e-13, whose
+  // omega_2 changes sign between two of its samples that bracket the closed form's time.
+  const Report run = compute(given(
+      "--box 0.24,0.16,0.04 --mass 0.8 --omega 0.06,6,0.06 --method vern9 --tolerance 1e-13"));
+  const double flip = value(r, "first_flip_s");
+  bool bracketed = false;
+  const auto& samples = run.run.samples;
+  for (std::size_t k = 1; k < samples.size() && !bracketed; ++k) {
+    if (samples[k - 1].x[1] > 0 && samples[k].x[1] <= 0) {
+      bracketed = samples[k - 1].t < flip && flip <= samples[k].t;
+      INFO("omega_2 changes sign between " << samples[k - 1].t << " and " << samples[k].t
+                                           << " s; the closed form says " << flip << " s");
+      CHECK(bracketed);
+    }
+  }
+  CHECK(bracketed);
+  // No flips: a stable spin (the text's ellipsoid), a spin exactly on the axis, two
+  // equal moments; each says why.
+  for (const auto& [args, why] :
+       {std::pair{"", "not spun near axis 2"},
+        std::pair{"--box 0.24,0.16,0.04 --mass 0.8 --omega 0,6,0", "exactly on the axis"},
+        std::pair{"--inertia 1,1,2 --omega 0.1,1,0.1", "two equal moments"}}) {
+    INFO(args);
+    const Report none = compute(given(args));
+    CHECK(none.results().at("first_flip_s").is_null());
+    bool said = false;
+    for (const auto& row : none.rows()) {
+      said = said ||
+             (row.label.rfind("first flip", 0) == 0 && row.textbook.find(why) != std::string::npos);
+    }
+    CHECK(said);
+  }
+}
