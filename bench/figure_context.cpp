@@ -8,9 +8,18 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "output.h"
 #include "rigid/render/context.h"
 
-int main() {
+int main(int argc, char** argv) {
+  bench::Arguments args;
+  if (const int status = bench::parse_arguments(
+          argc, argv, "bench_figure_context",
+          "the time to make the renderer's GL context, as one JSON line on stdout", args,
+          /*takes_dir=*/false, /*takes_quick=*/false);
+      status >= 0) {
+    return status;
+  }
   const auto t0 = std::chrono::steady_clock::now();
   try {
     const rigid::render::ContextInfo& info = rigid::render::context();

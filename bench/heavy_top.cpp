@@ -242,15 +242,17 @@ void write_json(const std::filesystem::path& path, const Json& j) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::filesystem::path dir = ".";
-  bool quick = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick")
-      quick = true;
-    else if (!bench::output_option(a))
-      dir = a;
+  bench::Arguments args;
+  if (const int status = bench::parse_arguments(
+          argc, argv, "bench_heavy_top",
+          "run time against error on the heavy top (section 8.1 and a fast top) beside "
+          "Boost.Odeint and GSL, and the cost of an exact sample, written as JSON into DIR",
+          args);
+      status >= 0) {
+    return status;
   }
+  const std::filesystem::path dir = args.dir;
+  const bool quick = args.quick;
   // the work, counted for the progress line: each problem's solver sweeps, their
   // later timing rounds, and the elliptic functions
   const std::vector<TopProblem> all_problems = problems();

@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "output.h"
 #ifdef RIGID_BENCH_HAVE_RENDER
 #include "rigid/render/draw.h"
 #include "rigid/render/plot2d.h"
@@ -800,12 +801,16 @@ Json merge_parts(const std::filesystem::path& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: bench_report DIR  (merges DIR/*.json into DIR/results.json, writes "
-                 "DIR/results.md and DIR/work_precision_<problem>.png)\n";
-    return 2;
+  bench::Arguments args;
+  if (const int status = bench::parse_arguments(
+          argc, argv, "bench_report",
+          "merges DIR/*.json into DIR/results.json, writes DIR/results.md and "
+          "DIR/work_precision_<problem>.png",
+          args, /*takes_dir=*/true, /*takes_quick=*/false, /*needs_dir=*/true);
+      status >= 0) {
+    return status;
   }
-  const std::string out_dir = argv[1];
+  const std::string out_dir = args.dir.string();
   Json all;
   try {
     all = merge_parts(out_dir);

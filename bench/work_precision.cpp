@@ -460,15 +460,18 @@ void write_json(const std::filesystem::path& path, const Json& j) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::filesystem::path dir = ".";
-  Settings cfg;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick")
-      cfg.quick = true;
-    else if (!bench::output_option(a))
-      dir = a;
+  bench::Arguments args;
+  if (const int status =
+          bench::parse_arguments(argc, argv, "bench_work_precision",
+                                 "run time against error of every free-body integrator and its "
+                                 "peers (Boost.Odeint, GSL, SciPy), written as JSON into DIR",
+                                 args);
+      status >= 0) {
+    return status;
   }
+  const std::filesystem::path dir = args.dir;
+  Settings cfg;
+  cfg.quick = args.quick;
   std::filesystem::create_directories(dir);
   const std::vector<Solver> all_solvers = solvers();
   const std::vector<Problem> problems = bench::problems();

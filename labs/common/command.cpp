@@ -210,9 +210,14 @@ Command::Command(const std::string& name, const std::string& title,
         ->type_name("NUMBER")
         ->capture_default_str()
         ->check(in_range(1.0, 120.0, "a number"));
+    // The film shows the lab's whole motion: to --t-end where the lab has one.
+    const bool t_end = std::any_of(inputs.begin(), inputs.end(), [](const BoundInput& in) {
+      return in.rule->flag() == "--t-end";
+    });
     app_.add_option("--duration", animation_duration_,
-                    "length of the animation in seconds, 0.1 to 600 (the motion to --t-end is "
-                    "shown in it)")
+                    std::string("length of the animation in seconds, 0.1 to 600 (") +
+                        (t_end ? "the motion to --t-end is shown in it)"
+                               : "the lab's motion is shown in it)"))
         ->type_name("NUMBER")
         ->capture_default_str()
         ->check(in_range(0.1, 600.0, "a number of seconds"));

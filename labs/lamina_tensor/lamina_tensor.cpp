@@ -18,7 +18,8 @@ const InputTable<Inputs>& input_table() {
     t.number("--mass", &Inputs::mass, "mass m of the lamina").unit("kg").positive().symbol("m");
     t.number("--a", &Inputs::a, "side a along x").unit("m").positive().symbol("a");
     t.number("--b", &Inputs::b, "side b along y").unit("m").positive().symbol("b");
-    t.number("--c", &Inputs::c, "third side c of the section 2.1 block (a x b x c)")
+    t.number("--c", &Inputs::c,
+             "third side c of the section 2.1 block (a x b x c); giving it shows section 2.1")
         .unit("m")
         .positive();
     t.choice("--origin", &Inputs::origin, {"corner", "center"},
@@ -36,7 +37,8 @@ const InputTable<Inputs>& input_table() {
         .excludes("--axis", "give --axis or --axis-deg, not both");
     t.number("--omega", &Inputs::omega, "angular speed about the axis").unit("rad/s").positive();
     t.flag("--examples", &Inputs::examples,
-           "also section 2.1's paddle, block and cube (always with the textbook's inputs)")
+           "also section 2.1's paddle, block and cube, with these inputs (the textbook's "
+           "inputs show them anyway)")
         .numerical();
     return t;
   }();
@@ -98,8 +100,9 @@ Report compute(const Inputs& in) {
                 report.textbook("(1/2)(0.493) ma^2 omega^2"));
 
   // Section 2.1's examples do not depend on the plate's orientation: shown with the
-  // textbook's inputs, or when asked for.
-  if (report.textbook_inputs() || in.examples) {
+  // textbook's inputs, or when asked for, by --examples or by a block side c of one's
+  // own (which nothing else uses: never silently ignored).
+  if (report.textbook_inputs() || in.examples || in.c != Inputs{}.c) {
     report.section("2.1 symmetric bodies about their centre of mass, built from primitives");
     const Body paddle = model_paddle(m, a);
     report.result("paddle_principal_moments", "model paddle I1, I2, I3 (eqs. 41-43)",
