@@ -126,6 +126,13 @@ TEST_CASE(
   // The cube of side a: m a^2 / 6 about any axis through its centre (the diagonal too).
   CHECK(double(r["cube_moment_about_axis"]) == Approx(m * a * a / 6).epsilon(12 * DBL_EPSILON));
   CHECK(double(r["cube_moment_about_diagonal"]) == Approx(m * a * a / 6).epsilon(12 * DBL_EPSILON));
+  // --c sets only the block: given without --examples it shows section 2.1 rather than
+  // be silently ignored; without either, another plate has no section 2.1.
+  in.examples = false;
+  CHECK(double(compute(in).results()["block_principal_moments"][0]) ==
+        Approx(block[0]).epsilon(kRoundoff));
+  in.c = Inputs{}.c;
+  CHECK(!compute(in).results().contains("block_principal_moments"));
 }
 
 TEST_CASE("lamina_tensor: the plate about its diagonal, or an axis by its angle in the plane") {
