@@ -49,8 +49,8 @@ inline int parse_arguments(int argc, char** argv, const std::string& program,
                            bool takes_quick = true, bool needs_dir = false) {
   CLI::App app(what, program);
   if (takes_dir) {
-    auto* dir =
-        app.add_option("DIR", args.dir, "the bench's folder, where its JSON goes")->type_name("DIR");
+    auto* dir = app.add_option("DIR", args.dir, "the bench's folder, where its JSON goes")
+                    ->type_name("DIR");
     if (needs_dir)
       dir->required();
     else

@@ -75,6 +75,7 @@ void Report::store(const std::string& key, Json value, bool finite, const std::s
         "", "the result '" + key + "' overflows or is undefined for these inputs (out of range)");
   }
   results_[key] = std::move(value);
+  last_key_ = key;
   // A pure number has the unit "1", as SI writes it.
   units_[key] = unit.empty() ? "1" : unit;
   if (printed) textbook_[key] = *printed;
@@ -153,6 +154,12 @@ void Report::result_json_none(const std::string& key, const std::string& unit) {
 void Report::count_json(const std::string& key, std::size_t value) {
   results_[key] = value;
   units_[key] = "1";
+}
+
+void Report::precise(int digits) {
+  // the value the last row was made from: JSON keeps it whole
+  if (rows_.empty() || !results_.contains(last_key_) || !results_[last_key_].is_number()) return;
+  rows_.back().value = format_number(results_[last_key_].get<double>(), digits);
 }
 
 void Report::remark(const std::string& text) {

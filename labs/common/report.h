@@ -63,6 +63,9 @@ class Report {
   }
   /// Removes an input the run did not use (e.g. omega when the road speed sets it).
   void drop_input(const std::string& key) { inputs_.erase(key); }
+  /// Records an input as the run used it (a preset's omega lent to a body of one's own,
+  /// "custom" for a preset whose moments were replaced).
+  void set_input(const std::string& key, Json value) { inputs_[key] = std::move(value); }
   /// The inputs recorded: JSON "inputs", the table's inputs line.
   const Json& inputs() const { return inputs_; }
   /// A figure's or animation's title: the lab's name and its inputs that carry a
@@ -98,6 +101,9 @@ class Report {
   void result_json_none(const std::string& key, const std::string& unit);
   /// A count in JSON only.
   void count_json(const std::string& key, std::size_t value);
+  /// The last row's value printed to `digits` significant digits, not 6: where the
+  /// digits beyond matter (Is / I = 1.0032737, whose 0.0032737 sets the Earth's period).
+  void precise(int digits);
   /// The last row's remark, printed after its unit: "(2000 evaluations, 500 steps)".
   void remark(const std::string& text);
   /// A text result (e.g. a method name).
@@ -129,6 +135,7 @@ class Report {
              const std::optional<std::string>& printed);
 
   std::string lab_, title_;
+  std::string last_key_;  ///< the result stored last, for precise()
   Json inputs_ = Json::object(), results_ = Json::object(), units_ = Json::object();
   Json textbook_ = Json::object();
   bool textbook_inputs_ = true;

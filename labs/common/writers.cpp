@@ -17,8 +17,13 @@ namespace {
 std::string text_of(const Json& value) {
   if (value.is_string()) return value.get<std::string>();
   if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";
-  if (value.is_number()) return format_number(value.get<double>(), 6);
-  const auto part = [&](int i) { return format_number(value[i].get<double>(), 5); };
+  // An input is echoed as given: the shortest text that reads back as the same double
+  // (rounded, the Earth's Is/I = 1.0032737 read 1.0033, the digit that sets its period lost).
+  const auto exact = [](const Json& number) {
+    return fmt::format("{}", number.get<double>() + 0.0);
+  };
+  if (value.is_number()) return exact(value);
+  const auto part = [&](int i) { return exact(value[i]); };
   if (value.is_array() && value.size() == 3 && value[0].is_number()) {
     return fmt::format("({}, {}, {})", part(0), part(1), part(2));
   }

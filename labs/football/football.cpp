@@ -59,11 +59,22 @@ const InputTable<Inputs>& input_table() {
         .positive()
         .lab_default("the preset's")
         .excludes("--preset", kInertiaWithPreset);
+    t.number("--moment-ratio", &Inputs::moment_ratio,
+             "Is / I with the preset's I (another Earth's flattening, say); not with --inertia")
+        .open_range(0.0, 2.0)
+        .symbol("I_s/I")
+        .lab_default("the preset's")
+        .excludes("--inertia", "give the moments (--inertia) or their ratio, not both");
     t.number("--omega", &Inputs::omega, "angular speed |omega|")
         .unit("rad/s")
         .positive()
         .symbol("\\omega")
         .lab_default("the preset's");
+    t.number("--day", &Inputs::day, "one turn of the body (a day): omega = 2 pi / DAY")
+        .unit("s")
+        .positive()
+        .lab_default("--omega's")
+        .excludes("--omega", "give the speed once: --omega or --day");
     t.angle_deg("--alpha-deg", &Inputs::alpha_deg,
                 "angle alpha between omega and the symmetry axis")
         .open_range(0.0, 90.0)
@@ -82,9 +93,18 @@ Report compute(const Inputs& in) {
   if (in.inertia && in.preset != Inputs{}.preset) throw InputError("--inertia", kInertiaWithPreset);
   const Preset preset = preset_of(in.preset);
   const double I = in.inertia ? (*in.inertia)(0) : preset.I;
-  const double Is = in.inertia ? (*in.inertia)(1) : preset.Is;
-  const double omega = in.omega.value_or(preset.omega);
+  const double Is = in.inertia        ? (*in.inertia)(1)
+                    : in.moment_ratio ? *in.moment_ratio * preset.I
+                                      : preset.Is;
+  const double omega = in.day ? 2 * kPi / *in.day : in.omega.value_or(preset.omega);
   const double alpha_deg = in.alpha_deg.value_or(preset.alpha_deg);
+  // A body of one's own moments is no preset: the inputs, the table and the figures'
+  // titles say "custom", with the preset's omega and alpha recorded where it lent them.
+  if (in.inertia) {
+    report.set_input("preset", "custom");
+    if (!in.omega && !in.day) report.set_input("omega", omega);
+    if (!in.alpha_deg) report.set_input("alpha_deg", alpha_deg);
+  }
   const double alpha = deg_to_rad(alpha_deg);
   report.I = I, report.Is = Is, report.omega = omega, report.alpha_deg = alpha_deg;
   const SymmetricPrecession p =
@@ -92,7 +112,7 @@ Report compute(const Inputs& in) {
   report.precession = p;
   // The text's printed values of a preset's fixed example: only for that preset
   // with nothing else changed.
-  const bool example = !in.inertia && !in.omega && !in.alpha_deg;
+  const bool example = !in.inertia && !in.moment_ratio && !in.omega && !in.day && !in.alpha_deg;
   const auto text = [&](const char* name, const std::string& value) {
     return example && in.preset == name ? printed(value) : std::nullopt;
   };
@@ -102,6 +122,10 @@ Report compute(const Inputs& in) {
   report.result("moment_transverse_kg_m2", "I, transverse moment", I, "kg m^2");
   report.result("moment_symmetry_kg_m2", "Is, moment about the symmetry axis", Is, "kg m^2");
   report.result("moment_ratio", "Is / I", Is / I, "", text("earth", "1.00327"));
+  report.precise(12);
+  // Omega / omega is (Is - I)/I cos(alpha): formed without the cancellation of Is/I - 1.
+  report.result("moment_ratio_excess", "(Is - I) / I, which sets Omega / omega", (Is - I) / I, "",
+                text("earth", "0.00327"));
   if (in.preset == "earth" && !in.alpha_deg) {
     report.result("alpha_rad", "alpha", alpha, "rad", text("earth", "0.97e-6"));
   }
@@ -130,11 +154,13 @@ Report compute(const Inputs& in) {
                        "Is = I: omega stays fixed in the body");
   }
   report.result("space_precession_period_s", "2 pi / phi_dot", p.space_period, "s");
-  if (in.preset == "earth") {
+  // In days where a period is that long (the Earth's 305, any body's beyond a day).
+  const bool in_days = in.preset == "earth" || (p.body_rate != 0.0 && p.body_period >= kSolarDay) ||
+                       p.space_period >= kSolarDay;
+  if (in_days) {
     if (p.body_rate != 0.0) {
-      report.result("body_precession_period_days",
-                    "2 pi / |Omega|, sidereal omega, in days of 86400 s", p.body_period / kSolarDay,
-                    "d", text("earth", "305"));
+      report.result("body_precession_period_days", "2 pi / |Omega|, in days of 86400 s",
+                    p.body_period / kSolarDay, "d", text("earth", "305"));
     }
     report.result("space_precession_period_days", "2 pi / phi_dot, in days of 86400 s",
                   p.space_period / kSolarDay, "d", text("earth", "0.997"));

@@ -36,7 +36,9 @@ namespace rigid::lab::football {
 struct Inputs {
   std::string preset = "football";
   std::optional<Eigen::Vector2d> inertia;  ///< (I, Is), kg m^2
+  std::optional<double> moment_ratio;      ///< Is / I with the preset's I
   std::optional<double> omega;             ///< |omega|, rad/s
+  std::optional<double> day;               ///< s, one turn: omega = 2 pi / day
   std::optional<double> alpha_deg;         ///< angle between omega and the symmetry axis
 };
 

@@ -165,6 +165,47 @@ TEST_CASE("football: the inputs recorded are the preset and those given") {
   CHECK(earth.Is / earth.I == Approx(1.00327).epsilon(kRoundoff));
 }
 
+TEST_CASE("football: a body of one's own says custom; another Earth by its Is/I or day") {
+  // --inertia replaces the preset's moments: the inputs, and so the table and the
+  // figures' titles, say "custom", with the preset's omega and alpha it still uses.
+  Inputs in;
+  in.inertia = Eigen::Vector2d(1, 1.5);
+  const auto custom = compute(in);
+  CHECK(custom.inputs() == rigid::lab::Json{{"preset", "custom"},
+                                            {"inertia", {1.0, 1.5}},
+                                            {"omega", 60.0},
+                                            {"alpha_deg", 10.0}});
+  CHECK_THAT(custom.figure_title("cones"), Catch::Contains("body = custom"));
+  CHECK_THAT(custom.figure_title("cones"), !Catch::Contains("body = football"));
+  // Is/I to the digit: (Is - I)/I sets Omega / omega, the Earth's 305 days
+  in = preset("earth");
+  in.moment_ratio = 1.0032737;
+  const auto earth = compute(in);
+  const auto& r = earth.results();
+  CHECK(value(r, "moment_ratio_excess") == Approx(0.0032737).epsilon(1e-12));
+  bool whole = false;
+  for (const auto& row : earth.rows()) whole = whole || row.value == "1.0032737";
+  CHECK(whole);
+  // the sidereal day's omega, the moments' ratio given: 86164.0905 / (0.0032737 cos a) s
+  const double a = 0.2 / 3600 * M_PI / 180;
+  CHECK(value(r, "body_precession_period_days") ==
+        Approx(86164.0905 / (0.0032737 * std::cos(a)) / 86400).epsilon(1e-12));
+  // and the day: a solar one, 86400 s, gives 305.8 days (the errata's other day)
+  in = preset("earth");
+  in.day = 86400;
+  const auto solar = compute(in);
+  CHECK(value(solar.results(), "body_precession_period_days") ==
+        Approx(86400 / (0.00327 * std::cos(a)) / 86400).epsilon(3e-13));
+  // periods in days wherever one is that long, not only for the Earth's preset
+  Inputs slow;
+  slow.inertia = Eigen::Vector2d(1, 1.001);
+  slow.omega = 1e-3;
+  const auto days = compute(slow).results();
+  CHECK(value(days, "body_precession_period_days") ==
+        Approx(value(days, "body_precession_period_s") / 86400).epsilon(kRoundoff));
+  CHECK(!compute(Inputs{}).results().contains("body_precession_period_days"));
+}
+
 TEST_CASE("football: a broken rule is an InputError naming the input") {
   using rigid::lab::InputError;
   using rigid::test::names_input;
@@ -185,10 +226,21 @@ TEST_CASE("football: a broken rule is an InputError naming the input") {
   in = Inputs{};
   in.omega = 0;
   CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--omega"));
-  // a preset's moments and moments given are alternatives
+  // a preset's moments and moments given are alternatives, as are the moments and
+  // their ratio, and the speed and the day
   in = preset("earth");
   in.inertia = Eigen::Vector2d(1, 1);
   CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--inertia"));
+  in = Inputs{};
+  in.inertia = Eigen::Vector2d(1, 1);
+  in.moment_ratio = 1.5;
+  CHECK_THROWS(compute(in));
+  in = Inputs{};
+  in.moment_ratio = 2.5;  // Is > 2I: no such body
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--moment-ratio"));
+  in = Inputs{};
+  in.omega = 1, in.day = 86400;
+  CHECK_THROWS(compute(in));
 }
 
 TEST_CASE("football: the motion is exact at any time, in any order; its still is the cones") {
