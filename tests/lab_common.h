@@ -55,13 +55,16 @@ inline Run run_lab(const std::string& lab, const std::string& args, const std::s
 
 /// A CSV file a lab wrote: its header line and its rows of numbers.
 struct Csv {
+  std::vector<std::string> comments;  ///< the "# ..." lines before the header
   std::string header;
   std::vector<std::vector<double>> rows;
 };
 inline Csv read_csv(const std::string& path) {
   Csv csv;
   std::ifstream in(path);
-  std::getline(in, csv.header);
+  // the comment lines first ("# t_s: time, s; ..."), then the header
+  while (std::getline(in, csv.header) && csv.header.rfind('#', 0) == 0)
+    csv.comments.push_back(csv.header);
   for (std::string line; std::getline(in, line);) {
     std::vector<double> row;
     std::stringstream cells(line);

@@ -15,13 +15,12 @@ TEST_CASE("tire_balancing: --csv writes one turn of L and the torque") {
   const std::string path = "/tmp/rigid_tire_test_" + std::to_string(::getpid()) + ".csv";
   std::remove(path.c_str());
   REQUIRE(run_lab("tire_balancing", "--quiet --csv " + path).status == 0);
-  std::ifstream csv(path);
-  std::string header;
-  std::getline(csv, header);
-  CHECK(header == "t_s,Lx,Ly,Lz,Nx,Ny,Nz");
-  int rows = 0;
-  for (std::string line; std::getline(csv, line);) ++rows;
-  CHECK(rows == 361);
+  const rigid::test::Csv csv = rigid::test::read_csv(path);
+  CHECK(csv.header == "t_s,Lx,Ly,Lz,Nx,Ny,Nz");
+  CHECK(csv.rows.size() == 361);
+  // the columns, their units and axes said in the comment lines before the header
+  REQUIRE(csv.comments.size() == 2);
+  CHECK_THAT(csv.comments[1], Catch::Contains("Lx, Ly, Lz: its angular momentum, kg m^2/s"));
   std::remove(path.c_str());
 }
 
@@ -86,10 +85,16 @@ TEST_CASE("poinsot: --csv writes t, omega, the quaternion, energy and |L|") {
   const std::string path = "/tmp/rigid_poinsot_test_" + std::to_string(::getpid()) + ".csv";
   std::remove(path.c_str());
   REQUIRE(run_lab("poinsot", "--quiet --method splitting --csv " + path).status == 0);
-  std::ifstream csv(path);
-  std::string header;
-  std::getline(csv, header);
-  CHECK(header == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,energy_J,L_kg_m2_s");
+  const rigid::test::Csv csv = rigid::test::read_csv(path);
+  CHECK(csv.header == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,energy_J,L_kg_m2_s");
+  // the quaternion's order and frame said before the header
+  bool convention = false;
+  for (const std::string& line : csv.comments) {
+    convention = convention || line.find(
+                                   "# qw, qx, qy, qz: the attitude, the unit quaternion that "
+                                   "turns body axes into space axes") == 0;
+  }
+  CHECK(convention);
   std::remove(path.c_str());
 }
 
@@ -235,14 +240,15 @@ TEST_CASE("top_nutation: --csv holds theta beside the exact theta, and a unit qu
   const double t_end = run.json()["results"]["t_end_s"];
   const rigid::test::Csv csv = rigid::test::read_csv(path);
   CHECK(csv.header ==
-        "t_s,theta_rad,theta_exact_rad,omega1,omega2,omega3,qw,qx,qy,qz,energy_error_rel");
+        "t_s,theta_rad,theta_exact_rad,omega1,omega2,omega3,qw,qx,qy,qz,energy_error_rel,phi_rad,"
+        "psi_rad,theta_dot_rad_s,phi_dot_rad_s,psi_dot_rad_s");
   // The file holds the lab's time series to 17 digits; what the numbers say (theta
   // beside the exact theta, its nod) is tested on the series itself, in-process
   // (tests/labs/top_nutation_test.cpp).
   std::size_t rows = 0;
   double last_t = -1, worst_norm = 0;
   for (const std::vector<double>& v : csv.rows) {
-    REQUIRE(v.size() == 11);
+    REQUIRE(v.size() == 16);
     ++rows;
     last_t = v[0];
     worst_norm = std::max(worst_norm,

@@ -147,6 +147,23 @@ Eigen::Vector3d euler_omega_body(const TopAngles& a) {
           a.phi_dot * ct + a.psi_dot};
 }
 
+TopAngles euler_angles_and_rates(const Eigen::Quaterniond& q, const Eigen::Vector3d& w) {
+  const EulerAngles e = euler_zxz(q);
+  TopAngles a;
+  a.theta = e.theta, a.phi = e.phi, a.psi = e.psi;
+  const double sp = std::sin(e.psi), cp = std::cos(e.psi);
+  const double st = std::sin(e.theta), ct = std::cos(e.theta);
+  a.theta_dot = w(0) * cp - w(1) * sp;
+  if (st == 0.0) {
+    a.phi_dot = ct > 0 ? w(2) : -w(2);
+    a.psi_dot = 0.0;
+  } else {
+    a.phi_dot = (w(0) * sp + w(1) * cp) / st;
+    a.psi_dot = w(2) - a.phi_dot * ct;
+  }
+  return a;
+}
+
 HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     : top_(top), start_(start) {
   validate(top);

@@ -15,11 +15,19 @@
 
 namespace rigid::lab {
 
-/// The time series written by --csv: a header and rows of numbers.
+/// The time series written by --csv: a header and rows of numbers, after comment
+/// lines ("# ...") that say what each column is, its unit and its conventions.
 struct TimeSeries {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
+  std::vector<std::string> comments;
 };
+
+/// The comment every free-body and top CSV carries on its attitude columns.
+inline constexpr char kQuaternionConvention[] =
+    "qw, qx, qy, qz: the attitude, the unit quaternion that turns body axes into space axes "
+    "(Hamilton's convention, scalar first; v_space = q v_body q*), the identity at t = 0 "
+    "unless the start sets it";
 
 /// One line of the human table: a heading, or a quantity with its value, unit,
 /// the text's value and a remark.

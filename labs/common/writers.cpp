@@ -137,6 +137,7 @@ void write_json(std::ostream& out, const Report& report, const RunOutputs& outpu
 
 std::string csv_text(const TimeSeries& series) {
   std::string text;
+  for (const std::string& comment : series.comments) text += "# " + comment + "\n";
   for (size_t i = 0; i < series.columns.size(); ++i) {
     text += (i ? "," : "") + series.columns[i];
   }

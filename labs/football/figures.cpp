@@ -101,14 +101,12 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
 // Omega / omega and phi_dot / omega against alpha for this body.
 render::Plot2D rates_plot(const Report& report) {
   const SymmetricPrecession& p = report.precession;
+  // the sweep --csv writes (rate_sweep): alpha, Omega / omega, phi_dot / omega
   std::vector<double> alpha_deg, body, space;
-  for (int k = 1; k < 180; ++k) {
-    const double a = 0.5 * k;
-    const SymmetricPrecession q =
-        free_symmetric_precession(report.I, report.Is, 1.0, deg_to_rad(a));
-    alpha_deg.push_back(a);
-    body.push_back(q.body_rate);
-    space.push_back(q.space_rate);
+  for (const std::vector<double>& row : report.time_series().rows) {
+    alpha_deg.push_back(row[0]);
+    body.push_back(row[1]);
+    space.push_back(row[2]);
   }
   render::Plot2D plot;
   plot.title = fmt::format("rates against \\alpha, Is/I = {:.4g}", report.Is / report.I);

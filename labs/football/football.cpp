@@ -43,6 +43,25 @@ Preset preset_of(const std::string& name) {
 
 }  // namespace
 
+// The rates against alpha for this body, as the rates figure draws them and --csv
+// writes them: Omega / omega and phi_dot / omega at alpha = 0.5, 1, .., 89.5 deg.
+TimeSeries rate_sweep(double I, double Is) {
+  TimeSeries sweep{{"alpha_deg", "Omega_over_omega", "phi_dot_over_omega"},
+                   {},
+                   {"football: the rates against alpha for this body (a sweep: the lab has no "
+                    "time series), as its rates figure draws them",
+                    "alpha_deg: the angle between omega and the symmetry axis 3, deg",
+                    "Omega_over_omega: omega's turn about 3 in the body over |omega| (eq. 109, "
+                    "+: along omega_3); phi_dot_over_omega: 3's turn about L in space over "
+                    "|omega| (eq. 147)"}};
+  for (int k = 1; k < 180; ++k) {
+    const double a = 0.5 * k;
+    const SymmetricPrecession q = free_symmetric_precession(I, Is, 1.0, deg_to_rad(a));
+    sweep.rows.push_back({a, q.body_rate, q.space_rate});
+  }
+  return sweep;
+}
+
 const InputTable<Inputs>& input_table() {
   static const InputTable<Inputs> table = [] {
     InputTable<Inputs> t;
@@ -110,6 +129,7 @@ Report compute(const Inputs& in) {
   const SymmetricPrecession p =
       for_input("--inertia", [&] { return free_symmetric_precession(I, Is, omega, alpha); });
   report.precession = p;
+  report.series(rate_sweep(I, Is));
   // The text's printed values of a preset's fixed example: only for that preset
   // with nothing else changed.
   const bool example = !in.inertia && !in.moment_ratio && !in.omega && !in.day && !in.alpha_deg;
@@ -268,7 +288,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/false};
+  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/true};
 }
 
 }  // namespace rigid::lab::football

@@ -70,12 +70,14 @@ render::Scene3D scene_of(const Report& report) {
 
 // The moment n.I.n about an in-plane axis at angle alpha from x: the principal
 // axes are its extremes (section 2.3).
-render::Plot2D moment_plot(const Mat3& I, const Vec3& n) {
+render::Plot2D moment_plot(const Report& report) {
+  const Mat3& I = report.I;
+  const Vec3& n = report.n;
+  // the sweep --csv writes (moment_sweep)
   std::vector<double> alpha_deg, moment;
-  for (int k = 0; k <= 360; ++k) {
-    const double alpha = deg_to_rad(-90.0 + 0.5 * k);
-    alpha_deg.push_back(rad_to_deg(alpha));
-    moment.push_back(moment_about_axis(I, Vec3(std::cos(alpha), std::sin(alpha), 0)));
+  for (const std::vector<double>& row : report.time_series().rows) {
+    alpha_deg.push_back(row[0]);
+    moment.push_back(row[1]);
   }
   render::Plot2D plot;
   plot.title = "moment about an axis in the x-y plane";
@@ -109,8 +111,7 @@ render::Plot2D moment_plot(const Mat3& I, const Vec3& n) {
 
 void figures(const Report& report, FigureSink& sink) {
   sink.add("scene", "L is not along omega; the principal axes", scene_of(report));
-  sink.add("moment", "the moment n.I.n is extreme on the principal axes",
-           moment_plot(report.I, report.n));
+  sink.add("moment", "the moment n.I.n is extreme on the principal axes", moment_plot(report));
 }
 
 }  // namespace rigid::lab::lamina_tensor

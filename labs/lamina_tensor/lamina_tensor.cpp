@@ -10,6 +10,24 @@ namespace rigid::lab::lamina_tensor {
 namespace {
 constexpr const char* kName = "lamina_tensor";
 constexpr const char* kTitle = "inertia tensor of a rectangular lamina (sections 1-3.1)";
+
+// The moment n.I.n about an axis in the x-y plane at alpha = -90, -89.5, .., 90 deg
+// from x, as the moment figure draws it and --csv writes it.
+TimeSeries moment_sweep(const Mat3& I) {
+  TimeSeries sweep{{"alpha_deg", "moment_kg_m2"},
+                   {},
+                   {"lamina_tensor: the moment about an axis in the plate's plane against its "
+                    "angle (a sweep: the lab has no time series), as its moment figure draws it",
+                    "alpha_deg: the axis's angle from x toward y, deg; moment_kg_m2: n.I.n about "
+                    "that axis through the origin, kg m^2 (extreme on the principal axes)"}};
+  for (int k = 0; k <= 360; ++k) {
+    const double alpha = deg_to_rad(-90.0 + 0.5 * k);
+    sweep.rows.push_back(
+        {rad_to_deg(alpha), moment_about_axis(I, Vec3(std::cos(alpha), std::sin(alpha), 0))});
+  }
+  return sweep;
+}
+
 }  // namespace
 
 const InputTable<Inputs>& input_table() {
@@ -70,6 +88,7 @@ Report compute(const Inputs& in) {
   report.result("axis_angle_from_x_deg", "  its angle from x toward y",
                 rad_to_deg(std::atan2(n.y(), n.x())), "deg", report.textbook("37 (3-4-5)"));
   const Mat3& I = report.I = rigid::lamina_tensor({in.mass, a, in.b, report.corner});
+  report.series(moment_sweep(I));
   report.result("inertia_tensor", "inertia tensor I", I, "kg m^2",
                 report.textbook("(4/3, -1/2, 0; -1/2, 1/3, 0; 0, 0, 5/3) ma^2"));
   report.result("scalar_moment", "moment about n, n.I.n (eq. 21)", moment_about_axis(I, n),
@@ -166,7 +185,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/false};
+  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/true};
 }
 
 }  // namespace rigid::lab::lamina_tensor

@@ -234,7 +234,13 @@ Report compute(const Inputs& in) {
 
   TimeSeries series{{"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
                      "omega1_integrated", "omega2_integrated", "omega3_integrated"},
-                    {}};
+                    {},
+                    {"tennis_racquet: the spin about the chosen axis, exact and integrated",
+                     "t_s: time, s; omega1, omega2, omega3: the exact omega in the racquet's "
+                     "principal axes (1 the handle, 2 in the head's plane, 3 normal to it), rad/s",
+                     kQuaternionConvention,
+                     "omega1_integrated, omega2_integrated, omega3_integrated: --method's omega "
+                     "at the same times, rad/s"}};
   for (const FreeBodyRun::Sample& s : run.samples) {
     const RotationState x = motion.state(s.t);
     series.rows.push_back({s.t, x[0], x[1], x[2], x[3], x[4], x[5], x[6], s.x[0], s.x[1], s.x[2]});

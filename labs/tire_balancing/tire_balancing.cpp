@@ -130,7 +130,13 @@ Report compute(const Inputs& in) {
   }
 
   // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.
-  TimeSeries turn{{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"}, {}};
+  TimeSeries turn{{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"},
+                  {},
+                  {"tire_balancing: one turn of the unbalanced wheel",
+                   "t_s: time, s; Lx, Ly, Lz: its angular momentum, kg m^2/s; Nx, Ny, Nz: the "
+                   "torque the bearings exert, N m (eqs. 74-76); both in the axes the wheel "
+                   "had at t = 0: x its symmetry axis, the axle in the x-y plane at the tilt "
+                   "from x, so L sweeps a cone about the axle"}};
   const int samples = 361;
   const double period = 2.0 * kPi / omega;
   for (int k = 0; k < samples; ++k) {

@@ -343,13 +343,27 @@ Report compute(const Inputs& in) {
   }
   report_errata(report, S, theta0);
 
-  TimeSeries series{{"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw",
-                     "qx", "qy", "qz", "energy_error_rel"},
-                    {}};
+  TimeSeries series{
+      {"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
+       "energy_error_rel", "phi_rad", "psi_rad", "theta_dot_rad_s", "phi_dot_rad_s",
+       "psi_dot_rad_s"},
+      {},
+      {"top_nutation: the run at its sample times (the closed form's, or --method's)",
+       "t_s: time, s; theta_rad: the tilt of the axis from the vertical, rad; theta_exact_rad: "
+       "the closed form's at the same time",
+       "omega1, omega2, omega3: omega in body axes (3 the symmetry axis), rad/s",
+       kQuaternionConvention, "energy_error_rel: |E - E0| / (T0 + m g l)",
+       "phi_rad, psi_rad: the z-x-z Euler angles of section 6 with theta (q = Rz(phi) Rx(theta) "
+       "Rz(psi)): phi the precession about the vertical z, psi the spin about 3, in (-pi, pi]; "
+       "at theta = 0 only phi + psi is defined and psi is 0",
+       "theta_dot_rad_s, phi_dot_rad_s, psi_dot_rad_s: their rates from omega (eqs. 134-136 "
+       "inverted), rad/s"}};
   for (const HeavyTopRun::Sample& s : report.run.samples) {
+    const TopAngles a = euler_angles_and_rates(attitude(s.x), omega_body(s.x));
     series.rows.push_back({s.t, tilt_of(attitude(s.x)), motion.theta(s.t), s.x[0], s.x[1], s.x[2],
                            s.x[3], s.x[4], s.x[5], s.x[6],
-                           std::abs(s.invariant_errors[HeavyTopProblem::kEnergy])});
+                           std::abs(s.invariant_errors[HeavyTopProblem::kEnergy]), a.phi, a.psi,
+                           a.theta_dot, a.phi_dot, a.psi_dot});
   }
   report.series(std::move(series));
   return report;

@@ -171,10 +171,9 @@ TEST_CASE("football: a body of one's own says custom; another Earth by its Is/I 
   Inputs in;
   in.inertia = Eigen::Vector2d(1, 1.5);
   const auto custom = compute(in);
-  CHECK(custom.inputs() == rigid::lab::Json{{"preset", "custom"},
-                                            {"inertia", {1.0, 1.5}},
-                                            {"omega", 60.0},
-                                            {"alpha_deg", 10.0}});
+  CHECK(custom.inputs() ==
+        rigid::lab::Json{
+            {"preset", "custom"}, {"inertia", {1.0, 1.5}}, {"omega", 60.0}, {"alpha_deg", 10.0}});
   CHECK_THAT(custom.figure_title("cones"), Catch::Contains("body = custom"));
   CHECK_THAT(custom.figure_title("cones"), !Catch::Contains("body = football"));
   // Is/I to the digit: (Is - I)/I sets Omega / omega, the Earth's 305 days

@@ -116,6 +116,12 @@ struct TopAngles {
 Eigen::Quaterniond euler_attitude(double phi, double theta, double psi);
 /// omega in body axes from the Euler angles and rates (header comment).
 Eigen::Vector3d euler_omega_body(const TopAngles& a);
+/// The Euler angles of an attitude (euler_zxz) and their rates from omega in body
+/// axes, euler_omega_body inverted: theta_dot = w1 cos(psi) - w2 sin(psi), phi_dot =
+/// (w1 sin(psi) + w2 cos(psi)) / sin(theta), psi_dot = w3 - phi_dot cos(theta). At
+/// theta = 0 or pi only phi + psi (phi - psi) is defined: psi is 0 there
+/// (euler_zxz), so phi_dot takes the whole turn, w3 (or -w3), and psi_dot is 0.
+TopAngles euler_angles_and_rates(const Eigen::Quaterniond& q, const Eigen::Vector3d& omega_body);
 
 /// The exact motion of the heavy symmetric top from a start.
 class HeavyTopExact {
