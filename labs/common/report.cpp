@@ -142,6 +142,13 @@ void Report::count(const std::string& key, const std::string& label, std::size_t
   rows_.emplace_back(label, std::to_string(value), "", "");
 }
 
+void Report::answer(const std::string& text) {
+  results_["answer"] = text;
+  const TableRow heading("in short", "", "", "", true);
+  TableRow row("answer", text, "", "");
+  rows_.insert(rows_.begin(), {heading, row});
+}
+
 void Report::result_json(const std::string& key, double value, const std::string& unit) {
   store(key, value + 0.0, std::isfinite(value), unit, std::nullopt);
 }

@@ -80,6 +80,10 @@ class Report {
   /// symbol, then `own` after a colon.
   std::string figure_title(const std::string& own) const;
 
+  /// The answer to the section's question in words, with the numbers that decide it
+  /// ("flips: first at 1.89 s, then every 3.33 s"): JSON "answer", and the table's
+  /// first rows, whenever the lab says it.
+  void answer(const std::string& text);
   /// A section heading in the human table.
   void section(const std::string& heading);
   /// A scalar result with its unit ("" for a pure number); `printed` is the text's value.

@@ -275,6 +275,20 @@ Report compute(const Inputs& in) {
         "yield to the wobble), which lengthens the rigid-body period.");
   }
 
+  // In short: which cone rolls on which, and how fast.
+  const std::string kind = Is < I ? "prolate" : Is > I ? "oblate" : "a sphere";
+  if (p.contact == ConeContact::kNone) {
+    report.answer(fmt::format("{}: omega, L and 3 stay together; nothing precesses", kind));
+  } else {
+    report.answer(fmt::format(
+        "{} (Is/I = {:.6g}): the body cone ({:.3g} deg about 3) rolls {} the space cone ({:.3g} "
+        "deg about L); 3 and omega go round L every {:.4g} s, omega round 3 in the body every "
+        "{:.4g} s",
+        kind, Is / I, rad_to_deg(p.body_cone),
+        p.contact == ConeContact::kInside ? "round, enclosing" : "on the outside of",
+        rad_to_deg(p.space_cone), p.space_period, p.body_period));
+  }
+
   // Beside the run, the other kind of body at the same omega and alpha: the frisbee's
   // thin disk (oblate) for a prolate run, the football's spheroid for an oblate one.
   const bool prolate = p.contact == ConeContact::kOutside;

@@ -181,6 +181,16 @@ Report compute(const Inputs& in) {
         "the text prints +0.500 (right size, wrong sign): the axle pushes along -z",
         N_x(2) / (ma2 * in.omega * in.omega)));
   }
+  const double L_omega = rad_to_deg(angle_between(L, omega));
+  report.answer(
+      L_omega < 1e-6
+          ? fmt::format("L is along omega: n is a principal axis, and the plate turns about it "
+                        "steadily with no torque")
+          : fmt::format("L is {:.3g} deg from omega: n is not a principal axis, so turning "
+                        "steadily about it takes a torque |N| = {:.4g} N m; in the plate's plane "
+                        "the principal axes lie at {:.4g} and {:.4g} deg from x",
+                        L_omega, N.stableNorm(), rad_to_deg(plane.theta),
+                        rad_to_deg(plane.theta_other)));
   return report;
 }
 

@@ -170,6 +170,20 @@ Report compute(const Inputs& in) {
   }
   report_motion(report, exact);
   report_flips(report, exact);
+  // In short: stable or flips, and how soon.
+  const Json& said = report.results();
+  if (said.at("first_flip_s").is_number()) {
+    report.answer(fmt::format(
+        "it flips: spun near its intermediate axis, the body turns over first at {:.4g} s, then "
+        "every {:.4g} s (a nudge grows at {:.4g}/s)",
+        said.at("first_flip_s").get<double>(), said.at("flip_interval_s").get<double>(),
+        said.at("growth_rate_per_s").get<double>()));
+  } else if (std::isfinite(exact.period())) {
+    report.answer(fmt::format("{}; omega goes round its polhode every {:.4g} s",
+                              said.at("motion").get<std::string>(), exact.period()));
+  } else {
+    report.answer(said.at("motion").get<std::string>());
+  }
 
   report.scale = time_scale(exact);
   const double scale = report.scale;

@@ -246,6 +246,21 @@ Report compute(const Inputs& in) {
     series.rows.push_back({s.t, x[0], x[1], x[2], x[3], x[4], x[5], x[6], s.x[0], s.x[1], s.x[2]});
   }
   report.series(std::move(series));
+  // In short: which spin flips, and how soon.
+  if (std::isfinite(first_flip)) {
+    report.answer(fmt::format(
+        "a spin about axis {} flips: launched {:g} off it, the racquet turns over first at {:.4g} "
+        "s, then every {:.4g} s (the disturbance grows at {:.4g}/s); about axes 1 and 3 it "
+        "only wobbles",
+        kAxisNames[axis], in.perturbation, first_flip, 0.5 * motion.period(),
+        predicted[axis].rate));
+  } else {
+    report.answer(fmt::format(
+        "a spin about axis {} is {}: launched {:g} off it, it wobbles at {:.4g} rad/s and the "
+        "handle stays within {:.3g} deg of {}; only a spin about axis 2 flips",
+        kAxisNames[axis], predicted[axis].unstable ? "unstable" : "stable", in.perturbation,
+        predicted[axis].rate, rad_to_deg(excursion), axis == 0 ? "L" : "the plane across L"));
+  }
   return report;
 }
 

@@ -146,6 +146,16 @@ Report compute(const Inputs& in) {
     turn.rows.push_back({t, L(0), L(1), L(2), N(0), N(1), N(2)});
   }
   report.series(std::move(turn));
+  const double tilt_L = rad_to_deg(angle_between(L0, axle));
+  report.answer(
+      m0 == 0.0
+          ? std::string("balanced already: the axle is a principal axis, L lies along it "
+                        "and the bearings need no torque")
+          : fmt::format("unbalanced: L is {:.3g} deg off the axle and sweeps a cone, so the "
+                        "bearings must supply |N| = {:.4g} N m at omega = {:.4g} rad/s; two "
+                        "masses of {:.4g} g at (-b, a) and (b, -a) put a principal axis on "
+                        "the axle and the torque goes to 0",
+                        tilt_L, bearing_torque(wheel, 0.0, omega).stableNorm(), omega, 1e3 * m0));
   return report;
 }
 

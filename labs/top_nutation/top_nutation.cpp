@@ -366,6 +366,29 @@ Report compute(const Inputs& in) {
                            a.theta_dot, a.phi_dot, a.psi_dot});
   }
   report.series(std::move(series));
+  // In short: the axis's path and the numbers that decide it.
+  const double S_min = sleeping_min_spin(report.top);
+  const std::string sleep = fmt::format("S = {:.4g} rpm is {} S_min = {:.4g} rpm: upright, it {}",
+                                        S / kRpm, S >= S_min ? "above" : "below", S_min / kRpm,
+                                        S >= S_min ? "could sleep" : "would topple");
+  if (motion.regime() == TopRegime::kSleeping) {
+    report.answer("sleeping: the axis stays upright; " + sleep);
+  } else if (motion.regime() == TopRegime::kSteady) {
+    report.answer(
+        fmt::format("steady precession: the axis stays at {:.4g} deg and goes round "
+                    "at {:.4g} rad/s; {}",
+                    rad_to_deg(motion.theta_min()), motion.mean_precession_rate(), sleep));
+  } else {
+    const std::string every = std::isfinite(motion.nutation_period())
+                                  ? fmt::format("every {:.4g} s", motion.nutation_period())
+                                  : std::string("once, never to return (the separatrix)");
+    report.answer(fmt::format(
+        "{}: the axis nods between {:.4g} and {:.4g} deg {} while it precesses at a mean "
+        "{:.4g} rad/s (phi_dot {:.4g} rad/s at theta_max, {:.4g} at theta_min); {}",
+        to_string(motion.regime()), rad_to_deg(motion.theta_min()), rad_to_deg(motion.theta_max()),
+        every, motion.mean_precession_rate(), motion.phi_dot_at_u1(), motion.phi_dot_at_u2(),
+        sleep));
+  }
   return report;
 }
 

@@ -374,3 +374,15 @@ TEST_CASE(
   tilted.alpha_deg = 1.0;
   CHECK(notes_starting(compute(tilted), days).empty());
 }
+
+TEST_CASE("football: the answer in short - which cone rolls on which, and how fast") {
+  const auto football = compute(Inputs{}).results();
+  const std::string prolate = football.at("answer");
+  CHECK_THAT(prolate, Catch::StartsWith("prolate"));
+  CHECK_THAT(prolate, Catch::Contains("rolls on the outside of the space cone"));
+  CHECK_THAT(prolate, Catch::Contains(fmt::format("every {:.4g} s",
+                                                  value(football, "space_precession_period_s"))));
+  const std::string oblate = compute(preset("frisbee")).results().at("answer");
+  CHECK_THAT(oblate, Catch::StartsWith("oblate"));
+  CHECK_THAT(oblate, Catch::Contains("rolls round, enclosing the space cone"));
+}

@@ -303,3 +303,21 @@ TEST_CASE(
   centred.origin = "center";
   CHECK(compute(centred).notes().empty());
 }
+
+TEST_CASE("lamina_tensor: the answer in short, with the numbers that decide it") {
+  const auto report = compute(Inputs{});
+  const auto& r = report.results();
+  const std::string answer = r.at("answer");
+  CHECK_THAT(answer, Catch::Contains(
+                         fmt::format("L is {:.3g} deg from omega", value(r, "angle_L_omega_deg"))));
+  CHECK_THAT(answer, Catch::Contains("not a principal axis"));
+  // the table's first rows
+  REQUIRE(report.rows().size() > 2);
+  CHECK(report.rows()[0].heading);
+  CHECK(report.rows()[1].value == answer);
+  // about a principal axis (the in-plane one at -22.5 deg), no torque
+  Inputs principal;
+  principal.axis_deg = value(r, "principal_angle_deg");
+  CHECK_THAT(compute(principal).results().at("answer").get<std::string>(),
+             Catch::Contains("L is along omega"));
+}

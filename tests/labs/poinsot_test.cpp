@@ -658,6 +658,12 @@ TEST_CASE("poinsot: any body spun near its middle axis - growth rate, first flip
     }
   }
   CHECK(bracketed);
+  // the answer in short says so, with the numbers
+  CHECK_THAT(r["answer"].get<std::string>(),
+             Catch::StartsWith(fmt::format("it flips: spun near its intermediate axis, the body "
+                                           "turns over first at {:.4g} s, then every {:.4g} s",
+                                           flip, value(r, "flip_interval_s"))));
+  CHECK_THAT(compute(Inputs{}).results()["answer"].get<std::string>(), Catch::Contains("stable"));
   // No flips: a stable spin (the text's ellipsoid), a spin exactly on the axis, two
   // equal moments; each says why.
   for (const auto& [args, why] :

@@ -500,3 +500,19 @@ TEST_CASE("tennis_racquet: every valid racquet draws its figures, a vanishing ha
     CHECK(kept.scenes.count("flip") == 1);
   }
 }
+
+TEST_CASE("tennis_racquet: the answer in short - which spin flips, and how soon") {
+  const auto flips = compute(Inputs{}).results();
+  const std::string answer = flips.at("answer");
+  CHECK_THAT(answer, Catch::StartsWith("a spin about axis 2"));
+  CHECK_THAT(answer, Catch::Contains(fmt::format("first at {:.4g} s, then every {:.4g} s",
+                                                 value(flips, "first_flip_s"),
+                                                 value(flips, "flip_interval_s"))));
+  for (const char* axis : {"1", "3"}) {
+    Inputs in;
+    in.spin_axis = axis;
+    const std::string stable = compute(in).results().at("answer");
+    CHECK_THAT(stable, Catch::Contains("is stable"));
+    CHECK_THAT(stable, Catch::Contains("only a spin about axis 2 flips"));
+  }
+}

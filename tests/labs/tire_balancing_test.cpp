@@ -195,3 +195,16 @@ TEST_CASE(
   CHECK(changed.notes().empty());
   CHECK(changed.textbook_printed().empty());
 }
+
+TEST_CASE("tire_balancing: the answer in short, with the numbers that decide it") {
+  const auto r = compute(Inputs{}).results();
+  const std::string answer = r.at("answer");
+  CHECK_THAT(answer, Catch::Contains("unbalanced"));
+  CHECK_THAT(answer,
+             Catch::Contains(fmt::format("|N| = {:.4g} N m", value(r, "torque_unbalanced_n_m"))));
+  CHECK_THAT(answer, Catch::Contains(fmt::format("{:.4g} g", 1e3 * value(r, "balance_mass_kg"))));
+  Inputs straight;
+  straight.tilt_deg = 0;
+  CHECK_THAT(compute(straight).results().at("answer").get<std::string>(),
+             Catch::Contains("balanced already"));
+}

@@ -702,3 +702,21 @@ TEST_CASE("top_nutation: the exact top keeps E, p_phi and p_psi to roundoff thro
     CHECK(value(r, "p_psi_drift_rel") < 8 * DBL_EPSILON);
   }
 }
+
+TEST_CASE("top_nutation: the answer in short - the axis's path and what decides it") {
+  const auto r = compute(Inputs{}).results();
+  const std::string answer = r.at("answer");
+  CHECK_THAT(answer, Catch::StartsWith(r.at("regime").get<std::string>() + ": the axis nods"));
+  CHECK_THAT(answer, Catch::Contains(fmt::format(
+                         "between {:.4g} and {:.4g} deg every {:.4g} s", value(r, "theta_min_deg"),
+                         value(r, "theta_max_deg"), value(r, "nutation_period_s"))));
+  CHECK_THAT(answer, Catch::Contains("above S_min"));
+  Inputs sleeping;
+  sleeping.theta0_deg = 0;
+  CHECK_THAT(compute(sleeping).results().at("answer").get<std::string>(),
+             Catch::StartsWith("sleeping"));
+  Inputs slow;
+  slow.spin_rpm = 400, slow.theta0_deg = 1;
+  CHECK_THAT(compute(slow).results().at("answer").get<std::string>(),
+             Catch::Contains("below S_min"));
+}
