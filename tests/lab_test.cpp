@@ -24,6 +24,51 @@ TEST_CASE("tire_balancing: --csv writes one turn of L and the torque") {
   std::remove(path.c_str());
 }
 
+TEST_CASE(
+    "football and lamina_tensor: --csv writes the sweep their figure draws, said in comments") {
+  struct Case {
+    const char* lab;
+    const char* header;
+    std::size_t rows;
+    double first, last;  // the swept angle's ends, deg
+  };
+  for (const Case& c :
+       {Case{"football", "alpha_deg,Omega_over_omega,phi_dot_over_omega", 179, 0.5, 89.5},
+        Case{"lamina_tensor", "alpha_deg,moment_kg_m2", 361, -90, 90}}) {
+    INFO(c.lab);
+    const std::string path =
+        "/tmp/rigid_sweep_test_" + std::to_string(::getpid()) + "_" + c.lab + ".csv";
+    std::remove(path.c_str());
+    const auto run = run_lab(c.lab, "--quiet --csv " + path);
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    const rigid::test::Csv csv = rigid::test::read_csv(path);
+    CHECK(csv.header == c.header);
+    REQUIRE(csv.rows.size() == c.rows);
+    CHECK(csv.rows.front()[0] == c.first);
+    CHECK(csv.rows.back()[0] == c.last);
+    REQUIRE(!csv.comments.empty());
+    CHECK_THAT(csv.comments.front(), Catch::Contains("a sweep: the lab has no time series"));
+    std::remove(path.c_str());
+  }
+  // The moment at the sweep's ends is I_yy (the axis along y): the default plate's
+  // m (a^2 + ... ) is the lab's own number, here only its symmetry: -90 and 90 deg alike.
+  const std::string path = "/tmp/rigid_sweep_test_" + std::to_string(::getpid()) + ".csv";
+  REQUIRE(run_lab("lamina_tensor", "--quiet --csv " + path).status == 0);
+  const rigid::test::Csv csv = rigid::test::read_csv(path);
+  CHECK(csv.rows.front()[1] == Approx(csv.rows.back()[1]).epsilon(1e-15));
+  std::remove(path.c_str());
+}
+
+TEST_CASE("labs: help texts say only what the lab does") {
+  // football has no --t-end: its --duration says the lab's motion is shown, not --t-end's
+  const auto football = run_lab("football", "--help");
+  CHECK_THAT(football.out, !Catch::Contains("--t-end"));
+  CHECK_THAT(run_lab("poinsot", "--help").out, Catch::Contains("the motion to --t-end is shown"));
+  // lamina_tensor's --examples uses the inputs given
+  CHECK_THAT(run_lab("lamina_tensor", "--help").out, Catch::Contains("with these inputs"));
+}
+
 TEST_CASE("labs: bad input exits 2 with one line naming the option") {
   struct Case {
     const char* lab;

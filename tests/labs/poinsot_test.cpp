@@ -658,6 +658,13 @@ TEST_CASE("poinsot: any body spun near its middle axis - growth rate, first flip
     }
   }
   CHECK(bracketed);
+  // the headline says at once that the body flips, not only "polhode about the largest axis"
+  bool headline = false;
+  for (const auto& row : book.rows()) {
+    headline = headline ||
+               (row.label == "motion" && row.remark.find("the body flips") != std::string::npos);
+  }
+  CHECK(headline);
   // the answer in short says so, with the numbers
   CHECK_THAT(r["answer"].get<std::string>(),
              Catch::StartsWith(fmt::format("it flips: spun near its intermediate axis, the body "
