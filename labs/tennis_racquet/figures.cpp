@@ -103,7 +103,6 @@ render::Plot2D growth_plot(const Report& f) {
 // is left; body axis 2 goes from along L to against it.
 render::Scene3D flip_scene(const Report& f) {
   const FreeBodyExact& motion = f.launches[1];
-  const Racquet& r = f.racquet;
   const double flip = first_sign_change(motion, 1);
   const double quarter = 0.25 * motion.period();
   const double L = motion.angular_momentum_magnitude(), I2 = motion.moments().I2;
@@ -114,12 +113,12 @@ render::Scene3D flip_scene(const Report& f) {
   const double lo = angle2(flip - quarter), hi = angle2(flip + quarter);
   const Eigen::Quaterniond to_display =
       Eigen::Quaterniond::FromTwoVectors(motion.L_space(), Vector3d::UnitZ());
-  const double a = f.racquet.cm_offset > 0 ? (r.handle_start - r.head_centre).norm() : 0.0;
-  const double length = (r.handle_end - r.head_centre).norm() + a;
+  const double a = f.body.radius(), length = f.body.length();
   const double spacing_x = 1.15 * length, spacing_z = 1.35 * a * 2 + 0.6 * length;
 
   render::Scene3D scene;
-  scene.title = "one flip: axis 2 turns from L to -L (seen turning with the handle about L)";
+  scene.title = fmt::format("one flip: axis 2 turns from L to -L (seen turning with {} about L)",
+                            f.body.box ? "axis 1" : "the handle");
   const int columns = 3, instants = 6;
   for (int k = 0; k < instants; ++k) {
     // The instant where axis 2 makes the k-th of six angles with L.
@@ -137,7 +136,7 @@ render::Scene3D flip_scene(const Report& f) {
     R = Eigen::AngleAxisd(turn, Vector3d::UnitZ()).toRotationMatrix() * R;
     const Vector3d c((k % columns) * spacing_x, 0, -(k / columns) * spacing_z);
     const bool first = k == 0;
-    add_racquet(scene, r, R, c, first);
+    add_body(scene, f.body, R, c, first);
     scene.add_arrow(c, c + 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {colors::kL},
                     first ? "L, fixed in space" : "");
     scene.add_arrow(c, c + 0.4 * length * R.col(1), 0.03 * a, {colors::kPrincipal[1]},
@@ -154,12 +153,35 @@ render::Scene3D flip_scene(const Report& f) {
 
 }  // namespace
 
+double DrawnBody::radius() const {
+  if (box) return 0.5 * box->maxCoeff();
+  return racquet.cm_offset > 0 ? (racquet.handle_start - racquet.head_centre).norm() : 0.0;
+}
+
+double DrawnBody::length() const {
+  // a box's arrows (a share of its length) must reach out of it along any axis
+  if (box) return 3.0 * box->maxCoeff();
+  return (racquet.handle_end - racquet.head_centre).norm() + radius();
+}
+
 // The racquet turned by R (body to display) about its centre of mass at c: the head
 // (a ring), its two faces in their colours (unshaded: each keeps its swatch's colour
-// however it is turned), the handle; named in the legend if `named`.
-void add_racquet(render::Scene3D& scene, const Racquet& r, const Eigen::Matrix3d& R,
-                 const Vector3d& c, bool named) {
-  const double a = r.cm_offset > 0 ? (r.handle_start - r.head_centre).norm() : 0.0;
+// however it is turned), the handle; named in the legend if `named`. A box of given
+// moments: the box, its +3 face marked in the racquet's +3 face colour.
+void add_body(render::Scene3D& scene, const DrawnBody& body, const Eigen::Matrix3d& R,
+              const Vector3d& c, bool named) {
+  if (body.box) {
+    const Vector3d h = *body.box, n3 = R.col(2);
+    scene.add_box(c, h, R, {render::kGray}, named ? "the body, a box of these moments" : "");
+    const double face = 0.8 * std::min(h(0), h(1));
+    scene.add_disk(c + (h(2) * 1.01) * n3, n3, face, flat_body(colors::kBody, 1.0f),
+                   named ? "face toward +3" : "");
+    scene.add_disk(c - (h(2) * 1.01) * n3, -n3, face, flat_body(render::kYellow, 1.0f),
+                   named ? "face toward -3" : "");
+    return;
+  }
+  const Racquet& r = body.racquet;
+  const double a = body.radius();
   const Vector3d head = c + R * r.head_centre, n3 = R.col(2);
   scene.add_torus(head, n3, a, 0.06 * a, {render::kGray}, named ? "the head, a ring" : "");
   scene.add_disk(head + 0.004 * a * n3, n3, 0.96 * a, flat_body(colors::kBody, 1.0f),

@@ -17,13 +17,12 @@ namespace {
 
 // The racquet in state x at time t of `motion`, L turned to display z: spun about axis 2
 // it turns over and back.
-render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int axis, double t,
+render::Scene3D spin_scene(const DrawnBody& body, const FreeBodyExact& motion, int axis, double t,
                            const RotationState& x) {
   const Eigen::Quaterniond to_display =
       Eigen::Quaterniond::FromTwoVectors(motion.L_space(), Vector3d::UnitZ());
   const Eigen::Matrix3d R = (to_display * attitude(x).normalized()).toRotationMatrix();
-  const double a = r.cm_offset > 0 ? (r.handle_start - r.head_centre).norm() : 0.0;
-  const double length = (r.handle_end - r.head_centre).norm() + a;
+  const double a = body.radius(), length = body.length();
   const double I2 = motion.moments().I2, L = motion.angular_momentum_magnitude();
   const double angle2 = std::acos(std::clamp(I2 * omega_body(x)(1) / L, -1.0, 1.0));
   render::Scene3D scene;
@@ -35,7 +34,7 @@ render::Scene3D spin_scene(const Racquet& r, const FreeBodyExact& motion, int ax
                                 "spun about axis {}, it wobbles: t = {:.3f} s, axis 2 at "
                                 "{:.0f}\\deg from L",
                                 axis + 1, t, rad_to_deg(angle2));
-  add_racquet(scene, r, R, Vector3d::Zero(), true);
+  add_body(scene, body, R, Vector3d::Zero(), true);
   scene.add_arrow(Vector3d::Zero(), 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {colors::kL},
                   "L, fixed in space");
   scene.add_arrow(Vector3d::Zero(), 0.45 * length * R.col(1), 0.03 * a, {colors::kPrincipal[1]},
@@ -55,7 +54,7 @@ void cache(std::map<double, RotationState>& states,
 }  // namespace
 
 Motion::Motion(const Report& report, const std::vector<double>& sample_times)
-    : racquet_(report.racquet),
+    : body_(report.body),
       motion_(report.launches.at(report.spin_axis)),
       axis_(report.spin_axis),
       t_end_(report.t_end),
@@ -99,7 +98,7 @@ RotationState Motion::state(double t) const {
 }
 
 render::Scene3D Motion::scene(double t) const {
-  return spin_scene(racquet_, motion_, axis_, t, state(t));
+  return spin_scene(body_, motion_, axis_, t, state(t));
 }
 
 render::Plot2D Motion::strip(double t) const {

@@ -40,6 +40,12 @@ const InputTable<Inputs>& input_table() {
         .unit("m")
         .positive()
         .symbol("l");
+    t.vector("--inertia", &Inputs::inertia,
+             "principal moments I1 < I2 < I3 of any body (a book, a phone: axis 2 the "
+             "intermediate), instead of the ring-and-rod model")
+        .unit("kg m^2")
+        .positive()
+        .lab_default("the ring-and-rod model's");
     t.choice("--spin-axis", &Inputs::spin_axis, {"1", "2", "3"},
              "principal axis of the spin: 1 handle, 2 in the plane, 3 normal to the face")
         .symbol("axis");
@@ -67,17 +73,53 @@ const InputTable<Inputs>& input_table() {
 Report compute(const Inputs& in) {
   Report report(kName, kTitle);
   report.start(input_table(), in);
-  report.racquet = for_input("--head-mass", [&] {
-    return make_racquet({in.head_mass, in.head_radius, in.handle_mass, in.handle_length});
-  });
-  const Racquet& racquet = report.racquet;
+  DrawnBody& body = report.body;
+  if (in.inertia) {
+    // Any body: its moments replace the model's, axis 2 the intermediate as the lab's is.
+    const Inputs model;
+    if (in.head_mass != model.head_mass || in.head_radius != model.head_radius ||
+        in.handle_mass != model.handle_mass || in.handle_length != model.handle_length) {
+      throw InputError("--inertia",
+                       "replaces the ring-and-rod model: give --inertia or the "
+                       "head's and handle's options, not both");
+    }
+    const Vector3d given = *in.inertia;
+    if (!(given(0) < given(1) && given(1) < given(2))) {
+      throw InputError("--inertia", fmt::format("must be I1 < I2 < I3, axis 2 the intermediate as "
+                                                "the racquet's (got {:g}, {:g}, {:g})",
+                                                given(0), given(1), given(2)));
+    }
+    body.racquet.moments = {given(0), given(1), given(2)};
+    for_input("--inertia", [&] { validate(body.racquet.moments); });
+    // The box with these moments (eq. 40): half-extents in proportion to sqrt(I_j + I_k - I_i).
+    body.box = Vector3d(std::sqrt(given(1) + given(2) - given(0)),
+                        std::sqrt(given(0) + given(2) - given(1)),
+                        std::sqrt(given(0) + given(1) - given(2)));
+    const double floor = 1e-3 * body.box->maxCoeff();
+    body.box = body.box->cwiseMax(floor);
+    report.drop_input("head_mass"), report.drop_input("head_radius");
+    report.drop_input("handle_mass"), report.drop_input("handle_length");
+  } else {
+    body.racquet = for_input("--head-mass", [&] {
+      return make_racquet({in.head_mass, in.head_radius, in.handle_mass, in.handle_length});
+    });
+  }
+  const Racquet& racquet = body.racquet;
   const PrincipalMoments& I = racquet.moments;
 
-  report.section("4.1 the model racquet of Figure 5: a ring and a rod (eqs. 83-85)");
-  report.result("cm_offset_m", "R, centre of mass from the head's centre (eq. 83)",
-                racquet.cm_offset, "m", report.textbook("0.175"));
-  report.result("principal_moments", "I1 (handle), I2 (in the plane), I3 (normal) (eqs. 84-85)",
-                Vector3d(I.vector()), "kg m^2", report.textbook("(1.27e-3, 11.81e-3, 13.08e-3)"));
+  if (in.inertia) {
+    report.section("the body: its principal moments, given (in place of Figure 5's model)");
+    report.result("principal_moments", "I1, I2 (the intermediate), I3", Vector3d(I.vector()),
+                  "kg m^2");
+    report.result_none("cm_offset_m", "R, centre of mass from the head's centre (eq. 83)", "m",
+                       "a body of given moments has no head or handle");
+  } else {
+    report.section("4.1 the model racquet of Figure 5: a ring and a rod (eqs. 83-85)");
+    report.result("cm_offset_m", "R, centre of mass from the head's centre (eq. 83)",
+                  racquet.cm_offset, "m", report.textbook("0.175"));
+    report.result("principal_moments", "I1 (handle), I2 (in the plane), I3 (normal) (eqs. 84-85)",
+                  Vector3d(I.vector()), "kg m^2", report.textbook("(1.27e-3, 11.81e-3, 13.08e-3)"));
+  }
   report.result("perpendicular_axis_ratio", "I3 / (I1 + I2), a lamina's 1", I.I3 / (I.I1 + I.I2),
                 "");
 
@@ -157,7 +199,11 @@ Report compute(const Inputs& in) {
   const int axis = in.spin_axis[0] - '1';
   report.spin_axis = axis;
   const FreeBodyExact& motion = launches[axis];
-  report.section(fmt::format("the spin about axis {}", kAxisNames[axis]));
+  // The racquet's axes by what they are; a body of given moments' by number.
+  const std::string axis_name =
+      in.inertia ? std::to_string(axis + 1) : std::string(kAxisNames[axis]);
+  const std::string axis1 = in.inertia ? "axis 1" : "the handle";
+  report.section(fmt::format("the spin about axis {}", axis_name));
   report.result_text(
       "stability", "first order",
       predicted[axis].unstable ? "unstable: the disturbance grows" : "stable: a wobble");
@@ -190,8 +236,8 @@ Report compute(const Inputs& in) {
   const double excursion =
       axis == 0 ? std::acos(std::min(handle_min, 1.0)) : std::asin(std::min(handle_max, 1.0));
   report.result("handle_excursion_max_deg",
-                axis == 0 ? "largest angle of the handle from L"
-                          : "largest angle of the handle out of the plane across L",
+                axis == 0 ? "largest angle of " + axis1 + " from L"
+                          : "largest angle of " + axis1 + " out of the plane across L",
                 rad_to_deg(excursion), "deg");
 
   // Two flips: one polhode period of the spin about 2 (its time scale, if it does not flip).
@@ -249,17 +295,18 @@ Report compute(const Inputs& in) {
   // In short: which spin flips, and how soon.
   if (std::isfinite(first_flip)) {
     report.answer(fmt::format(
-        "a spin about axis {} flips: launched {:g} off it, the racquet turns over first at {:.4g} "
+        "a spin about axis {} flips: launched {:g} off it, the {} turns over first at {:.4g} "
         "s, then every {:.4g} s (the disturbance grows at {:.4g}/s); about axes 1 and 3 it "
         "only wobbles",
-        kAxisNames[axis], in.perturbation, first_flip, 0.5 * motion.period(),
-        predicted[axis].rate));
+        axis_name, in.perturbation, in.inertia ? "body" : "racquet", first_flip,
+        0.5 * motion.period(), predicted[axis].rate));
   } else {
     report.answer(fmt::format(
-        "a spin about axis {} is {}: launched {:g} off it, it wobbles at {:.4g} rad/s and the "
-        "handle stays within {:.3g} deg of {}; only a spin about axis 2 flips",
-        kAxisNames[axis], predicted[axis].unstable ? "unstable" : "stable", in.perturbation,
-        predicted[axis].rate, rad_to_deg(excursion), axis == 0 ? "L" : "the plane across L"));
+        "a spin about axis {} is {}: launched {:g} off it, it wobbles at {:.4g} rad/s and "
+        "{} stays within {:.3g} deg of {}; only a spin about axis 2 flips",
+        axis_name, predicted[axis].unstable ? "unstable" : "stable", in.perturbation,
+        predicted[axis].rate, axis1, rad_to_deg(excursion),
+        axis == 0 ? "L" : "the plane across L"));
   }
   return report;
 }

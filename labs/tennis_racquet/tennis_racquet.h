@@ -32,6 +32,8 @@ struct Inputs {
   double head_radius = 0.13;    ///< a, m
   double handle_mass = 0.18;    ///< m_l, kg
   double handle_length = 0.38;  ///< l, m
+  /// Any body's principal moments I1 < I2 < I3 instead of the model's, kg m^2
+  std::optional<Eigen::Vector3d> inertia;
   std::string spin_axis = "2";  ///< the axis the run spins about
   double omega = 10.0;          ///< the spin, rad/s
   double perturbation = 0.01;   ///< transverse share of omega at launch
@@ -47,10 +49,25 @@ struct Inputs {
   }();
 };
 
+/// The body the scenes draw: the ring-and-rod racquet, or, for moments given
+/// (--inertia), the box with those moments (a book, a phone).
+struct DrawnBody {
+  Racquet racquet;  ///< the model; for moments given, only its moments are set
+  /// The box's half-extents, for moments given: sqrt(I_j + I_k - I_i) in proportion
+  /// (a box's moments are m (b^2 + c^2) / 3 in its half-extents, eq. 40).
+  std::optional<Eigen::Vector3d> box;
+  /// The size arrows and spacings scale with: the head's radius, or half the box's
+  /// longest half-extent.
+  double radius() const;
+  /// The body's length: the racquet's from its head's far rim to the handle's end, or
+  /// three times the box's longest half-extent (so arrows of a share of it clear the box).
+  double length() const;
+};
+
 /// What the lab reports, and what its figures and its motion draw.
 struct Report : lab::Report {
   using lab::Report::Report;
-  Racquet racquet;
+  DrawnBody body;
   /// The exact motion launched about axes 1, 2 and 3 with the same disturbance.
   std::vector<FreeBodyExact> launches;
   std::array<SpinStability, 3> predicted{};  ///< the linear prediction for each axis (eqs. 86-88)
@@ -72,10 +89,11 @@ Report compute(const Inputs& in);
 /// scale, the racquet turning over during one flip, and its polhode with the separatrix.
 void figures(const Report& report, FigureSink& sink);
 
-/// The racquet turned by R (body to display) about its centre of mass at c: the head,
-/// its two faces, the handle; named in the legend if `named` (the figures' and the motion's).
-void add_racquet(render::Scene3D& scene, const Racquet& racquet, const Eigen::Matrix3d& R,
-                 const Eigen::Vector3d& c, bool named);
+/// The body turned by R (body to display) about its centre of mass at c: the racquet's
+/// head, its two faces and the handle, or the box with its +3 face marked; named in the
+/// legend if `named` (the figures' and the motion's).
+void add_body(render::Scene3D& scene, const DrawnBody& body, const Eigen::Matrix3d& R,
+              const Eigen::Vector3d& c, bool named);
 
 /// The racquet of the run turning in space, L fixed and drawn up, with omega's components
 /// in a strip below.
@@ -97,7 +115,7 @@ class Motion {
  private:
   RotationState state(double t) const;
 
-  Racquet racquet_;
+  DrawnBody body_;
   FreeBodyExact motion_;
   int axis_ = 1;
   double t_end_ = 0.0;

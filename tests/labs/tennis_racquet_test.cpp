@@ -516,3 +516,49 @@ TEST_CASE("tennis_racquet: the answer in short - which spin flips, and how soon"
     CHECK_THAT(stable, Catch::Contains("only a spin about axis 2 flips"));
   }
 }
+
+TEST_CASE("tennis_racquet: any body by its moments - a book's growth rate and first flip") {
+  // The book of poinsot's test (24 x 16 x 4 cm, 0.8 kg) by its moments (eq. 40).
+  const double m = 0.8, a = 0.24, b = 0.16, c = 0.04;
+  const double I1 = m * (b * b + c * c) / 12, I2 = m * (a * a + c * c) / 12,
+               I3 = m * (a * a + b * b) / 12;
+  Inputs in;
+  in.inertia = Eigen::Vector3d(I1, I2, I3);
+  in.omega = 6;
+  const auto report = compute(in);
+  const auto& r = report.results();
+  // eqs. 86-88 at the spin's component omega_2(0) = 6 sqrt(1 - 0.01^2)
+  const double spin = 6 * std::sqrt(1 - 0.01 * 0.01);
+  CHECK(value(r, "growth_rate_per_s") ==
+        Approx(spin * std::sqrt((I2 - I1) * (I3 - I2) / (I1 * I3))).epsilon(kRoundoff));
+  // The first flip against a second method: the cross-check's dopri5 run (tolerance
+  // 1e-10) has omega_2 change sign between two samples that bracket the closed form's.
+  const double flip = value(r, "first_flip_s");
+  bool bracketed = false;
+  for (std::size_t k = 1; k < report.run.size() && !bracketed; ++k) {
+    if (report.run[k - 1].x[1] > 0 && report.run[k].x[1] <= 0) {
+      bracketed = report.run[k - 1].t < flip && flip <= report.run[k].t;
+    }
+  }
+  CHECK(bracketed);
+  CHECK(r.at("cm_offset_m").is_null());
+  CHECK(report.inputs().contains("inertia"));
+  CHECK(!report.inputs().contains("head_mass"));
+  CHECK_THAT(r.at("answer").get<std::string>(), Catch::Contains("the body turns over"));
+  // drawn as the box with those moments: its half-extents in the book's 6 : 4 : 1, the
+  // thinnest from I1 + I2 - I3, which cancels to 1/26 of I3 (~26 eps, halved by the root)
+  REQUIRE(report.body.box);
+  const double cancelled = 8 * I3 / (I1 + I2 - I3) * DBL_EPSILON;
+  CHECK(report.body.box->x() / report.body.box->z() == Approx(a / c).epsilon(cancelled));
+  CHECK(report.body.box->y() / report.body.box->z() == Approx(b / c).epsilon(cancelled));
+  rigid::test::KeptFigures kept;
+  REQUIRE_NOTHROW(figures(report, kept));
+  CHECK(kept.scenes.count("flip") == 1);
+  REQUIRE_NOTHROW(Motion(report).scene(1.0));
+  // the rules: axis 2 the intermediate; the moments or the model, not both
+  in.inertia = Eigen::Vector3d(I2, I1, I3);
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--inertia"));
+  in.inertia = Eigen::Vector3d(I1, I2, I3);
+  in.head_mass = 0.2;
+  CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--inertia"));
+}
