@@ -12,6 +12,7 @@
 #include "rigid/format.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/periodic_mean.h"
+#include "rigid/rotation.h"
 #include "rigid/units.h"
 
 namespace rigid {
@@ -140,26 +141,20 @@ Eigen::Quaterniond euler_attitude(double phi, double theta, double psi) {
 }
 
 Eigen::Vector3d euler_omega_body(const TopAngles& a) {
-  // cos(theta) is flat near the poles, so the rounded theta gives it to roundoff.
-  const double st = a.sin_theta ? *a.sin_theta : std::sin(a.theta), ct = std::cos(a.theta);
-  const double sp = std::sin(a.psi), cp = std::cos(a.psi);
-  return {a.phi_dot * st * sp + a.theta_dot * cp, a.phi_dot * st * cp - a.theta_dot * sp,
-          a.phi_dot * ct + a.psi_dot};
+  return omega_in_body({a.phi, a.theta, a.psi}, {a.phi_dot, a.theta_dot, a.psi_dot}, a.sin_theta);
 }
 
 TopAngles euler_angles_and_rates(const Eigen::Quaterniond& q, const Eigen::Vector3d& w) {
   const EulerAngles e = euler_zxz(q);
   TopAngles a;
   a.theta = e.theta, a.phi = e.phi, a.psi = e.psi;
-  const double sp = std::sin(e.psi), cp = std::cos(e.psi);
-  const double st = std::sin(e.theta), ct = std::cos(e.theta);
-  a.theta_dot = w(0) * cp - w(1) * sp;
-  if (st == 0.0) {
-    a.phi_dot = ct > 0 ? w(2) : -w(2);
-    a.psi_dot = 0.0;
+  if (const std::optional<EulerRates> r = rates_from_body_omega(e, w)) {
+    a.phi_dot = r->phi_dot, a.theta_dot = r->theta_dot, a.psi_dot = r->psi_dot;
   } else {
-    a.phi_dot = (w(0) * sp + w(1) * cp) / st;
-    a.psi_dot = w(2) - a.phi_dot * ct;
+    // at a pole psi is 0 (euler_zxz): phi takes the whole turn about 3 = +-z
+    a.theta_dot = w(0) * std::cos(e.psi) - w(1) * std::sin(e.psi);
+    a.phi_dot = std::cos(e.theta) > 0 ? w(2) : -w(2);
+    a.psi_dot = 0.0;
   }
   return a;
 }

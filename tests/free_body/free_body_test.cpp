@@ -2,6 +2,7 @@
 #include "rigid/free_body.h"
 
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -71,6 +72,58 @@ TEST_CASE("free body: energy, |L| and L_space diagnostics") {
   CHECK(std::abs(Ls.x() + 2 * kPi) < 1e-14);
   CHECK(std::abs(Ls.y() - kPi) < 1e-14);
   CHECK(std::abs(Ls.z() - 2.6 * kPi) < 1e-14);
+}
+
+TEST_CASE("free body: omega from the Euler rates in the three frames of section 6") {
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ(), x = Eigen::Vector3d::UnitX();
+  for (const auto& [e, r] : {std::pair{EulerAngles{0.3, 1.1, -2.0}, EulerRates{0.7, -0.4, 2.5}},
+                             std::pair{EulerAngles{-3.0, 0.2, 2.5}, EulerRates{-1.5, 0.9, 0.1}},
+                             std::pair{EulerAngles{1.0, 2.9, 0.2}, EulerRates{0.05, 3.0, -7.0}}}) {
+    const Eigen::Matrix3d lambda = space_to_body_matrix(e);
+    // lambda is eq. 121's three turns composed, lambda_psi lambda_theta lambda_phi (a
+    // passive turn is the transpose of the active one Eigen's AngleAxis makes)
+    const Eigen::Matrix3d composed = Eigen::AngleAxisd(e.psi, z).toRotationMatrix().transpose() *
+                                     Eigen::AngleAxisd(e.theta, x).toRotationMatrix().transpose() *
+                                     Eigen::AngleAxisd(e.phi, z).toRotationMatrix().transpose();
+    CHECK((lambda - composed).norm() < 8 * DBL_EPSILON);
+    CHECK((lambda * lambda.transpose() - Eigen::Matrix3d::Identity()).norm() < 8 * DBL_EPSILON);
+    CHECK(std::abs(lambda.determinant() - 1) < 8 * DBL_EPSILON);
+    // one omega, three frames: body = lambda space, intermediate = lambda_theta lambda_phi
+    // space, each formula computed on its own (eqs. 128-130, 134-136, 137-139 corrected)
+    const Eigen::Vector3d space = omega_in_space(e, r), body = omega_in_body(e, r);
+    const Eigen::Matrix3d to_intermediate =
+        Eigen::AngleAxisd(e.theta, x).toRotationMatrix().transpose() *
+        Eigen::AngleAxisd(e.phi, z).toRotationMatrix().transpose();
+    const double scale =
+        8 * DBL_EPSILON * (std::abs(r.phi_dot) + std::abs(r.theta_dot) + std::abs(r.psi_dot));
+    CHECK((lambda * space - body).norm() < scale);
+    CHECK((to_intermediate * space - omega_intermediate(e, r)).norm() < scale);
+    // and a second method: the attitude's own rate of change, q_dot = omega_space q / 2,
+    // by a central difference of q(t) = q(phi + phi_dot t, ...) (its error h^2 ~ 1e-10)
+    const double h = 1e-5;
+    const auto q_at = [&](double t) {
+      return quaternion_from_euler_zxz(
+          {e.phi + r.phi_dot * t, e.theta + r.theta_dot * t, e.psi + r.psi_dot * t});
+    };
+    const Eigen::Quaterniond q = q_at(0), ahead = q_at(h), behind = q_at(-h);
+    const Eigen::Quaterniond dq((ahead.coeffs() - behind.coeffs()) / (2 * h));
+    const Eigen::Vector3d from_q = 2 * (dq * q.conjugate()).vec();
+    CHECK((from_q - space).norm() < 1e-8 * (1 + space.norm()));
+    // the text's eqs. 137-138 as printed are not omega: they miss it by far
+    CHECK((omega_in_space_as_printed(e, r) - space).norm() > 0.1);
+    CHECK(omega_in_space_as_printed(e, r).z() == space.z());  // eq. 139 is right
+    // the rates back from omega in the body, away from the poles
+    const std::optional<EulerRates> back = rates_from_body_omega(e, body);
+    REQUIRE(back);
+    const double rates = std::abs(r.phi_dot) + std::abs(r.theta_dot) + std::abs(r.psi_dot);
+    const double tolerance = 16 * DBL_EPSILON * rates / std::sin(e.theta);
+    CHECK(std::abs(back->phi_dot - r.phi_dot) < tolerance);
+    CHECK(std::abs(back->theta_dot - r.theta_dot) < tolerance);
+    CHECK(std::abs(back->psi_dot - r.psi_dot) < tolerance);
+  }
+  // At a pole phi and psi turn about one axis: the rates are not defined, and are not made up.
+  CHECK(!rates_from_body_omega({0.3, 0.0, 0.0}, Eigen::Vector3d(0, 0, 1)));
+  CHECK(!rates_from_body_omega({0.3, kPi, 0.0}, Eigen::Vector3d(0, 0, 1)));
 }
 
 TEST_CASE("free body: z-x-z Euler angles match eq. 122 and survive theta = 0") {
