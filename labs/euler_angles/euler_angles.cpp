@@ -159,7 +159,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, nullptr, nullptr, /*csv=*/false};
+  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/false};
 }
 
 }  // namespace rigid::lab::euler_angles

@@ -50,6 +50,8 @@ struct Report : lab::Report {
 const InputTable<Inputs>& input_table();
 /// Everything the lab reports. Throws InputError naming a broken input.
 Report compute(const Inputs& in);
+/// The three rotations with the angles as arcs, omega and its parts (Figure 9.6.2).
+void figures(const Report& report, FigureSink& sink);
 
 /// The lab as one program.
 LabProgram<Inputs, Report> program();
