@@ -43,13 +43,13 @@ render::Scene3D rotations_scene(const Report& report) {
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.0, {"x", "y", "z"});
   for (int i = 0; i < 3; ++i) {
     scene.add_arrow(Vector3d::Zero(), 0.95 * to_space.col(i), 0.014, {colors::kPrincipal[i]},
-                    i == 0 ? "body axes 1, 2, 3" : "");
+                    fmt::format("body axis {}", i + 1));
     scene.add_label(1.04 * to_space.col(i), std::to_string(i + 1), colors::kPrincipal[i]);
   }
   scene.add_arrow(Vector3d::Zero(), 0.9 * nodes, 0.014, {colors::kMarker}, "line of nodes x'");
   scene.add_label(0.98 * nodes, "x'", colors::kMarker);
   add_arc(scene, z, x, e.phi, 0.45, colors::kL, "\\phi");
-  add_arc(scene, nodes, z, e.theta, 0.55, colors::kPrincipal[1], "\\theta");
+  add_arc(scene, nodes, z, e.theta, 0.55, render::kYellow, "\\theta");
   add_arc(scene, three, nodes, e.psi, 0.65, colors::kPrincipal[2], "\\psi");
   if (report.rates_defined) {
     // omega and its parts, thicker than the axes they lie on: phi_dot along z,
@@ -64,8 +64,13 @@ render::Scene3D rotations_scene(const Report& report) {
     scene.add_arrow(Vector3d::Zero(), scale * r.psi_dot * three, 0.03, {colors::kSymmetryAxis},
                     "\\psi-dot 3");
   }
-  scene.camera.eye = Vector3d(2.6, 1.4, 1.5);
-  scene.camera.target = Vector3d(0.1, 0.1, 0.35);
+  // Seen from 70 deg of azimuth before the line of nodes and 25 deg above the xy plane:
+  // z up and x' slanting across the picture (from along it, theta's axis and theta_dot's
+  // arrow would be points).
+  const double azimuth = e.phi - deg_to_rad(70.0), elevation = deg_to_rad(25.0);
+  scene.camera.eye = 3.2 * Vector3d(std::cos(elevation) * std::cos(azimuth),
+                                    std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+  scene.camera.target = Vector3d(0, 0, 0.3);
   scene.camera.fov_y_deg = 30;
   return scene;
 }
