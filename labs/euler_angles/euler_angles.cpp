@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "common/free_motion.h"
+#include "rigid/euler_lagrange.h"
+#include "rigid/free_body_exact.h"
 #include "rigid/units.h"
 
 namespace rigid::lab::euler_angles {
@@ -23,6 +26,58 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // lambda_psi): the transpose of the active rotation Eigen makes.
 Matrix3d passive(const Vector3d& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis).toRotationMatrix().transpose();
+}
+
+// Section 7 along the exact torque-free motion of the body (its moments, or I = 1, 2, 3
+// kg m^2) started at these angles with this omega: each angle's Lagrange equation holds
+// to the error its differences state, and psi's is Euler's (eqs. 151-159).
+void report_section_7(Report& report, const Inputs& in, const EulerAngles& e, const EulerRates& r) {
+  const Vector3d moments = in.moments.value_or(Vector3d(1, 2, 3));
+  const PrincipalMoments I{moments(0), moments(1), moments(2)};
+  report.section(
+      fmt::format("7 Lagrange's equations along the free motion of I = ({:g}, {:g}, "
+                  "{:g}) kg m^2{} (eqs. 150-159)",
+                  I.I1, I.I2, I.I3, in.moments ? "" : ", a body of the lab's"));
+  const FreeBodyExact motion = for_input(in.moments ? "--moments" : "--theta-deg", [&] {
+    return FreeBodyExact(I, omega_in_body(e, r), quaternion_from_euler_zxz(e));
+  });
+  // The angles continuous in time from the start (phi and psi by whole turns nearest it).
+  const auto at = [&motion, e](double t) {
+    EulerState s;
+    s.angles = euler_zxz(motion.attitude(t));
+    const auto near = [](double a, double to) { return to + std::remainder(a - to, 2 * kPi); };
+    s.angles.phi = near(s.angles.phi, e.phi);
+    s.angles.psi = near(s.angles.psi, e.psi);
+    s.rates = rates_from_body_omega(s.angles, motion.omega_body(t)).value_or(EulerRates{});
+    return s;
+  };
+  // steps: 1e-3 rad in the angles, 1e-4 of the motion's time scale in t
+  const double scale = time_scale(motion);
+  const LagrangeTerms terms = lagrange_terms(I, at, 0.0, 1e-3, 1e-4 * scale);
+  const char* names[3] = {"phi", "theta", "psi"};
+  for (int k = 0; k < 3; ++k) {
+    report.result(fmt::format("lagrange_residual_{}", names[k]),
+                  fmt::format("d/dt dT/d{0}_dot - dT/d{0} at t = 0", names[k]),
+                  terms.residual[k].value, "J");
+    report.remark(
+        fmt::format("(+- {:.2g} J: the differences' own error)", terms.residual[k].error));
+  }
+  const Vector3d w = motion.omega_body(0.0);
+  report.result("lagrange_psi_momentum", "  dT/dpsi_dot = I3 omega_3 (eqs. 153-156)",
+                terms.momentum[2], "kg m^2/s");
+  report.result("lagrange_psi_force", "  dT/dpsi = (I1 - I2) omega_1 omega_2 (eq. 157)",
+                terms.dT_dq[2].value, "J");
+  report.result("euler_psi_rate", "  Euler: I3 omega_3_dot = (I1 - I2) omega_1 omega_2 (eq. 158)",
+                (I.I1 - I.I2) * w(0) * w(1), "J");
+  // eqs. 154-156 list dw2/dpsi_dot twice: the missing one is dw1/dpsi_dot, 0 as eq. 134 says
+  const double d = 1e-3;
+  const double dw1 = (omega_in_body(e, {r.phi_dot, r.theta_dot, r.psi_dot + d})(0) -
+                      omega_in_body(e, {r.phi_dot, r.theta_dot, r.psi_dot - d})(0)) /
+                     (2 * d);
+  report.note(fmt::format(
+      "errata: eqs. 154-156 list d omega_2 / d psi_dot = 0 twice; one of them is d omega_1 / d "
+      "psi_dot, also 0 (eq. 134 has no psi_dot; by differences here: {:.3g}).",
+      dw1));
 }
 
 }  // namespace
@@ -141,6 +196,7 @@ Report compute(const Inputs& in) {
         "agrees with the corrected form to roundoff. Eq. 139 is right.",
         w_space(0), w_space(1), printed(0), printed(1)));
   }
+  report_section_7(report, in, e, r);
   if (in.moments) {
     const Vector3d I = *in.moments;
     report.section("the body: L = I omega and T (eq. 150)");

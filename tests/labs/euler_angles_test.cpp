@@ -79,3 +79,30 @@ TEST_CASE("euler_angles: a broken rule is an InputError naming the input") {
   in.theta_deg = -1;
   CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--theta-deg"));
 }
+
+TEST_CASE("euler_angles: section 7 - each angle's Lagrange equation holds and psi's is Euler's") {
+  Inputs in;
+  in.moments = Eigen::Vector3d(1, 2, 3);
+  const auto report = compute(in);
+  const auto& r = report.results();
+  // each residual within the error the lab states beside it (in the row's remark)
+  for (const char* angle : {"phi", "theta", "psi"}) {
+    INFO(angle);
+    const std::string key = std::string("lagrange_residual_") + angle;
+    bool within = false;
+    for (const auto& row : report.rows()) {
+      if (row.label.find(std::string("d/dt dT/d") + angle + "_dot") != 0) continue;
+      const double error = std::stod(row.remark.substr(row.remark.find("+- ") + 3));
+      within = std::abs(value(r, key.c_str())) <= error;
+    }
+    CHECK(within);
+  }
+  // psi's: dT/dpsi is Euler's (I1 - I2) omega_1 omega_2 to the differences' error
+  CHECK(value(r, "lagrange_psi_force") == Approx(value(r, "euler_psi_rate")).epsilon(1e-9));
+  CHECK(value(r, "lagrange_psi_momentum") ==
+        Approx(3 * element(r, "omega_body_rad_s", 2)).epsilon(1e-12));
+  bool errata = false;
+  for (const auto& note : report.notes())
+    errata = errata || note.rfind("errata: eqs. 154-156", 0) == 0;
+  CHECK(errata);
+}
