@@ -74,6 +74,36 @@ void report_section_7(Report& report, const Inputs& in, const EulerAngles& e, co
   const double dw1 = (omega_in_body(e, {r.phi_dot, r.theta_dot, r.psi_dot + d})(0) -
                       omega_in_body(e, {r.phi_dot, r.theta_dot, r.psi_dot - d})(0)) /
                      (2 * d);
+  // --csv: the angles, their rates and omega in the three frames along this motion, over
+  // its time scale (a polhode period), 200 samples
+  TimeSeries series{{"t_s", "phi_rad", "theta_rad", "psi_rad", "phi_dot_rad_s", "theta_dot_rad_s",
+                     "psi_dot_rad_s", "omega_x", "omega_y", "omega_z", "omega_xp", "omega_yp",
+                     "omega_zp", "omega_1", "omega_2", "omega_3"},
+                    {},
+                    {"euler_angles: the free motion of the body of section 7 from the angles "
+                     "and rates given, over one polhode period (or one turn)",
+                     "phi_rad, theta_rad, psi_rad: the z-x-z Euler angles of section 6, phi and "
+                     "psi continuous from the start (not wrapped); their rates in rad/s (at a "
+                     "pole, where they are undefined, 0)",
+                     "omega_x, omega_y, omega_z: omega in the fixed frame; omega_xp, omega_yp, "
+                     "omega_zp: in the intermediate frame x'y'z' (x' the line of nodes); omega_1, "
+                     "omega_2, omega_3: in the body; all rad/s"}};
+  EulerAngles previous = e;
+  for (int n = 0; n <= 200; ++n) {
+    const double t = scale * n / 200.0;
+    // continuous: phi and psi by whole turns nearest the previous sample's
+    EulerState s = at(t);
+    s.angles.phi = previous.phi + std::remainder(s.angles.phi - previous.phi, 2 * kPi);
+    s.angles.psi = previous.psi + std::remainder(s.angles.psi - previous.psi, 2 * kPi);
+    previous = s.angles;
+    const Vector3d w_body = motion.omega_body(t), w_space = motion.attitude(t) * w_body;
+    const Vector3d w_int = passive(Vector3d::UnitX(), s.angles.theta) *
+                           passive(Vector3d::UnitZ(), s.angles.phi) * w_space;
+    series.rows.push_back({t, s.angles.phi, s.angles.theta, s.angles.psi, s.rates.phi_dot,
+                           s.rates.theta_dot, s.rates.psi_dot, w_space(0), w_space(1), w_space(2),
+                           w_int(0), w_int(1), w_int(2), w_body(0), w_body(1), w_body(2)});
+  }
+  report.series(std::move(series));
   report.note(fmt::format(
       "errata: eqs. 154-156 list d omega_2 / d psi_dot = 0 twice; one of them is d omega_1 / d "
       "psi_dot, also 0 (eq. 134 has no psi_dot; by differences here: {:.3g}).",
@@ -215,7 +245,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/false};
+  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/true};
 }
 
 }  // namespace rigid::lab::euler_angles
