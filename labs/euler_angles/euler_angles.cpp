@@ -184,6 +184,11 @@ Report compute(const Inputs& in) {
                     north ? (*in.from_omega)(2) : -(*in.from_omega)(2), "rad/s");
       report.omega_body = *in.from_omega;
       report.omega_space = lambda.transpose() * *in.from_omega;
+      report.answer(
+          fmt::format("at theta = {:g} deg the rates cannot be had from omega: {}; "
+                      "omega is ({:.4g}, {:.4g}, {:.4g}) rad/s in space",
+                      in.theta_deg, why.substr(why.find(": ") + 2), report.omega_space(0),
+                      report.omega_space(1), report.omega_space(2)));
       return report;
     }
     r = *back;
@@ -195,11 +200,11 @@ Report compute(const Inputs& in) {
                  w_space = omega_in_space(e, r);
   report.omega_body = w_body, report.omega_space = w_space;
   const double size = std::abs(r.phi_dot) + std::abs(r.theta_dot) + std::abs(r.psi_dot);
-  report.result("omega_intermediate_rad_s",
-                "in x'y'z': (theta_dot, phi_dot sin theta, ..) "
-                "(eqs. 128-130)",
-                w_int, "rad/s");
-  report.result("omega_body_rad_s", "in 123 (eqs. 134-136)", w_body, "rad/s");
+  report.result("omega_intermediate_rad_s", "in x'y'z' (eqs. 128-130)", w_int, "rad/s",
+                printed("(theta_dot, phi_dot sin theta, phi_dot cos theta + psi_dot)"));
+  report.result("omega_body_rad_s", "in 123 (eqs. 134-136)", w_body, "rad/s",
+                printed("(phi_dot sin theta sin psi + theta_dot cos psi, phi_dot sin theta cos "
+                        "psi - theta_dot sin psi, phi_dot cos theta + psi_dot)"));
   report.result("omega_space_rad_s", "in xyz (eq. 139, eqs. 137-138 corrected)", w_space, "rad/s");
   // Each frame's omega again as lambda of another's: the formulas agree to roundoff.
   report.result_roundoff("omega_body_vs_lambda", "  |omega_123 - lambda omega_xyz|",
@@ -212,10 +217,12 @@ Report compute(const Inputs& in) {
     report.result_roundoff("omega_round_trip", "  |omega from the rates - omega given|",
                            (w_body - *in.from_omega).norm(), 64 * kEps * size, "rad/s");
   }
-  const Vector3d printed = omega_in_space_as_printed(e, r);
-  report.result("omega_space_printed_rad_s", "  eqs. 137-139 as the text prints them", printed,
-                "rad/s");
-  if ((printed - w_space).norm() > 16 * kEps * size) {
+  const Vector3d as_printed = omega_in_space_as_printed(e, r);
+  report.result("omega_space_printed_rad_s", "  eqs. 137-139 as the text prints them", as_printed,
+                "rad/s",
+                printed("(theta_dot cos psi - psi_dot sin theta cos phi, theta_dot sin psi - "
+                        "psi_dot sin theta sin phi, phi_dot + psi_dot cos theta)"));
+  if ((as_printed - w_space).norm() > 16 * kEps * size) {
     report.note(fmt::format(
         "errata: eqs. 137-138 print omega_x = theta_dot cos psi - psi_dot sin theta cos phi and "
         "omega_y = theta_dot sin psi - psi_dot sin theta sin phi; omega in space is phi_dot z + "
@@ -224,8 +231,14 @@ Report compute(const Inputs& in) {
         "psi_dot sin theta sin phi = {:.6g} and omega_y = theta_dot sin phi - psi_dot sin theta "
         "cos phi = {:.6g} rad/s here, where the print gives {:.6g} and {:.6g}; lambda^T omega_123 "
         "agrees with the corrected form to roundoff. Eq. 139 is right.",
-        w_space(0), w_space(1), printed(0), printed(1)));
+        w_space(0), w_space(1), as_printed(0), as_printed(1)));
   }
+  report.answer(fmt::format(
+      "omega = phi_dot z + theta_dot x' + psi_dot 3 is ({:.4g}, {:.4g}, {:.4g}) rad/s in space and "
+      "({:.4g}, {:.4g}, {:.4g}) in the body, |omega| = {:.4g} rad/s; the text's eqs. 137-138 "
+      "would give ({:.4g}, {:.4g}) for its x and y",
+      w_space(0), w_space(1), w_space(2), w_body(0), w_body(1), w_body(2), w_space.norm(),
+      as_printed(0), as_printed(1)));
   report_section_7(report, in, e, r);
   if (in.moments) {
     const Vector3d I = *in.moments;
