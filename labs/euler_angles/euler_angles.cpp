@@ -19,7 +19,8 @@ using Eigen::Vector3d;
 namespace {
 
 constexpr char kName[] = "euler_angles";
-constexpr char kTitle[] = "Euler angles: the three rotations and omega in three frames (section 6)";
+constexpr char kTitle[] =
+    "Euler angles: the three rotations, omega in three frames, Lagrange's equations (sections 6-7)";
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // The passive turn by `angle` about `axis` (eq. 121's lambda_phi, lambda_theta,
