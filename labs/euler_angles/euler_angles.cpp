@@ -5,10 +5,14 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "common/free_motion.h"
 #include "rigid/euler_lagrange.h"
 #include "rigid/free_body_exact.h"
+#include "rigid/ode.h"
 #include "rigid/units.h"
 
 namespace rigid::lab::euler_angles {
@@ -29,10 +33,57 @@ Matrix3d passive(const Vector3d& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis).toRotationMatrix().transpose();
 }
 
+// The angles continuous from `near` (phi and psi by whole turns) and their rates from
+// omega in the body; none where the rates are undefined (a pole).
+std::optional<EulerState> euler_state(const Eigen::Quaterniond& attitude,
+                                      const Vector3d& omega_body, const EulerAngles& near) {
+  EulerState s;
+  s.angles = euler_zxz(attitude);
+  s.angles.phi = near.phi + std::remainder(s.angles.phi - near.phi, 2 * kPi);
+  s.angles.psi = near.psi + std::remainder(s.angles.psi - near.psi, 2 * kPi);
+  const std::optional<EulerRates> r = rates_from_body_omega(s.angles, omega_body);
+  if (!r) return std::nullopt;
+  s.rates = *r;
+  return s;
+}
+
+// Why Lagrange's equations in the Euler angles cannot be checked at these angles.
+std::string pole_reason(const EulerAngles& e) {
+  return fmt::format(
+      "theta = {:.6g} deg: at a pole phi and psi turn about one axis, the angles are no "
+      "coordinates there and their Lagrange equations are undefined (within 1.4e-8 rad of "
+      "one the angles keep fewer than 6 digits)",
+      rad_to_deg(e.theta));
+}
+
+// Each angle's residual (and the generalized force's part of it, where there is one) as
+// one row, its error in a remark and in JSON; or none, saying why.
+void report_residuals(Report& report, const std::optional<LagrangeTerms>& terms,
+                      const std::string& key_prefix, const std::string& at, const double* force,
+                      const std::string& why_none) {
+  const char* names[3] = {"phi", "theta", "psi"};
+  for (int k = 0; k < 3; ++k) {
+    const std::string key = fmt::format("{}{}", key_prefix, names[k]);
+    const std::string label = fmt::format("d/dt dT/d{0}_dot - dT/d{0}{1} at {2}", names[k],
+                                          force ? fmt::format(" - Q_{}", names[k]) : "", at);
+    if (!terms) {
+      report.result_none(key, label, "J", why_none);
+      report.result_json_none(key + "_error", "J");
+      continue;
+    }
+    const double value = terms->residual[k].value - (force ? force[k] : 0.0);
+    report.result(key, label, value, "J");
+    report.remark(
+        fmt::format("(+- {:.2g} J: the differences' own error)", terms->residual[k].error));
+    report.result_json(key + "_error", terms->residual[k].error, "J");
+  }
+}
+
 // Section 7 along the exact torque-free motion of the body (its moments, or I = 1, 2, 3
 // kg m^2) started at these angles with this omega: each angle's Lagrange equation holds
 // to the error its differences state, and psi's is Euler's (eqs. 151-159).
-void report_section_7(Report& report, const Inputs& in, const EulerAngles& e, const EulerRates& r) {
+double report_section_7(Report& report, const Inputs& in, const EulerAngles& e,
+                        const EulerRates& r) {
   const Vector3d moments = in.moments.value_or(Vector3d(1, 2, 3));
   const PrincipalMoments I{moments(0), moments(1), moments(2)};
   report.section(
@@ -42,32 +93,25 @@ void report_section_7(Report& report, const Inputs& in, const EulerAngles& e, co
   const FreeBodyExact motion = for_input(in.moments ? "--moments" : "--theta-deg", [&] {
     return FreeBodyExact(I, omega_in_body(e, r), quaternion_from_euler_zxz(e));
   });
-  // The angles continuous in time from the start (phi and psi by whole turns nearest it).
   const auto at = [&motion, e](double t) {
-    EulerState s;
-    s.angles = euler_zxz(motion.attitude(t));
-    const auto near = [](double a, double to) { return to + std::remainder(a - to, 2 * kPi); };
-    s.angles.phi = near(s.angles.phi, e.phi);
-    s.angles.psi = near(s.angles.psi, e.psi);
-    s.rates = rates_from_body_omega(s.angles, motion.omega_body(t)).value_or(EulerRates{});
-    return s;
+    return euler_state(motion.attitude(t), motion.omega_body(t), e);
   };
-  // steps: 1e-3 rad in the angles, 1e-4 of the motion's time scale in t
   const double scale = time_scale(motion);
-  const LagrangeTerms terms = lagrange_terms(I, at, 0.0, 1e-3, 1e-4 * scale);
-  const char* names[3] = {"phi", "theta", "psi"};
-  for (int k = 0; k < 3; ++k) {
-    report.result(fmt::format("lagrange_residual_{}", names[k]),
-                  fmt::format("d/dt dT/d{0}_dot - dT/d{0} at t = 0", names[k]),
-                  terms.residual[k].value, "J");
-    report.remark(
-        fmt::format("(+- {:.2g} J: the differences' own error)", terms.residual[k].error));
-  }
+  const std::optional<EulerState> start = at(0.0);
+  const std::optional<LagrangeSteps> steps = start ? lagrange_steps(*start, scale) : std::nullopt;
+  const std::optional<LagrangeTerms> terms =
+      steps ? lagrange_terms(I, at, 0.0, *steps) : std::nullopt;
+  report_residuals(report, terms, "lagrange_residual_", "t = 0", nullptr, pole_reason(e));
   const Vector3d w = motion.omega_body(0.0);
-  report.result("lagrange_psi_momentum", "  dT/dpsi_dot = I3 omega_3 (eqs. 153-156)",
-                terms.momentum[2], "kg m^2/s");
-  report.result("lagrange_psi_force", "  dT/dpsi = (I1 - I2) omega_1 omega_2 (eq. 157)",
-                terms.dT_dq[2].value, "J");
+  const char momentum_label[] = "  dT/dpsi_dot = I3 omega_3 (eqs. 153-156)";
+  const char force_label[] = "  dT/dpsi = (I1 - I2) omega_1 omega_2 (eq. 157)";
+  if (terms) {
+    report.result("lagrange_psi_momentum", momentum_label, terms->momentum[2], "kg m^2/s");
+    report.result("lagrange_psi_force", force_label, terms->dT_dq[2].value, "J");
+  } else {
+    report.result_none("lagrange_psi_momentum", momentum_label, "kg m^2/s", "at a pole, as above");
+    report.result_none("lagrange_psi_force", force_label, "J", "at a pole, as above");
+  }
   report.result("euler_psi_rate", "  Euler: I3 omega_3_dot = (I1 - I2) omega_1 omega_2 (eq. 158)",
                 (I.I1 - I.I2) * w(0) * w(1), "J");
   // eqs. 154-156 list dw2/dpsi_dot twice: the missing one is dw1/dpsi_dot, 0 as eq. 134 says
@@ -93,7 +137,7 @@ void report_section_7(Report& report, const Inputs& in, const EulerAngles& e, co
   for (int n = 0; n <= 200; ++n) {
     const double t = scale * n / 200.0;
     // continuous: phi and psi by whole turns nearest the previous sample's
-    EulerState s = at(t);
+    EulerState s = at(t).value_or(EulerState{euler_zxz(motion.attitude(t)), EulerRates{}});
     s.angles.phi = previous.phi + std::remainder(s.angles.phi - previous.phi, 2 * kPi);
     s.angles.psi = previous.psi + std::remainder(s.angles.psi - previous.psi, 2 * kPi);
     previous = s.angles;
@@ -109,6 +153,134 @@ void report_section_7(Report& report, const Inputs& in, const EulerAngles& e, co
       "errata: eqs. 154-156 list d omega_2 / d psi_dot = 0 twice; one of them is d omega_1 / d "
       "psi_dot, also 0 (eq. 134 has no psi_dot; by differences here: {:.3g}).",
       dw1));
+  return scale;
+}
+
+// Section 7.2: the same body under a constant torque N in the body (eqs. 163-166),
+// integrated (Euler's equations and the quaternion, rkf78 at 1e-13), checked at a time t1
+// well into the motion. Each angle's equation gains the torque's generalized force, its
+// virtual work N . (z dphi + x' dtheta + 3 dpsi): Q = (N.z, N.x', N_3); eq. 166 for each
+// axis with omega_dot by differences along the run.
+void report_torque(Report& report, const Inputs& in, const PrincipalMoments& I,
+                   const EulerAngles& e, const EulerRates& r, double free_scale) {
+  const Vector3d N = in.torque;
+  report.section(fmt::format(
+      "7.2 with a constant torque N = ({:g}, {:g}, {:g}) N m in the body, integrated (eqs. "
+      "163-166)",
+      N(0), N(1), N(2)));
+  // The motion's time scale: the free motion's, or less where the torque turns the body
+  // by a radian from rest sooner (in 2 pi sqrt(I / |N|))
+  const double I_max = std::max({I.I1, I.I2, I.I3}), I_min = std::min({I.I1, I.I2, I.I3});
+  const double torque_scale = 2 * kPi * std::sqrt(I_max / N.norm());
+  double scale = std::min(free_scale, torque_scale);
+  if (!std::isfinite(scale)) scale = 1.0;  // at rest, and no torque: nothing moves
+  const double t1 = 0.25 * scale;
+  const RotationState x0 = make_state(omega_in_body(e, r), quaternion_from_euler_zxz(e));
+  // the tolerance: 1e-13 of omega's largest size over [0, t1] (and of q's, 1)
+  OdeOptions options;
+  options.method = Method::kRkf78;
+  options.rel_tol = 1e-13;
+  options.abs_tol =
+      1e-13 * std::min(1.0, omega_in_body(e, r).norm() + N.norm() * t1 / I_min + 1e-300);
+  options.max_evaluations = 2'000'000;
+  const EulerRhs rhs{I, N};
+  RotationState at_t1{};
+  std::map<double, RotationState> run;
+  std::optional<std::string> failed;
+  OdeOptions reference = options;
+  reference.method = Method::kVern9;
+  RotationState reference_t1{};
+  try {
+    integrate_sampled(rhs, x0, {0.0, t1}, options,
+                      [&](const RotationState& x, double) { at_t1 = x; });
+    integrate_sampled(rhs, x0, {0.0, t1}, reference,
+                      [&](const RotationState& x, double) { reference_t1 = x; });
+  } catch (const std::exception& error) {
+    failed = error.what();
+  }
+  const Eigen::Quaterniond q1 = Eigen::Quaterniond(at_t1[3], at_t1[4], at_t1[5], at_t1[6]);
+  const Vector3d w1(at_t1[0], at_t1[1], at_t1[2]);
+  const std::optional<EulerState> center =
+      failed ? std::nullopt : euler_state(q1.normalized(), w1, e);
+  const std::optional<LagrangeSteps> steps = center ? lagrange_steps(*center, scale) : std::nullopt;
+  std::vector<double> times;
+  if (steps) {
+    // one run through the differences' times: its error is smooth between them and
+    // cancels, leaving roundoff (steps.noise, 64 eps)
+    times = lagrange_times(t1, steps->time);
+    times.insert(times.begin(), 0.0);
+    try {
+      integrate_sampled(rhs, x0, times, options,
+                        [&](const RotationState& x, double t) { run[t] = x; });
+    } catch (const std::exception& error) {
+      failed = error.what();
+    }
+  }
+  const auto at = [&](double t) -> std::optional<EulerState> {
+    const auto found = run.find(t);
+    if (found == run.end()) return std::nullopt;
+    const RotationState& x = found->second;
+    return euler_state(Eigen::Quaterniond(x[3], x[4], x[5], x[6]).normalized(),
+                       Vector3d(x[0], x[1], x[2]), center->angles);
+  };
+  const std::optional<LagrangeTerms> terms =
+      steps && !failed ? lagrange_terms(I, at, t1, *steps) : std::nullopt;
+  report.result("torque_check_time_s", "t1, a quarter of the motion's time scale", t1, "s");
+  if (failed) {
+    report.result_none("torque_integration_error", "the integration's error at t1", "", *failed);
+  } else {
+    report.result("torque_integration_error",
+                  "  |omega_rkf78 - omega_vern9| / |omega| at t1 (both at 1e-13)",
+                  (w1 - Vector3d(reference_t1[0], reference_t1[1], reference_t1[2])).norm() /
+                      std::max(w1.norm(), 1e-300),
+                  "");
+  }
+  double Q[3] = {0, 0, 0};
+  if (center) {
+    // z and x' in the body: the columns of eqs. 134-136 for phi_dot and theta_dot
+    const EulerAngles& c = center->angles;
+    const Vector3d z_body(std::sin(c.theta) * std::sin(c.psi), std::sin(c.theta) * std::cos(c.psi),
+                          std::cos(c.theta));
+    const Vector3d nodes_body(std::cos(c.psi), -std::sin(c.psi), 0.0);
+    Q[0] = N.dot(z_body), Q[1] = N.dot(nodes_body), Q[2] = N(2);
+    report.result("generalized_force", "Q = (N.z, N.x', N_3) at t1, the torque's virtual work",
+                  Vector3d(Q[0], Q[1], Q[2]), "J");
+  } else {
+    report.result_none("generalized_force", "Q = (N.z, N.x', N_3) at t1", "J",
+                       failed ? "the integration failed" : pole_reason(e));
+  }
+  report_residuals(report, terms, "torque_lagrange_residual_", "t1", Q,
+                   failed ? "the integration failed" : "t1 is at a pole");
+  if (terms) {
+    // Without Q the equations miss by the torque: the check can tell.
+    report.result("torque_free_residual_psi", "  d/dt dT/dpsi_dot - dT/dpsi without Q_psi",
+                  terms->residual[2].value, "J");
+    report.remark(std::abs(N(2)) > 10 * terms->residual[2].error
+                      ? "(misses by N_3: without the torque's Q it does not hold)"
+                      : "(N_3 is within the differences' error here: this cannot tell)");
+  }
+  // eq. 166, (I_i - I_j) w_i w_j - (I_k w_k_dot - N_k) = 0 for i j k = 1 2 3, 2 3 1, 3 1 2;
+  // 1 2 3 is eq. 164, N_3 = L_3_dot + w_1 L_2 - w_2 L_1
+  const double moments[3] = {I.I1, I.I2, I.I3};
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const std::string key = fmt::format("euler_torque_residual_{}", k + 1);
+    const std::string label =
+        fmt::format("(I{0} - I{1}) w{0} w{1} - (I{2} w{2}_dot - N{2}) at t1 (eq. 166{3})", i + 1,
+                    j + 1, k + 1, k == 2 ? ", 164" : "");
+    if (!terms) {
+      report.result_none(key, label, "J", failed ? "the integration failed" : "t1 is at a pole");
+      continue;
+    }
+    const Vector3d w = Vector3d(run[t1][0], run[t1][1], run[t1][2]);
+    const Measured w_dot = central_derivative([&](double dt) { return run.at(t1 + dt)[k]; },
+                                              steps->time, 64 * kEps * w.norm());
+    report.result(key, label,
+                  (moments[i] - moments[j]) * w(i) * w(j) - (moments[k] * w_dot.value - N(k)), "J");
+    report.remark(
+        fmt::format("(+- {:.2g} J: the differences' own error)", moments[k] * w_dot.error));
+    report.result_json(key + "_error", moments[k] * w_dot.error, "J");
+  }
 }
 
 }  // namespace
@@ -133,6 +305,10 @@ const InputTable<Inputs>& input_table() {
         .unit("kg m^2")
         .positive()
         .lab_default("none");
+    t.vector("--torque", &Inputs::torque,
+             "a constant torque N1, N2, N3 in the body: section 7.2's Lagrange equations with "
+             "torque against an integration")
+        .unit("N m");
     t.vector("--from-omega", &Inputs::from_omega,
              "omega in the body frame: the rates from it (eqs. 134-136 inverted), instead of "
              "the rates given")
@@ -240,7 +416,9 @@ Report compute(const Inputs& in) {
       "would give ({:.4g}, {:.4g}) for its x and y",
       w_space(0), w_space(1), w_space(2), w_body(0), w_body(1), w_body(2), w_space.norm(),
       as_printed(0), as_printed(1)));
-  report_section_7(report, in, e, r);
+  const double scale = report_section_7(report, in, e, r);
+  const Vector3d moments = in.moments.value_or(Vector3d(1, 2, 3));
+  report_torque(report, in, {moments(0), moments(1), moments(2)}, e, r, scale);
   if (in.moments) {
     const Vector3d I = *in.moments;
     report.section("the body: L = I omega and T (eq. 150)");

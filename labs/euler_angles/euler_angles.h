@@ -32,6 +32,8 @@ struct Inputs {
   double psi_dot = 2.0;     ///< rad/s
   /// I1, I2, I3 (kg m^2): with them, L and T.
   std::optional<Eigen::Vector3d> moments;
+  /// A constant torque in the body (N m): section 7.2, the equations with torque.
+  Eigen::Vector3d torque{0.5, -0.25, 1.0};
   /// omega in the body (rad/s): the rates from it, instead of the rates given.
   std::optional<Eigen::Vector3d> from_omega;
 };

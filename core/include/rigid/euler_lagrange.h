@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
+#include <vector>
 
 #include "rigid/free_body.h"
 #include "rigid/rotation.h"
@@ -44,10 +46,38 @@ struct LagrangeTerms {
   Measured residual[3];
 };
 
-/// The terms at time t of the motion `at` (t -> its EulerState), with steps `angle_step`
-/// (rad) for dT/dq and `time_step` (s) for d/dt: Richardson's value (error h^4) and
-/// twice the estimate of its error that steps 2h and 4h give, plus the roundoff.
-LagrangeTerms lagrange_terms(const PrincipalMoments& I, const std::function<EulerState(double)>& at,
-                             double t, double angle_step, double time_step);
+/// The steps the terms take at a state of the motion, and the noise of the motion's
+/// values. Near a pole (theta -> 0 or pi) phi and psi turn about nearly one axis, their
+/// rates grow as 1/sin(theta) and the angles read from an attitude lose digits as
+/// eps/sin(theta): the steps shrink to keep the differences away from the pole and the
+/// stated error takes the lost digits.
+struct LagrangeSteps {
+  double angle = 0.0;  ///< rad, for dT/dq
+  double time = 0.0;   ///< s, for d/dt
+  /// The relative error of the attitude `at` gives (64 eps for a closed form or one run of
+  /// an integrator through the sample times: smooth errors cancel in the differences).
+  double noise = 0.0;
+};
+
+/// The steps at state s of a motion of time scale `time_scale` (a period): 1e-3 rad and
+/// 1e-4 of the time scale, cut to a 16th of sin(theta) and of the time omega takes to
+/// turn by it; the noise 64 eps / sin(theta). None at a pole (the rates undefined).
+std::optional<LagrangeSteps> lagrange_steps(const EulerState& s, double time_scale);
+
+/// The times at which lagrange_terms evaluates the motion for time step h: t and t +- h,
+/// 2h, 4h, sorted (an integrator can be run through exactly these).
+std::vector<double> lagrange_times(double t, double h);
+
+/// A derivative by central differences of f at steps h, 2h and 4h (f takes the offset):
+/// Richardson's value (error h^4) with twice the estimate of its error that steps 2h and
+/// 4h give, plus f's noise `noise` (absolute) magnified by 1/h.
+Measured central_derivative(const std::function<double(double)>& f, double h, double noise);
+
+/// The terms at time t of the motion `at` (t -> its EulerState, none where the rates are
+/// undefined), with `steps` from lagrange_steps. None if `at` gives none at a time the
+/// differences need.
+std::optional<LagrangeTerms> lagrange_terms(
+    const PrincipalMoments& I, const std::function<std::optional<EulerState>(double)>& at, double t,
+    const LagrangeSteps& steps);
 
 }  // namespace rigid
