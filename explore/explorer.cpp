@@ -289,10 +289,14 @@ void Explorer::inputs_panel() {
   ImGui::PopStyleColor();
   const bool at_textbook = session_->at_textbook();
   if (at_textbook) ImGui::BeginDisabled();
-  if (ImGui::Button("Textbook example")) textbook();
+  // a lab whose section prints no numbers starts from its own defaults, and says so
+  const bool example = session_->has_textbook_example();
+  if (ImGui::Button(example ? "Textbook example" : "Lab's defaults")) textbook();
   if (at_textbook) ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::TextColored(kDimColor, at_textbook ? "(the text's inputs)" : "");
+  ImGui::TextColored(kDimColor, !at_textbook ? ""
+                                : example    ? "(the text's inputs)"
+                                             : "(the text prints no numbers here)");
   ImGui::Separator();
 
   ImGui::BeginChild("fields", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 7.5f));

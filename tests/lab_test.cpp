@@ -476,7 +476,8 @@ TEST_CASE("poinsot: bad animation options exit 2 with one line naming the option
 TEST_CASE("labs with motion: --animate writes a short animation of each") {
   const std::string dir = "/tmp/rigid_anim_labs_" + std::to_string(::getpid());
   std::filesystem::create_directories(dir);
-  for (const std::string lab : {"poinsot", "tennis_racquet", "football", "top_nutation"}) {
+  for (const std::string lab :
+       {"poinsot", "tennis_racquet", "football", "top_nutation", "euler_angles"}) {
     const std::string path = dir + "/" + lab + ".mp4";
     const rigid::test::Run run =
         rigid::test::run_lab(lab, "--json --animate " + path + " --duration 0.2 --fps 10");

@@ -28,6 +28,9 @@ struct LabProgram {
   /// take long: the inputs with the slow part left out (nullptr: nothing is slow). The
   /// whole report follows when it is done (session.h).
   void (*preview)(In&) = nullptr;
+  /// Whether the defaults are the text's worked example; false where the text prints no
+  /// numbers (section 6), and the defaults are the lab's own choice.
+  bool textbook_example = true;
 };
 
 }  // namespace rigid::lab

@@ -52,6 +52,8 @@ class Session {
   virtual const std::string& title() const = 0;
   /// Whether the lab writes a time series (--csv).
   virtual bool has_time_series() const = 0;
+  /// Whether the defaults are the text's worked example (else the lab's own choice).
+  virtual bool has_textbook_example() const = 0;
 
   /// The inputs, in the table's order.
   virtual std::size_t input_count() const = 0;
@@ -150,6 +152,7 @@ class ProgramSession final : public Session {
   const std::string& name() const override { return lab_.name; }
   const std::string& title() const override { return lab_.title; }
   bool has_time_series() const override { return lab_.csv; }
+  bool has_textbook_example() const override { return lab_.textbook_example; }
   std::size_t input_count() const override { return fields().size(); }
   const InputRule& rule(std::size_t i) const override { return fields().at(i).rule; }
   InputValue value(std::size_t i) const override { return fields().at(i).get(in_); }

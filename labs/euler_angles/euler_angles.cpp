@@ -437,7 +437,15 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/true};
+  return {kName,
+          kTitle,
+          input_table(),
+          compute,
+          figures,
+          animation,
+          /*csv=*/true,
+          /*preview=*/nullptr,
+          /*textbook_example=*/false};
 }
 
 }  // namespace rigid::lab::euler_angles

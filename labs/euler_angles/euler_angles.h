@@ -52,8 +52,12 @@ struct Report : lab::Report {
 const InputTable<Inputs>& input_table();
 /// Everything the lab reports. Throws InputError naming a broken input.
 Report compute(const Inputs& in);
-/// The three rotations with the angles as arcs, omega and its parts (Figure 9.6.2).
+/// The three rotations with the angles as arcs, omega as the sum of its parts (Figure
+/// 9.6.2); gimbal lock.
 void figures(const Report& report, FigureSink& sink);
+
+/// The three turns applied in turn (the animation's own time, a second each).
+Animation animation(const Report& report, const FrameTimes& frame_times);
 
 /// The lab as one program.
 LabProgram<Inputs, Report> program();

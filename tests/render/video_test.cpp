@@ -254,10 +254,13 @@ TEST_CASE("video: the README's animations are what the figures target makes") {
     const ReadBack r = read_webp(entry.path().string());
     INFO(entry.path().filename().string() << ": " << r.frames << " frames, " << r.width << "x"
                                           << r.height << ", " << r.duration << " s");
-    CHECK(r.frames == 96);
+    // 96 frames, or fewer where libwebp stored a run of identical frames (a hold, as
+    // euler_angles' last second) as one frame shown as long: the 8 s are what count
+    CHECK(r.frames <= 96);
+    CHECK(r.frames >= 48);
     CHECK(r.width == 640);
     CHECK(r.height == 360);
     CHECK(std::abs(r.duration - 8.0) < 1e-3);
   }
-  CHECK(found == 4);  // poinsot, tennis_racquet, football, top_nutation
+  CHECK(found == 5);  // poinsot, tennis_racquet, football, euler_angles, top_nutation
 }
