@@ -10,20 +10,15 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-// The Euler state with angle (or rate, if `rate`) k moved by d.
-EulerState moved(EulerState s, int k, double d, bool rate) {
+// The Euler state with angle k moved by d.
+EulerState moved(EulerState s, int k, double d) {
   double* angles[3] = {&s.angles.phi, &s.angles.theta, &s.angles.psi};
-  double* rates[3] = {&s.rates.phi_dot, &s.rates.theta_dot, &s.rates.psi_dot};
-  *(rate ? rates[k] : angles[k]) += d;
+  *angles[k] += d;
   return s;
 }
 
 double rate_sum(const EulerRates& r) {
   return std::abs(r.phi_dot) + std::abs(r.theta_dot) + std::abs(r.psi_dot);
-}
-
-double largest(const PrincipalMoments& I) {
-  return std::max({I.I1, I.I2, I.I3});
 }
 
 // The offsets of the differences: h, 2h and 4h each way. Multiplying by a power of two
@@ -62,8 +57,10 @@ std::vector<double> lagrange_times(double t, double h) {
 }
 
 // Central differences at steps h, 2h and 4h, combined by Richardson: R_h = (4 D_h - D_2h)
-// / 3 has error c h^4, R_2h 16 times it, so |R_h - R_2h| / 15 estimates R_h's error
-// (doubled here for safety); f's noise divided by h comes on top.
+// / 3 has error c h^4, R_2h 16 times it, so |R_h - R_2h| / 15 estimates R_h's error where
+// the h^4 term rules; |R_h - R_2h| itself, R_2h's error, bounds it also where the next
+// terms are not yet small (a fast spin: 15 times safer, and needed in 2 of 1600 random
+// starts). f's noise e in each value comes on top: D_h carries e / h, R_h (4 e/h + e/2h) / 3.
 Measured central_derivative(const std::function<double(double)>& f, double h, double noise) {
   double d[3];
   for (int i = 0; i < 3; ++i) {
@@ -71,7 +68,7 @@ Measured central_derivative(const std::function<double(double)>& f, double h, do
     d[i] = (f(k * h) - f(-k * h)) / (2 * k * h);
   }
   const double r1 = (4 * d[0] - d[1]) / 3, r2 = (4 * d[1] - d[2]) / 3;
-  return {r1, 2 * std::abs(r1 - r2) / 15 + noise / h};
+  return {r1, std::abs(r1 - r2) + 1.5 * noise / h};
 }
 
 std::optional<LagrangeTerms> lagrange_terms(
@@ -79,30 +76,45 @@ std::optional<LagrangeTerms> lagrange_terms(
     const LagrangeSteps& steps) {
   const std::optional<EulerState> now = at(t);
   if (!now) return std::nullopt;
-  // T is quadratic in the rates: a central difference of any step is its derivative to
-  // roundoff; a step of the rates' own size keeps that roundoff near eps T / rate.
+  // T is quadratic in the rates and omega linear in them: dT/dq_dot_k = (I omega) .
+  // d omega / dq_dot_k, and d omega / dq_dot_k is omega of the unit rate k (eqs. 153-156's
+  // chain rule, exact: a difference of T over the rates would lose L's digits to T's
+  // curvature I_max where the moments differ by decades).
   const auto momentum = [&](const EulerState& s, int k) {
-    const double size = rate_sum(s.rates) + std::numeric_limits<double>::min();
-    const EulerState up = moved(s, k, size, true), down = moved(s, k, -size, true);
-    return (euler_kinetic_energy(I, up.angles, up.rates) -
-            euler_kinetic_energy(I, down.angles, down.rates)) /
-           (2 * size);
+    const Eigen::Vector3d w = omega_in_body(s.angles, s.rates);
+    EulerRates unit;
+    (k == 0 ? unit.phi_dot : k == 1 ? unit.theta_dot : unit.psi_dot) = 1.0;
+    return I.vector().cwiseProduct(w).dot(omega_in_body(s.angles, unit));
   };
-  // Noise, absolute: omega from rates R = sum |rates| holds eps R, T then eps I |omega|
-  // R; a momentum is L along an axis read from the attitude, off by its noise, and a
-  // difference quotient of T over the rates' size, off by eps I (|omega| + R).
-  const double omega = omega_in_body(now->angles, now->rates).norm(), R = rate_sum(now->rates);
-  const double T_noise = 64 * kEps * largest(I) * omega * R;
-  const double p_noise = (steps.noise + 64 * kEps) * largest(I) * (omega + R);
+  // Noise, absolute: omega from rates R = sum |rates| holds eps R (near a pole omega_3 =
+  // phi_dot cos(theta) + psi_dot cancels two rates of 1 / sin(theta)), T then eps |L| R;
+  // a momentum is L along an axis read from the attitude, off by |L| times the attitude's
+  // noise and its own roundoff.
+  const Eigen::Vector3d w_now = omega_in_body(now->angles, now->rates);
+  const double L = I.vector().cwiseProduct(w_now).norm(), R = rate_sum(now->rates);
+  const double p_noise = (steps.noise + 64 * kEps) * L;
+  // T's noise at the angles the differences move to: there omega (and L) can be far
+  // larger than here, where a body's moments differ by decades
+  const auto T_noise = [&](int k) {
+    double largest_L = L;
+    for (const double offset : kOffsets) {
+      for (const double sign : {-1.0, 1.0}) {
+        const EulerState s = moved(*now, k, sign * offset * steps.angle);
+        largest_L =
+            std::max(largest_L, I.vector().cwiseProduct(omega_in_body(s.angles, s.rates)).norm());
+      }
+    }
+    return 64 * kEps * largest_L * R;
+  };
   bool defined = true;
   LagrangeTerms terms;
   for (int k = 0; k < 3; ++k) {
     terms.dT_dq[k] = central_derivative(
         [&](double d) {
-          const EulerState s = moved(*now, k, d, false);
+          const EulerState s = moved(*now, k, d);
           return euler_kinetic_energy(I, s.angles, s.rates);
         },
-        steps.angle, T_noise);
+        steps.angle, T_noise(k));
     terms.momentum[k] = momentum(*now, k);
     terms.momentum_rate[k] = central_derivative(
         [&](double dt) {

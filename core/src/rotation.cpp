@@ -59,8 +59,9 @@ Eigen::Matrix3d space_to_body_matrix(const EulerAngles& e) {
   return lambda;
 }
 
-Eigen::Vector3d omega_intermediate(const EulerAngles& e, const EulerRates& r) {
-  return {r.theta_dot, r.phi_dot * std::sin(e.theta),  // eqs. 128-130
+Eigen::Vector3d omega_intermediate(const EulerAngles& e, const EulerRates& r,
+                                   std::optional<double> sin_theta) {
+  return {r.theta_dot, r.phi_dot * sin_theta.value_or(std::sin(e.theta)),  // eqs. 128-130
           r.phi_dot * std::cos(e.theta) + r.psi_dot};
 }
 
@@ -73,29 +74,33 @@ Eigen::Vector3d omega_in_body(const EulerAngles& e, const EulerRates& r,
           r.phi_dot * st * cp - r.theta_dot * sp, r.phi_dot * ct + r.psi_dot};
 }
 
-Eigen::Vector3d omega_in_space(const EulerAngles& e, const EulerRates& r) {
+Eigen::Vector3d omega_in_space(const EulerAngles& e, const EulerRates& r,
+                               std::optional<double> sin_theta) {
   // z along z, the line of nodes (cos phi, sin phi, 0), the body's 3 (eq. 122's third
   // row) (sin theta sin phi, -sin theta cos phi, cos theta)
   const double cf = std::cos(e.phi), sf = std::sin(e.phi);
-  const double st = std::sin(e.theta), ct = std::cos(e.theta);
+  const double st = sin_theta.value_or(std::sin(e.theta)), ct = std::cos(e.theta);
   return {r.theta_dot * cf + r.psi_dot * st * sf, r.theta_dot * sf - r.psi_dot * st * cf,
           r.phi_dot + r.psi_dot * ct};
 }
 
-Eigen::Vector3d omega_in_space_as_printed(const EulerAngles& e, const EulerRates& r) {
-  const double st = std::sin(e.theta);
+Eigen::Vector3d omega_in_space_as_printed(const EulerAngles& e, const EulerRates& r,
+                                          std::optional<double> sin_theta) {
+  const double st = sin_theta.value_or(std::sin(e.theta));
   return {r.theta_dot * std::cos(e.psi) - r.psi_dot * st * std::cos(e.phi),  // eq. 137
           r.theta_dot * std::sin(e.psi) - r.psi_dot * st * std::sin(e.phi),  // eq. 138
           r.phi_dot + r.psi_dot * std::cos(e.theta)};                        // eq. 139
 }
 
-std::optional<EulerRates> rates_from_body_omega(const EulerAngles& e, const Eigen::Vector3d& w) {
+std::optional<EulerRates> rates_from_body_omega(const EulerAngles& e, const Eigen::Vector3d& w,
+                                                std::optional<double> sin_theta) {
   // A theta within its own rounding (2 ulps) of a pole is the pole: the double nearest
   // pi has sin 1.2e-16, which would make phi_dot 1e16 times omega where theta meant,
-  // and all the input can tell, has it undefined.
-  const double st = std::sin(e.theta);
+  // and all the input can tell, has it undefined. A sin(theta) given exactly is the
+  // pole only where it is 0.
+  const double st = sin_theta.value_or(std::sin(e.theta));
   const double ulp = std::nextafter(std::abs(e.theta), HUGE_VAL) - std::abs(e.theta);
-  if (std::abs(st) <= 2.0 * ulp) return std::nullopt;
+  if (sin_theta ? st == 0.0 : std::abs(st) <= 2.0 * ulp) return std::nullopt;
   const double sp = std::sin(e.psi), cp = std::cos(e.psi);
   EulerRates r;
   r.theta_dot = w(0) * cp - w(1) * sp;

@@ -56,26 +56,40 @@ std::string pole_reason(const EulerAngles& e) {
       rad_to_deg(e.theta));
 }
 
+// Why differences may not resolve an equation: near a pole, T's digits.
+std::string unresolved_hint(double theta) {
+  return std::abs(std::sin(theta)) < 1e-2
+             ? " (near a pole, as here, T loses digits as eps / sin^2 theta)"
+             : "";
+}
+
 // Each angle's residual (and the generalized force's part of it, where there is one) as
-// one row, its error in a remark and in JSON; or none, saying why.
+// one row, its error in a remark and in JSON; or none, saying why: no terms, or an error
+// above 1e-3 of the terms' size `size` (T, or |Q| where larger), which checks nothing.
 void report_residuals(Report& report, const std::optional<LagrangeTerms>& terms,
                       const std::string& key_prefix, const std::string& at, const double* force,
-                      const std::string& why_none) {
+                      double size, const std::string& why_none,
+                      const std::string& unresolved_hint) {
   const char* names[3] = {"phi", "theta", "psi"};
   for (int k = 0; k < 3; ++k) {
     const std::string key = fmt::format("{}{}", key_prefix, names[k]);
     const std::string label = fmt::format("d/dt dT/d{0}_dot - dT/d{0}{1} at {2}", names[k],
                                           force ? fmt::format(" - Q_{}", names[k]) : "", at);
-    if (!terms) {
-      report.result_none(key, label, "J", why_none);
+    const double error = terms ? terms->residual[k].error : 0.0;
+    if (!terms || error > 1e-3 * size) {
+      report.result_none(
+          key, label, "J",
+          terms ? fmt::format("the differences cannot resolve it here: their error, {:.2g} J, "
+                              "exceeds 1e-3 of the terms' size, {:.3g} J{}",
+                              error, size, unresolved_hint)
+                : why_none);
       report.result_json_none(key + "_error", "J");
       continue;
     }
     const double value = terms->residual[k].value - (force ? force[k] : 0.0);
     report.result(key, label, value, "J");
-    report.remark(
-        fmt::format("(+- {:.2g} J: the differences' own error)", terms->residual[k].error));
-    report.result_json(key + "_error", terms->residual[k].error, "J");
+    report.remark(fmt::format("(+- {:.2g} J: the differences' own error)", error));
+    report.result_json(key + "_error", error, "J");
   }
 }
 
@@ -91,7 +105,7 @@ double report_section_7(Report& report, const Inputs& in, const EulerAngles& e,
                   "{:g}) kg m^2{} (eqs. 150-159)",
                   I.I1, I.I2, I.I3, in.moments ? "" : ", a body of the lab's"));
   const FreeBodyExact motion = for_input(in.moments ? "--moments" : "--theta-deg", [&] {
-    return FreeBodyExact(I, omega_in_body(e, r), quaternion_from_euler_zxz(e));
+    return FreeBodyExact(I, report.omega_body, quaternion_from_euler_zxz(e));
   });
   const auto at = [&motion, e](double t) {
     return euler_state(motion.attitude(t), motion.omega_body(t), e);
@@ -101,13 +115,16 @@ double report_section_7(Report& report, const Inputs& in, const EulerAngles& e,
   const std::optional<LagrangeSteps> steps = start ? lagrange_steps(*start, scale) : std::nullopt;
   const std::optional<LagrangeTerms> terms =
       steps ? lagrange_terms(I, at, 0.0, *steps) : std::nullopt;
-  report_residuals(report, terms, "lagrange_residual_", "t = 0", nullptr, pole_reason(e));
+  const double T = 0.5 * report.omega_body.dot(moments.cwiseProduct(report.omega_body));
+  report_residuals(report, terms, "lagrange_residual_", "t = 0", nullptr, T, pole_reason(e),
+                   unresolved_hint(e.theta));
   const Vector3d w = motion.omega_body(0.0);
   const char momentum_label[] = "  dT/dpsi_dot = I3 omega_3 (eqs. 153-156)";
   const char force_label[] = "  dT/dpsi = (I1 - I2) omega_1 omega_2 (eq. 157)";
   if (terms) {
     report.result("lagrange_psi_momentum", momentum_label, terms->momentum[2], "kg m^2/s");
     report.result("lagrange_psi_force", force_label, terms->dT_dq[2].value, "J");
+    report.remark(fmt::format("(+- {:.2g} J)", terms->dT_dq[2].error));
   } else {
     report.result_none("lagrange_psi_momentum", momentum_label, "kg m^2/s", "at a pole, as above");
     report.result_none("lagrange_psi_force", force_label, "J", "at a pole, as above");
@@ -162,7 +179,7 @@ double report_section_7(Report& report, const Inputs& in, const EulerAngles& e,
 // virtual work N . (z dphi + x' dtheta + 3 dpsi): Q = (N.z, N.x', N_3); eq. 166 for each
 // axis with omega_dot by differences along the run.
 void report_torque(Report& report, const Inputs& in, const PrincipalMoments& I,
-                   const EulerAngles& e, const EulerRates& r, double free_scale) {
+                   const EulerAngles& e, double free_scale) {
   const Vector3d N = in.torque;
   report.section(fmt::format(
       "7.2 with a constant torque N = ({:g}, {:g}, {:g}) N m in the body, integrated (eqs. "
@@ -175,20 +192,22 @@ void report_torque(Report& report, const Inputs& in, const PrincipalMoments& I,
   double scale = std::min(free_scale, torque_scale);
   if (!std::isfinite(scale)) scale = 1.0;  // at rest, and no torque: nothing moves
   const double t1 = 0.25 * scale;
-  const RotationState x0 = make_state(omega_in_body(e, r), quaternion_from_euler_zxz(e));
+  const Vector3d w0 = report.omega_body;
+  const RotationState x0 = make_state(w0, quaternion_from_euler_zxz(e));
   // the tolerance: 1e-13 of omega's largest size over [0, t1] (and of q's, 1)
   OdeOptions options;
   options.method = Method::kRkf78;
   options.rel_tol = 1e-13;
-  options.abs_tol =
-      1e-13 * std::min(1.0, omega_in_body(e, r).norm() + N.norm() * t1 / I_min + 1e-300);
+  options.abs_tol = 1e-13 * std::min(1.0, w0.norm() + N.norm() * t1 / I_min + 1e-300);
   options.max_evaluations = 2'000'000;
   const EulerRhs rhs{I, N};
   RotationState at_t1{};
   std::map<double, RotationState> run;
   std::optional<std::string> failed;
+  // the reference: vern9 a hundred times tighter
   OdeOptions reference = options;
   reference.method = Method::kVern9;
+  reference.rel_tol /= 100, reference.abs_tol /= 100;
   RotationState reference_t1{};
   try {
     integrate_sampled(rhs, x0, {0.0, t1}, options,
@@ -226,14 +245,19 @@ void report_torque(Report& report, const Inputs& in, const PrincipalMoments& I,
   const std::optional<LagrangeTerms> terms =
       steps && !failed ? lagrange_terms(I, at, t1, *steps) : std::nullopt;
   report.result("torque_check_time_s", "t1, a quarter of the motion's time scale", t1, "s");
+  const char omega_label[] = "  |omega_rkf78 - omega_vern9| / |omega| at t1 (1e-13; 1e-15)";
+  const char attitude_label[] = "  the angle between their attitudes at t1";
   if (failed) {
-    report.result_none("torque_integration_error", "the integration's error at t1", "", *failed);
+    report.result_none("torque_integration_error", omega_label, "", *failed);
+    report.result_none("torque_attitude_error", attitude_label, "rad", *failed);
   } else {
-    report.result("torque_integration_error",
-                  "  |omega_rkf78 - omega_vern9| / |omega| at t1 (both at 1e-13)",
-                  (w1 - Vector3d(reference_t1[0], reference_t1[1], reference_t1[2])).norm() /
-                      std::max(w1.norm(), 1e-300),
-                  "");
+    const Vector3d w_ref(reference_t1[0], reference_t1[1], reference_t1[2]);
+    const Eigen::Quaterniond q_ref(reference_t1[3], reference_t1[4], reference_t1[5],
+                                   reference_t1[6]);
+    report.result("torque_integration_error", omega_label,
+                  (w1 - w_ref).norm() / std::max(w_ref.norm(), 1e-300), "");
+    report.result("torque_attitude_error", attitude_label, attitude_distance(q1, q_ref), "rad");
+    report.remark("(near a pole phi and psi take it / sin theta)");
   }
   double Q[3] = {0, 0, 0};
   if (center) {
@@ -249,8 +273,12 @@ void report_torque(Report& report, const Inputs& in, const PrincipalMoments& I,
     report.result_none("generalized_force", "Q = (N.z, N.x', N_3) at t1", "J",
                        failed ? "the integration failed" : pole_reason(e));
   }
+  const Vector3d w1_body(at_t1[0], at_t1[1], at_t1[2]);
+  const double T1 = 0.5 * w1_body.dot(I.vector().cwiseProduct(w1_body));
   report_residuals(report, terms, "torque_lagrange_residual_", "t1", Q,
-                   failed ? "the integration failed" : "t1 is at a pole");
+                   std::max({T1, std::abs(Q[0]), std::abs(Q[1]), std::abs(Q[2])}),
+                   failed ? "the integration failed" : "t1 is at a pole",
+                   center ? unresolved_hint(center->angles.theta) : "");
   if (terms) {
     // Without Q the equations miss by the torque: the check can tell.
     report.result("torque_free_residual_psi", "  d/dt dT/dpsi_dot - dT/dpsi without Q_psi",
@@ -323,9 +351,15 @@ Report compute(const Inputs& in) {
   Report report(kName, kTitle);
   report.start(input_table(), in);
   if (!(in.theta_deg >= 0.0 && in.theta_deg <= 180.0)) {
-    throw InputError("--theta-deg", fmt::format("must lie in [0, 180] (got {:g})", in.theta_deg));
+    throw InputError("--theta-deg", fmt::format("must lie in [0, 180] (got {})", in.theta_deg));
   }
-  const EulerAngles e{deg_to_rad(in.phi_deg), deg_to_rad(in.theta_deg), deg_to_rad(in.psi_deg)};
+  // phi and psi by whole turns in degrees (exact) before radians: 1e15 deg in radians would
+  // keep no digit of its turn; sin(theta) from the nearer pole's side in degrees (180 -
+  // theta exact), which theta in radians loses near 180 deg
+  const EulerAngles e{deg_to_rad(std::remainder(in.phi_deg, 360.0)), deg_to_rad(in.theta_deg),
+                      deg_to_rad(std::remainder(in.psi_deg, 360.0))};
+  const double sin_theta =
+      std::sin(deg_to_rad(in.theta_deg <= 90.0 ? in.theta_deg : 180.0 - in.theta_deg));
   report.angles = e;
 
   report.section(
@@ -346,7 +380,7 @@ Report compute(const Inputs& in) {
   EulerRates r{in.phi_dot, in.theta_dot, in.psi_dot};
   if (in.from_omega) {
     report.drop_input("phi_dot"), report.drop_input("theta_dot"), report.drop_input("psi_dot");
-    const std::optional<EulerRates> back = rates_from_body_omega(e, *in.from_omega);
+    const std::optional<EulerRates> back = rates_from_body_omega(e, *in.from_omega, sin_theta);
     if (!back) {
       // At a pole phi and psi turn about one axis: only their sum (or difference) is defined.
       report.rates_defined = false;
@@ -373,8 +407,14 @@ Report compute(const Inputs& in) {
                   Vector3d(r.phi_dot, r.theta_dot, r.psi_dot), "rad/s");
   }
   report.rates = r;
-  const Vector3d w_int = omega_intermediate(e, r), w_body = omega_in_body(e, r),
-                 w_space = omega_in_space(e, r);
+  // omega by eqs. 128-139 from the rates; the omega given, where it was, is shown as given
+  // (its frames by lambda), and the formulas are checked against it
+  const Vector3d f_int = omega_intermediate(e, r, sin_theta),
+                 f_body = omega_in_body(e, r, sin_theta), f_space = omega_in_space(e, r, sin_theta);
+  const Vector3d w_space = in.from_omega ? Vector3d(lambda.transpose() * *in.from_omega) : f_space;
+  const Vector3d w_body = in.from_omega ? *in.from_omega : f_body;
+  const Vector3d w_int =
+      in.from_omega ? Vector3d(passive(x, e.theta) * passive(z, e.phi) * w_space) : f_int;
   report.omega_body = w_body, report.omega_space = w_space;
   const double size = std::abs(r.phi_dot) + std::abs(r.theta_dot) + std::abs(r.psi_dot);
   report.result("omega_intermediate_rad_s", "in x'y'z' (eqs. 128-130)", w_int, "rad/s",
@@ -385,16 +425,16 @@ Report compute(const Inputs& in) {
   report.result("omega_space_rad_s", "in xyz (eq. 139, eqs. 137-138 corrected)", w_space, "rad/s");
   // Each frame's omega again as lambda of another's: the formulas agree to roundoff.
   report.result_roundoff("omega_body_vs_lambda", "  |omega_123 - lambda omega_xyz|",
-                         (w_body - lambda * w_space).norm(), 16 * kEps * size, "rad/s");
+                         (f_body - lambda * f_space).norm(), 16 * kEps * size, "rad/s");
   report.result_roundoff("omega_intermediate_vs_lambda",
                          "  |omega_x'y'z' - lambda_theta lambda_phi omega_xyz|",
-                         (w_int - passive(x, e.theta) * passive(z, e.phi) * w_space).norm(),
+                         (f_int - passive(x, e.theta) * passive(z, e.phi) * f_space).norm(),
                          16 * kEps * size, "rad/s");
   if (in.from_omega) {
     report.result_roundoff("omega_round_trip", "  |omega from the rates - omega given|",
-                           (w_body - *in.from_omega).norm(), 64 * kEps * size, "rad/s");
+                           (f_body - *in.from_omega).norm(), 64 * kEps * size, "rad/s");
   }
-  const Vector3d as_printed = omega_in_space_as_printed(e, r);
+  const Vector3d as_printed = omega_in_space_as_printed(e, r, sin_theta);
   report.result("omega_space_printed_rad_s", "  eqs. 137-139 as the text prints them", as_printed,
                 "rad/s",
                 printed("(theta_dot cos psi - psi_dot sin theta cos phi, theta_dot sin psi - "
@@ -418,7 +458,7 @@ Report compute(const Inputs& in) {
       as_printed(0), as_printed(1)));
   const double scale = report_section_7(report, in, e, r);
   const Vector3d moments = in.moments.value_or(Vector3d(1, 2, 3));
-  report_torque(report, in, {moments(0), moments(1), moments(2)}, e, r, scale);
+  report_torque(report, in, {moments(0), moments(1), moments(2)}, e, scale);
   if (in.moments) {
     const Vector3d I = *in.moments;
     report.section("the body: L = I omega and T (eq. 150)");

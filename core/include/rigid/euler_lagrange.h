@@ -35,8 +35,8 @@ struct Measured {
 };
 
 /// Each angle's terms of its Euler-Lagrange equation at one time, in the order phi,
-/// theta, psi: dT/dq (by differences in q, the rates held), the momentum dT/dq_dot (T
-/// is quadratic in the rates: a central difference gives it to roundoff), its rate
+/// theta, psi: dT/dq (by differences in q, the rates held), the momentum dT/dq_dot (by
+/// the chain rule, exact: omega is linear in the rates), its rate
 /// d/dt dT/dq_dot (by differences in time along the motion), and the residual d/dt
 /// dT/dq_dot - dT/dq, each with its error.
 struct LagrangeTerms {
@@ -69,8 +69,9 @@ std::optional<LagrangeSteps> lagrange_steps(const EulerState& s, double time_sca
 std::vector<double> lagrange_times(double t, double h);
 
 /// A derivative by central differences of f at steps h, 2h and 4h (f takes the offset):
-/// Richardson's value (error h^4) with twice the estimate of its error that steps 2h and
-/// 4h give, plus f's noise `noise` (absolute) magnified by 1/h.
+/// Richardson's value (error h^4) with, as its error, its distance from the value steps 2h
+/// and 4h give (15 times the asymptotic estimate), plus f's noise `noise` (absolute)
+/// magnified by 1.5 / h.
 Measured central_derivative(const std::function<double(double)>& f, double h, double noise);
 
 /// The terms at time t of the motion `at` (t -> its EulerState, none where the rates are

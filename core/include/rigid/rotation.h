@@ -42,8 +42,9 @@ struct EulerRates {
 /// omega = phi_dot z + theta_dot x' + psi_dot 3 (eq. 124: phi_dot about the fixed z,
 /// theta_dot about the line of nodes x', psi_dot about the body's 3) in the
 /// intermediate frame x'y'z' (eqs. 128-130): (theta_dot, phi_dot sin(theta), phi_dot
-/// cos(theta) + psi_dot).
-Eigen::Vector3d omega_intermediate(const EulerAngles& e, const EulerRates& r);
+/// cos(theta) + psi_dot). `sin_theta`, where given, replaces sin(e.theta), as below.
+Eigen::Vector3d omega_intermediate(const EulerAngles& e, const EulerRates& r,
+                                   std::optional<double> sin_theta = std::nullopt);
 /// The same omega in the body frame 123 (eqs. 134-136). `sin_theta`, where given,
 /// replaces sin(e.theta) (known more accurately than the rounded theta gives it near a
 /// pole).
@@ -52,19 +53,24 @@ Eigen::Vector3d omega_in_body(const EulerAngles& e, const EulerRates& r,
 /// The same omega in the fixed frame xyz: eq. 139, omega_z = phi_dot + psi_dot
 /// cos(theta), and eqs. 137-138 as they are (the text's print has psi and phi
 /// swapped): omega_x = theta_dot cos(phi) + psi_dot sin(theta) sin(phi), omega_y =
-/// theta_dot sin(phi) - psi_dot sin(theta) cos(phi).
-Eigen::Vector3d omega_in_space(const EulerAngles& e, const EulerRates& r);
+/// theta_dot sin(phi) - psi_dot sin(theta) cos(phi). `sin_theta` as for omega_in_body.
+Eigen::Vector3d omega_in_space(const EulerAngles& e, const EulerRates& r,
+                               std::optional<double> sin_theta = std::nullopt);
 /// Eqs. 137-139 as the text prints them, for its errata: omega_x = theta_dot cos(psi) -
 /// psi_dot sin(theta) cos(phi), omega_y = theta_dot sin(psi) - psi_dot sin(theta)
-/// sin(phi), omega_z = phi_dot + psi_dot cos(theta).
-Eigen::Vector3d omega_in_space_as_printed(const EulerAngles& e, const EulerRates& r);
+/// sin(phi), omega_z = phi_dot + psi_dot cos(theta). `sin_theta` as for omega_in_body.
+Eigen::Vector3d omega_in_space_as_printed(const EulerAngles& e, const EulerRates& r,
+                                          std::optional<double> sin_theta = std::nullopt);
 /// The rates from omega in the body frame, eqs. 134-136 inverted: theta_dot = w1 cos(psi)
 /// - w2 sin(psi), phi_dot = (w1 sin(psi) + w2 cos(psi)) / sin(theta), psi_dot = w3 -
 /// phi_dot cos(theta). At a pole (theta = 0 or pi, to its rounding: 2 ulps) phi and psi
 /// turn about the same axis and only phi_dot + psi_dot (or phi_dot - psi_dot) is
-/// defined: none then, as where phi_dot would overflow.
+/// defined: none then, as where phi_dot would overflow. `sin_theta`, where given,
+/// replaces sin(e.theta) (known more accurately than the rounded theta gives it near a
+/// pole: theta = 179.9999999999 deg in radians leaves sin(theta) 1e-4 off).
 std::optional<EulerRates> rates_from_body_omega(const EulerAngles& e,
-                                                const Eigen::Vector3d& omega_body);
+                                                const Eigen::Vector3d& omega_body,
+                                                std::optional<double> sin_theta = std::nullopt);
 
 /// The unit quaternion of a rotation by `angle` rad about the unit `axis`.
 Eigen::Quaterniond axis_angle(const Eigen::Vector3d& axis, double angle);
