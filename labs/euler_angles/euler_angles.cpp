@@ -257,7 +257,7 @@ void report_torque(Report& report, const Inputs& in, const PrincipalMoments& I,
     report.result("torque_integration_error", omega_label,
                   (w1 - w_ref).norm() / std::max(w_ref.norm(), 1e-300), "");
     report.result("torque_attitude_error", attitude_label, attitude_distance(q1, q_ref), "rad");
-    report.remark("(near a pole phi and psi take it / sin theta)");
+    report.remark("(phi and psi carry it divided by sin theta)");
   }
   double Q[3] = {0, 0, 0};
   if (center) {

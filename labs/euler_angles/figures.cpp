@@ -144,16 +144,17 @@ class Turns {
 };
 
 // Gimbal lock: near theta = 0 the axes of phi (z) and psi (3) nearly line up, and with
-// the line of nodes they span little more than a plane; a turn about y', the plane's
-// normal, needs phi_dot and psi_dot of 1 / sin(theta) (eqs. 134-136 inverted).
+// the line of nodes they span little more than a plane; a turn about n = z x x', the
+// plane's normal, needs phi_dot = cot(theta) and psi_dot = -1 / sin(theta) (eqs. 134-136
+// inverted). (n is not the text's y', which theta tilts out of the xy plane.)
 render::Scene3D gimbal_scene(const Report& report) {
   const double theta = deg_to_rad(8.0);
   const EulerAngles e{report.angles.phi, theta, report.angles.psi};
   const Vector3d z = Vector3d::UnitZ();
   const Vector3d nodes = Eigen::AngleAxisd(e.phi, z) * Vector3d::UnitX();
   const Vector3d three = quaternion_from_euler_zxz(e) * z;
-  const Vector3d normal = z.cross(nodes);  // y'
-  // the rates that turn the body at 1 rad/s about y': from omega in the body
+  const Vector3d normal = z.cross(nodes);  // n
+  // the rates that turn the body at 1 rad/s about n: from omega in the body
   const Vector3d omega_body = quaternion_from_euler_zxz(e).conjugate() * normal;
   const std::optional<EulerRates> rates = rates_from_body_omega(e, omega_body);
   render::Scene3D scene;
@@ -174,9 +175,10 @@ render::Scene3D gimbal_scene(const Report& report) {
   add_arc(scene, nodes, z, theta, 0.75, kThetaColor, "\\theta");
   if (rates) {
     axis(0.8 * normal, colors::kOmega,
-         fmt::format("1 rad/s about y' needs \\phi-dot = {:.3g}, \\psi-dot = {:.3g} rad/s",
+         fmt::format("1 rad/s about n = z \u00d7 x' needs \\phi-dot = {:.3g}, \\psi-dot = "
+                     "{:.3g} rad/s",
                      rates->phi_dot, rates->psi_dot),
-         "y'");
+         "n");
   }
   // from the side of the plane, a little above, so the three axes fan out in it
   const double azimuth = e.phi - deg_to_rad(60.0), elevation = deg_to_rad(20.0);
