@@ -31,17 +31,42 @@ render::Plot2D omega_plot(const Report& f) {
     }
     render::Panel& panel = plot.panel(axis, 0);
     const SpinStability& p = f.predicted[axis];
+    // A stable spin keeps its axis's omega near the launch's: drawn less that, the wobble
+    // of the other two (a share epsilon of it) fills the panel instead of a flat line at
+    // 0 under one at omega.
+    const double spin = p.unstable ? 0.0 : w[axis].front();
     panel.title =
         p.unstable ? fmt::format("about 2 ({}): unstable, grows at {:.4g}/s, flips every {:.3g} s",
                                  kAxisWords[axis], p.rate, 0.5 * f.launches[axis].period())
-                   : fmt::format("about {} ({}): stable, wobbles at {:.4g} rad/s", axis + 1,
-                                 kAxisWords[axis], p.rate);
+                   : fmt::format(
+                         "about {0} ({1}): stable, wobbles at {2:.4g} rad/s; \\omega_{0} "
+                         "less {3:.6g}",
+                         axis + 1, kAxisWords[axis], p.rate, spin);
     panel.x = {axis == 2 ? "t (s)" : "", render::Scale::kLinear, 0, f.t_end};
     panel.y.label = "\\omega_i (rad/s)";
     for (int i = 0; i < 3; ++i) {
-      panel.add_line(t, w[i], fmt::format("\\omega_{}", i + 1)).color = colors::kPrincipal[i];
+      std::vector<double> y = w[i];
+      if (i == axis) {
+        for (double& v : y) v -= spin;
+      }
+      panel.add_line(t, y, fmt::format("\\omega_{}", i + 1)).color = colors::kPrincipal[i];
     }
-    if (axis != 0) panel.legend = render::LegendPlace::kNone;
+    // no legend (a short panel has no room for one): each omega named at its extreme in
+    // its colour, the spin's deviation at its middle
+    panel.legend = render::LegendPlace::kNone;
+    for (int i = 0; i < 3; ++i) {
+      const std::vector<double>& y = panel.series[i].y;
+      std::size_t n = y.size() / 2;
+      if (i != axis || p.unstable) {
+        n = static_cast<std::size_t>(
+            std::max_element(y.begin(), y.end(),
+                             [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+            y.begin());
+      }
+      render::Annotation& label = panel.annotate(t[n], y[n], fmt::format("\\omega_{}", i + 1));
+      label.color = colors::kPrincipal[i];
+      label.arrow = false;
+    }
   }
   return plot;
 }
