@@ -19,8 +19,8 @@
 #include <thread>
 
 #include "common/registry.h"
-#include "image_match.h"
 #include "lab_common.h"
+#include "rigid/render/image_match.h"
 #include "rigid/render/png.h"
 
 extern char** environ;
@@ -171,7 +171,7 @@ void check_scripted_session(const std::string& lab) {
   const auto by_cli =
       rigid::render::read_png((dir / "cli" / (lab + "_" + figure + ".png")).string());
   CHECK(drawn.width == 800);
-  CHECK(rigid::test::mismatch(drawn, by_cli).empty());
+  CHECK(rigid::render::mismatch(drawn, by_cli).empty());
   if (session->has_time_series()) {
     CHECK(read_file(dir / "explorer.csv") == read_file(dir / "cli.csv"));
   }

@@ -15,9 +15,9 @@
 #include <sstream>
 #include <vector>
 
-#include "image_match.h"
 #include "lab_common.h"
 #include "rigid/render/image.h"
+#include "rigid/render/image_match.h"
 #include "rigid/render/png.h"
 
 namespace fs = std::filesystem;
@@ -25,8 +25,8 @@ using rigid::test::all_labs;
 using rigid::test::run_lab;
 
 namespace {
-using rigid::test::kChannelThreshold;
-using rigid::test::mismatch;
+using rigid::render::kChannelThreshold;
+using rigid::render::mismatch;
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path);

@@ -73,41 +73,68 @@ LineStyle line_style(Method m) {
 
 render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
                                 const TimeAxis& time, const std::string& error_title,
-                                const std::string& error_label, const std::string& energy_label) {
+                                const std::string& error_label, const std::string& energy_label,
+                                double error_floor) {
   const bool in_periods = time.period > 0.0;
   const std::string t_label = in_periods ? "t (" + time.name + ")" : "t (s)";
   render::Plot2D plot(1, 2);
-  plot.title = title;
+  plot.title = fmt::format("{}; below {:.2g} and {:.2g}, roundoff, drawn at them", title,
+                           error_floor, kRoundoffFloor);
   render::Panel& error = plot.panel(0, 0);
   error.title = error_title + ", largest so far";
   error.x.label = t_label;
   error.y = {error_label, render::Scale::kLog10};
+  // the axes start a little below the floors, where a floored curve shows as a line
+  error.y.min = error_floor / 3;
   render::Panel& energy = plot.panel(0, 1);
   energy.title = "energy error, largest so far";
   energy.x.label = t_label;
   energy.y = {energy_label, render::Scale::kLog10};
-  // The first sample (t = 0) has no error to show on a log axis; a zero error has
-  // no logarithm either and sits at a floor below double roundoff.
-  const auto running_max = [](const std::vector<double>& v) {
+  energy.y.min = kRoundoffFloor / 3;
+  // The first sample (t = 0) has no error to show on a log axis; an error below the
+  // floor (a zero's included) is drawn at it.
+  const auto running_max = [](const std::vector<double>& v, double floor) {
     std::vector<double> out;
-    double most = 1e-17;
+    double most = floor;
     for (auto it = v.begin() + 1; it != v.end(); ++it) out.push_back(most = std::max(most, *it));
     return out;
   };
-  for (std::size_t k = 0; k < methods.size(); ++k) {
+  // The legend lists the best first: by the largest error, floored, so methods at
+  // roundoff tie and keep the methods' own order instead of one their last bits choose.
+  std::vector<std::size_t> order(methods.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  const auto floored_max = [&](const MethodCurve& m) {
+    double most = error_floor;
+    for (const double e : m.error) most = std::max(most, e);
+    return most;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double ea = floored_max(methods[a]), eb = floored_max(methods[b]);
+    if (ea != eb) return ea < eb;
+    return methods[a].method < methods[b].method;
+  });
+  for (const std::size_t k : order) {
     // A method that did not run, or blew up, has no curve to show.
     if (!methods[k].drawn || methods[k].t.size() < 2) continue;
     std::vector<double> t(methods[k].t.begin() + 1, methods[k].t.end());
     if (in_periods) {
       for (double& x : t) x /= time.period;
     }
-    auto& a = error.add_line(t, running_max(methods[k].error), methods[k].name);
-    auto& b = energy.add_line(t, running_max(methods[k].energy_error), methods[k].name);
+    auto& a = error.add_line(t, running_max(methods[k].error, error_floor), methods[k].name);
+    auto& b =
+        energy.add_line(t, running_max(methods[k].energy_error, kRoundoffFloor), methods[k].name);
     const LineStyle style = line_style(methods[k].method);
     a.color = b.color = style.color;
     a.dash = b.dash = style.dash;
   }
   energy.legend = render::LegendPlace::kNone;
+  // every curve at its floor: a decade above it to show them on
+  for (render::Panel* panel : {&error, &energy}) {
+    double top = panel->y.min;
+    for (const auto& series : panel->series)
+      for (const double v : series.y) top = std::max(top, v);
+    if (!(top > 3 * panel->y.min)) panel->y.max = 30 * panel->y.min;
+  }
   return plot;
 }
 

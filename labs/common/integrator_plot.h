@@ -34,13 +34,23 @@ struct TimeAxis {
   std::string name;
 };
 
+/// The level below which a relative error is roundoff: eps (2.2e-16) times the 10^4 steps
+/// a run takes at most at the figures' cost, rounded to a decade up. Below it a run's
+/// error follows the last bits of the maths library (another CPU's libm changed the top's
+/// vern8 error from 2.3e-11 to 1.5e-11 deg), so the figures draw it at this floor and
+/// their axes start there: the same pixels on every machine.
+inline constexpr double kRoundoffFloor = 1e-12;
+
 /// Two panels under `title`: `error_label` and |E - E0| (`energy_label`), each
 /// the largest so far at each t, on log axes: what a run has lost by then, its
 /// trend plain where the error itself oscillates sample to sample (a symplectic
 /// method's band shows as a level line, a steady drift as a rising one). The
-/// first sample (t = 0, no error) is left out; zeros sit at a floor below roundoff.
+/// first sample (t = 0, no error) is left out. Errors below roundoff are drawn at it:
+/// `error_floor` (kRoundoffFloor in the error's unit) and kRoundoffFloor for the
+/// energy's, where each axis starts; the title says so.
 render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
                                 const TimeAxis& time, const std::string& error_title,
-                                const std::string& error_label, const std::string& energy_label);
+                                const std::string& error_label, const std::string& energy_label,
+                                double error_floor);
 
 }  // namespace rigid::lab

@@ -226,18 +226,19 @@ void figures(const Report& report, FigureSink& sink) {
   // (a live view's first look at new inputs has not compared the methods yet)
   if (compared.at_settings.empty() && !equal_cost) return;
   const double evaluations = kEqualCostEvaluations;
-  sink.add(
-      "integrators",
-      equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
-                               "nutation period) over {:g} periods against the exact theta",
-                               evaluations, compared.at_cost_periods)
-                 : "every integrator against the exact theta",
-      integrators_plot(
-          method_curves(equal_cost ? compared.at_cost : compared.at_settings, rad_to_deg),
-          equal_cost ? fmt::format("at equal cost: {:g} evaluations a period", evaluations)
-                     : "integrators against the exact solution",
-          equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
-          "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)"));
+  sink.add("integrators",
+           equal_cost ? fmt::format("every integrator at the same cost ({:g} evaluations a "
+                                    "nutation period) over {:g} periods against the exact theta",
+                                    evaluations, compared.at_cost_periods)
+                      : "every integrator against the exact theta",
+           integrators_plot(
+               method_curves(equal_cost ? compared.at_cost : compared.at_settings, rad_to_deg),
+               equal_cost ? fmt::format("at equal cost: {:g} evaluations a period", evaluations)
+                          : "integrators against the exact solution",
+               equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
+               "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)",
+               // theta's roundoff: kRoundoffFloor of a radian, in degrees
+               rad_to_deg(kRoundoffFloor)));
 }
 
 // ---- The motion --------------------------------------------------------------

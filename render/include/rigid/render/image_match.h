@@ -1,7 +1,10 @@
-// The golden-image comparison: whether two drawings of one figure differ in what
-// a reader would see (figure_test.cpp's goldens, the explorer's figures).
+// Whether two drawings of one figure differ in what a reader would see: the golden
+// tests' verdict, and the main job's (a figure regenerated within it is not replaced,
+// so figures/ stays as committed unless a figure really changed).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -9,7 +12,7 @@
 
 #include "rigid/render/image.h"
 
-namespace rigid::test {
+namespace rigid::render {
 
 // What a reader sees changed. A pixel differs when no pixel within 2 px of it in
 // the other image is within kChannelThreshold of it (both ways round): a curve that
@@ -25,9 +28,42 @@ inline constexpr long kMaxCluster = 12;
 inline constexpr double kMaxMeanDiff = 0.5;
 inline constexpr int kReach = 2;
 
-// Pixels of `a` that no pixel within kReach of the same place in `b` matches.
-inline std::vector<std::uint8_t> unmatched(const rigid::render::Image& a,
-                                           const rigid::render::Image& b) {
+// Whether p is, within kChannelThreshold, a blend of two pixels of `b` in the 3x3 about
+// (x, y): what an antialiased edge moved by a fraction of a pixel (another CPU's
+// roundoff-level data) draws. Its pixels change which are full colour and which partial
+// by more than the threshold, and no single neighbour need match; a moved glyph, a
+// recoloured swatch or an erased marker leaves colours no two neighbours blend to.
+inline bool blend_of_neighbours(const std::uint8_t* p, const Image& b, int x, int y) {
+  const std::uint8_t* q[9];
+  int n = 0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if (nx >= 0 && ny >= 0 && nx < b.width && ny < b.height) q[n++] = b.at(nx, ny);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      // the point of the segment q_i q_j nearest p, then its largest channel difference
+      double along = 0, length = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double d = q[j][c] - q[i][c];
+        along += (p[c] - q[i][c]) * d, length += d * d;
+      }
+      const double t = length > 0 ? std::min(1.0, std::max(0.0, along / length)) : 0.0;
+      bool near = true;
+      for (int c = 0; c < 3 && near; ++c) {
+        near = std::abs(p[c] - (q[i][c] + t * (q[j][c] - q[i][c]))) <= kChannelThreshold;
+      }
+      if (near) return true;
+    }
+  }
+  return false;
+}
+
+// Pixels of `a` that no pixel within kReach of the same place in `b` matches, nor a blend
+// of two beside it.
+inline std::vector<std::uint8_t> unmatched(const Image& a, const Image& b) {
   std::vector<std::uint8_t> out(static_cast<std::size_t>(a.width) * a.height, 0);
   for (int y = 0; y < a.height; ++y) {
     for (int x = 0; x < a.width; ++x) {
@@ -43,6 +79,7 @@ inline std::vector<std::uint8_t> unmatched(const rigid::render::Image& a,
                     std::abs(p[2] - q[2]) <= kChannelThreshold;
         }
       }
+      if (!matched) matched = blend_of_neighbours(p, b, x, y);
       out[static_cast<std::size_t>(y) * a.width + x] = matched ? 0 : 1;
     }
   }
@@ -50,16 +87,15 @@ inline std::vector<std::uint8_t> unmatched(const rigid::render::Image& a,
 }
 
 // The verdict of one comparison: empty when the figure matches.
-inline std::string mismatch(const rigid::render::Image& actual,
-                            const rigid::render::Image& expected) {
+inline std::string mismatch(const Image& actual, const Image& expected) {
   std::string why;
   for (const auto& mark : {unmatched(actual, expected), unmatched(expected, actual)}) {
-    const long cluster = rigid::render::largest_cluster(mark, actual.width);
+    const long cluster = largest_cluster(mark, actual.width);
     if (cluster > kMaxCluster) why += " a changed region of " + std::to_string(cluster) + " px;";
   }
-  const auto d = rigid::render::compare_images(actual, expected, kChannelThreshold);
+  const auto d = compare_images(actual, expected, kChannelThreshold);
   if (d.mean_diff > kMaxMeanDiff) why += " mean difference " + std::to_string(d.mean_diff) + ";";
   return why;
 }
 
-}  // namespace rigid::test
+}  // namespace rigid::render
