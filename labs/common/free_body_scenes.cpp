@@ -93,7 +93,7 @@ render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omeg
     scene.add_tube(lift(polhode[k]), 0.011 * size, {colors::kPolhode},
                    k == 0 ? "this body's polhode" : "");
   }
-  scene.add_sphere(omega0 * 1.004, 0.03 * size, {colors::kMarker}, "\\omega_0");
+  scene.add_marker(omega0 * 1.004, 0.03 * size, {colors::kMarker}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.3 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
   return scene;

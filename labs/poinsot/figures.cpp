@@ -34,7 +34,7 @@ render::Scene3D ellipsoids_scene(const FreeBodyExact& motion, const Vector3d& om
   for (std::size_t k = 0; k < polhode.size(); ++k) {
     scene.add_tube(polhode[k], 0.012 * size, {colors::kPolhode}, k == 0 ? "polhode" : "");
   }
-  scene.add_sphere(omega0, 0.03 * size, {colors::kMarker}, "\\omega_0");
+  scene.add_marker(omega0, 0.03 * size, {colors::kMarker}, "\\omega_0");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.25 * size,
                  {"\\omega_1", "\\omega_2", "\\omega_3"});
   return scene;

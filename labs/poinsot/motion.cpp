@@ -148,7 +148,7 @@ render::Scene3D Motion::scene(double t) const {
   if (trace.size() >= 2)
     scene.add_tube(std::move(trace), 0.012 * size_, {render::kBlack}, "herpolhode");
   scene.add_arrow(offset_, contact, 0.025 * size_, {colors::kOmega});
-  scene.add_sphere(contact, 0.035 * size_, {colors::kOmega});
+  scene.add_marker(contact, 0.035 * size_, {colors::kOmega});
   return scene;
 }
 
@@ -181,7 +181,7 @@ render::Scene3D Motion::herpolhode_scene(double periods) const {
   scene.add_polyline(std::move(trace), render::kBlack, 2.0, "herpolhode");
   for (int k = 0; k <= static_cast<int>(periods); ++k) {
     const Vector3d p = contact(k * T);
-    scene.add_sphere(p, 0.03 * size_, {colors::kOmega},
+    scene.add_marker(p, 0.03 * size_, {colors::kOmega},
                      k == 0 ? "the contact point at t = 0, T, 2T, .." : "");
     scene.add_label(p, k == 0 ? "0" : k == 1 ? "T" : fmt::format("{}T", k));
   }

@@ -43,9 +43,9 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
   // A balanced wheel (a straight axle) needs no masses, and L sweeps no cone.
   if (m0 > 0.0) {
     const double r0 = 0.07 * a * std::cbrt(std::max(m0, 1e-6) / (0.01 * wheel.mass));
-    scene.add_sphere(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {colors::kMarker},
+    scene.add_marker(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {colors::kMarker},
                      fmt::format("balancing masses m_0 = {:.1f} g", 1e3 * m0));
-    scene.add_sphere(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {colors::kMarker});
+    scene.add_marker(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {colors::kMarker});
   }
   // The cone swept by L about the axle when unbalanced, with L at t = 0.
   const double length = 1.6 * a;

@@ -311,7 +311,7 @@ render::Scene3D Motion::scene(double t) const {
   scene.title = t > 0 ? fmt::format("the top at t = {:.3f} s; arrows show directions", t)
                       : "the top at t = 0; arrows show directions";
   if (r > disk_radius_) scene.title += " (disk enlarged to be seen)";
-  scene.add_sphere(Vector3d::Zero(), 0.04 * size, {render::kGray}, "tip (pivot)");
+  scene.add_marker(Vector3d::Zero(), 0.04 * size, {render::kGray}, "tip (pivot)");
   scene.add_cylinder(Vector3d::Zero(), (l + 0.5 * r) * e3, 0.03 * size, {render::kGray});
   // The disk translucent, so the tip, the spindle and the circle below stay in view.
   scene.add_cylinder(l * e3 - 0.05 * r * e3, l * e3 + 0.05 * r * e3, r, {colors::kBody, 0.5f},

@@ -150,6 +150,11 @@ void Scene3D::add_sphere(const Vector3d& center, double radius, Material m, std:
   add_ellipsoid(center, Vector3d::Constant(radius), Matrix3d::Identity(), m, std::move(label));
 }
 
+void Scene3D::add_marker(const Vector3d& center, double radius, Material m, std::string label) {
+  add_sphere(center, radius, m, std::move(label));
+  objects_.back().marker = true;
+}
+
 void Scene3D::add_ellipsoid(const Vector3d& center, const Vector3d& semi_axes,
                             const Matrix3d& rotation, Material m, std::string label) {
   check_finite(center, "ellipsoid centre");

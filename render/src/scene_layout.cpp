@@ -28,7 +28,8 @@ double facing_light() {
 }
 
 // The legend rows: surfaces as filled swatches, each the colour a face toward the
-// viewer is drawn in (lit, then a translucent one over white), polylines as lines.
+// viewer is drawn in (lit, then a translucent one over white), markers as dots,
+// polylines as lines.
 std::vector<LegendEntry> legend_entries(const Scene3D& scene) {
   std::vector<LegendEntry> out;
   const float light = static_cast<float>(facing_light());
@@ -45,7 +46,14 @@ std::vector<LegendEntry> legend_entries(const Scene3D& scene) {
         const float lit = std::min(1.0f, v * k), once = lit * a + (1 - a);
         return open ? once : lit * a + (1 - a) * once;
       };
-      out.push_back({o.label, {shown(c.r), shown(c.g), shown(c.b), 1}, true});
+      const Color swatch{shown(c.r), shown(c.g), shown(c.b), 1};
+      // a point (a start, a mass, a pivot) is a dot, not a bar, so it is not read as a
+      // line of its colour (the separatrix beside omega_0's ball)
+      if (o.marker) {
+        out.push_back({o.label, swatch, false, 0, Dash::kSolid, Marker::kCircle, 18});
+      } else {
+        out.push_back({o.label, swatch, true});
+      }
     }
   for (const Scene3D::Polyline& pl : scene.polylines())
     if (!pl.label.empty()) out.push_back({pl.label, pl.color, false, pl.width});

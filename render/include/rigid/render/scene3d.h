@@ -71,6 +71,10 @@ class Scene3D {
   /// Sphere of a radius about a centre.
   void add_sphere(const Eigen::Vector3d& center, double radius, Material m = {},
                   std::string label = {});
+  /// A point drawn as a ball (a start, a mass, a pivot): its legend entry is a dot of its
+  /// colour, not a bar a reader would take for a line.
+  void add_marker(const Eigen::Vector3d& center, double radius, Material m = {},
+                  std::string label = {});
   /// Ellipsoid with semi-axes a (columns of rotation give their directions).
   void add_ellipsoid(const Eigen::Vector3d& center, const Eigen::Vector3d& semi_axes,
                      const Eigen::Matrix3d& rotation, Material m = {}, std::string label = {});
@@ -144,6 +148,7 @@ class Scene3D {
     Mesh mesh;                          ///< kCustom only
     std::vector<Eigen::Vector3d> path;  ///< kTube only (world coordinates)
     double tube_radius = 0;             ///< kTube only
+    bool marker = false;                ///< a point (add_marker): a dot in the legend
   };
   struct Polyline {
     std::vector<Eigen::Vector3d> points;
