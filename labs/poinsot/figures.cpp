@@ -88,7 +88,7 @@ void figures(const Report& report, FigureSink& sink) {
                          kEqualCostEvaluations, report.comparisons.at_cost_periods, period_name),
              integrators_plot(
                  method_curves(report.comparisons.at_cost),
-                 fmt::format("at equal cost: {:g} evaluations a period", kEqualCostEvaluations),
+                 fmt::format("at equal cost, {:g} evaluations a period", kEqualCostEvaluations),
                  {report.scale, period_name}, "error in \\omega",
                  "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0", kRoundoffFloor));
   }

@@ -233,7 +233,7 @@ void figures(const Report& report, FigureSink& sink) {
                       : "every integrator against the exact theta",
            integrators_plot(
                method_curves(equal_cost ? compared.at_cost : compared.at_settings, rad_to_deg),
-               equal_cost ? fmt::format("at equal cost: {:g} evaluations a period", evaluations)
+               equal_cost ? fmt::format("at equal cost, {:g} evaluations a period", evaluations)
                           : "integrators against the exact solution",
                equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
                "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)",
