@@ -150,6 +150,25 @@ void Scene3D::add_sphere(const Vector3d& center, double radius, Material m, std:
   add_ellipsoid(center, Vector3d::Constant(radius), Matrix3d::Identity(), m, std::move(label));
 }
 
+Scene3D Scene3D::recolored(const std::string& label, Color color) const {
+  Scene3D out = *this;
+  // an unlabelled part right after a named one in its colour is part of it (an arrow's
+  // head after its shaft)
+  bool named = false;
+  Color was{};
+  for (Object& o : out.objects_) {
+    const bool part = o.label.empty() && named && o.material.color.r == was.r &&
+                      o.material.color.g == was.g && o.material.color.b == was.b;
+    named = o.label == label;
+    if (named) was = o.material.color;
+    if (named || part) o.material.color = color;
+    named = named || part;
+  }
+  for (Polyline& p : out.polylines_)
+    if (p.label == label) p.color = color;
+  return out;
+}
+
 void Scene3D::add_marker(const Vector3d& center, double radius, Material m, std::string label) {
   add_sphere(center, radius, m, std::move(label));
   objects_.back().marker = true;
