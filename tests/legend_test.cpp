@@ -78,8 +78,6 @@ const std::set<std::string> kKnownDefects = {
     "poinsot_herpolhode: herpolhode",
     // the face toward -3 is hidden in the still's view
     "tennis_racquet_flip: face toward -3",
-    // the turning circles seen through the translucent unit sphere: grey, not black
-    "top_nutation_paths: turning circles \\theta_{min}, \\theta_{max}",
     // the precession circle behind the disk: blue-grey, not the swatch's pink
     "top_nutation_top: centre of mass's precession circle",
 };

@@ -89,8 +89,9 @@ render::Plot2D potential_plot(const HeavyTopExact& m) {
   return plot;
 }
 
-// The axis's path on the unit sphere for three starts of the same top that differ
-// only in phi_dot0, each labelled with the regime the exact motion reports.
+// The axis's path on the unit sphere: this run's (its own start), then starts of the same
+// top that differ only in phi_dot0 (theta_dot0 = 0) in the regimes this run is not, each
+// labelled with the regime the exact motion reports.
 render::Scene3D paths_scene(const HeavyTopExact& m) {
   const HeavyTop& top = m.top();
   const TopStart& s0 = m.start();
@@ -98,18 +99,34 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
   const double reference = steady.exists && std::isfinite(steady.slow) && steady.slow != 0
                                ? std::abs(steady.slow)
                                : (s0.spin > 0 ? top.mgl / (top.Is * s0.spin) : 1.0);
-  render::Scene3D scene;
-  scene.title =
-      fmt::format("the symmetry axis on the unit sphere for \\phi-dot_0 = {:.3g}, 0, {:.3g} rad/s",
-                  0.5 * reference, -0.5 * reference);
-  const double gap = 2.6;
-  int index = 0;
+  // wavy, cusped and looping starts; the one in this run's regime gives way to the run
+  struct Path {
+    TopStart start;
+    std::string name;
+  };
+  std::vector<Path> paths = {{s0, "this run"}};
+  std::vector<double> contrasts;
   for (const double phi_dot0 : {0.5 * reference, 0.0, -0.5 * reference}) {
     TopStart start = s0;
     start.theta_dot = 0.0;
     start.phi_dot = phi_dot0;
     if (start.theta == 0.0) start.theta = 1e-3;  // upright: a hair off, so there is a path
-    const HeavyTopExact motion(top, start);
+    if (paths.size() < 3 && HeavyTopExact(top, start).regime() != m.regime()) {
+      paths.push_back({start, fmt::format("\\phi-dot_0 = {:.3g} rad/s", phi_dot0)});
+      contrasts.push_back(phi_dot0);
+    }
+  }
+  if (paths.front().start.theta == 0.0) paths.front().start.theta = 1e-3;
+  render::Scene3D scene;
+  std::string others;
+  for (const double c : contrasts) others += fmt::format("{}{:.3g}", others.empty() ? "" : ", ", c);
+  scene.title =
+      fmt::format("the symmetry axis on the unit sphere: this run{}",
+                  others.empty() ? std::string() : ", and \\phi-dot_0 = " + others + " rad/s");
+  const double gap = 2.6;
+  int index = 0;
+  for (const Path& p : paths) {
+    const HeavyTopExact motion(top, p.start);
     const Vector3d c(gap * index, 0, 0);
     const double period = std::isfinite(motion.nutation_period()) ? motion.nutation_period() : 1.0;
     std::vector<Vector3d> path;
@@ -126,13 +143,20 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
     scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlack, 2.5);
     scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {colors::kFixedAxis},
                     first ? "vertical z" : "");
-    scene.add_label(c + Vector3d(0, -1.3, 0), to_string(motion.regime()));
+    scene.add_label(c + Vector3d(0, -1.3, 0),
+                    fmt::format("{}: {}", p.name, to_string(motion.regime())));
     ++index;
   }
-  // From above, a little to the front: the caps the axes sweep face the camera.
-  scene.camera.eye = Vector3d(gap, -3.5, 10.0);
-  scene.camera.target = Vector3d(gap, 0, 0.5);
-  scene.camera.fov_y_deg = 30;
+  // From the front, 35 deg above the horizon, far off with a narrow view: each vertical
+  // points up the page and the three stand parallel (from near and above, one perspective
+  // tilted them up-left, up and up-right), and the caps the axes sweep still face the
+  // camera enough to show their loops and cusps.
+  const double middle = gap * (static_cast<double>(paths.size()) - 1) / 2;
+  const double elevation = deg_to_rad(35.0), distance = 26.0;
+  scene.camera.eye =
+      Vector3d(middle, -distance * std::cos(elevation), 0.4 + distance * std::sin(elevation));
+  scene.camera.target = Vector3d(middle, 0, 0.4);
+  scene.camera.fov_y_deg = 12;
   return scene;
 }
 
@@ -215,7 +239,8 @@ void figures(const Report& report, FigureSink& sink) {
   }
   sink.add("potential", "the effective potential, E' and the turning points",
            potential_plot(motion));
-  sink.add("paths", "the axis's path on the sphere: wavy, cusped, looping", paths_scene(motion));
+  sink.add("paths", "the axis's path on the sphere: this run's beside the other regimes",
+           paths_scene(motion));
   sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
            theta_plot(motion, integrated, report.t_end, why_none));
   sink.add("top", "the top, L, the gravity torque and the precession circle",
