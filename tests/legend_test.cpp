@@ -76,8 +76,6 @@ const std::set<std::string> kKnownDefects = {
     // swatch's blue; the herpolhode's thin lines under it grey, not black
     "poinsot_herpolhode: the contact point at t = 0, T, 2T, ..",
     "poinsot_herpolhode: herpolhode",
-    // the face toward -3 is hidden in the still's view
-    "tennis_racquet_flip: face toward -3",
     // the precession circle behind the disk: blue-grey, not the swatch's pink
     "top_nutation_top: centre of mass's precession circle",
 };

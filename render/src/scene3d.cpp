@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "scene_shapes.h"
@@ -151,21 +152,23 @@ void Scene3D::add_sphere(const Vector3d& center, double radius, Material m, std:
 }
 
 Scene3D Scene3D::recolored(const std::string& label, Color color) const {
+  // A legend entry names everything drawn in its colour (an arrow's head with its shaft,
+  // the same face in every panel of a strip): find the named item's colour, then recolour
+  // every surface and line in it.
+  std::optional<Color> named;
+  for (const Object& o : objects_)
+    if (!named && o.label == label) named = o.material.color;
+  for (const Polyline& p : polylines_)
+    if (!named && p.label == label) named = p.color;
   Scene3D out = *this;
-  // an unlabelled part right after a named one in its colour is part of it (an arrow's
-  // head after its shaft)
-  bool named = false;
-  Color was{};
-  for (Object& o : out.objects_) {
-    const bool part = o.label.empty() && named && o.material.color.r == was.r &&
-                      o.material.color.g == was.g && o.material.color.b == was.b;
-    named = o.label == label;
-    if (named) was = o.material.color;
-    if (named || part) o.material.color = color;
-    named = named || part;
-  }
+  if (!named) return out;
+  const auto same = [&](const Color& c) {
+    return c.r == named->r && c.g == named->g && c.b == named->b;
+  };
+  for (Object& o : out.objects_)
+    if (same(o.material.color)) o.material.color = color;
   for (Polyline& p : out.polylines_)
-    if (p.label == label) p.color = color;
+    if (same(p.color)) p.color = color;
   return out;
 }
 

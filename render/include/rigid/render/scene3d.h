@@ -162,8 +162,9 @@ class Scene3D {
   const std::vector<Polyline>& polylines() const { return polylines_; }
   /// The labels added so far (add_axes adds one per axis), in order.
   const std::vector<Label3D>& labels() const { return labels_; }
-  /// The same scene with the surfaces and lines named `label` (a legend entry) in `color`:
-  /// a legend's swatch must follow it (the legend test recolours each entry in turn).
+  /// The same scene with everything drawn in the colour of the item named `label` (a
+  /// legend entry names all of it) in `color`: a legend's swatch must follow it (the
+  /// legend test recolours each entry in turn).
   Scene3D recolored(const std::string& label, Color color) const;
   /// The same scene with every length (camera included) multiplied by k: drawing
   /// brings a scene of any size into float's comfortable range with it.
