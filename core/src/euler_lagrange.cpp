@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "rigid/units.h"
+
 namespace rigid {
 
 namespace {
@@ -30,6 +32,30 @@ constexpr double kOffsets[] = {1.0, 2.0, 4.0};
 double euler_kinetic_energy(const PrincipalMoments& I, const EulerAngles& e, const EulerRates& r) {
   const Eigen::Vector3d w = omega_in_body(e, r);
   return 0.5 * (I.I1 * w(0) * w(0) + I.I2 * w(1) * w(1) + I.I3 * w(2) * w(2));
+}
+
+std::optional<EulerState> euler_state(const Eigen::Quaterniond& attitude,
+                                      const Eigen::Vector3d& omega_body, const EulerAngles& near) {
+  EulerState s;
+  s.angles = euler_zxz(attitude);
+  s.angles.phi = near.phi + std::remainder(s.angles.phi - near.phi, 2 * kPi);
+  s.angles.psi = near.psi + std::remainder(s.angles.psi - near.psi, 2 * kPi);
+  const std::optional<EulerRates> r = rates_from_body_omega(s.angles, omega_body);
+  if (!r) return std::nullopt;
+  s.rates = *r;
+  return s;
+}
+
+Eigen::Matrix3d rate_axes_in_body(const EulerAngles& e) {
+  Eigen::Matrix3d axes;
+  axes.col(0) = omega_in_body(e, {1, 0, 0});
+  axes.col(1) = omega_in_body(e, {0, 1, 0});
+  axes.col(2) = omega_in_body(e, {0, 0, 1});
+  return axes;
+}
+
+Eigen::Vector3d generalized_force(const EulerAngles& e, const Eigen::Vector3d& torque_body) {
+  return rate_axes_in_body(e).transpose() * torque_body;
 }
 
 std::optional<LagrangeSteps> lagrange_steps(const EulerState& s, double time_scale) {
@@ -82,9 +108,7 @@ std::optional<LagrangeTerms> lagrange_terms(
   // curvature I_max where the moments differ by decades).
   const auto momentum = [&](const EulerState& s, int k) {
     const Eigen::Vector3d w = omega_in_body(s.angles, s.rates);
-    EulerRates unit;
-    (k == 0 ? unit.phi_dot : k == 1 ? unit.theta_dot : unit.psi_dot) = 1.0;
-    return I.vector().cwiseProduct(w).dot(omega_in_body(s.angles, unit));
+    return I.vector().cwiseProduct(w).dot(rate_axes_in_body(s.angles).col(k));
   };
   // Noise, absolute: omega from rates R = sum |rates| holds eps R (near a pole omega_3 =
   // phi_dot cos(theta) + psi_dot cancels two rates of 1 / sin(theta)), T then eps |L| R;

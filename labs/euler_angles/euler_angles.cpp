@@ -33,20 +33,6 @@ Matrix3d passive(const Vector3d& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis).toRotationMatrix().transpose();
 }
 
-// The angles continuous from `near` (phi and psi by whole turns) and their rates from
-// omega in the body; none where the rates are undefined (a pole).
-std::optional<EulerState> euler_state(const Eigen::Quaterniond& attitude,
-                                      const Vector3d& omega_body, const EulerAngles& near) {
-  EulerState s;
-  s.angles = euler_zxz(attitude);
-  s.angles.phi = near.phi + std::remainder(s.angles.phi - near.phi, 2 * kPi);
-  s.angles.psi = near.psi + std::remainder(s.angles.psi - near.psi, 2 * kPi);
-  const std::optional<EulerRates> r = rates_from_body_omega(s.angles, omega_body);
-  if (!r) return std::nullopt;
-  s.rates = *r;
-  return s;
-}
-
 // Why Lagrange's equations in the Euler angles cannot be checked at these angles.
 std::string pole_reason(const EulerAngles& e) {
   return fmt::format(
@@ -261,12 +247,8 @@ void report_torque(Report& report, const Inputs& in, const PrincipalMoments& I,
   }
   double Q[3] = {0, 0, 0};
   if (center) {
-    // z and x' in the body: the columns of eqs. 134-136 for phi_dot and theta_dot
-    const EulerAngles& c = center->angles;
-    const Vector3d z_body(std::sin(c.theta) * std::sin(c.psi), std::sin(c.theta) * std::cos(c.psi),
-                          std::cos(c.theta));
-    const Vector3d nodes_body(std::cos(c.psi), -std::sin(c.psi), 0.0);
-    Q[0] = N.dot(z_body), Q[1] = N.dot(nodes_body), Q[2] = N(2);
+    const Vector3d force = generalized_force(center->angles, N);
+    Q[0] = force(0), Q[1] = force(1), Q[2] = force(2);
     report.result("generalized_force", "Q = (N.z, N.x', N_3) at t1, the torque's virtual work",
                   Vector3d(Q[0], Q[1], Q[2]), "J");
   } else {

@@ -16,16 +16,8 @@ namespace {
 // (phi and psi moved by whole turns to the nearest of the start's); none at a pole.
 std::function<std::optional<EulerState>(double)> euler_motion(const FreeBodyExact& motion) {
   const EulerAngles start = euler_zxz(motion.attitude(0.0));
-  return [&motion, start](double t) -> std::optional<EulerState> {
-    EulerState s;
-    s.angles = euler_zxz(motion.attitude(t));
-    const auto near = [](double a, double to) { return to + std::remainder(a - to, 2 * kPi); };
-    s.angles.phi = near(s.angles.phi, start.phi);
-    s.angles.psi = near(s.angles.psi, start.psi);
-    const std::optional<EulerRates> r = rates_from_body_omega(s.angles, motion.omega_body(t));
-    if (!r) return std::nullopt;
-    s.rates = *r;
-    return s;
+  return [&motion, start](double t) {
+    return euler_state(motion.attitude(t), motion.omega_body(t), start);
   };
 }
 
@@ -121,6 +113,21 @@ TEST_CASE("section 7: near a pole the equations hold to their stated error, at o
   }
   CHECK(checked > 0);
   CHECK(refused > 0);
+}
+
+TEST_CASE("section 7: the torque's generalized forces are its virtual work on each angle") {
+  // Q_k = N . (axis of rate k): N along the body's 3 gives Q_psi = N_3, Q_phi = N_3
+  // cos(theta) (3 . z) and Q_theta = 0 (3 is at right angles to x').
+  const EulerAngles e{0.3, 1.1, -0.4};
+  const Eigen::Vector3d Q = generalized_force(e, Eigen::Vector3d(0, 0, 2));
+  CHECK(Q(0) == Approx(2 * std::cos(1.1)).epsilon(1e-15));
+  CHECK(std::abs(Q(1)) < 1e-15);
+  CHECK(Q(2) == 2.0);
+  // and the rate axes are z, x' and 3 seen from the body: lambda of each
+  const Eigen::Matrix3d axes = rate_axes_in_body(e), lambda = space_to_body_matrix(e);
+  CHECK((axes.col(0) - lambda * Eigen::Vector3d::UnitZ()).norm() < 1e-15);
+  CHECK((axes.col(1) - lambda * Eigen::Vector3d(std::cos(0.3), std::sin(0.3), 0)).norm() < 1e-15);
+  CHECK((axes.col(2) - Eigen::Vector3d::UnitZ()).norm() == 0);
 }
 
 TEST_CASE("section 7: eq. 150 needs its 1/2: T is half of sum I_i omega_i^2") {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -27,6 +28,22 @@ struct EulerState {
   EulerAngles angles;
   EulerRates rates;
 };
+
+/// The Euler state of a body at `attitude` turning at `omega_body`: the angles with phi
+/// and psi by whole turns nearest `near`'s (continuous along a motion), the rates by
+/// eqs. 134-136 inverted; none at a pole, where the rates are undefined.
+std::optional<EulerState> euler_state(const Eigen::Quaterniond& attitude,
+                                      const Eigen::Vector3d& omega_body, const EulerAngles& near);
+
+/// The axes the three rates turn about, in the body: columns z, x' and 3, that is
+/// d omega / d(phi_dot, theta_dot, psi_dot) (eqs. 131-133). omega is linear in the rates,
+/// so dT/dq_dot_k = L . column k exactly (eqs. 152-156's chain rule).
+Eigen::Matrix3d rate_axes_in_body(const EulerAngles& e);
+
+/// A body-frame torque's generalized forces on the angles, Q_k = N . (axis of rate k): the
+/// torque's virtual work N . (z dphi + x' dtheta + 3 dpsi), which each angle's Lagrange
+/// equation with torque gains (eqs. 163-166 in Lagrange's form).
+Eigen::Vector3d generalized_force(const EulerAngles& e, const Eigen::Vector3d& torque_body);
 
 /// A derivative by differences: the value and an estimate of its error.
 struct Measured {
