@@ -78,8 +78,11 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
   const bool in_periods = time.period > 0.0;
   const std::string t_label = in_periods ? "t (" + time.name + ")" : "t (s)";
   render::Plot2D plot(1, 2);
-  plot.title = fmt::format("{}; below {:.2g} and {:.2g}, roundoff, drawn at them", title,
-                           error_floor, kRoundoffFloor);
+  // one floor where the error and the energy share it, else the error's, then the energy's
+  plot.title = error_floor == kRoundoffFloor
+                   ? fmt::format("{}; below {:.2g}, roundoff, drawn at it", title, error_floor)
+                   : fmt::format("{}; below {:.2g} and {:.2g}, roundoff, drawn at them", title,
+                                 error_floor, kRoundoffFloor);
   render::Panel& error = plot.panel(0, 0);
   error.title = error_title + ", largest so far";
   error.x.label = t_label;
