@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -866,18 +867,25 @@ void Explorer::export_section() {
   int w = 0, h = 0;
   const bool size_ok = read_figure_size(figure_size_, w, h);
   if (!figures.empty()) {
-    if (ImGui::Button("PNG")) {
-      const std::string name = figures[export_figure_].name;
-      const std::string path = path_or(session_->name() + "_" + name + ".png");
-      done(size_ok ? save_figure(name, path, w, h) : kFigureSizeRule, path);
+    // the figure as a PNG, or as vectors for slides and papers
+    for (const render::FigureFormat format :
+         {render::FigureFormat::kPng, render::FigureFormat::kSvg, render::FigureFormat::kPdf}) {
+      const std::string ext(render::figure_format_name(format));
+      std::string label = ext;
+      for (char& c : label) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if (ImGui::Button(label.c_str())) {
+        const std::string name = figures[export_figure_].name;
+        const std::string path = path_or(session_->name() + "_" + name + "." + ext);
+        done(size_ok ? save_figure(name, path, format, w, h) : kFigureSizeRule, path);
+      }
+      ImGui::SameLine();
     }
-    ImGui::SameLine();
   }
   if (ImGui::Button("View PNG")) {
     const std::string path = path_or(session_->name() + "_view.png");
     done(size_ok ? save_view(path, w, h) : kFigureSizeRule, path);
   }
-  ImGui::SameLine();
+  // the numbers and the motion on a line of their own: the figures' row is full
   if (ImGui::Button("JSON")) {
     const std::string path = path_or(session_->name() + ".json");
     done(export_json(path), path);
@@ -928,12 +936,14 @@ std::string Explorer::command_line() const {
   return line;
 }
 
-std::string Explorer::save_figure(const std::string& name, const std::string& path, int w, int h) {
+std::string Explorer::save_figure(const std::string& name, const std::string& path,
+                                  render::FigureFormat format, int w, int h) {
   session_->wait();  // the figure the command line draws, from the whole report
   const lab::NamedFigure* f = figure_named(*session_, name);
   if (f == nullptr) return "save-figure: " + session_->name() + " has no figure named " + name;
   try {
-    std::visit([&](const auto& figure) { render::save_png(figure, path, w, h); }, f->figure);
+    std::visit([&](const auto& figure) { render::save_figure(figure, path, format, w, h); },
+               f->figure);
   } catch (const std::exception& e) {
     return std::string(e.what());
   }

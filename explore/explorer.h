@@ -17,6 +17,7 @@
 
 #include "common/registry.h"
 #include "orbit.h"
+#include "rigid/render/figure_format.h"
 #include "rigid/render/live.h"
 #include "rigid/render/rect.h"
 
@@ -102,7 +103,8 @@ class Explorer {
   std::vector<std::string> scene_parts() const;
 
   // Exports, each through the lab's own writers; "" or the error.
-  std::string save_figure(const std::string& name, const std::string& path, int w, int h);
+  std::string save_figure(const std::string& name, const std::string& path,
+                          render::FigureFormat format, int w, int h);
   std::string save_view(const std::string& path, int w, int h);
   std::string export_json(const std::string& path);
   std::string export_csv(const std::string& path);

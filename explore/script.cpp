@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -240,7 +241,12 @@ bool Script::step(Explorer& e) {
       e.screenshot_path_ = w[1];
     } else if (op == "save-figure") {
       int width = 0, height = 0;
-      if (size_of(3, width, height)) exported(e.save_figure(w[1], w[2], width, height));
+      // the file's ending names the format: .svg, .pdf, or a PNG
+      const std::string ext = std::filesystem::path(w[2]).extension().string();
+      const auto format = render::figure_format_named(ext.empty() ? "" : ext.substr(1));
+      if (size_of(3, width, height))
+        exported(
+            e.save_figure(w[1], w[2], format.value_or(render::FigureFormat::kPng), width, height));
     } else if (op == "save-view") {
       int width = 0, height = 0;
       if (size_of(2, width, height)) exported(e.save_view(w[1], width, height));

@@ -17,7 +17,8 @@
 //   frames 3                  draws 3 frames
 //   wait 5                    5 s of wall time, the window live (a person or xdotool acts)
 //   screenshot FILE           the window as a PNG
-//   save-figure NAME FILE [WxH]   a figure of the lab, as its --figures writes it
+//   save-figure NAME FILE [WxH]   a figure of the lab, as its --figures writes it (.svg and
+//                                 .pdf as vectors, any other name a PNG)
 //   save-view FILE [WxH]      the scene as shown (time, view) at a size
 //   export-json FILE | export-csv FILE | record FILE (.mp4 or .webp, as --animate)
 //   print-command | print-json   to stdout

@@ -14,6 +14,7 @@ RIGID_PACKAGES=(
   libgsl-dev python3-scipy python3-matplotlib python3-mpmath python3-jsonschema help2man
   libwebp-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libglfw3-dev libimgui-dev xvfb xauth xdotool
+  libcairo2-dev librsvg2-bin poppler-utils
   clang-format emscripten file
 )
 

@@ -138,7 +138,8 @@ void check_scripted_session(const std::string& lab) {
                        "frames 2\n"
                        "screenshot " +
                        (dir / "shot.png").string() + "\nsave-figure " + figure + " " +
-                       (dir / "explorer.png").string() + " 800x600\nexport-json " +
+                       (dir / "explorer.png").string() + " 800x600\nsave-figure " + figure + " " +
+                       (dir / "explorer.pdf").string() + " 800x600\nexport-json " +
                        (dir / "explorer.json").string() + "\n";
   if (session->has_time_series()) script += "export-csv " + (dir / "explorer.csv").string() + "\n";
   script += "print-command\nquit\n";
@@ -172,6 +173,8 @@ void check_scripted_session(const std::string& lab) {
       rigid::render::read_png((dir / "cli" / (lab + "_" + figure + ".png")).string());
   CHECK(drawn.width == 800);
   CHECK(rigid::render::mismatch(drawn, by_cli).empty());
+  // the same figure as a PDF (its drawing against the PNG's: figure_test.cpp)
+  CHECK(read_file(dir / "explorer.pdf").rfind("%PDF-", 0) == 0);
   if (session->has_time_series()) {
     CHECK(read_file(dir / "explorer.csv") == read_file(dir / "cli.csv"));
   }

@@ -121,6 +121,95 @@ TEST_CASE("figures: every lab matches its goldens") {
   }
 }
 
+namespace {
+
+// Runs a command line (paths quoted by the caller); its exit status.
+int shell(const std::string& command) {
+  return std::system((command + " >/dev/null 2>&1").c_str());
+}
+
+std::string quoted(const fs::path& p) {
+  return "'" + p.string() + "'";
+}
+
+// What pdftotext reads of a PDF: its text, if its text is text.
+std::string pdf_text(const fs::path& pdf) {
+  const fs::path txt = fs::path(pdf).replace_extension(".txt");
+  REQUIRE(shell(std::string(RIGID_PDFTOTEXT) + " -enc UTF-8 " + quoted(pdf) + " " + quoted(txt)) ==
+          0);
+  return read_text(txt);
+}
+
+// A lab's figures as SVG and as PDF (--figure-format, the lab's own process), rendered back
+// to pixels by librsvg and by poppler, draw what its committed PNGs do: the same layout,
+// text, colours and curves, by the rule for another rasteriser (image_match.h). A plot is
+// vectors with its text as text; a 3D scene one image of the PNG's pixels.
+void check_lab_vectors(const std::string& lab) {
+  const fs::path root = fs::path(RIGID_BINARY_DIR) / "figure-actual" / (lab + "-vector");
+  fs::remove_all(root);
+  for (const char* format : {"svg", "pdf"}) {
+    INFO(format);
+    const fs::path dir = root / format;
+    const auto run = run_lab(
+        lab, std::string("--json --figure-format ") + format + " --figures " + dir.string());
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    const auto j = run.json();
+    std::set<std::string> drawn;
+    for (const auto& name : j["figures"]) {
+      const fs::path file = dir / name.get<std::string>();
+      INFO(file.filename().string());
+      REQUIRE(file.extension() == std::string(".") + format);
+      drawn.insert(file.stem().string() + ".png");
+      const fs::path pixels = fs::path(file).replace_extension(".png");
+      const std::string render =
+          std::string(format) == "svg"
+              ? std::string(RIGID_RSVG_CONVERT) + " " + quoted(file) + " -o " + quoted(pixels)
+              : std::string(RIGID_PDFTOCAIRO) + " -png -r 96 -singlefile " + quoted(file) + " " +
+                    quoted(fs::path(pixels).replace_extension(""));
+      REQUIRE(shell(render) == 0);
+      const auto expected = rigid::render::read_png(
+          (fs::path(RIGID_SOURCE_DIR) / "figures" / pixels.filename()).string());
+      const auto actual = rigid::render::read_png(pixels.string());
+      REQUIRE(actual.width == expected.width);
+      REQUIRE(actual.height == expected.height);
+      const std::string why = mismatch(actual, expected, rigid::render::kAcrossRasterisers);
+      if (!why.empty()) {
+        rigid::render::write_png(
+            rigid::render::difference_image(actual, expected, kChannelThreshold),
+            (fs::path(pixels).replace_extension(".diff.png")).string());
+      }
+      INFO(why);
+      CHECK(why.empty());
+      // Vectors, and text a reader can select and search: a scene is one image, a plot
+      // none; the lab's name (the title's first word) is text in either.
+      const std::string bytes = read_text(file);
+      const bool scene = bytes.find("<image") != std::string::npos ||
+                         bytes.find("/Subtype /Image") != std::string::npos;
+      if (std::string(format) == "svg") {
+        const bool has_text = bytes.find("<text") != std::string::npos;
+        CHECK(has_text != scene);
+        if (!scene)
+          CHECK(bytes.find(">" + std::string(1, lab[0]) + "</tspan>") != std::string::npos);
+      } else if (!scene) {
+        CHECK(pdf_text(file).find(lab + ":") != std::string::npos);
+      }
+    }
+    // every golden has its vector twin
+    CHECK(drawn == goldens_of(lab));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("figures: the SVG and PDF figures of every lab draw what its PNGs show") {
+  for (const std::string& lab : all_labs()) {
+    DYNAMIC_SECTION(lab) {
+      check_lab_vectors(lab);
+    }
+  }
+}
+
 TEST_CASE("figures: without a GL context the numbers still print, with one error line") {
   const fs::path dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / "no-context";
   fs::remove_all(dir);
@@ -221,6 +310,8 @@ TEST_CASE("figures: the comparison itself fails on what a reader would see chang
   for (const auto& a : altered) {
     INFO(a.what);
     CHECK_FALSE(mismatch(a.image, golden).empty());
+    // and another rasteriser's looser rule (vector figures) still sees each
+    CHECK_FALSE(mismatch(a.image, golden, rigid::render::kAcrossRasterisers).empty());
   }
   // A band of the plot (curves and all) moved by 2 px, as another CPU's rounding of
   // roundoff-level data could move a curve, is no change a reader sees.

@@ -19,6 +19,7 @@
 #include "common/output_paths.h"
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
+#include "rigid/render/figure_format.h"
 
 #if RIGID_HAVE_RENDER
 #include "rigid/render/context.h"
@@ -120,6 +121,10 @@ class Command {
     return slot.cli->count() > 0 || (slot.old != nullptr && slot.old->count() > 0);
   }
   void draw_figures(const Computed& computed);
+  /// ".png", ".svg" or ".pdf": the figure files' ending.
+  std::string figure_extension() const {
+    return "." + std::string(render::figure_format_name(figure_format_));
+  }
   void animate(const Computed& computed);
   std::vector<double> animation_times(double motion_seconds) const;
 
@@ -130,6 +135,8 @@ class Command {
   bool figures_failed_ = false;
   std::vector<fs::path> created_dirs_;  ///< by --figures, deepest first
   std::string figures_dir_, figure_size_ = "1600x1200", figure_prefix_, csv_path_;
+  std::string figure_format_name_ = "png";
+  render::FigureFormat figure_format_ = render::FigureFormat::kPng;
   int figure_width_ = 1600, figure_height_ = 1200;
   std::string animation_path_, animation_size_ = "1280x720";
   double animation_fps_ = 30.0, animation_duration_ = 10.0;
@@ -153,8 +160,19 @@ Command::Command(const std::string& name, const std::string& title,
                 "open this lab live in a window with the inputs given (rigidlab-explore)");
   app_.add_flag("--timing", timing_,
                 "with --json: the wall time of each figure and where it went, for bench/");
-  app_.add_option("--figures", figures_dir_, "write this lab's PNG figures into DIR")
-      ->type_name("DIR");
+  app_.add_option("--figures", figures_dir_, "write this lab's figures into DIR")->type_name("DIR");
+  app_.add_option("--figure-format", figure_format_name_,
+                  "png, or svg or pdf for slides and papers (a plot's lines and text as vectors, "
+                  "a 3D scene as its image at --figure-size)")
+      ->type_name("FORMAT")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [this](std::string& text) -> std::string {
+            const auto format = render::figure_format_named(text);
+            if (format) figure_format_ = *format;
+            return format ? "" : "must be png, svg or pdf (got '" + text + "')";
+          },
+          ""));
   // The figure style is laid out for 800x600 and up; 8192 bounds memory.
   app_.add_option("--figure-size", figure_size_, "figure size in pixels, 800x600 to 8192x8192")
       ->type_name("WxH")
@@ -466,6 +484,7 @@ void Command::check_output_paths() const {
   }
   if (!figures_dir_.empty()) {
     // a figure's file: PREFIX + LAB + "_" + its name (a word of at most 32 bytes) + ".png",
+    // ".svg" or ".pdf",
     // within NAME_MAX by --figure-prefix's rule
     const std::size_t longest_figure = figure_prefix_.size() + name_.size() + 1 + 32 + 4;
     check_output_dir("--figures", figures_dir_, longest_figure);
@@ -477,7 +496,7 @@ void Command::check_output_paths() const {
   }
   const bool animation = animation_enabled_ && app_.count("--animate") > 0;
   check_distinct_outputs(csv ? csv_path_ : "", animation ? animation_path_ : "", figures_dir_,
-                         figure_prefix_ + name_ + "_");
+                         figure_prefix_ + name_ + "_", figure_extension());
 }
 
 void Command::parse(int argc, char** argv) {
@@ -649,7 +668,7 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
 
 // ---- Figures ----------------------------------------------------------------
 
-// The figures as PNG files <prefix><lab>_<name>.png in the --figures directory.
+// The figures as files <prefix><lab>_<name>.<format> in the --figures directory.
 class Command::FigureFiles : public FigureSink {
  public:
   FigureFiles(Command& command, const Report& report) : command_(command), report_(report) {}
@@ -673,7 +692,7 @@ template <class Figure>
 void Command::FigureFiles::save(const std::string& name, const std::string& caption,
                                 const Figure& figure) {
   Command& c = command_;
-  const std::string file = c.figure_prefix_ + c.name_ + "_" + name + ".png";
+  const std::string file = c.figure_prefix_ + c.name_ + "_" + name + c.figure_extension();
   const fs::path path = fs::path(c.figures_dir_) / file;
   if (fs::is_directory(path)) {
     throw InputError("--figures", "'" + path.string() + "' is a directory, not a figure");
@@ -682,8 +701,8 @@ void Command::FigureFiles::save(const std::string& name, const std::string& capt
 #if RIGID_HAVE_RENDER
   // --timing: where each figure's time went (the phases wait for the GL to finish each)
   render::FigureTiming phases;
-  render::save_png(figure, path.string(), c.figure_width_, c.figure_height_,
-                   c.timing_ ? &phases : nullptr);
+  render::save_figure(figure, path.string(), c.figure_format_, c.figure_width_, c.figure_height_,
+                      c.timing_ ? &phases : nullptr);
   if (c.timing_) {
     c.figure_phases_[file] = {{"setup", phases.setup},
                               {"layout", phases.layout},
@@ -836,7 +855,7 @@ void Command::animate(const Computed& computed) {
                  {"bytes", bytes},
                  {"seconds", seconds}};
     if (!motion.still.empty()) {
-      animation["still"] = figure_prefix_ + name_ + "_" + motion.still + ".png";
+      animation["still"] = figure_prefix_ + name_ + "_" + motion.still + figure_extension();
     }
     if (timing_) {
       animation["phases"] = {

@@ -125,7 +125,8 @@ bool within(const fs::path& inner, const fs::path& outer) {
 }  // namespace
 
 void check_distinct_outputs(const std::string& csv, const std::string& animation,
-                            const std::string& figures_dir, const std::string& figure_stem) {
+                            const std::string& figures_dir, const std::string& figure_stem,
+                            const std::string& figure_extension) {
   if (!csv.empty() && !animation.empty() && place(csv) == place(animation)) {
     throw InputError("--animate", "'" + quoted_text(animation) +
                                       "' is the file --csv writes; give each its own");
@@ -141,11 +142,12 @@ void check_distinct_outputs(const std::string& csv, const std::string& animation
                                         quoted_text(name) + "')");
     }
     const std::string leaf = file.filename().string();
-    if (file.parent_path() == figures && leaf.rfind(figure_stem, 0) == 0 && leaf.size() >= 4 &&
-        leaf.compare(leaf.size() - 4, 4, ".png") == 0) {
+    const std::size_t ext = figure_extension.size();
+    if (file.parent_path() == figures && leaf.rfind(figure_stem, 0) == 0 && leaf.size() >= ext &&
+        leaf.compare(leaf.size() - ext, ext, figure_extension) == 0) {
       throw InputError(option, "'" + quoted_text(name) +
                                    "' is where --figures writes its figures (" +
-                                   quoted_text(figure_stem) + "*.png in '" +
+                                   quoted_text(figure_stem) + "*" + figure_extension + " in '" +
                                    quoted_text(figures_dir) + "'); give another name");
     }
   }

@@ -22,8 +22,10 @@ void check_animation_file(const std::string& option, const std::string& path);
 
 /// The run's outputs are different places (each "" if not asked for): --csv and
 /// --animate not the same file, neither where --figures writes a figure (a name
-/// `figure_stem`*.png in that directory), and the directory not inside either file.
+/// `figure_stem`*`figure_extension`, e.g. "poinsot_*.png", in that directory), and the
+/// directory not inside either file.
 void check_distinct_outputs(const std::string& csv, const std::string& animation,
-                            const std::string& figures_dir, const std::string& figure_stem);
+                            const std::string& figures_dir, const std::string& figure_stem,
+                            const std::string& figure_extension);
 
 }  // namespace rigid::lab

@@ -3,7 +3,7 @@
 //
 //   rigidlab list                                  each lab and its sections
 //   rigidlab poinsot --omega 1,2,3                 a lab, with its own options
-//   rigidlab figures --out DIR [--figure-size WxH] [--figure-prefix P]
+//   rigidlab figures --out DIR [--figure-size WxH] [--figure-prefix P] [--figure-format F]
 //   rigidlab --version
 //
 // The labs are the executables beside this one (bin/ when installed, build/labs/
@@ -262,7 +262,8 @@ class Staging {
 };
 
 // Every lab's figures into `out`, as many labs at once as there are processors.
-int figures(const std::string& out, const std::string& size, const std::string& prefix) {
+int figures(const std::string& out, const std::string& size, const std::string& prefix,
+            const std::string& format) {
   forward_signals();
   const Staging stage(out);
   const auto end_if_signalled = [&] {
@@ -275,7 +276,8 @@ int figures(const std::string& out, const std::string& size, const std::string& 
   // lab says why, by its own rules.
   std::error_code ignored;
   fs::create_directories(stage.dir(), ignored);
-  std::vector<std::string> args{"--quiet", "--figures", stage.dir(), "--figure-size", size};
+  std::vector<std::string> args{"--quiet", "--figures",       stage.dir(), "--figure-size",
+                                size,      "--figure-format", format};
   if (!prefix.empty()) args.insert(args.end(), {"--figure-prefix", prefix});
   // The first lab alone: it checks the options by the labs' own rules, so bad ones are
   // one line and exit status 2 here, not one failure per lab.
@@ -361,7 +363,7 @@ void usage(std::ostream& os) {
      << "Usage:\n"
      << "  rigidlab list [--names]        each lab and its sections\n"
      << "  rigidlab LAB [options]         run a lab (rigidlab LAB --help for its options)\n"
-     << "  rigidlab figures --out DIR [--figure-size WxH] [--figure-prefix P]\n"
+     << "  rigidlab figures --out DIR [--figure-size WxH] [--figure-prefix P] [--figure-format F]\n"
      << "                                 every lab's figures into DIR\n"
      << "  rigidlab explore [LAB] [options]  a lab live in a window (rigidlab-explore --help)\n"
      << "  rigidlab --version             the version\n";
@@ -399,11 +401,13 @@ int run(int argc, char** argv) {
   }
   if (command == "figures") {
     CLI::App app("every lab's figures into one folder", "rigidlab figures");
-    std::string out, size = "1600x1200", prefix;
+    std::string out, size = "1600x1200", prefix, format = "png";
     app.add_option("--out", out, "the folder for the figures (made if missing)")->required();
     app.add_option("--figure-size", size, "figure size in pixels, 800x600 to 8192x8192")
         ->capture_default_str();
     app.add_option("--figure-prefix", prefix, "prefix of the figure files' names");
+    app.add_option("--figure-format", format, "png, svg or pdf (vectors for slides and papers)")
+        ->capture_default_str();
     try {
       app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
     } catch (const CLI::ParseError& e) {
@@ -411,7 +415,7 @@ int run(int argc, char** argv) {
       std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(e.what()) << "\n";
       return 2;
     }
-    return figures(out, size, prefix);
+    return figures(out, size, prefix, format);
   }
   if (command == "explore") {
     const fs::path path = rigid::support::explorer_path();

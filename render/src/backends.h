@@ -1,6 +1,9 @@
-// Internal: the two ways to get a GL context. Each returns the backend's
-// GetProcAddress once its context is current, or nullptr with `error` set.
+// Internal: the libraries opened on first use (dlopen), and the two ways to get a GL
+// context. Each of those returns the backend's GetProcAddress once its context is
+// current, or nullptr with `error` set.
 #pragma once
+
+#include <dlfcn.h>
 
 #include <initializer_list>
 #include <string>
@@ -12,6 +15,13 @@ using GlProcLoader = GlProc (*)(const char*);
 
 /// dlopen()s the first of `names` that loads; nullptr with `error` naming `what` if none does.
 void* open_library(std::initializer_list<const char*> names, const char* what, std::string& error);
+
+/// Looks up `name` in `lib` into `fn`; false if it is missing.
+template <class F>
+bool bind_symbol(void* lib, const char* name, F& fn) {
+  fn = reinterpret_cast<F>(dlsym(lib, name));
+  return fn != nullptr;
+}
 
 /// Makes an OSMesa GL 3.3+ core context current (tiny dummy buffer; drawing goes to FBOs).
 GlProcLoader make_osmesa_context(std::string& error);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -14,6 +15,7 @@ namespace rigid::render::detail {
 /// y up).
 struct PlacedGlyph {
   std::uint32_t glyph = 0;  ///< FreeType glyph index
+  char32_t code = 0;        ///< the character it draws
   int size_px = 0;          ///< pixel size it is rasterised at
   double x = 0, y = 0;
 };
@@ -23,6 +25,9 @@ struct TextLayout {
   std::vector<PlacedGlyph> glyphs;
   TextExtent extent;
 };
+
+/// Appends a character to a UTF-8 string.
+void append_utf8(std::string& out, char32_t cp);
 
 /// Parses markup and places its glyphs at a font size (rounded to whole pixels).
 TextLayout layout_text(std::string_view markup, double size_px);

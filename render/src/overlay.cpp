@@ -59,7 +59,7 @@ DashPattern dash_pattern(Dash d, double width, const Style& st) {
 }
 
 namespace {
-void marker_shape(Painter& p, Marker m, double x, double y, double r, Color c) {
+void marker_shape(Canvas& p, Marker m, double x, double y, double r, Color c) {
   switch (m) {
     case Marker::kNone:
       break;
@@ -78,7 +78,7 @@ void marker_shape(Painter& p, Marker m, double x, double y, double r, Color c) {
 
 // A marker with a contrasting edge, white round a dark one and dark round a light one,
 // so it stays visible on a curve of its own colour.
-void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c) {
+void draw_marker(Canvas& p, Marker m, double x, double y, double size, Color c) {
   const double r = 0.5 * size, edge = std::max(1.5, 0.2 * r);
   const double luminance = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
   const Color rim = luminance < 0.6 ? kWhite : kTextColor;
@@ -87,13 +87,8 @@ void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c)
 }
 
 ScreenRect text_box(const TextExtent& e, double x, double y, HAlign h, VAlign v) {
-  const double x0 = h == HAlign::kLeft ? x : h == HAlign::kCenter ? x - 0.5 * e.width : x - e.width;
-  // The baseline's distance below the anchor, as Painter::text computes it.
-  const double base = v == VAlign::kTop        ? e.ascent
-                      : v == VAlign::kCenter   ? 0.5 * (e.ascent - e.descent)
-                      : v == VAlign::kBaseline ? 0
-                                               : -e.descent;
-  return {x0, y + base - e.ascent, x0 + e.width, y + base + e.descent};
+  const double x0 = x + text_start_offset(e, h), base = y + text_baseline_offset(e, v);
+  return {x0, base - e.ascent, x0 + e.width, base + e.descent};
 }
 
 // ---- Title -------------------------------------------------------------------
@@ -163,7 +158,7 @@ TitleBlock layout_title(const std::string& markup, double size, double left, dou
   return t;
 }
 
-void draw_title(Painter& p, const TitleBlock& t, Color color) {
+void draw_title(Canvas& p, const TitleBlock& t, Color color) {
   const double x = 0.5 * (t.box.x0 + t.box.x1);
   for (std::size_t i = 0; i < t.lines.size(); ++i)
     p.text(t.lines[i], x, t.box.y0 + i * t.line_step, t.size, color, HAlign::kCenter, VAlign::kTop);
@@ -186,7 +181,7 @@ LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& 
   return z;
 }
 
-void draw_legend(Painter& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
+void draw_legend(Canvas& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
                  const Style& st) {
   if (entries.empty() || box.empty()) return;
   const LegendSize z = measure_legend(entries, st);

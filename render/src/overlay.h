@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "painter.h"
+#include "canvas.h"
 #include "rigid/render/palette.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/rect.h"
@@ -53,7 +53,7 @@ Style figure_style(int width, int height);
 /// Dash pattern in pixels for a line of a width.
 DashPattern dash_pattern(Dash dash, double width, const Style& st);
 /// Draws a marker symbol of a diameter centred at (x, y).
-void draw_marker(Painter& p, Marker m, double x, double y, double size, Color c);
+void draw_marker(Canvas& p, Marker m, double x, double y, double size, Color c);
 
 /// The largest font size up to `size` at which markup fits in max_width (glyphs snap to whole
 /// pixel sizes, so a proportional shrink alone can overshoot).
@@ -77,7 +77,7 @@ std::vector<std::string> split_title(std::string_view markup, double size);
 TitleBlock layout_title(const std::string& markup, double size, double left, double right,
                         double centre, double top);
 /// Draws a laid-out title.
-void draw_title(Painter& p, const TitleBlock& title, Color color = kTextColor);
+void draw_title(Canvas& p, const TitleBlock& title, Color color = kTextColor);
 
 /// One legend row: a swatch (a line with dash and marker, or a filled box) and its label.
 struct LegendEntry {
@@ -98,10 +98,10 @@ struct LegendSize {
 /// Measures the legend box for a list of entries.
 LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& st);
 /// Draws a legend's entries in a box of the measured size.
-void draw_legend(Painter& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
+void draw_legend(Canvas& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
                  const Style& st);
 
-/// The box of a text at an anchor, as Painter::text places it (horizontal text).
+/// The box of a text at an anchor, as Canvas::text places it (horizontal text).
 ScreenRect text_box(const TextExtent& e, double x, double y, HAlign h, VAlign v);
 
 }  // namespace rigid::render::detail

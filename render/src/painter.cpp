@@ -316,16 +316,9 @@ TextExtent Painter::text(std::string_view markup, double x, double y, double siz
                          HAlign h, VAlign v, bool vertical, double depth) {
   const TextLayout lay = layout_text(markup, size);
   const TextExtent& e = lay.extent;
-  // Anchor offsets in the text's frame: ax along the baseline, ay down from the anchor to it.
-  const double ax = h == HAlign::kLeft ? 0 : h == HAlign::kCenter ? -0.5 * e.width : -e.width;
-  const double ay = v == VAlign::kTop        ? e.ascent
-                    : v == VAlign::kCenter   ? 0.5 * (e.ascent - e.descent)
-                    : v == VAlign::kBaseline ? 0
-                                             : -e.descent;
   // Whole-pixel origin keeps glyph texels aligned with pixels (crisp text).
-  // Vertical text is rotated 90° counter-clockwise: it reads upwards, glyph tops point left.
-  const double ox = vertical ? std::round(x + ay) : std::round(x + ax);
-  const double oy = vertical ? std::round(y - ax) : std::round(y + ay);
+  const Eigen::Vector2d origin = text_origin(e, x, y, h, v, vertical);
+  const double ox = origin.x(), oy = origin.y();
   Resources& res = resources();
   for (const PlacedGlyph& g : lay.glyphs) {
     const Atlas::Entry* a = res.atlas.get(g.glyph, g.size_px);

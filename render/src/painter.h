@@ -1,55 +1,41 @@
-// Internal: the batched 2D drawing layer shared by plots and scene overlays.
-// Coordinates are logical pixels with y down; an optional third coordinate is
-// NDC depth, so screen-space lines in 3D scenes are hidden behind surfaces.
-// Everything is triangles; thick lines are tessellated here with miter joins
-// (round where sharp) and MSAA smooths their edges.
+// Internal: the raster canvas, batched OpenGL triangles, shared by plots and scene
+// overlays. The third coordinate of a point is NDC depth, so screen-space lines in
+// 3D scenes are hidden behind surfaces. Everything is triangles; thick lines are
+// tessellated here with miter joins (round where sharp) and MSAA smooths their
+// edges.
 #pragma once
 
-#include <Eigen/Core>
 #include <string_view>
 #include <vector>
 
+#include "canvas.h"
 #include "gl.h"
-#include "rigid/render/palette.h"
-#include "rigid/render/text.h"
 
 namespace rigid::render::detail {
 
-/// Screen point: x, y in logical pixels (y down), z in NDC depth (0 for 2D).
-using P3 = Eigen::Vector3d;
-
-/// Dash pattern in pixels: alternating on/off lengths; empty is solid.
-using DashPattern = std::vector<double>;
-
-class Painter {
+class Painter final : public Canvas {
  public:
   /// Starts drawing on a width × height logical canvas (the target must be bound).
   void begin(int width, int height);
   /// Draws everything queued so far.
   void flush();
 
-  /// Restricts the following drawing to a rectangle (x0, y0, x1, y1); empty rect turns clipping
-  /// off.
-  void clip(double x0, double y0, double x1, double y1);
-  void no_clip();
-  /// Enables the depth test for the following drawing (3D overlays).
-  void depth_test(bool on);
+  void clip(double x0, double y0, double x1, double y1) override;
+  void no_clip() override;
+  void depth_test(bool on) override;
 
-  void triangle(const P3& a, const P3& b, const P3& c, Color color);
-  void rect(double x0, double y0, double x1, double y1, Color color);
-  /// Outline of a rectangle with a stroke width (drawn inside-centred).
-  void rect_outline(double x0, double y0, double x1, double y1, double width, Color color);
-  /// Filled convex polygon (fan).
-  void convex(const std::vector<P3>& pts, Color color);
-  /// Filled disc.
-  void disc(const P3& c, double radius, Color color);
-  /// Thick polyline with miter/round joins; round_caps also makes dotted patterns round.
+  void triangle(const P3& a, const P3& b, const P3& c, Color color) override;
+  void rect(double x0, double y0, double x1, double y1, Color color) override;
+  void rect_outline(double x0, double y0, double x1, double y1, double width, Color color) override;
+  /// A fan of triangles.
+  void convex(const std::vector<P3>& pts, Color color) override;
+  void disc(const P3& c, double radius, Color color) override;
+  /// Miter joins, round where the turn is sharp.
   void polyline(const std::vector<P3>& pts, double width, Color color, const DashPattern& dash = {},
-                bool round_caps = false);
-  /// Text (markup) anchored at (x, y); rotated 90° counter-clockwise when vertical.
+                bool round_caps = false) override;
   TextExtent text(std::string_view markup, double x, double y, double size, Color color,
                   HAlign h = HAlign::kLeft, VAlign v = VAlign::kBaseline, bool vertical = false,
-                  double depth = 0);
+                  double depth = 0) override;
 
  private:
   struct Vertex {

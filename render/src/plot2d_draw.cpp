@@ -129,7 +129,7 @@ class PanelPlan {
     return out;
   }
 
-  void draw(detail::Painter& p) const {
+  void draw(detail::Canvas& p) const {
     background(p);
     data(p);
     frame_and_ticks(p);
@@ -528,7 +528,7 @@ class PanelPlan {
 
   // ---- Drawing -----------------------------------------------------------
 
-  void background(detail::Painter& p) const {
+  void background(detail::Canvas& p) const {
     p.clip(rect_.x0, rect_.y0, rect_.x1, rect_.y1);
     for (const Span& s : pn_.spans) {
       const Color c = s.color.with_alpha(s.opacity);
@@ -546,7 +546,7 @@ class PanelPlan {
         p.rect(rect_.x0, ym_(v) - 0.5 * gw, rect_.x1, ym_(v) + 0.5 * gw, detail::kGridColor);
   }
 
-  void data(detail::Painter& p) const {
+  void data(detail::Canvas& p) const {
     // Bands first (translucent, under the lines), as quads between consecutive samples.
     for (std::size_t b = 0; b < pn_.bands.size(); ++b) {
       const Band& band = pn_.bands[b];
@@ -617,7 +617,7 @@ class PanelPlan {
     annotations(p);
   }
 
-  void annotations(detail::Painter& p) const {
+  void annotations(detail::Canvas& p) const {
     for (std::size_t k = 0; k < pn_.annotations.size(); ++k) {
       const Annotation& a = pn_.annotations[k];
       const ScreenRect& b = note_boxes_[k];
@@ -645,7 +645,7 @@ class PanelPlan {
     }
   }
 
-  void frame_and_ticks(detail::Painter& p) const {
+  void frame_and_ticks(detail::Canvas& p) const {
     const double fw = st_.frame_width;
     p.rect_outline(rect_.x0 - fw, rect_.y0 - fw, rect_.x1 + fw, rect_.y1 + fw, fw,
                    detail::kAxisColor);
@@ -674,7 +674,7 @@ class PanelPlan {
     }
   }
 
-  void labels(detail::Painter& p) const {
+  void labels(detail::Canvas& p) const {
     if (!pn_.x.label.empty()) {
       const double half = 0.5 * measure_text(pn_.x.label, xlabel_size_).width + st_.pad;
       const double x = clamp_safe(0.5 * (rect_.x0 + rect_.x1), cell_.x0 + half, cell_.x1 - half);
@@ -745,6 +745,17 @@ Plot2D::Layout layout(const Plot2D& plot, int width, int height) {
   return out;
 }
 
+namespace {
+void draw_planned(const FigurePlan& fp, detail::Canvas& canvas) {
+  detail::draw_title(canvas, fp.title);
+  for (const PanelPlan& panel : fp.panels) panel.draw(canvas);
+}
+}  // namespace
+
+void detail::draw_plot(const Plot2D& plot, int width, int height, Canvas& canvas) {
+  draw_planned(plan_figure(plot, width, height), canvas);
+}
+
 void detail::render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock) {
   const FigurePlan fp = plan_figure(plot, width, height);
   clock.lap(&FigureTiming::layout);
@@ -753,8 +764,7 @@ void detail::render_into_target(const Plot2D& plot, int width, int height, Phase
   clock.lap(&FigureTiming::setup, true);
   detail::Painter& p = detail::painter();
   p.begin(width, height);
-  detail::draw_title(p, fp.title);
-  for (const PanelPlan& panel : fp.panels) panel.draw(p);
+  draw_planned(fp, p);
   p.flush();
   clock.lap(&FigureTiming::draw, true);
 }

@@ -225,6 +225,10 @@ class Parser {
   std::size_t pos_ = 0;
 };
 
+}  // namespace
+
+namespace detail {
+
 void append_utf8(std::string& out, char32_t cp) {
   if (cp < 0x80) {
     out += static_cast<char>(cp);
@@ -242,10 +246,6 @@ void append_utf8(std::string& out, char32_t cp) {
     out += static_cast<char>(0x80 | (cp & 0x3F));
   }
 }
-
-}  // namespace
-
-namespace detail {
 
 TextLayout layout_text(std::string_view markup, double size_px) {
   const std::vector<Item> items = Parser(markup).parse();
@@ -265,7 +265,7 @@ TextLayout layout_text(std::string_view markup, double size_px) {
     const double px_per_unit = size / f.units();
     if (prev != 0 && prev_level == it.level) pen += f.kerning(prev, g.index) * px_per_unit;
     const double y = it.shift * em;
-    out.glyphs.push_back({g.index, size, pen, y});
+    out.glyphs.push_back({g.index, it.cp, size, pen, y});
     if (it.level != 0) {
       // Scripts may reach above the ascender or below the descender.
       asc = std::max(asc, y + f.ascender() / f.units() * size);
@@ -278,7 +278,7 @@ TextLayout layout_text(std::string_view markup, double size_px) {
       const double dx = cx - 0.5 * (d.ink_x0 + d.ink_x1) * px_per_unit;
       const double top = y + g.ink_y1 * px_per_unit + 0.06 * size;
       const double dy = top - d.ink_y0 * px_per_unit;
-      out.glyphs.push_back({d.index, size, dx, dy});
+      out.glyphs.push_back({d.index, kDotAbove, size, dx, dy});
       asc = std::max(asc, dy + d.ink_y1 * px_per_unit);
     }
     pen += g.advance * px_per_unit;
@@ -316,8 +316,8 @@ std::string plain_text(std::string_view markup) {
     } else if (it.level != 0) {
       out += it.level < 0 ? '_' : '^';
     }
-    append_utf8(out, cp);
-    if (it.dot) append_utf8(out, kCombiningDot);
+    detail::append_utf8(out, cp);
+    if (it.dot) detail::append_utf8(out, kCombiningDot);
   }
   return out;
 }

@@ -46,12 +46,7 @@ std::optional<VideoFormat> video_format_for(const std::string& path) {
 
 namespace {
 
-// Looks up `name` in `lib` into `fn`; false if it is missing.
-template <class F>
-bool bind(void* lib, const char* name, F& fn) {
-  fn = reinterpret_cast<F>(dlsym(lib, name));
-  return fn != nullptr;
-}
+using detail::bind_symbol;
 
 // One encoding, fed frames in order on the worker thread, writing into the file
 // it is given before the first frame.
@@ -89,16 +84,17 @@ const WebpApi& webp_api() {
                      : nullptr;
     if (!mux) throw std::runtime_error(error);
     WebpApi a;
-    const bool ok = bind(mux, "WebPAnimEncoderOptionsInitInternal", a.options_init) &&
-                    bind(mux, "WebPAnimEncoderNewInternal", a.encoder_new) &&
-                    bind(mux, "WebPAnimEncoderAdd", a.add) &&
-                    bind(mux, "WebPAnimEncoderAssemble", a.assemble) &&
-                    bind(mux, "WebPAnimEncoderGetError", a.get_error) &&
-                    bind(mux, "WebPAnimEncoderDelete", a.encoder_delete) &&
-                    bind(webp, "WebPConfigInitInternal", a.config_init) &&
-                    bind(webp, "WebPPictureInitInternal", a.picture_init) &&
-                    bind(webp, "WebPPictureImportRGB", a.import_rgb) &&
-                    bind(webp, "WebPPictureFree", a.picture_free) && bind(webp, "WebPFree", a.free);
+    const bool ok = bind_symbol(mux, "WebPAnimEncoderOptionsInitInternal", a.options_init) &&
+                    bind_symbol(mux, "WebPAnimEncoderNewInternal", a.encoder_new) &&
+                    bind_symbol(mux, "WebPAnimEncoderAdd", a.add) &&
+                    bind_symbol(mux, "WebPAnimEncoderAssemble", a.assemble) &&
+                    bind_symbol(mux, "WebPAnimEncoderGetError", a.get_error) &&
+                    bind_symbol(mux, "WebPAnimEncoderDelete", a.encoder_delete) &&
+                    bind_symbol(webp, "WebPConfigInitInternal", a.config_init) &&
+                    bind_symbol(webp, "WebPPictureInitInternal", a.picture_init) &&
+                    bind_symbol(webp, "WebPPictureImportRGB", a.import_rgb) &&
+                    bind_symbol(webp, "WebPPictureFree", a.picture_free) &&
+                    bind_symbol(webp, "WebPFree", a.free);
     if (!ok)
       throw std::runtime_error("libwebp is too old: an entry point of WebPAnimEncoder is missing");
     return a;
@@ -218,31 +214,36 @@ const AvApi& av_api() {
     if (!scale) throw std::runtime_error(error);
     AvApi a;
     const bool ok =
-        bind(codec, "avcodec_find_encoder_by_name", a.find_encoder) &&
-        bind(codec, "avcodec_alloc_context3", a.alloc_context) &&
-        bind(codec, "avcodec_open2", a.open) && bind(codec, "avcodec_send_frame", a.send_frame) &&
-        bind(codec, "avcodec_receive_packet", a.receive_packet) &&
-        bind(codec, "avcodec_free_context", a.free_context) &&
-        bind(codec, "avcodec_parameters_from_context", a.parameters_from_context) &&
-        bind(codec, "av_packet_alloc", a.packet_alloc) &&
-        bind(codec, "av_packet_free", a.packet_free) &&
-        bind(codec, "av_packet_rescale_ts", a.packet_rescale_ts) &&
-        bind(format, "avformat_alloc_output_context2", a.alloc_output) &&
-        bind(format, "avformat_new_stream", a.new_stream) &&
-        bind(format, "avformat_write_header", a.write_header) &&
-        bind(format, "av_interleaved_write_frame", a.write_frame) &&
-        bind(format, "av_write_trailer", a.write_trailer) &&
-        bind(format, "avformat_free_context", a.free_format) &&
-        bind(format, "avio_alloc_context", a.avio_alloc) &&
-        bind(format, "avio_context_free", a.avio_free) && bind(format, "avio_flush", a.flush_io) &&
-        bind(util, "av_frame_alloc", a.frame_alloc) &&
-        bind(util, "av_frame_get_buffer", a.frame_get_buffer) &&
-        bind(util, "av_frame_make_writable", a.frame_make_writable) &&
-        bind(util, "av_frame_free", a.frame_free) && bind(util, "av_malloc", a.malloc) &&
-        bind(util, "av_freep", a.freep) && bind(util, "av_opt_set", a.opt_set) &&
-        bind(util, "av_strerror", a.strerror) && bind(util, "av_log_set_level", a.log_set_level) &&
-        bind(scale, "sws_getContext", a.sws_get) && bind(scale, "sws_scale", a.scale) &&
-        bind(scale, "sws_freeContext", a.sws_free);
+        bind_symbol(codec, "avcodec_find_encoder_by_name", a.find_encoder) &&
+        bind_symbol(codec, "avcodec_alloc_context3", a.alloc_context) &&
+        bind_symbol(codec, "avcodec_open2", a.open) &&
+        bind_symbol(codec, "avcodec_send_frame", a.send_frame) &&
+        bind_symbol(codec, "avcodec_receive_packet", a.receive_packet) &&
+        bind_symbol(codec, "avcodec_free_context", a.free_context) &&
+        bind_symbol(codec, "avcodec_parameters_from_context", a.parameters_from_context) &&
+        bind_symbol(codec, "av_packet_alloc", a.packet_alloc) &&
+        bind_symbol(codec, "av_packet_free", a.packet_free) &&
+        bind_symbol(codec, "av_packet_rescale_ts", a.packet_rescale_ts) &&
+        bind_symbol(format, "avformat_alloc_output_context2", a.alloc_output) &&
+        bind_symbol(format, "avformat_new_stream", a.new_stream) &&
+        bind_symbol(format, "avformat_write_header", a.write_header) &&
+        bind_symbol(format, "av_interleaved_write_frame", a.write_frame) &&
+        bind_symbol(format, "av_write_trailer", a.write_trailer) &&
+        bind_symbol(format, "avformat_free_context", a.free_format) &&
+        bind_symbol(format, "avio_alloc_context", a.avio_alloc) &&
+        bind_symbol(format, "avio_context_free", a.avio_free) &&
+        bind_symbol(format, "avio_flush", a.flush_io) &&
+        bind_symbol(util, "av_frame_alloc", a.frame_alloc) &&
+        bind_symbol(util, "av_frame_get_buffer", a.frame_get_buffer) &&
+        bind_symbol(util, "av_frame_make_writable", a.frame_make_writable) &&
+        bind_symbol(util, "av_frame_free", a.frame_free) &&
+        bind_symbol(util, "av_malloc", a.malloc) && bind_symbol(util, "av_freep", a.freep) &&
+        bind_symbol(util, "av_opt_set", a.opt_set) &&
+        bind_symbol(util, "av_strerror", a.strerror) &&
+        bind_symbol(util, "av_log_set_level", a.log_set_level) &&
+        bind_symbol(scale, "sws_getContext", a.sws_get) &&
+        bind_symbol(scale, "sws_scale", a.scale) &&
+        bind_symbol(scale, "sws_freeContext", a.sws_free);
     if (!ok)
       throw std::runtime_error("FFmpeg's libraries are not the 5.1 series this was built for");
     // libx264's statistics and FFmpeg's notices would spill over the lab's output;

@@ -1,8 +1,8 @@
 // Drawing figures: where a Plot2D's or a Scene3D's parts land at a size, the
-// image they make and the PNG file it is written to. This header is the drawing
-// library (rigid::render_gl: OpenGL, FreeType, libpng); the descriptions it
-// draws (plot2d.h, scene3d.h) are the GL-free rigid::render, so a program that
-// only describes figures never meets a function it cannot link.
+// image they make and the file it is written to (PNG, or SVG and PDF as vectors). This header is
+// the drawing library (rigid::render_gl: OpenGL, FreeType, libpng); the descriptions it draws
+// (plot2d.h, scene3d.h) are the GL-free rigid::render, so a program that only describes figures
+// never meets a function it cannot link.
 //
 // The GL context is made on the first figure drawn; a layout needs fonts only.
 #pragma once
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/render/figure_format.h"
 #include "rigid/render/image.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/rect.h"
@@ -68,5 +69,16 @@ Image draw(const Scene3D& scene, int width = 1600, int height = 1200,
 /// Draws the scene and writes it as a PNG atomically (see png.h).
 void save_png(const Scene3D& scene, const std::string& path, int width = 1600, int height = 1200,
               FigureTiming* timing = nullptr);
+
+/// Writes the plot as a file of `format` atomically: a PNG of width × height pixels, or an
+/// SVG (width × height px) or a PDF (the same at 96 px to the inch: 0.75 pt a pixel) whose
+/// lines, fills and text are vectors, laid out exactly as the PNG. Throws
+/// std::runtime_error if it cannot (e.g. no libcairo for a vector format).
+void save_figure(const Plot2D& plot, const std::string& path, FigureFormat format, int width = 1600,
+                 int height = 1200, FigureTiming* timing = nullptr);
+/// Writes the scene as a file of `format`: a PNG, or an SVG or a PDF of the same size
+/// holding its width × height image.
+void save_figure(const Scene3D& scene, const std::string& path, FigureFormat format,
+                 int width = 1600, int height = 1200, FigureTiming* timing = nullptr);
 
 }  // namespace rigid::render

@@ -1,0 +1,462 @@
+// Figures as SVG and PDF through cairo: a plot drawn on a CairoCanvas (paths for
+// lines and fills; text as text: in a PDF the figure's own font embedded, in an SVG
+// <text> of DejaVu Sans with every glyph placed where the layout put it), a 3D
+// scene as its raster image inside a page of the same size. libcairo (with the FreeType
+// it uses) is opened on the first vector figure, as OSMesa, EGL and the video
+// encoders are, so a process that never writes one never loads it.
+#include <cairo-ft.h>
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "backends.h"
+#include "canvas.h"
+#include "font.h"
+#include "rigid/render/atomic_file.h"
+#include "rigid/render/draw.h"
+#include "target.h"
+
+namespace rigid::render {
+
+namespace {
+
+using detail::bind_symbol;
+using detail::DashPattern;
+using detail::P3;
+
+// A pixel is 0.75 pt: a PDF page shows the figure at 96 pixels to the inch, as a browser
+// shows the SVG (whose unit is the pixel).
+constexpr double kPointsPerPixel = 0.75;
+
+struct CairoApi {
+  decltype(&cairo_svg_surface_create_for_stream) svg_create = nullptr;
+  decltype(&cairo_svg_surface_set_document_unit) svg_unit = nullptr;
+  decltype(&cairo_pdf_surface_create_for_stream) pdf_create = nullptr;
+  decltype(&cairo_pdf_surface_set_metadata) pdf_metadata = nullptr;
+  decltype(&cairo_surface_finish) surface_finish = nullptr;
+  decltype(&cairo_surface_status) surface_status = nullptr;
+  decltype(&cairo_surface_destroy) surface_destroy = nullptr;
+  decltype(&cairo_surface_flush) surface_flush = nullptr;
+  decltype(&cairo_surface_mark_dirty) surface_mark_dirty = nullptr;
+  decltype(&cairo_image_surface_create) image_create = nullptr;
+  decltype(&cairo_image_surface_get_data) image_data = nullptr;
+  decltype(&cairo_image_surface_get_stride) image_stride = nullptr;
+  decltype(&cairo_create) create = nullptr;
+  decltype(&cairo_destroy) destroy = nullptr;
+  decltype(&cairo_status) status = nullptr;
+  decltype(&cairo_status_to_string) status_string = nullptr;
+  decltype(&cairo_save) save = nullptr;
+  decltype(&cairo_restore) restore = nullptr;
+  decltype(&cairo_scale) scale = nullptr;
+  decltype(&cairo_translate) translate = nullptr;
+  decltype(&cairo_rotate) rotate = nullptr;
+  decltype(&cairo_set_source_rgba) set_rgba = nullptr;
+  decltype(&cairo_set_source_surface) set_surface = nullptr;
+  decltype(&cairo_paint) paint = nullptr;
+  decltype(&cairo_new_path) new_path = nullptr;
+  decltype(&cairo_move_to) move_to = nullptr;
+  decltype(&cairo_line_to) line_to = nullptr;
+  decltype(&cairo_close_path) close_path = nullptr;
+  decltype(&cairo_new_sub_path) new_sub_path = nullptr;
+  decltype(&cairo_arc) arc = nullptr;
+  decltype(&cairo_rectangle) rectangle = nullptr;
+  decltype(&cairo_fill) fill = nullptr;
+  decltype(&cairo_stroke) stroke = nullptr;
+  decltype(&cairo_clip) clip = nullptr;
+  decltype(&cairo_reset_clip) reset_clip = nullptr;
+  decltype(&cairo_set_fill_rule) set_fill_rule = nullptr;
+  decltype(&cairo_set_line_width) set_line_width = nullptr;
+  decltype(&cairo_set_line_join) set_line_join = nullptr;
+  decltype(&cairo_set_line_cap) set_line_cap = nullptr;
+  decltype(&cairo_set_dash) set_dash = nullptr;
+  decltype(&cairo_ft_font_face_create_for_ft_face) ft_face_create = nullptr;
+  decltype(&cairo_font_face_status) font_face_status = nullptr;
+  decltype(&cairo_set_font_face) set_font_face = nullptr;
+  decltype(&cairo_set_font_size) set_font_size = nullptr;
+  decltype(&cairo_font_options_create) options_create = nullptr;
+  decltype(&cairo_font_options_destroy) options_destroy = nullptr;
+  decltype(&cairo_font_options_set_hint_style) options_hint_style = nullptr;
+  decltype(&cairo_font_options_set_hint_metrics) options_hint_metrics = nullptr;
+  decltype(&cairo_set_font_options) set_font_options = nullptr;
+  decltype(&cairo_show_glyphs) show_glyphs = nullptr;
+  // The figure's font as a face of the FreeType libcairo itself links (a face of the
+  // renderer's own FreeType would be another library's object to it).
+  cairo_font_face_t* font = nullptr;
+};
+
+const CairoApi& cairo_api() {
+  static const CairoApi api = [] {
+    std::string error;
+    void* lib =
+        detail::open_library({"libcairo.so.2"}, "libcairo (Debian package libcairo2)", error);
+    void* ft = lib ? detail::open_library({"libfreetype.so.6"},
+                                          "libfreetype (Debian package libfreetype6)", error)
+                   : nullptr;
+    if (ft == nullptr) throw std::runtime_error(error);
+    CairoApi a;
+    decltype(&FT_Init_FreeType) ft_init = nullptr;
+    decltype(&FT_New_Face) ft_new_face = nullptr;
+    const bool ok =
+        bind_symbol(lib, "cairo_svg_surface_create_for_stream", a.svg_create) &&
+        bind_symbol(lib, "cairo_svg_surface_set_document_unit", a.svg_unit) &&
+        bind_symbol(lib, "cairo_pdf_surface_create_for_stream", a.pdf_create) &&
+        bind_symbol(lib, "cairo_pdf_surface_set_metadata", a.pdf_metadata) &&
+        bind_symbol(lib, "cairo_surface_finish", a.surface_finish) &&
+        bind_symbol(lib, "cairo_surface_status", a.surface_status) &&
+        bind_symbol(lib, "cairo_surface_destroy", a.surface_destroy) &&
+        bind_symbol(lib, "cairo_surface_flush", a.surface_flush) &&
+        bind_symbol(lib, "cairo_surface_mark_dirty", a.surface_mark_dirty) &&
+        bind_symbol(lib, "cairo_image_surface_create", a.image_create) &&
+        bind_symbol(lib, "cairo_image_surface_get_data", a.image_data) &&
+        bind_symbol(lib, "cairo_image_surface_get_stride", a.image_stride) &&
+        bind_symbol(lib, "cairo_create", a.create) &&
+        bind_symbol(lib, "cairo_destroy", a.destroy) &&
+        bind_symbol(lib, "cairo_status", a.status) &&
+        bind_symbol(lib, "cairo_status_to_string", a.status_string) &&
+        bind_symbol(lib, "cairo_save", a.save) && bind_symbol(lib, "cairo_restore", a.restore) &&
+        bind_symbol(lib, "cairo_scale", a.scale) &&
+        bind_symbol(lib, "cairo_translate", a.translate) &&
+        bind_symbol(lib, "cairo_rotate", a.rotate) &&
+        bind_symbol(lib, "cairo_set_source_rgba", a.set_rgba) &&
+        bind_symbol(lib, "cairo_set_source_surface", a.set_surface) &&
+        bind_symbol(lib, "cairo_paint", a.paint) &&
+        bind_symbol(lib, "cairo_new_path", a.new_path) &&
+        bind_symbol(lib, "cairo_move_to", a.move_to) &&
+        bind_symbol(lib, "cairo_line_to", a.line_to) &&
+        bind_symbol(lib, "cairo_close_path", a.close_path) &&
+        bind_symbol(lib, "cairo_new_sub_path", a.new_sub_path) &&
+        bind_symbol(lib, "cairo_arc", a.arc) && bind_symbol(lib, "cairo_rectangle", a.rectangle) &&
+        bind_symbol(lib, "cairo_fill", a.fill) && bind_symbol(lib, "cairo_stroke", a.stroke) &&
+        bind_symbol(lib, "cairo_clip", a.clip) &&
+        bind_symbol(lib, "cairo_reset_clip", a.reset_clip) &&
+        bind_symbol(lib, "cairo_set_fill_rule", a.set_fill_rule) &&
+        bind_symbol(lib, "cairo_set_line_width", a.set_line_width) &&
+        bind_symbol(lib, "cairo_set_line_join", a.set_line_join) &&
+        bind_symbol(lib, "cairo_set_line_cap", a.set_line_cap) &&
+        bind_symbol(lib, "cairo_set_dash", a.set_dash) &&
+        bind_symbol(lib, "cairo_ft_font_face_create_for_ft_face", a.ft_face_create) &&
+        bind_symbol(lib, "cairo_font_face_status", a.font_face_status) &&
+        bind_symbol(lib, "cairo_set_font_face", a.set_font_face) &&
+        bind_symbol(lib, "cairo_set_font_size", a.set_font_size) &&
+        bind_symbol(lib, "cairo_font_options_create", a.options_create) &&
+        bind_symbol(lib, "cairo_font_options_destroy", a.options_destroy) &&
+        bind_symbol(lib, "cairo_font_options_set_hint_style", a.options_hint_style) &&
+        bind_symbol(lib, "cairo_font_options_set_hint_metrics", a.options_hint_metrics) &&
+        bind_symbol(lib, "cairo_set_font_options", a.set_font_options) &&
+        bind_symbol(lib, "cairo_show_glyphs", a.show_glyphs) &&
+        bind_symbol(ft, "FT_Init_FreeType", ft_init) && bind_symbol(ft, "FT_New_Face", ft_new_face);
+    if (!ok) throw std::runtime_error("libcairo is too old: it lacks an SVG, PDF or FreeType call");
+    // The face lives as long as the process: every vector figure's text uses it.
+    FT_Library library = nullptr;
+    FT_Face face = nullptr;
+    if (ft_init(&library) != 0 || ft_new_face(library, RIGID_FONT_PATH, 0, &face) != 0)
+      throw std::runtime_error("cannot load the font " RIGID_FONT_PATH " for a vector figure");
+    a.font = a.ft_face_create(face, 0);
+    if (a.font_face_status(a.font) != CAIRO_STATUS_SUCCESS)
+      throw std::runtime_error("libcairo cannot use the font " RIGID_FONT_PATH);
+    return a;
+  }();
+  return api;
+}
+
+// "#rrggbb" of a colour.
+std::string hex(Color c) {
+  auto byte = [](float v) {
+    return static_cast<int>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255));
+  };
+  return fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b));
+}
+
+// A coordinate in pixels to 1/100 px, without trailing zeros.
+std::string number(double v) {
+  std::string s = fmt::format("{:.2f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+// Text as XML character data.
+void append_escaped(std::string& out, char32_t cp) {
+  if (cp == '&')
+    out += "&amp;";
+  else if (cp == '<')
+    out += "&lt;";
+  else if (cp == '>')
+    out += "&gt;";
+  else
+    detail::append_utf8(out, cp);
+}
+
+// Draws on a cairo context in the figure's pixels. Fills of one colour that follow each
+// other become one path, filled once: a band drawn as a quad between each pair of samples
+// would otherwise show every shared edge as a seam (each antialiased on its own), where
+// the raster canvas's triangles meet exactly.
+//
+// cairo's SVG surface writes glyphs as outlines, which no reader can select or search;
+// for an SVG the canvas writes its text as <text> instead (svg_text()), to go over
+// everything cairo drew (nothing a figure draws after a text covers it).
+class CairoCanvas final : public detail::Canvas {
+ public:
+  CairoCanvas(cairo_t* cr, bool svg_text) : api_(cairo_api()), cr_(cr), svg_text_(svg_text) {
+    api_.set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+    api_.set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+    cairo_font_options_t* options = api_.options_create();
+    // Outlines as designed, advances unrounded: the layout's own metrics (text.cpp).
+    api_.options_hint_style(options, CAIRO_HINT_STYLE_NONE);
+    api_.options_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+    api_.set_font_options(cr_, options);
+    api_.options_destroy(options);
+    api_.set_font_face(cr_, api_.font);
+  }
+  CairoCanvas(const CairoCanvas&) = delete;
+  CairoCanvas& operator=(const CairoCanvas&) = delete;
+  ~CairoCanvas() override { fill_pending(); }
+
+  /// Fills what is pending; after it, the context holds the whole figure.
+  void finish() { fill_pending(); }
+  /// The SVG elements of the text, when the canvas writes text as SVG text.
+  const std::string& svg_text() const { return svg_text_layer_; }
+
+  void clip(double x0, double y0, double x1, double y1) override {
+    fill_pending();
+    api_.reset_clip(cr_);
+    api_.rectangle(cr_, std::floor(x0), std::floor(y0), std::ceil(x1) - std::floor(x0),
+                   std::ceil(y1) - std::floor(y0));
+    api_.clip(cr_);
+  }
+  void no_clip() override {
+    fill_pending();
+    api_.reset_clip(cr_);
+  }
+  void depth_test(bool) override {}
+
+  void triangle(const P3& a, const P3& b, const P3& c, Color color) override {
+    convex({a, b, c}, color);
+  }
+  void rect(double x0, double y0, double x1, double y1, Color color) override {
+    pending(color);
+    api_.rectangle(cr_, x0, y0, x1 - x0, y1 - y0);
+  }
+  void rect_outline(double x0, double y0, double x1, double y1, double w, Color color) override {
+    rect(x0, y0, x1, y0 + w, color);
+    rect(x0, y1 - w, x1, y1, color);
+    rect(x0, y0 + w, x0 + w, y1 - w, color);
+    rect(x1 - w, y0 + w, x1, y1 - w, color);
+  }
+  void convex(const std::vector<P3>& pts, Color color) override {
+    if (pts.size() < 3) return;
+    pending(color);
+    api_.move_to(cr_, pts[0].x(), pts[0].y());
+    for (std::size_t i = 1; i < pts.size(); ++i) api_.line_to(cr_, pts[i].x(), pts[i].y());
+    api_.close_path(cr_);
+  }
+  void disc(const P3& c, double radius, Color color) override {
+    pending(color);
+    api_.new_sub_path(cr_);
+    api_.arc(cr_, c.x(), c.y(), radius, 0, 2 * EIGEN_PI);
+    api_.close_path(cr_);
+  }
+  void polyline(const std::vector<P3>& pts, double width, Color color, const DashPattern& dash,
+                bool round_caps) override {
+    if (pts.empty()) return;
+    fill_pending();
+    source(color);
+    api_.set_line_width(cr_, width);
+    api_.set_line_cap(cr_, round_caps ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
+    api_.set_dash(cr_, dash.data(), static_cast<int>(dash.size()), 0);
+    api_.move_to(cr_, pts[0].x(), pts[0].y());
+    for (std::size_t i = 1; i < pts.size(); ++i) api_.line_to(cr_, pts[i].x(), pts[i].y());
+    // A single point with round caps is a dot, as on the raster canvas.
+    if (pts.size() == 1) api_.line_to(cr_, pts[0].x(), pts[0].y());
+    api_.stroke(cr_);
+  }
+  TextExtent text(std::string_view markup, double x, double y, double size, Color color, HAlign h,
+                  VAlign v, bool vertical, double) override {
+    fill_pending();
+    const detail::TextLayout lay = detail::layout_text(markup, size);
+    const Eigen::Vector2d origin = detail::text_origin(lay.extent, x, y, h, v, vertical);
+    if (svg_text_) {
+      add_svg_text(lay, origin, vertical, color);
+      return lay.extent;
+    }
+    api_.save(cr_);
+    api_.translate(cr_, origin.x(), origin.y());
+    if (vertical) api_.rotate(cr_, -0.5 * EIGEN_PI);
+    source(color);
+    // The layout's glyphs by size (scripts are smaller), each run at its size; y up there.
+    std::map<int, std::vector<cairo_glyph_t>> runs;
+    for (const detail::PlacedGlyph& g : lay.glyphs) runs[g.size_px].push_back({g.glyph, g.x, -g.y});
+    for (const auto& [px, glyphs] : runs) {
+      api_.set_font_size(cr_, px);
+      api_.show_glyphs(cr_, glyphs.data(), static_cast<int>(glyphs.size()));
+    }
+    api_.restore(cr_);
+    return lay.extent;
+  }
+
+ private:
+  void source(Color c) { api_.set_rgba(cr_, c.r, c.g, c.b, c.a); }
+
+  // One <text> a call, a <tspan> a glyph at its place (SVG readers differ on lists of
+  // positions in one tspan: librsvg 2.54 takes only the first).
+  void add_svg_text(const detail::TextLayout& lay, const Eigen::Vector2d& origin, bool vertical,
+                    Color color) {
+    if (lay.glyphs.empty()) return;
+    std::string& out = svg_text_layer_;
+    const int size = lay.glyphs.front().size_px;
+    out += fmt::format(
+        R"(<text xml:space="preserve" transform="translate({} {}){}" font-size="{}px" fill="{}")",
+        number(origin.x()), number(origin.y()), vertical ? " rotate(-90)" : "", size, hex(color));
+    if (color.a < 1) out += fmt::format(R"( fill-opacity="{:.3g}")", color.a);
+    out += ">";
+    for (const detail::PlacedGlyph& g : lay.glyphs) {
+      out += fmt::format(R"(<tspan x="{}" y="{}")", number(g.x), number(-g.y));
+      if (g.size_px != size) out += fmt::format(R"( font-size="{}px")", g.size_px);
+      out += ">";
+      append_escaped(out, g.code);
+      out += "</tspan>";
+    }
+    out += "</text>\n";
+  }
+  // Starts or continues the pending fill of colour c.
+  void pending(Color c) {
+    if (has_pending_ && c.r == pending_.r && c.g == pending_.g && c.b == pending_.b &&
+        c.a == pending_.a)
+      return;
+    fill_pending();
+    has_pending_ = true;
+    pending_ = c;
+  }
+  void fill_pending() {
+    if (!has_pending_) return;
+    source(pending_);
+    api_.fill(cr_);
+    has_pending_ = false;
+  }
+
+  const CairoApi& api_;
+  cairo_t* cr_;
+  bool svg_text_;
+  std::string svg_text_layer_;
+  bool has_pending_ = false;
+  Color pending_;
+};
+
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+// The SVG text layer goes last, over what cairo drew, in a group of the figure's font.
+std::string with_text_layer(std::string svg, const std::string& text) {
+  const std::size_t end = svg.rfind("</svg>");
+  if (text.empty() || end == std::string::npos) return svg;
+  svg.insert(end, "<g font-family=\"DejaVu Sans, sans-serif\">\n" + text + "</g>\n");
+  return svg;
+}
+
+// Writes a vector file of width × height pixels through `draw`, which draws in pixels on a
+// context of that page and returns the SVG elements to add over it (text), if any.
+template <class Draw>
+void write_vector(const std::string& path, FigureFormat format, int width, int height,
+                  const std::string& title, Draw&& draw) {
+  const CairoApi& api = cairo_api();
+  // One font face serves every figure: one figure at a time.
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::string bytes, layer;
+  cairo_surface_t* surface = nullptr;
+  double scale = 1;
+  if (format == FigureFormat::kSvg) {
+    surface = api.svg_create(append_to_string, &bytes, width, height);
+    api.svg_unit(surface, CAIRO_SVG_UNIT_PX);
+  } else {
+    scale = kPointsPerPixel;
+    surface = api.pdf_create(append_to_string, &bytes, width * scale, height * scale);
+    api.pdf_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rigidlab");
+    if (!title.empty()) api.pdf_metadata(surface, CAIRO_PDF_METADATA_TITLE, title.c_str());
+  }
+  cairo_t* cr = api.create(surface);
+  api.scale(cr, scale, scale);
+  try {
+    layer = draw(cr);
+  } catch (...) {
+    api.destroy(cr);
+    api.surface_destroy(surface);
+    throw;
+  }
+  const cairo_status_t drawn = api.status(cr);
+  api.destroy(cr);
+  api.surface_finish(surface);
+  const cairo_status_t written = api.surface_status(surface);
+  api.surface_destroy(surface);
+  if (drawn != CAIRO_STATUS_SUCCESS || written != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error("cannot write '" + path + "': cairo: " +
+                             api.status_string(drawn != CAIRO_STATUS_SUCCESS ? drawn : written));
+  if (format == FigureFormat::kSvg) bytes = with_text_layer(std::move(bytes), layer);
+  write_file_atomically(path, [&](std::FILE* file) {
+    if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size())
+      throw std::runtime_error("write failed");
+  });
+}
+
+}  // namespace
+
+void save_figure(const Plot2D& plot, const std::string& path, FigureFormat format, int width,
+                 int height, FigureTiming* timing) {
+  if (format == FigureFormat::kPng) return save_png(plot, path, width, height, timing);
+  detail::PhaseClock clock(timing);
+  write_vector(path, format, width, height, plain_text(plot.title), [&](cairo_t* cr) {
+    CairoCanvas canvas(cr, format == FigureFormat::kSvg);
+    cairo_api().set_rgba(cr, 1, 1, 1, 1);
+    cairo_api().paint(cr);
+    detail::draw_plot(plot, width, height, canvas);
+    canvas.finish();
+    return canvas.svg_text();
+  });
+  clock.lap(&FigureTiming::encode);
+}
+
+void save_figure(const Scene3D& scene, const std::string& path, FigureFormat format, int width,
+                 int height, FigureTiming* timing) {
+  if (format == FigureFormat::kPng) return save_png(scene, path, width, height, timing);
+  const Image img = draw(scene, width, height, timing);
+  detail::PhaseClock clock(timing);
+  write_vector(path, format, width, height, plain_text(scene.title), [&](cairo_t* cr) {
+    const CairoApi& api = cairo_api();
+    cairo_surface_t* pixels = api.image_create(CAIRO_FORMAT_RGB24, width, height);
+    api.surface_flush(pixels);
+    unsigned char* data = api.image_data(pixels);
+    const int stride = api.image_stride(pixels);
+    if (data == nullptr) {
+      api.surface_destroy(pixels);
+      throw std::runtime_error("cairo: cannot hold a " + std::to_string(width) + "x" +
+                               std::to_string(height) + " image");
+    }
+    for (int y = 0; y < height; ++y) {
+      auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+      for (int x = 0; x < width; ++x) {
+        const std::uint8_t* p = img.at(x, y);
+        row[x] = (std::uint32_t{p[0]} << 16) | (std::uint32_t{p[1]} << 8) | p[2];
+      }
+    }
+    api.surface_mark_dirty(pixels);
+    api.set_surface(cr, pixels, 0, 0);
+    api.paint(cr);
+    api.surface_destroy(pixels);
+    return std::string();
+  });
+  clock.lap(&FigureTiming::encode);
+}
+
+}  // namespace rigid::render
