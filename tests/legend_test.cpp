@@ -71,14 +71,9 @@ double share_near(const std::vector<std::array<int, 3>>& pixels, const std::arra
 
 // Entries whose swatch a reader cannot match to what is drawn, found by this test and
 // not fixed yet: each must still fail (a fixed one fails the test until taken off).
-const std::set<std::string> kKnownDefects = {
-    // the contact balls seen through the translucent invariable plane: pale, not the
-    // swatch's blue; the herpolhode's thin lines under it grey, not black
-    "poinsot_herpolhode: the contact point at t = 0, T, 2T, ..",
-    "poinsot_herpolhode: herpolhode",
-    // the precession circle behind the disk: blue-grey, not the swatch's pink
-    "top_nutation_top: centre of mass's precession circle",
-};
+// (None now: the last ones, the herpolhode's lines and contact balls drawn pale, were a
+// translucent surface drawn over what lay in front of it, with no depth test.)
+const std::set<std::string> kKnownDefects = {};
 
 template <class Figure>
 void check_entry(const std::string& where, const Figure& original, const Figure& probed,

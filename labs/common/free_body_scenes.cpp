@@ -89,8 +89,13 @@ render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omeg
     scene.add_tube(lift(curve), 0.009 * size, {colors::kSeparatrix}, first ? "separatrix" : "");
     first = false;
   }
+  // This body's polhode thinner than the separatrix and lifted above it: near the
+  // separatrix (a body spun near its middle axis) it runs along it, and the black shows
+  // on each side of the blue rather than under it.
   for (std::size_t k = 0; k < polhode.size(); ++k) {
-    scene.add_tube(lift(polhode[k]), 0.011 * size, {colors::kPolhode},
+    std::vector<Vector3d> curve = polhode[k];
+    for (auto& p : curve) p *= 1.018;
+    scene.add_tube(std::move(curve), 0.0065 * size, {colors::kPolhode},
                    k == 0 ? "this body's polhode" : "");
   }
   scene.add_marker(omega0 * 1.004, 0.03 * size, {colors::kMarker}, "\\omega_0");

@@ -30,6 +30,19 @@ std::string Report::figure_title(const std::string& own) const {
   for (char c : lab_) text += c == '_' ? std::string("\\_") : std::string(1, c);
   // The inputs that carry a symbol: "m = 1 kg, a = 1 m".
   std::string inputs;
+  // An input the figure's own title states with the same value ("alpha = 10 deg") is
+  // said there, not twice; one it states otherwise (the figure drawn at another theta)
+  // stays, so the run's own value is always in the title.
+  const auto stated = [&own](const std::string& item) {
+    for (std::size_t at = own.find(item); at != std::string::npos; at = own.find(item, at + 1)) {
+      const std::size_t end = at + item.size();
+      const bool starts = at == 0 || own[at - 1] == ' ' || own[at - 1] == '(';
+      const bool ends = end == own.size() || own[end] == ',' || own[end] == ' ' ||
+                        own[end] == ';' || own[end] == ':' || own[end] == ')';
+      if (starts && ends) return true;
+    }
+    return false;
+  };
   for (const InputRule& rule : symbols_) {
     if (rule.symbol_text().empty() || !inputs_.contains(rule.key())) continue;
     const Json& value = inputs_[rule.key()];
@@ -53,7 +66,9 @@ std::string Report::figure_title(const std::string& own) const {
     } else if (!rule.unit_text().empty()) {
       shown += " " + rule.unit_text();
     }
-    inputs += (inputs.empty() ? "" : ", ") + rule.symbol_text() + " = " + shown;
+    const std::string item = rule.symbol_text() + " = " + shown;
+    if (stated(item)) continue;
+    inputs += (inputs.empty() ? "" : ", ") + item;
   }
   if (!inputs.empty()) text += ": " + inputs;
   if (!own.empty()) text += ": " + own;

@@ -62,13 +62,17 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
     // The space cone as lines in L's colour: inside the body cone (an oblate body) two
     // translucent cones would blend into a colour neither swatch shows.
     const std::vector<Vec3> rim = circle_about_z(slant * std::sin(space), slant * std::cos(space));
-    scene.add_polyline(rim, colors::kL, 3.0, space_name);
+    // Seen through the body cone (an oblate body's rolls round it), they are drawn
+    // thicker and the body cone fainter.
+    const bool inside = p.contact == ConeContact::kInside;
+    scene.add_polyline(rim, colors::kL, inside ? 3.5 : 3.0, space_name);
     for (std::size_t k = 0; k + 1 < rim.size(); k += 10) {
-      scene.add_polyline({Vec3::Zero(), rim[k]}, colors::kL, 2.0);
+      scene.add_polyline({Vec3::Zero(), rim[k]}, colors::kL, inside ? 3.0 : 2.0);
     }
   }
   scene.add_cone(Vec3::Zero(), slant * std::cos(alpha) * axis3, slant * std::sin(alpha),
-                 {colors::kSymmetryAxis, 0.35f}, body_name);
+                 {colors::kSymmetryAxis, p.contact == ConeContact::kInside ? 0.22f : 0.35f},
+                 body_name);
   // Lines fixed in the body cone, so its rolling shows: in the turning plane the body
   // turns about 3 by -Omega' t, where Omega' sin(alpha) = phi_dot sin(space) makes the
   // drawn (magnified) cones roll without slipping; the line at pi from the plane's x

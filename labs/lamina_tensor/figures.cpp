@@ -12,6 +12,13 @@
 namespace rigid::lab::lamina_tensor {
 namespace {
 
+// The principal axes' colours: the shared ones, but axis 2 olive. A plate's L leans
+// toward its largest in-plane moment's axis, and in the shared orange that axis and L
+// in vermillion read as one hue and one direction; olive is yellow dark enough for
+// text on white.
+constexpr render::Color kAxisColors[3] = {colors::kPrincipal[0], render::rgb8(150, 135, 0),
+                                          colors::kPrincipal[2]};
+
 // The lamina with its rotation axis, omega, L and the principal axes.
 render::Scene3D scene_of(const Report& report) {
   const Vec3& n = report.n;
@@ -54,7 +61,7 @@ render::Scene3D scene_of(const Report& report) {
                     render::kBlack);
   }
   // Principal axes through the origin, both directions, labelled by moment.
-  const render::Color* axis_colors = colors::kPrincipal;
+  const render::Color* axis_colors = kAxisColors;
   for (int i = 0; i < 3; ++i) {
     const Vec3 e = principal.axes.row(i).transpose();
     const double reach = (i == 2 ? 0.6 : 0.75) * size;
@@ -94,7 +101,7 @@ render::Plot2D moment_plot(const Report& report) {
     // In the plane the smaller moment is axis 1's and the larger axis 2's (I3 is normal).
     const int index = value < std::max(axes.moment, axes.moment_other) ? 0 : 1;
     panel.add_ref_line(deg, true, fmt::format("principal axis {} at {:.1f}\\deg", index + 1, deg))
-        .color = colors::kPrincipal[index];
+        .color = kAxisColors[index];
     panel.annotate(deg, value, fmt::format("{:.4g} kg m^2", value));
   }
   if (std::abs(n.z()) < 1e-12) {

@@ -179,11 +179,22 @@ render::Scene3D Motion::herpolhode_scene(double periods) const {
                  "invariable plane");
   // a thin line: many loops over a few periods
   scene.add_polyline(std::move(trace), render::kBlack, 2.0, "herpolhode");
+  // Each contact point's time outside the herpolhode's ring, along the ray from its
+  // centre through the point: clear of the loops, and in the order the points go round.
+  const double ring = std::max(reach, 1e-9 * size_);
   for (int k = 0; k <= static_cast<int>(periods); ++k) {
     const Vector3d p = contact(k * T);
     scene.add_marker(p, 0.03 * size_, {colors::kOmega},
                      k == 0 ? "the contact point at t = 0, T, 2T, .." : "");
-    scene.add_label(p, k == 0 ? "0" : k == 1 ? "T" : fmt::format("{}T", k));
+    Vector3d out = p - offset_;
+    out.z() = 0;
+    out = out.norm() > 1e-6 * ring ? out.normalized() : Vector3d::UnitX();
+    Vector3d at = offset_ + (ring + 0.16 * size_) * out;
+    at.z() = p.z();
+    scene.add_label(at, k == 0 ? "0" : k == 1 ? "T" : fmt::format("{}T", k));
+    scene.add_polyline(
+        {p, offset_ + (ring + 0.1 * size_) * out + Vector3d(0, 0, p.z() - offset_.z())},
+        colors::kOmega, 1.5);
   }
   // the energy ellipsoid at t = 0, touching the plane at the first contact point
   const RotationState x0 = exact_.state(0.0);

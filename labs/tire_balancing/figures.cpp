@@ -46,6 +46,10 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
     scene.add_marker(Vec3(-b, a, 0), std::min(r0, 0.15 * a), {colors::kMarker},
                      fmt::format("balancing masses m_0 = {:.1f} g", 1e3 * m0));
     scene.add_marker(Vec3(b, -a, 0), std::min(r0, 0.15 * a), {colors::kMarker});
+    // One on each face, opposite: the camera sees the +x face, the other mass through
+    // the translucent disk, tinted by it.
+    scene.add_label(Vec3(b, -1.3 * a, 0), "m_0 on the front face");
+    scene.add_label(Vec3(-b, 1.3 * a, 0), "m_0 on the back face, seen through the disk");
   }
   // The cone swept by L about the axle when unbalanced, with L at t = 0.
   const double length = 1.6 * a;
@@ -60,7 +64,9 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
                   "\\omega along the axle");
   scene.add_label(length * 1.05 * L_shown, "L", colors::kL);
   scene.add_label(length * 1.15 * axle, "\\omega", colors::kOmega);
-  scene.add_axes(Vec3(0, 0, 0), Mat3::Identity(), 0.6 * a, {"x", "y", "z"}, 0.015 * a);
+  // The frame's axes beside the wheel: at its centre x would lie under L and the cone.
+  scene.add_axes(Vec3(0, -0.5 * a, -1.45 * a), Mat3::Identity(), 0.45 * a, {"x", "y", "z"},
+                 0.015 * a);
   return scene;
 }
 

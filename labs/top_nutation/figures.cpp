@@ -208,8 +208,9 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
   bottom.y.label = "\\phi-dot (rad/s)";
   bottom.add_line(t, phi_dot, "exact").color = render::kBlue;
   if (integrated_run) bottom.add_points(ti, phi_doti, integrated).color = render::kVermillion;
+  // the unit is the axis's: a short label finds a gap between the curve's crossings
   bottom.add_ref_line(motion.mean_precession_rate(), false,
-                      fmt::format("mean {:.4g} rad/s", motion.mean_precession_rate()));
+                      fmt::format("mean {:.4g}", motion.mean_precession_rate()));
   bottom.legend = render::LegendPlace::kNone;
   return plot;
 }
@@ -336,7 +337,7 @@ render::Scene3D Motion::scene(double t) const {
   scene.title = t > 0 ? fmt::format("the top at t = {:.3f} s; arrows show directions", t)
                       : "the top at t = 0; arrows show directions";
   if (r > disk_radius_) scene.title += " (disk enlarged to be seen)";
-  scene.add_marker(Vector3d::Zero(), 0.04 * size, {render::kGray}, "tip (pivot)");
+  scene.add_marker(Vector3d::Zero(), 0.06 * size, {render::kGray}, "tip (pivot)");
   scene.add_cylinder(Vector3d::Zero(), (l + 0.5 * r) * e3, 0.03 * size, {render::kGray});
   // The disk translucent, so the tip, the spindle and the circle below stay in view.
   scene.add_cylinder(l * e3 - 0.05 * r * e3, l * e3 + 0.05 * r * e3, r, {colors::kBody, 0.5f},
@@ -347,9 +348,9 @@ render::Scene3D Motion::scene(double t) const {
   }
   // the symmetry axis drawn on past the disk, and the path of its end on a sphere
   // clear of the disk so far (none at t = 0): the nodding and the precession
+  const double reach = 1.3 * size;
+  scene.add_polyline({(l + 0.5 * r) * e3, reach * e3}, colors::kSymmetryAxis, 2.0);
   if (t > 0) {
-    const double reach = 1.3 * size;
-    scene.add_polyline({(l + 0.5 * r) * e3, reach * e3}, colors::kSymmetryAxis, 2.0);
     // the last kPathPeriods nutation periods of it: over a long run the older loops only
     // fill the band between the turning circles, and a frame's cost stays bounded
     const double T = exact_.nutation_period();
@@ -383,8 +384,19 @@ render::Scene3D Motion::scene(double t) const {
     scene.add_arrow(Vector3d::Zero(), 1.2 * arrow * omega.normalized(), 0.018 * size,
                     {colors::kOmega}, "\\omega");
   }
-  scene.add_polyline(circle(std::acos(std::clamp(e3.z(), -1.0, 1.0)), Vector3d::Zero(), l),
-                     render::kReddishPurple, 3.0, "centre of mass's precession circle");
+  // A fast top's L and omega lie almost along one line: each head named, beside it.
+  const Vector3d side = Vector3d::UnitZ().cross(e3).normalized().isZero()
+                            ? Vector3d::UnitX()
+                            : Vector3d::UnitZ().cross(e3).normalized();
+  if (L.norm() > 0) scene.add_label(arrow * L.normalized() + 0.12 * size * side, "L", colors::kL);
+  if (omega.norm() > 0) {
+    scene.add_label(1.2 * arrow * omega.normalized() + 0.12 * size * side, "\\omega",
+                    colors::kOmega);
+  }
+  // The circle the axis's end goes round at this tilt: out there, clear of the disk that
+  // hides the centre of mass's own (smaller than the disk), and black beside its path.
+  scene.add_polyline(circle(std::acos(std::clamp(e3.z(), -1.0, 1.0)), Vector3d::Zero(), reach),
+                     render::kBlack, 2.5, "precession circle of the axis at this \\theta");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.4 * size, {"x", "y", "z"});
   scene.camera.eye = size * Vector3d(4.0, -6.5, 1.2);
   scene.camera.target = Vector3d(0, 0, 0.4 * size);

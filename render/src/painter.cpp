@@ -391,11 +391,15 @@ void Painter::flush() {
     } else {
       gl.Disable(GL_SCISSOR_TEST);
     }
+    // Lines in a scene are opaque: they write depth, so a translucent surface drawn after
+    // them covers only those behind it (a curve on a plane stays in front of the plane).
     if (b.depth) {
       gl.Enable(GL_DEPTH_TEST);
       gl.DepthFunc(GL_LEQUAL);
+      gl.DepthMask(GL_TRUE);
     } else {
       gl.Disable(GL_DEPTH_TEST);
+      gl.DepthMask(GL_FALSE);
     }
     gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(b.first), static_cast<GLsizei>(b.count));
   }

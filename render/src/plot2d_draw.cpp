@@ -218,8 +218,11 @@ class PanelPlan {
       place_ref_labels(grid);
       for (const ScreenRect& r : ref_boxes_) grid.add_rect(r, 1.0f);
       if (entries_.empty()) break;
-      // The legend also keeps off the annotations' texts: each is near its point.
+      // The legend also keeps off the annotations' texts (each is near its point) and
+      // the horizontal reference lines (which a label may cross, but a box would hide;
+      // headroom clears them as it clears data, where no room clears a vertical one).
       detail::Occupancy legend_grid = grid;
+      add_ref_lines(legend_grid, 1.0f, false);
       for (const Annotation& a : pn_.annotations) {
         if (!xm_.valid(a.x) || !ym_.valid(a.y)) continue;
         const TextExtent e = measure_text(a.text, st_.note_font);
@@ -357,13 +360,7 @@ class PanelPlan {
         grid.add_triangle(a, d, e, 1.0f);
       }
     }
-    for (const RefLine& r : pn_.ref_lines) {
-      const double hw = 0.5 * st_.line(r.width);
-      if (r.vertical)
-        grid.add_segment({xm_(r.value), rect_.y0}, {xm_(r.value), rect_.y1}, hw, 0.01f);
-      else
-        grid.add_segment({rect_.x0, ym_(r.value)}, {rect_.x1, ym_(r.value)}, hw, 0.01f);
-    }
+    add_ref_lines(grid, 0.01f);
     for (const Annotation& a : pn_.annotations)
       if (xm_.valid(a.x) && ym_.valid(a.y)) {
         const Vector2d q = xy(a.x, a.y);
@@ -372,10 +369,23 @@ class PanelPlan {
     return grid;
   }
 
+  // The reference lines into an occupancy grid at a weight (the vertical ones too, or not).
+  void add_ref_lines(detail::Occupancy& grid, float weight, bool vertical = true) const {
+    for (const RefLine& r : pn_.ref_lines) {
+      if (r.vertical && !vertical) continue;
+      const double hw = 0.5 * st_.line(r.width);
+      if (r.vertical)
+        grid.add_segment({xm_(r.value), rect_.y0}, {xm_(r.value), rect_.y1}, hw, weight);
+      else
+        grid.add_segment({rect_.x0, ym_(r.value)}, {rect_.x1, ym_(r.value)}, hw, weight);
+    }
+  }
+
   // Each reference line's label at one of the line's ends, on one of its sides, where it
   // covers the least data (a vertical line's label reads upwards, beside it).
   void place_ref_labels(const detail::Occupancy& grid) {
     ref_boxes_.assign(pn_.ref_lines.size(), ScreenRect{});
+    ref_on_data_.assign(pn_.ref_lines.size(), false);
     std::vector<ScreenRect> taken;
     const double gap = 0.4 * st_.pad, end = 0.5 * st_.pad;
     for (std::size_t k = 0; k < pn_.ref_lines.size(); ++k) {
@@ -396,8 +406,11 @@ class PanelPlan {
              {rect_.x0 + end, y - gap - h, rect_.x0 + end + w, y - gap},
              {rect_.x0 + end, y + gap, rect_.x0 + end + w, y + gap + h}};
       }
-      // Where the data crosses the line near both ends, a place along it, ends first.
-      for (const double f : {0.75, 0.25, 0.5}) {
+      // Where the data crosses the line near both ends, a place along it: the quarters
+      // first, then every twentieth of the way (a gap between crossings may be narrow).
+      std::vector<double> along{0.75, 0.25, 0.5};
+      for (int i = 1; i < 20; ++i) along.push_back(i / 20.0);
+      for (const double f : along) {
         if (r.vertical) {
           const double x = xm_(r.value), w = e.height(), h = e.width;
           const double y0 = rect_.y0 + f * (rect_.height() - h);
@@ -412,6 +425,7 @@ class PanelPlan {
       }
       const detail::Placement pl = detail::choose_place(c, grid, rect_, taken);
       ref_boxes_[k] = pl.box.empty() ? c.front() : pl.box;
+      ref_on_data_[k] = pl.box.empty() || pl.cover.hard > 0;
       taken.push_back(ref_boxes_[k]);
     }
   }
@@ -608,6 +622,12 @@ class PanelPlan {
       const RefLine& r = pn_.ref_lines[k];
       const ScreenRect& b = ref_boxes_[k];
       if (r.label.empty()) continue;
+      // A label with no place clear of the data (a line the data crosses often) stands
+      // on a pale ground, as a legend does, so that it reads and the data shows through.
+      if (ref_on_data_[k]) {
+        const double m = 0.25 * st_.pad;
+        p.rect(b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m, detail::kLegendFill);
+      }
       if (r.vertical)
         p.text(r.label, b.x1, b.y0, st_.note_font, r.color, HAlign::kRight, VAlign::kBottom, true);
       else
@@ -704,6 +724,7 @@ class PanelPlan {
   detail::LegendSize legend_size_;
   ScreenRect legend_;
   std::vector<ScreenRect> ref_boxes_, note_boxes_;
+  std::vector<bool> ref_on_data_;  ///< each reference label covers data where it is
 };
 
 // The figure at a size: its title and one plan per panel, row by row.

@@ -159,8 +159,12 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
 
   // 3. Translucent surfaces without depth writes: all back faces far to near,
   //    then all front faces far to near. For nested convex shells this gives
-  //    outer-back, inner-back, inner-front, outer-front: the exact order.
+  //    outer-back, inner-back, inner-front, outer-front: the exact order. Depth-tested
+  //    against what is drawn (the painter's flush leaves the test off): a surface
+  //    behind a body or a line does not cover it.
   gl.UseProgram(prog.program);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
   gl.Enable(GL_BLEND);
   gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl.DepthMask(GL_FALSE);

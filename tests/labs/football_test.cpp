@@ -176,6 +176,14 @@ TEST_CASE("football: a body of one's own says custom; another Earth by its Is/I 
             {"preset", "custom"}, {"inertia", {1.0, 1.5}}, {"omega", 60.0}, {"alpha_deg", 10.0}});
   CHECK_THAT(custom.figure_title("cones"), Catch::Contains("body = custom"));
   CHECK_THAT(custom.figure_title("cones"), !Catch::Contains("body = football"));
+  // an input the figure's own title states with the same value is said once; with
+  // another value (a figure drawn at another angle) the run's own stays
+  const std::string alpha = "\\alpha = 10\\deg";
+  const std::string once = custom.figure_title("Is/I = 1.5, " + alpha + ", rolls");
+  CHECK(once.find(alpha) == once.rfind(alpha));
+  CHECK(once.find(alpha) != std::string::npos);
+  const std::string other = custom.figure_title("drawn at \\alpha = 8\\deg");
+  CHECK_THAT(other, Catch::Contains(alpha) && Catch::Contains("\\alpha = 8\\deg"));
   // Is/I to the digit: (Is - I)/I sets Omega / omega, the Earth's 305 days
   in = preset("earth");
   in.moment_ratio = 1.0032737;
