@@ -750,6 +750,25 @@ def top_paths(res, paths, path):
     save(fig, path)
 
 
+def top_band(res, paths, path):
+    """The same three paths as theta against phi (unwrapped), one panel each, with the
+    turning angles as dashed lines."""
+    fig, axes = plt.subplots(len(paths), 1, **SIZE)
+    fig.suptitle(lab_title(TOP, "the band between the turning circles, 3 nutation periods"))
+    for ax, p in zip(axes, paths):
+        a = p["axis"]
+        theta = np.degrees(np.arccos(np.clip(a[:, 2], -1, 1)))
+        phi = np.degrees(np.unwrap(np.arctan2(a[:, 1], a[:, 0])))
+        ax.plot(phi, theta, color=PURPLE, lw=2)
+        for t in (p["theta_min"], p["theta_max"]):
+            ax.axhline(math.degrees(t), color=BLACK, ls="--", lw=1.5)
+        ax.set_title(p["regime"])
+        ax.set_ylabel("θ (°)")
+        ax.grid(True, color="#e8e8e8")
+    axes[-1].set_xlabel("φ (°)")
+    save(fig, path)
+
+
 def top_theta(res, series, path):
     """theta(t) and phi_dot(t): the exact motion (1201 samples) beside 61 samples of an
     integrated run (splitting4), with theta_min, theta_max and the mean phi_dot."""
@@ -1010,6 +1029,7 @@ def main():
         ("tennis_racquet_polhodes.png", lambda p: tennis_polhodes(tennis, racquet, p)),
         ("top_nutation_potential.png", lambda p: top_potential(top, p)),
         ("top_nutation_paths.png", lambda p: top_paths(top, top_paths_data, p)),
+        ("top_nutation_band.png", lambda p: top_band(top, top_paths_data, p)),
         ("top_nutation_theta.png", lambda p: top_theta(top, top_series, p)),
         ("top_nutation_top.png", lambda p: top_top(top, top_inputs, top_series, p)),
         ("top_nutation_integrators.png", lambda p: top_integrators(top, p)),

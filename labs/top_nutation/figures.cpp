@@ -92,46 +92,64 @@ render::Plot2D potential_plot(const HeavyTopExact& m) {
 // The axis's path on the unit sphere: this run's (its own start), then starts of the same
 // top that differ only in phi_dot0 (theta_dot0 = 0) in the regimes this run is not, each
 // labelled with the regime the exact motion reports.
-render::Scene3D paths_scene(const HeavyTopExact& m) {
+// This run's start beside starts of the same top in the regimes it is not in (wavy,
+// cusped, looping: theta_dot0 = 0 and phi_dot0 = +-1/2 the slow steady rate, or 0),
+// and the phi_dot0 of those.
+struct RegimePaths {
+  struct Path {
+    TopStart start;
+    std::string name;
+  };
+  std::vector<Path> paths;
+  std::vector<double> contrasts;
+};
+
+RegimePaths regime_paths(const HeavyTopExact& m) {
   const HeavyTop& top = m.top();
   const TopStart& s0 = m.start();
   const SteadyPrecession steady = steady_precession_rates(top, s0.spin, s0.theta);
   const double reference = steady.exists && std::isfinite(steady.slow) && steady.slow != 0
                                ? std::abs(steady.slow)
                                : (s0.spin > 0 ? top.mgl / (top.Is * s0.spin) : 1.0);
-  // wavy, cusped and looping starts; the one in this run's regime gives way to the run
-  struct Path {
-    TopStart start;
-    std::string name;
-  };
-  std::vector<Path> paths = {{s0, "this run"}};
-  std::vector<double> contrasts;
+  RegimePaths out;
+  out.paths = {{s0, "this run"}};
   for (const double phi_dot0 : {0.5 * reference, 0.0, -0.5 * reference}) {
     TopStart start = s0;
     start.theta_dot = 0.0;
     start.phi_dot = phi_dot0;
     if (start.theta == 0.0) start.theta = 1e-3;  // upright: a hair off, so there is a path
-    if (paths.size() < 3 && HeavyTopExact(top, start).regime() != m.regime()) {
-      paths.push_back({start, fmt::format("\\phi-dot_0 = {:.3g} rad/s", phi_dot0)});
-      contrasts.push_back(phi_dot0);
+    if (out.paths.size() < 3 && HeavyTopExact(top, start).regime() != m.regime()) {
+      out.paths.push_back({start, fmt::format("\\phi-dot_0 = {:.3g} rad/s", phi_dot0)});
+      out.contrasts.push_back(phi_dot0);
     }
   }
-  if (paths.front().start.theta == 0.0) paths.front().start.theta = 1e-3;
+  if (out.paths.front().start.theta == 0.0) out.paths.front().start.theta = 1e-3;
+  return out;
+}
+
+// Over how many nutation periods the paths are drawn: enough to show the pattern repeat.
+constexpr double kPathFigurePeriods = 3;
+
+render::Scene3D paths_scene(const HeavyTopExact& m) {
+  const HeavyTop& top = m.top();
+  const RegimePaths regimes = regime_paths(m);
+  const auto& paths = regimes.paths;
   render::Scene3D scene;
   std::string others;
-  for (const double c : contrasts) others += fmt::format("{}{:.3g}", others.empty() ? "" : ", ", c);
+  for (const double c : regimes.contrasts)
+    others += fmt::format("{}{:.3g}", others.empty() ? "" : ", ", c);
   scene.title =
       fmt::format("the symmetry axis on the unit sphere: this run{}",
                   others.empty() ? std::string() : ", and \\phi-dot_0 = " + others + " rad/s");
   const double gap = 2.6;
   int index = 0;
-  for (const Path& p : paths) {
+  for (const RegimePaths::Path& p : paths) {
     const HeavyTopExact motion(top, p.start);
     const Vector3d c(gap * index, 0, 0);
     const double period = std::isfinite(motion.nutation_period()) ? motion.nutation_period() : 1.0;
     std::vector<Vector3d> path;
     for (int k = 0; k <= 900; ++k) {
-      const TopAngles a = motion.angles(3 * period * k / 900);
+      const TopAngles a = motion.angles(kPathFigurePeriods * period * k / 900);
       path.push_back(c + 1.02 * axis_of(a.theta, a.phi));
     }
     const bool first = index == 0;
@@ -158,6 +176,40 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
   scene.camera.target = Vector3d(middle, 0, 0.4);
   scene.camera.fov_y_deg = 12;
   return scene;
+}
+
+// The same paths as theta against phi, each in its own panel: the band between the turning
+// circles filled, so that a fast top's waves, cusps or loops, a fraction of a degree tall
+// on the sphere, show as plainly as a slow top's.
+render::Plot2D band_plot(const HeavyTopExact& m) {
+  const RegimePaths regimes = regime_paths(m);
+  const int n = static_cast<int>(regimes.paths.size());
+  render::Plot2D plot(n, 1);  // wide panels: the pattern runs along phi
+  plot.title = fmt::format("the band between the turning circles, {:g} nutation periods",
+                           kPathFigurePeriods);
+  for (int i = 0; i < n; ++i) {
+    const RegimePaths::Path& p = regimes.paths[static_cast<std::size_t>(i)];
+    const HeavyTopExact motion(m.top(), p.start);
+    const double period = std::isfinite(motion.nutation_period()) ? motion.nutation_period() : 1.0;
+    std::vector<double> phi, theta;
+    for (int k = 0; k <= 1200; ++k) {
+      const TopAngles a = motion.angles(kPathFigurePeriods * period * k / 1200);
+      phi.push_back(rad_to_deg(a.phi));
+      theta.push_back(rad_to_deg(a.theta));
+    }
+    render::Panel& panel = plot.panel(i, 0);
+    panel.title = fmt::format("{}: {}", p.name, to_string(motion.regime()));
+    if (i == n - 1) panel.x.label = "\\phi (\\deg)";
+    panel.y.label = "\\theta (\\deg)";
+    panel.add_line(phi, theta, i == 0 ? "path of the symmetry axis" : "").color =
+        colors::kSymmetryAxis;
+    panel.add_ref_line(rad_to_deg(motion.theta_min()), false, i == 0 ? "\\theta_{min}" : "").color =
+        render::kBlack;
+    panel.add_ref_line(rad_to_deg(motion.theta_max()), false, i == 0 ? "\\theta_{max}" : "").color =
+        render::kBlack;
+    panel.legend = render::LegendPlace::kNone;
+  }
+  return plot;
 }
 
 // phi_dot from a state: omega_z = phi_dot + psi_dot cos(theta), omega_3 = phi_dot cos(theta) +
@@ -242,6 +294,8 @@ void figures(const Report& report, FigureSink& sink) {
            potential_plot(motion));
   sink.add("paths", "the axis's path on the sphere: this run's beside the other regimes",
            paths_scene(motion));
+  sink.add("band", "the same paths as theta against phi: waves, cusps or loops at any spin",
+           band_plot(motion));
   sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
            theta_plot(motion, integrated, report.t_end, why_none));
   sink.add("top", "the top, L, the gravity torque and the precession circle",

@@ -508,6 +508,32 @@ TEST_CASE("top_nutation: the motion's scene at a time is the same in any order o
   }
 }
 
+TEST_CASE("top_nutation: the band figure fills the turning circles for a fast top too") {
+  // At 5000 rpm the band is a tenth of a degree tall: each panel's path spans exactly
+  // the band between its turning circles, so its waves, cusps or loops fill the panel.
+  Inputs in;
+  in.spin_rpm = 5000;
+  const auto report = compute(in);
+  rigid::test::KeptFigures kept;
+  figures(report, kept);
+  REQUIRE(kept.plots.count("band") == 1);
+  const rigid::render::Plot2D& band = kept.plots.at("band");
+  REQUIRE(band.rows() == 3);
+  CHECK_THAT(band.panel(0, 0).title, Catch::StartsWith("this run: cusped"));
+  const double theta_min = value(report.results(), "theta_min_deg");
+  const double theta_max = value(report.results(), "theta_max_deg");
+  CHECK(theta_max - theta_min < 0.2);
+  const auto& path = band.panel(0, 0).series.at(0).y;
+  const auto [lo, hi] = std::minmax_element(path.begin(), path.end());
+  // the samples reach the turning points to within their spacing's curvature: 1200 a
+  // panel over 3 periods, so 1e-3 of the band
+  CHECK(*lo == Approx(theta_min).margin(1e-3 * (theta_max - theta_min)));
+  CHECK(*hi == Approx(theta_max).margin(1e-3 * (theta_max - theta_min)));
+  // the other two are the other regimes
+  std::vector<std::string> titles{band.panel(1, 0).title, band.panel(2, 0).title};
+  CHECK_THAT(titles[0] + titles[1], Catch::Contains("wavy") && Catch::Contains("looping"));
+}
+
 TEST_CASE("top_nutation: the motion keeps what it needs and starts at the 'top' figure") {
   for (const char* method : {"exact", "rk4"}) {
     INFO(method);
@@ -520,8 +546,8 @@ TEST_CASE("top_nutation: the motion keeps what it needs and starts at the 'top' 
       // The figures: the "top" is the motion's first scene.
       Kept kept;
       figures(report, kept);
-      CHECK(kept.names ==
-            std::vector<std::string>{"potential", "paths", "theta", "top", "integrators"});
+      CHECK(kept.names == std::vector<std::string>{"potential", "paths", "band", "theta", "top",
+                                                   "integrators"});
       REQUIRE(kept.top);
       check_same_scene(*kept.top, motion->scene(0.0));
       // The animation's motion: its still is that figure, its span the run's.
