@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <iostream>
 #include <list>
+#include <memory>
 
 #include "common/output_paths.h"
 #include "common/writers.h"
@@ -798,6 +799,8 @@ void Command::animate(const Computed& computed) {
     for (int k = 1; k < kFitSamples; ++k)
       envelope.merge(motion.scene(frame_time(motion_seconds, k, kFitSamples)));
     const render::Camera camera = render::fitted_camera(envelope, w, h_scene);
+    // and one legend, of every part any frame shows
+    const auto legend = std::make_shared<const render::Scene3D>(envelope);
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
                                {w, h, animation_fps_});
@@ -820,6 +823,7 @@ void Command::animate(const Computed& computed) {
       render::Scene3D scene = motion.scene(motion_time(k));
       scene.title = report.figure_title(scene.title);
       scene.camera = camera;
+      scene.legend_from = legend;
       build += lap(t0);
       render::FigureTiming f;
       render::Image image = render::draw(scene, w, h_scene, timing_ ? &f : nullptr);

@@ -124,8 +124,10 @@ render::Scene3D Motion::scene(double t) const {
   }
   scene.add_arrow(Vector3d::Zero(), -1.9 * size_ * Vector3d::UnitZ(), 0.035 * size_, {colors::kL},
                   "L, fixed in space");
+  // omega and the polhode it traces share a colour, so they share one legend entry
+  const char* omega_name = "\\omega, and its path in the body: the polhode";
   scene.add_arrow(Vector3d::Zero(), omega_scale_ * (a * w), 0.035 * size_, {colors::kOmega},
-                  "\\omega");
+                  omega_name);
   // Poinsot's construction: the energy ellipsoid turning with the body, touching the
   // invariable plane at omega, the polhode on it, the herpolhode on the plane
   const PoinsotEllipsoids e = poinsot_ellipsoids(exact_.moments(), exact_.omega_body(0.0));
@@ -135,7 +137,7 @@ render::Scene3D Motion::scene(double t) const {
   for (std::size_t k = 0; k < polhode_.size(); ++k) {
     std::vector<Vector3d> curve;
     for (const Vector3d& p : polhode_[k]) curve.push_back(to_construction(a, 1.004 * p));
-    scene.add_tube(std::move(curve), 0.012 * size_, {colors::kPolhode}, k == 0 ? "polhode" : "");
+    scene.add_tube(std::move(curve), 0.012 * size_, {colors::kPolhode}, k == 0 ? omega_name : "");
   }
   scene.add_disk(offset_ - plane_depth_ * Vector3d::UnitZ(), Vector3d::UnitZ(), plane_radius_,
                  flat_body(render::kLightGray, 0.55f), "invariable plane");

@@ -420,11 +420,9 @@ render::Scene3D Motion::scene(double t) const {
     }
     when.push_back(t);
     for (const double s : when) path.push_back(reach * (state(s).attitude * Vector3d::UnitZ()));
-    scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0,
-                       from > 0 ? fmt::format("path of the symmetry axis, its last {} nutation "
-                                              "periods",
-                                              kPathPeriods)
-                                : "path of the symmetry axis");
+    // one short name for the whole film (its frames share one legend, and a long entry
+    // would narrow the scene of a small one)
+    scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0, "path of the symmetry axis");
   }
   const double arrow = 1.6 * size;
   if (L.norm() > 0) {
@@ -450,7 +448,7 @@ render::Scene3D Motion::scene(double t) const {
   // The circle the axis's end goes round at this tilt: out there, clear of the disk that
   // hides the centre of mass's own (smaller than the disk), and black beside its path.
   scene.add_polyline(circle(std::acos(std::clamp(e3.z(), -1.0, 1.0)), Vector3d::Zero(), reach),
-                     render::kBlack, 2.5, "precession circle of the axis at this \\theta");
+                     render::kBlack, 2.5, "precession circle at this \\theta");
   scene.add_axes(Vector3d::Zero(), Eigen::Matrix3d::Identity(), 1.4 * size, {"x", "y", "z"});
   scene.camera.eye = size * Vector3d(4.0, -6.5, 1.2);
   scene.camera.target = Vector3d(0, 0, 0.4 * size);

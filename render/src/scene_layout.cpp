@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "placement.h"
@@ -30,11 +31,13 @@ double facing_light() {
 // The legend rows: surfaces as filled swatches, each the colour a face toward the
 // viewer is drawn in (lit, then a translucent one over white), markers as dots,
 // polylines as lines.
-std::vector<LegendEntry> legend_entries(const Scene3D& scene) {
+std::vector<LegendEntry> legend_entries(const Scene3D& shown) {
+  const Scene3D& scene = shown.legend_from ? *shown.legend_from : shown;
   std::vector<LegendEntry> out;
+  std::set<std::string> listed;  // an entry once, the first of its name (merged frames)
   const float light = static_cast<float>(facing_light());
   for (const Scene3D::Object& o : scene.objects())
-    if (!o.label.empty()) {
+    if (!o.label.empty() && listed.insert(o.label).second) {
       const float a = o.material.opacity;
       const Color c = o.material.color;
       const float k = o.material.lit ? light : 1.0f;
@@ -56,7 +59,8 @@ std::vector<LegendEntry> legend_entries(const Scene3D& scene) {
       }
     }
   for (const Scene3D::Polyline& pl : scene.polylines())
-    if (!pl.label.empty()) out.push_back({pl.label, pl.color, false, pl.width});
+    if (!pl.label.empty() && listed.insert(pl.label).second)
+      out.push_back({pl.label, pl.color, false, pl.width});
   return out;
 }
 

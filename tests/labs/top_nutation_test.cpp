@@ -546,8 +546,8 @@ TEST_CASE("top_nutation: the motion keeps what it needs and starts at the 'top' 
       // The figures: the "top" is the motion's first scene.
       Kept kept;
       figures(report, kept);
-      CHECK(kept.names == std::vector<std::string>{"potential", "paths", "band", "theta", "top",
-                                                   "integrators"});
+      CHECK(kept.names ==
+            std::vector<std::string>{"potential", "paths", "band", "theta", "top", "integrators"});
       REQUIRE(kept.top);
       check_same_scene(*kept.top, motion->scene(0.0));
       // The animation's motion: its still is that figure, its span the run's.

@@ -19,6 +19,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,10 @@ class Scene3D {
   Camera camera;
   std::string title;        ///< drawn at the top (text.h markup)
   bool show_legend = true;  ///< a legend of labelled objects in the top-right corner
+  /// When set, the legend drawn is this scene's (each entry once): an animation's frames
+  /// share the legend of all of them, so it neither grows nor reorders when a part
+  /// appears mid-film (the path so far, the herpolhode).
+  std::shared_ptr<const Scene3D> legend_from;
 
   /// Sphere of a radius about a centre.
   void add_sphere(const Eigen::Vector3d& center, double radius, Material m = {},
