@@ -13,6 +13,7 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <list>
 #include <memory>
@@ -25,6 +26,7 @@
 #if RIGID_HAVE_RENDER
 #include "rigid/render/context.h"
 #include "rigid/render/draw.h"
+#include "rigid/render/png.h"
 #include "rigid/render/video.h"
 #include "rigid/support/programs.h"
 #include "rigid/support/progress.h"
@@ -669,10 +671,19 @@ int Command::run(int argc, char** argv, const std::function<Computed()>& compute
 
 // ---- Figures ----------------------------------------------------------------
 
-// The figures as files <prefix><lab>_<name>.<format> in the --figures directory.
+// The figures as files <prefix><lab>_<name>.<format> in the --figures directory. A PNG
+// is encoded on a second thread while the next figure is drawn (the drawing needs the
+// GL context, which is this thread's; the encoding only the pixels); finish() waits for
+// the last and rethrows what failed.
 class Command::FigureFiles : public FigureSink {
  public:
   FigureFiles(Command& command, const Report& report) : command_(command), report_(report) {}
+  FigureFiles(const FigureFiles&) = delete;
+  FigureFiles& operator=(const FigureFiles&) = delete;
+  ~FigureFiles() override {
+    // a failure elsewhere: the encoding in flight is waited for, its own error dropped
+    if (encoding_.valid()) encoding_.wait();
+  }
   void add(const std::string& name, const std::string& caption, render::Plot2D plot) override {
     plot.title = report_.figure_title(plot.title);
     save(name, caption, plot);
@@ -681,12 +692,23 @@ class Command::FigureFiles : public FigureSink {
     scene.title = report_.figure_title(scene.title);
     save(name, caption, scene);
   }
+  /// Waits for the last PNG; its error, if any, is thrown here.
+  void finish();
 
  private:
+  // What a figure took, its encoding's share known when that is done.
+  struct Drawn {
+    std::string file;
+    double seconds = 0;
+    render::FigureTiming phases;
+  };
   template <class Figure>
   void save(const std::string& name, const std::string& caption, const Figure& figure);
+  void record(const Drawn& drawn);
   Command& command_;
   const Report& report_;
+  std::future<double> encoding_;  ///< the seconds the PNG in flight took to encode
+  Drawn in_flight_;
 };
 
 template <class Figure>
@@ -698,32 +720,63 @@ void Command::FigureFiles::save(const std::string& name, const std::string& capt
   if (fs::is_directory(path)) {
     throw InputError("--figures", "'" + path.string() + "' is a directory, not a figure");
   }
-  const auto start = std::chrono::steady_clock::now();
-#if RIGID_HAVE_RENDER
-  // --timing: where each figure's time went (the phases wait for the GL to finish each)
-  render::FigureTiming phases;
-  render::save_figure(figure, path.string(), c.figure_format_, c.figure_width_, c.figure_height_,
-                      c.timing_ ? &phases : nullptr);
-  if (c.timing_) {
-    c.figure_phases_[file] = {{"setup", phases.setup},
-                              {"layout", phases.layout},
-                              {"draw", phases.draw},
-                              {"resolve", phases.resolve},
-                              {"encode", phases.encode}};
-  }
-#else
-  (void)figure;
-  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
-#endif
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   c.outputs_.figures.push_back(file);
   c.outputs_.captions[file] = caption;
-  c.figure_seconds_[file] = elapsed.count();
+  const auto start = std::chrono::steady_clock::now();
+  const auto since = [&start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+#if RIGID_HAVE_RENDER
+  // --timing: where each figure's time went (the phases wait for the GL to finish each)
+  Drawn drawn{file, 0.0, {}};
+  render::FigureTiming* phases = c.timing_ ? &drawn.phases : nullptr;
+  if (c.figure_format_ != render::FigureFormat::kPng) {
+    render::save_figure(figure, path.string(), c.figure_format_, c.figure_width_, c.figure_height_,
+                        phases);
+    drawn.seconds = since();
+    record(drawn);
+    return;
+  }
+  render::Image image = render::draw(figure, c.figure_width_, c.figure_height_, phases);
+  drawn.seconds = since();
+  finish();  // one PNG in flight at a time
+  in_flight_ = std::move(drawn);
+  encoding_ = std::async(std::launch::async, [image = std::move(image), path] {
+    const auto t0 = std::chrono::steady_clock::now();
+    render::write_png(image, path.string());
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  });
+#else
+  (void)figure;
+  (void)since;
+  throw std::runtime_error("this build has no renderer (RIGID_BUILD_RENDER=OFF)");
+#endif
+}
+
+void Command::FigureFiles::finish() {
+  if (!encoding_.valid()) return;
+  const double encode = encoding_.get();
+  in_flight_.seconds += encode;
+  in_flight_.phases.encode = encode;
+  record(in_flight_);
+}
+
+void Command::FigureFiles::record(const Drawn& drawn) {
+  Command& c = command_;
+  c.figure_seconds_[drawn.file] = drawn.seconds;
+  if (c.timing_) {
+    const render::FigureTiming& p = drawn.phases;
+    c.figure_phases_[drawn.file] = {{"setup", p.setup},
+                                    {"layout", p.layout},
+                                    {"draw", p.draw},
+                                    {"resolve", p.resolve},
+                                    {"encode", p.encode}};
+  }
   // A figure the user made very large (past 4x the default's pixels) takes seconds
   // each: say so as each is drawn, rather than sit silent.
   if (static_cast<double>(c.figure_width_) * c.figure_height_ > 4.0 * 1600 * 1200) {
-    std::cerr << c.name_ << ": drew " << file << " (" << c.figure_width_ << "x" << c.figure_height_
-              << ") in " << fmt::format("{:.1f}", elapsed.count()) << " s\n";
+    std::cerr << c.name_ << ": drew " << drawn.file << " (" << c.figure_width_ << "x"
+              << c.figure_height_ << ") in " << fmt::format("{:.1f}", drawn.seconds) << " s\n";
   }
 }
 
@@ -750,6 +803,7 @@ void Command::draw_figures(const Computed& computed) {
 #endif
     FigureFiles sink(*this, *computed.report);
     computed.figures(sink);
+    sink.finish();
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
