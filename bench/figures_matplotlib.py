@@ -93,8 +93,9 @@ EQUAL_COST_SAMPLES = 8
 
 
 def read_csv(path):
+    """A lab's CSV: the comment lines (# ...) that say what each column is, then a header."""
     with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
     head, data = rows[0], np.array(rows[1:], dtype=float)
     return {h: data[:, i] for i, h in enumerate(head)}
 

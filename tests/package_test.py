@@ -41,7 +41,7 @@ def main():
             failures.append(f"control: {control_field(deb, 'Package')} {control_field(deb, 'Version')}")
         depends = [d.split()[0] for d in control_field(deb, "Depends").split(", ")]
         # opened with dlopen (OSMesa) or by path (the font): shlibdeps cannot see them
-        for needed in ("libosmesa6", "fonts-dejavu-core", "libc6", "libstdc++6"):
+        for needed in ("libosmesa6", "libcairo2", "fonts-dejavu-core", "libc6", "libstdc++6"):
             if needed not in depends:
                 failures.append(f"Depends lacks {needed}: {depends}")
         recommends = control_field(deb, "Recommends")

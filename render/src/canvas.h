@@ -76,7 +76,11 @@ inline Eigen::Vector2d text_origin(const TextExtent& e, double x, double y, HAli
                   : Eigen::Vector2d(std::round(x + ax), std::round(y + ay));
 }
 
-/// Lays out the plot at width × height and draws it on `canvas` (plot2d_draw.cpp).
-void draw_plot(const Plot2D& plot, int width, int height, Canvas& canvas);
+class PhaseClock;
+
+/// Lays out the plot at width × height and draws it on `canvas` (plot2d_draw.cpp); the
+/// clock, if given, laps the layout.
+void draw_plot(const Plot2D& plot, int width, int height, Canvas& canvas,
+               PhaseClock* clock = nullptr);
 
 }  // namespace rigid::render::detail

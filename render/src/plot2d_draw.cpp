@@ -773,8 +773,11 @@ void draw_planned(const FigurePlan& fp, detail::Canvas& canvas) {
 }
 }  // namespace
 
-void detail::draw_plot(const Plot2D& plot, int width, int height, Canvas& canvas) {
-  draw_planned(plan_figure(plot, width, height), canvas);
+void detail::draw_plot(const Plot2D& plot, int width, int height, Canvas& canvas,
+                       PhaseClock* clock) {
+  const FigurePlan fp = plan_figure(plot, width, height);
+  if (clock != nullptr) clock->lap(&FigureTiming::layout);
+  draw_planned(fp, canvas);
 }
 
 void detail::render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock) {
@@ -790,12 +793,16 @@ void detail::render_into_target(const Plot2D& plot, int width, int height, Phase
   clock.lap(&FigureTiming::draw, true);
 }
 
+// A plot as pixels is drawn by cairo on the CPU (vector.cpp), with the same drawing
+// calls; render_into_target() draws it with GL for a live view's texture.
 Image draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {
-  detail::PhaseClock clock(timing);
+  return detail::draw_plot_on_cpu(plot, width, height, timing);
+}
+
+Image draw_gl(const Plot2D& plot, int width, int height) {
+  detail::PhaseClock clock(nullptr);
   detail::render_into_target(plot, width, height, clock);
-  Image img = detail::target().finish();
-  clock.lap(&FigureTiming::resolve);
-  return img;
+  return detail::target().finish();
 }
 
 void save_png(const Plot2D& plot, const std::string& path, int width, int height,

@@ -99,6 +99,10 @@ class PhaseClock {
 void render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock);
 void render_into_target(const Scene3D& scene, int width, int height, PhaseClock& clock);
 
+/// Draws the plot with cairo's rasteriser into an image (vector.cpp): no GL buffers,
+/// no multisample resolve, no read-back.
+Image draw_plot_on_cpu(const Plot2D& plot, int width, int height, FigureTiming* timing);
+
 /// Writes img as a PNG (png.h), its time as timing's encode phase, then gives its
 /// pixels back to the target.
 void save_timed(Image img, const std::string& path, FigureTiming* timing);

@@ -1,7 +1,9 @@
-// Figures as SVG and PDF through cairo: a plot drawn on a CairoCanvas (paths for
-// lines and fills; text as text: in a PDF the figure's own font embedded, in an SVG
-// <text> of DejaVu Sans with every glyph placed where the layout put it), a 3D
-// scene as its raster image inside a page of the same size. libcairo (with the FreeType
+// Plots through cairo: as SVG and PDF, drawn on a CairoCanvas (paths for lines and
+// fills; text as text: in a PDF the figure's own font embedded, in an SVG <text> of
+// DejaVu Sans with every glyph placed where the layout put it), a 3D scene as its
+// raster image inside a page of the same size; and as pixels, cairo's antialiased
+// rasteriser on the CPU (no multisampled buffers to clear, resolve and read back: a
+// plot's fixed cost in the GL path was about 30 ms). libcairo (with the FreeType
 // it uses) is opened on the first vector figure, as OSMesa, EGL and the video
 // encoders are, so a process that never writes one never loads it.
 #include <cairo-ft.h>
@@ -89,6 +91,7 @@ struct CairoApi {
   decltype(&cairo_font_options_set_hint_metrics) options_hint_metrics = nullptr;
   decltype(&cairo_set_font_options) set_font_options = nullptr;
   decltype(&cairo_show_glyphs) show_glyphs = nullptr;
+  decltype(&cairo_font_options_set_antialias) options_antialias = nullptr;
   // The figure's font as a face of the FreeType libcairo itself links (a face of the
   // renderer's own FreeType would be another library's object to it).
   cairo_font_face_t* font = nullptr;
@@ -154,6 +157,7 @@ const CairoApi& cairo_api() {
         bind_symbol(lib, "cairo_font_options_set_hint_metrics", a.options_hint_metrics) &&
         bind_symbol(lib, "cairo_set_font_options", a.set_font_options) &&
         bind_symbol(lib, "cairo_show_glyphs", a.show_glyphs) &&
+        bind_symbol(lib, "cairo_font_options_set_antialias", a.options_antialias) &&
         bind_symbol(ft, "FT_Init_FreeType", ft_init) && bind_symbol(ft, "FT_New_Face", ft_new_face);
     if (!ok) throw std::runtime_error("libcairo is too old: it lacks an SVG, PDF or FreeType call");
     // The face lives as long as the process: every vector figure's text uses it.
@@ -197,6 +201,12 @@ void append_escaped(std::string& out, char32_t cp) {
     detail::append_utf8(out, cp);
 }
 
+// One font face serves every figure drawn with cairo: one figure at a time.
+std::mutex& cairo_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 // Draws on a cairo context in the figure's pixels. Fills of one colour that follow each
 // other become one path, filled once: a band drawn as a quad between each pair of samples
 // would otherwise show every shared edge as a seam (each antialiased on its own), where
@@ -214,6 +224,7 @@ class CairoCanvas final : public detail::Canvas {
     // Outlines as designed, advances unrounded: the layout's own metrics (text.cpp).
     api_.options_hint_style(options, CAIRO_HINT_STYLE_NONE);
     api_.options_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+    api_.options_antialias(options, CAIRO_ANTIALIAS_GRAY);
     api_.set_font_options(cr_, options);
     api_.options_destroy(options);
     api_.set_font_face(cr_, api_.font);
@@ -371,9 +382,7 @@ template <class Draw>
 void write_vector(const std::string& path, FigureFormat format, int width, int height,
                   const std::string& title, Draw&& draw) {
   const CairoApi& api = cairo_api();
-  // One font face serves every figure: one figure at a time.
-  static std::mutex mutex;
-  const std::lock_guard<std::mutex> lock(mutex);
+  const std::lock_guard<std::mutex> lock(cairo_mutex());
   std::string bytes, layer;
   cairo_surface_t* surface = nullptr;
   double scale = 1;
@@ -411,6 +420,50 @@ void write_vector(const std::string& path, FigureFormat format, int width, int h
 }
 
 }  // namespace
+
+Image detail::draw_plot_on_cpu(const Plot2D& plot, int width, int height, FigureTiming* timing) {
+  PhaseClock clock(timing);
+  const CairoApi& api = cairo_api();
+  const std::lock_guard<std::mutex> lock(cairo_mutex());
+  cairo_surface_t* surface = api.image_create(CAIRO_FORMAT_RGB24, width, height);
+  cairo_t* cr = api.create(surface);
+  clock.lap(&FigureTiming::setup);
+  {
+    CairoCanvas canvas(cr, false);
+    api.set_rgba(cr, 1, 1, 1, 1);
+    api.paint(cr);
+    detail::draw_plot(plot, width, height, canvas, &clock);
+    canvas.finish();
+  }
+  const cairo_status_t status = api.status(cr);
+  api.destroy(cr);
+  api.surface_flush(surface);
+  clock.lap(&FigureTiming::draw);
+  Image img;
+  img.width = width;
+  img.height = height;
+  img.rgb.resize(static_cast<std::size_t>(width) * height * 3);
+  const unsigned char* data = api.image_data(surface);
+  const int stride = api.image_stride(surface);
+  if (status != CAIRO_STATUS_SUCCESS || data == nullptr) {
+    api.surface_destroy(surface);
+    throw std::runtime_error(std::string("cairo: ") + api.status_string(status));
+  }
+  for (int y = 0; y < height; ++y) {
+    const auto* row =
+        reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+    std::uint8_t* out = img.at(0, y);
+    for (int x = 0; x < width; ++x, out += 3) {
+      const std::uint32_t p = row[x];
+      out[0] = static_cast<std::uint8_t>(p >> 16);
+      out[1] = static_cast<std::uint8_t>(p >> 8);
+      out[2] = static_cast<std::uint8_t>(p);
+    }
+  }
+  api.surface_destroy(surface);
+  clock.lap(&FigureTiming::resolve);
+  return img;
+}
 
 void save_figure(const Plot2D& plot, const std::string& path, FigureFormat format, int width,
                  int height, FigureTiming* timing) {

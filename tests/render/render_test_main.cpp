@@ -50,7 +50,9 @@ std::string context_in_child(const std::string& env, const std::string& path) {
 int main(int argc, char** argv) {
   if (argc == 3 && std::strcmp(argv[1], "--render-child") == 0) {
     try {
-      rigid::render::save_png(rigid::render::test::reference_plot(), argv[2], 800, 600);
+      // through GL: these children compare the GL backends, sample counts and threads
+      rigid::render::write_png(
+          rigid::render::draw_gl(rigid::render::test::reference_plot(), 800, 600), argv[2]);
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "render child: " << e.what() << "\n";

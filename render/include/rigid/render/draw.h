@@ -50,9 +50,12 @@ struct Scene3D::Layout {
 
 /// The layout draw() gives the plot at width × height (needs fonts, not a GL context).
 Plot2D::Layout layout(const Plot2D& plot, int width = 1600, int height = 1200);
-/// Draws the plot into an image of width × height pixels; `timing`, if given, gets where the
-/// time went.
+/// Draws the plot into an image of width × height pixels (cairo's rasteriser, no GL context
+/// needed); `timing`, if given, gets where the time went.
 Image draw(const Plot2D& plot, int width = 1600, int height = 1200, FigureTiming* timing = nullptr);
+/// Draws the plot with OpenGL into an image, as a live view draws it in its window (draw()
+/// rasterises a plot with cairo on the CPU, from the same drawing calls).
+Image draw_gl(const Plot2D& plot, int width = 1600, int height = 1200);
 /// Draws the plot and writes it as a PNG atomically (see png.h).
 void save_png(const Plot2D& plot, const std::string& path, int width = 1600, int height = 1200,
               FigureTiming* timing = nullptr);
