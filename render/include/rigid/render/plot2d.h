@@ -2,8 +2,9 @@
 // each with linear or log10 axes, nice ticks, axis labels with units, line
 // series, markers, reference lines, shaded bands, annotations and a legend.
 // The plot knows only numbers and strings (text.h markup for labels); a lab
-// hands it series computed elsewhere. Rendering draws antialiased thick lines
-// (triangle strips, 4× MSAA) with no depth buffer and no lighting.
+// hands it series computed elsewhere. Rendering draws antialiased thick lines with
+// no depth buffer and no lighting: cairo's paths for a PNG, an SVG or a PDF, GL
+// triangle strips (4× MSAA) in a live view.
 //
 // Sizes (line widths, marker sizes) are given in pixels at the reference
 // 1600×1200 figure and scale with the image, so a figure looks the same from
