@@ -19,28 +19,6 @@ void frame_camera(render::Scene3D& scene, double size) {
   scene.camera.fov_y_deg = 27;
 }
 
-void add_ellipsoid_mesh(render::Scene3D& scene, const Vector3d& semi_axes, render::Color color,
-                        const std::string& label) {
-  constexpr int kMeridians = 12, kParallels = 7, kPoints = 96;
-  const auto point = [&](double polar, double azimuth) {
-    return Vector3d(semi_axes.x() * std::sin(polar) * std::cos(azimuth),
-                    semi_axes.y() * std::sin(polar) * std::sin(azimuth),
-                    semi_axes.z() * std::cos(polar));
-  };
-  for (int m = 0; m < kMeridians; ++m) {
-    std::vector<Vector3d> line;
-    const double azimuth = 2 * kPi * m / kMeridians;
-    for (int k = 0; k <= kPoints / 2; ++k) line.push_back(point(kPi * k / (kPoints / 2), azimuth));
-    scene.add_polyline(line, color, 2.0, m == 0 ? label : "");
-  }
-  for (int p = 1; p <= kParallels; ++p) {
-    std::vector<Vector3d> line;
-    const double polar = kPi * p / (kParallels + 1);
-    for (int k = 0; k <= kPoints; ++k) line.push_back(point(polar, 2 * kPi * k / kPoints));
-    scene.add_polyline(line, color, 2.0);
-  }
-}
-
 // Polhodes on one energy ellipsoid, about the largest and the smallest axis (in
 // the colours of those principal axes), split by the separatrix through the
 // intermediate axis (section 4.1); this body's in omega's colour.

@@ -15,11 +15,6 @@ namespace rigid::lab {
 /// Looks at ellipsoids of semi-axes up to `size` from between the axes.
 void frame_camera(render::Scene3D& scene, double size);
 
-/// An ellipsoid about the origin with these semi-axes as a mesh of lines (meridians
-/// and parallels) in `color`, labelled once: a second surface that does not blend.
-void add_ellipsoid_mesh(render::Scene3D& scene, const Eigen::Vector3d& semi_axes,
-                        render::Color color, const std::string& label);
-
 /// Polhodes on the motion's energy ellipsoid, about the largest and the smallest
 /// axis, the separatrix through the intermediate axis, and `polhode` (this body's,
 /// from omega0) drawn over them.

@@ -23,13 +23,16 @@ render::Scene3D ellipsoids_scene(const FreeBodyExact& motion, const Vector3d& om
   render::Scene3D scene;
   scene.title = "energy and momentum ellipsoids";
   frame_camera(scene, size);
-  // The energy ellipsoid a light surface, the momentum one a mesh of lines in L's
-  // colour: two translucent surfaces would blend into a colour neither swatch shows.
+  // The energy ellipsoid opaque and light, the momentum one translucent in L's colour
+  // around it: the energy ellipsoid shows where it comes out of the momentum one, and
+  // that edge is the polhode (a mesh of lines for the second reads as a tangle where
+  // the first hides half of each line).
   scene.add_ellipsoid(Vector3d::Zero(), e.energy_semi_axes, Eigen::Matrix3d::Identity(),
                       {render::kLightGray, 1.0f, 0.15f},
                       "energy ellipsoid \\Sigma I_i\\omega_i^2 = 2T");
-  add_ellipsoid_mesh(scene, e.momentum_semi_axes, colors::kL,
-                     "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
+  scene.add_ellipsoid(Vector3d::Zero(), e.momentum_semi_axes, Eigen::Matrix3d::Identity(),
+                      {colors::kL, 0.3f, 0.1f},
+                      "momentum ellipsoid \\Sigma I_i^2\\omega_i^2 = L^2");
   // A steady spin has no curve: its polhode is the point omega0 itself.
   for (std::size_t k = 0; k < polhode.size(); ++k) {
     scene.add_tube(polhode[k], 0.012 * size, {colors::kPolhode}, k == 0 ? "polhode" : "");

@@ -49,7 +49,7 @@ render::Scene3D scene_of(const CrookedWheel& wheel, double m0, double omega) {
     // One on each face, opposite: the camera sees the +x face, the other mass through
     // the translucent disk, tinted by it.
     scene.add_label(Vec3(b, -1.3 * a, 0), "m_0 on the front face");
-    scene.add_label(Vec3(-b, 1.3 * a, 0), "m_0 on the back face, seen through the disk");
+    scene.add_label(Vec3(-b, 1.4 * a, 0), "m_0 on the back face");
   }
   // The cone swept by L about the axle when unbalanced, with L at t = 0.
   const double length = 1.6 * a;
