@@ -141,11 +141,18 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
   scene.title =
       fmt::format("the symmetry axis on the unit sphere: this run{}",
                   others.empty() ? std::string() : ", and \\phi-dot_0 = " + others + " rad/s");
-  const double gap = 2.6;
+  // Three spheres in an L: this run's above the first other, the second beside that,
+  // the legend in the free corner (in a row they left the lower part of a 4:3 frame
+  // empty); fewer in a row.
+  const double gap = 3.3, rise = 3.5;
+  const std::vector<Vector3d> centres =
+      paths.size() == 3
+          ? std::vector<Vector3d>{Vector3d(0, 0, rise), Vector3d::Zero(), Vector3d(gap, 0, 0)}
+          : std::vector<Vector3d>{Vector3d::Zero(), Vector3d(gap, 0, 0), Vector3d(2 * gap, 0, 0)};
   int index = 0;
   for (const RegimePaths::Path& p : paths) {
     const HeavyTopExact motion(top, p.start);
-    const Vector3d c(gap * index, 0, 0);
+    const Vector3d c = centres[static_cast<std::size_t>(index)];
     const double period = std::isfinite(motion.nutation_period()) ? motion.nutation_period() : 1.0;
     std::vector<Vector3d> path;
     for (int k = 0; k <= 900; ++k) {
@@ -161,7 +168,7 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
     scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlack, 2.5);
     scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {colors::kFixedAxis},
                     first ? "vertical z" : "");
-    scene.add_label(c + Vector3d(0, -1.3, 0),
+    scene.add_label(c + Vector3d(0, -1.0, -0.8),
                     fmt::format("{}: {}", p.name, to_string(motion.regime())));
     ++index;
   }
@@ -169,11 +176,13 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
   // points up the page and the three stand parallel (from near and above, one perspective
   // tilted them up-left, up and up-right), and the caps the axes sweep still face the
   // camera enough to show their loops and cusps.
-  const double middle = gap * (static_cast<double>(paths.size()) - 1) / 2;
+  Vector3d middle = Vector3d::Zero();
+  for (std::size_t k = 0; k < paths.size(); ++k) middle += centres[k] / paths.size();
+  middle.z() += 0.4;
   const double elevation = deg_to_rad(35.0), distance = 26.0;
   scene.camera.eye =
-      Vector3d(middle, -distance * std::cos(elevation), 0.4 + distance * std::sin(elevation));
-  scene.camera.target = Vector3d(middle, 0, 0.4);
+      middle + Vector3d(0, -distance * std::cos(elevation), distance * std::sin(elevation));
+  scene.camera.target = middle;
   scene.camera.fov_y_deg = 12;
   return scene;
 }
