@@ -3,6 +3,7 @@
 // line naming the option for input no lab accepts.
 #include <unistd.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -553,6 +554,40 @@ TEST_CASE("contract: rigidlab figures lands every lab's figures or none") {
   } else {
     WARN("cannot mount a tmpfs here: the full-disk half is not run");
   }
+  // A directory where one figure goes: refused whole (exit 2, one line), nothing lands,
+  // the user's files stay as they were.
+  const fs::path taken = base / "taken";
+  fs::create_directories(taken / "poinsot_omega.png");
+  std::ofstream(taken / "tire_balancing_mass.png") << "mine\n";
+  const int blocked = std::system((rigidlab + taken.string() + "' >/dev/null 2>&1").c_str());
+  CHECK(WEXITSTATUS(blocked) == 2);
+  std::vector<std::string> kept;
+  for (const auto& entry : fs::directory_iterator(taken)) kept.push_back(entry.path().filename());
+  std::sort(kept.begin(), kept.end());
+  CHECK(kept == std::vector<std::string>{"poinsot_omega.png", "tire_balancing_mass.png"});
+  fs::remove_all(base);
+}
+
+TEST_CASE("contract: a failed run removes no link of the user's, dangling or not") {
+  namespace fs = std::filesystem;
+  const fs::path base = fs::temp_directory_path() / ("rigid_link_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  fs::create_directories(base);
+  fs::create_symlink("nowhere", base / "dangling");
+  // --figures at a dangling link, or below one: the folder cannot be made, and the link
+  // (which fs::exists calls missing) is not the run's to remove
+  for (const std::string figures : {"dangling", "dangling/sub"}) {
+    INFO(figures);
+    const auto run =
+        run_lab("tire_balancing", "--quiet --figures '" + (base / figures).string() + "'");
+    CHECK(run.status == 2);
+    CHECK(fs::is_symlink(base / "dangling"));
+  }
+  const std::string rigidlab = std::string(RIGID_LAB_DIR) + "/rigidlab figures --out '";
+  const int status =
+      std::system((rigidlab + (base / "dangling").string() + "' >/dev/null 2>&1").c_str());
+  CHECK(WEXITSTATUS(status) == 2);
+  CHECK(fs::is_symlink(base / "dangling"));
   fs::remove_all(base);
 }
 

@@ -783,8 +783,14 @@ void Command::FigureFiles::record(const Drawn& drawn) {
 void Command::draw_figures(const Computed& computed) {
   std::error_code error;
   // The folders this run makes, deepest first: removed again if the run lands nothing.
+  // A name that is there as anything, a dangling link included (symlink_status), is not
+  // this run's to remove.
+  const auto missing = [](const fs::path& p) {
+    std::error_code ec;
+    return fs::symlink_status(p, ec).type() == fs::file_type::not_found;
+  };
   for (fs::path dir = fs::absolute(figures_dir_, error).lexically_normal();
-       !error && !dir.empty() && !fs::exists(dir, error) && dir != dir.parent_path();
+       !error && !dir.empty() && missing(dir) && dir != dir.parent_path();
        dir = dir.parent_path()) {
     created_dirs_.push_back(dir);
   }

@@ -209,7 +209,8 @@ class Staging {
       : out_(out),
         dir_((fs::path(out) / (".rigidlab-stage-" + std::to_string(::getpid()))).string()) {
     std::error_code ec;
-    made_out_ = !fs::exists(out, ec) && !ec;
+    // a dangling link at `out` is there: not this run's to remove
+    made_out_ = fs::symlink_status(out, ec).type() == fs::file_type::not_found;
   }
   const std::string& dir() const { return dir_; }
   // A lab's message about the staging folder, said of `out`, in both forms a lab's
@@ -234,6 +235,17 @@ class Staging {
     std::error_code ec;
     fs::remove_all(dir_, ec);
     if (made_out_) fs::remove(out_, ec);  // only if left empty
+  }
+  // A staged figure whose place in `out` a directory takes (no rename can replace it):
+  // found before any file moves, so that all land or none; "" if there is none.
+  std::string blocked() const {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+      const fs::path target = fs::path(out_) / entry.path().filename();
+      if (fs::is_directory(fs::symlink_status(target, ec)))
+        return "'" + target.string() + "' is a directory, not a figure";
+    }
+    return "";
   }
   // Renames every staged file into `out`; "" or what failed, with how many had landed.
   std::string land() const {
@@ -348,6 +360,12 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     std::cerr << "rigidlab: error: figures: " << failed
               << " lab(s) failed (their lines above); no figure landed\n";
     return 1;
+  }
+  // a directory where a figure goes is the --out given: refused whole, as a lab refuses it
+  if (const std::string why = stage.blocked(); !why.empty()) {
+    stage.discard();
+    std::cerr << "rigidlab: error: figures: --out: " << rigid::support::terminal_safe(why) << "\n";
+    return 2;
   }
   if (const std::string why = stage.land(); !why.empty()) {
     std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(why) << "\n";

@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -368,6 +370,20 @@ cairo_status_t append_to_string(void* closure, const unsigned char* data, unsign
   return CAIRO_STATUS_SUCCESS;
 }
 
+// SOURCE_DATE_EPOCH (seconds since 1970, UTC) as a PDF date, or "" if unset or not a number.
+std::string source_date() {
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (epoch == nullptr || *epoch == '\0') return "";
+  char* end = nullptr;
+  const long long seconds = std::strtoll(epoch, &end, 10);
+  if (*end != '\0' || seconds < 0) return "";
+  const std::time_t t = static_cast<std::time_t>(seconds);
+  std::tm utc{};
+  if (gmtime_r(&t, &utc) == nullptr) return "";
+  char text[32];
+  return std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc) > 0 ? text : "";
+}
+
 // The SVG text layer goes last, over what cairo drew, in a group of the figure's font.
 std::string with_text_layer(std::string svg, const std::string& text) {
   const std::size_t end = svg.rfind("</svg>");
@@ -393,6 +409,10 @@ void write_vector(const std::string& path, FigureFormat format, int width, int h
     scale = kPointsPerPixel;
     surface = api.pdf_create(append_to_string, &bytes, width * scale, height * scale);
     api.pdf_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rigidlab");
+    // cairo dates the file now; a reproducible build's SOURCE_DATE_EPOCH dates it then,
+    // so that the same figure is the same bytes
+    if (const std::string date = source_date(); !date.empty())
+      api.pdf_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
     if (!title.empty()) api.pdf_metadata(surface, CAIRO_PDF_METADATA_TITLE, title.c_str());
   }
   cairo_t* cr = api.create(surface);
