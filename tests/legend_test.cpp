@@ -4,6 +4,7 @@
 // its pixels are the swatch's colour (what a reader matches them by).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <variant>
@@ -101,6 +102,38 @@ void check_entry(const std::string& where, const Figure& original, const Figure&
   }
 }
 
+// A legend under the panels names a label's items in every panel: they are drawn alike,
+// and recoloured together, the swatch follows.
+void check_shared_legend(const std::string& where, const rigid::render::Plot2D& plot,
+                         const std::vector<ScreenRect>& legends) {
+  std::vector<std::string> labels;
+  std::map<std::string, const rigid::render::Series*> first;
+  for (int r = 0; r < plot.rows(); ++r)
+    for (int col = 0; col < plot.cols(); ++col)
+      for (const auto& s : plot.panel(r, col).series) {
+        if (s.label.empty()) continue;
+        const auto [it, added] = first.emplace(s.label, &s);
+        if (added) {
+          labels.push_back(s.label);
+          continue;
+        }
+        INFO(where << ": " << s.label << " in another panel");
+        const Color &a = s.color, &b = it->second->color;
+        CHECK((a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a));
+        CHECK(s.dash == it->second->dash);
+        CHECK(s.marker == it->second->marker);
+      }
+  REQUIRE(!labels.empty());
+  for (const std::string& label : labels) {
+    auto probed = plot;
+    for (int r = 0; r < plot.rows(); ++r)
+      for (int col = 0; col < plot.cols(); ++col)
+        for (auto& s : probed.panel(r, col).series)
+          if (s.label == label) s.color = kProbe;
+    check_entry(where + ": " + label, plot, probed, legends);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("legends: each entry's swatch is the colour of what it names and it is drawn") {
@@ -122,8 +155,12 @@ TEST_CASE("legends: each entry's swatch is the colour of what it names and it is
         } else {
           const auto& plot = std::get<rigid::render::Plot2D>(f.figure);
           const auto layout = rigid::render::layout(plot, kWidth, kHeight);
-          std::vector<ScreenRect> legends;
+          std::vector<ScreenRect> legends{layout.legend};
           for (const auto& p : layout.panels) legends.push_back(p.legend);
+          if (!layout.legend.empty()) {
+            check_shared_legend(where, plot, legends);
+            continue;
+          }
           for (int r = 0; r < plot.rows(); ++r) {
             for (int col = 0; col < plot.cols(); ++col) {
               const auto& panel = plot.panel(r, col);

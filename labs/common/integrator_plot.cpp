@@ -39,16 +39,17 @@ struct LineStyle {
   render::Dash dash;
 };
 
-// One line style a method, so a method looks alike in every lab and no two share
-// one: a family shares a colour (the splittings blue, Verner's pairs orange and
-// black), its members differ in dash.
+// One line style a method, so a method looks alike in every lab and no two share one:
+// each its own colour (Okabe-Ito's seven that read on white, olive, wine and grey), and
+// a family one dash besides (Verner's pairs solid, dashed, dash-dot, dashed; the
+// splittings solid and dashed), for a reader who cannot tell two colours apart.
 LineStyle line_style(Method m) {
   using render::Dash;
   switch (m) {
     case Method::kSplitting:
       return {render::kBlue, Dash::kSolid};
     case Method::kSplitting4:
-      return {render::kBlue, Dash::kDashed};
+      return {render::kGray, Dash::kDashed};
     case Method::kRk4:
       return {render::kBluishGreen, Dash::kSolid};
     case Method::kDopri5:
@@ -60,11 +61,11 @@ LineStyle line_style(Method m) {
     case Method::kVern6:
       return {render::kOrange, Dash::kSolid};
     case Method::kVern7:
-      return {render::kOrange, Dash::kDashed};
+      return {render::kOlive, Dash::kDashed};
     case Method::kVern8:
       return {render::kBlack, Dash::kDashDot};
     case Method::kVern9:
-      return {render::kBlack, Dash::kDashed};
+      return {render::kWine, Dash::kDashed};
   }
   return {render::kGray, Dash::kSolid};
 }
@@ -74,7 +75,7 @@ LineStyle line_style(Method m) {
 render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
                                 const TimeAxis& time, const std::string& error_title,
                                 const std::string& error_label, const std::string& energy_label,
-                                double error_floor) {
+                                double error_floor, const ErrorCeiling& ceiling) {
   const bool in_periods = time.period > 0.0;
   const std::string t_label = in_periods ? "t (" + time.name + ")" : "t (s)";
   render::Plot2D plot(1, 2);
@@ -130,7 +131,18 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
     a.color = b.color = style.color;
     a.dash = b.dash = style.dash;
   }
-  energy.legend = render::LegendPlace::kNone;
+  // both panels draw the same methods: one legend under them, where no axis grows for it
+  plot.shared_legend = true;
+  // the most accurate on top: where several meet at the floor, the best shows
+  error.first_on_top = energy.first_on_top = true;
+  double worst = 0.0;
+  for (const render::Series& series : error.series)
+    for (const double v : series.y) worst = std::max(worst, v);
+  if (ceiling.value > 0.0 && worst >= 0.1 * ceiling.value) {
+    error.add_ref_line(ceiling.value, false, ceiling.label).color = render::kBlack;
+    // room above it, so that the line and the curves stopped at it are not the frame
+    error.y.max = 5 * std::max(ceiling.value, worst);
+  }
   // every curve at its floor: a decade above it to show them on
   for (render::Panel* panel : {&error, &energy}) {
     double top = panel->y.min;

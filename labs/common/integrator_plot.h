@@ -12,7 +12,7 @@ namespace rigid::lab {
 
 /// One method's curves; a method that did not run or blew up is listed but not drawn.
 struct MethodCurve {
-  Method method;     ///< its line's colour and dash (a family shares a colour)
+  Method method;     ///< its line's colour and dash (its own colour; a family's dash)
   std::string name;  ///< e.g. "rk4, h = 0.001 s"
   bool drawn = false;
   std::vector<double> t, error, energy_error;
@@ -41,16 +41,25 @@ struct TimeAxis {
 /// their axes start there: the same pixels on every machine.
 inline constexpr double kRoundoffFloor = 1e-12;
 
+/// The most a run can be off, in the error's unit (e.g. 2 |omega0|: omega reversed), named
+/// for the reader; drawn as a line where some run comes within a decade of it, so that a
+/// curve stopped at it reads as "as wrong as can be" (a motion this sensitive, or a run
+/// this cheap), not as a level of accuracy. Value 0: none.
+struct ErrorCeiling {
+  double value = 0.0;
+  std::string label;
+};
+
 /// Two panels under `title`: `error_label` and |E - E0| (`energy_label`), each
 /// the largest so far at each t, on log axes: what a run has lost by then, its
 /// trend plain where the error itself oscillates sample to sample (a symplectic
 /// method's band shows as a level line, a steady drift as a rising one). The
 /// first sample (t = 0, no error) is left out. Errors below roundoff are drawn at it:
 /// `error_floor` (kRoundoffFloor in the error's unit) and kRoundoffFloor for the
-/// energy's, where each axis starts; the title says so.
+/// energy's, where each axis starts; the title says so. One legend under both panels.
 render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
                                 const TimeAxis& time, const std::string& error_title,
                                 const std::string& error_label, const std::string& energy_label,
-                                double error_floor);
+                                double error_floor, const ErrorCeiling& ceiling = {});
 
 }  // namespace rigid::lab

@@ -16,7 +16,7 @@ namespace {
 // toward its largest in-plane moment's axis, and in the shared orange that axis and L
 // in vermillion read as one hue and one direction; olive is yellow dark enough for
 // text on white.
-constexpr render::Color kAxisColors[3] = {colors::kPrincipal[0], render::rgb8(150, 135, 0),
+constexpr render::Color kAxisColors[3] = {colors::kPrincipal[0], render::kOlive,
                                           colors::kPrincipal[2]};
 
 // The lamina with its rotation axis, omega, L and the principal axes.

@@ -327,7 +327,10 @@ void figures(const Report& report, FigureSink& sink) {
                equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
                "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)",
                // theta's roundoff: kRoundoffFloor of a radian, in degrees
-               rad_to_deg(kRoundoffFloor)));
+               rad_to_deg(kRoundoffFloor),
+               // a run half a nutation out of step is off by the band's whole width
+               {rad_to_deg(motion.theta_max() - motion.theta_min()),
+                "\\theta_{max} - \\theta_{min}: half a nutation out of step"}));
 }
 
 // ---- The motion --------------------------------------------------------------

@@ -176,20 +176,40 @@ LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& 
     z.row = std::max(z.row, m.height());
   }
   z.row += st.row_gap;
-  z.width = 2 * st.legend_padding + st.swatch + st.swatch_gap + text_w;
+  z.column = st.swatch + st.swatch_gap + text_w;
+  z.width = 2 * st.legend_padding + z.column;
   z.height = 2 * st.legend_padding + z.row * entries.size();
   return z;
 }
 
+LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& st,
+                          double max_width) {
+  LegendSize z = measure_legend(entries, st);
+  if (entries.empty()) return z;
+  // columns a text's width apart, with a swatch's gap between them
+  const double gap = 2 * st.swatch_gap;
+  const int n = static_cast<int>(entries.size());
+  const int fit = static_cast<int>((max_width - 2 * st.legend_padding + gap) / (z.column + gap));
+  const int rows = (n + std::clamp(fit, 1, n) - 1) / std::clamp(fit, 1, n);
+  z.columns = (n + rows - 1) / rows;
+  z.width = 2 * st.legend_padding + z.columns * z.column + (z.columns - 1) * gap;
+  z.height = 2 * st.legend_padding + z.row * rows;
+  return z;
+}
+
 void draw_legend(Canvas& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
-                 const Style& st) {
+                 const Style& st, const LegendSize& z) {
   if (entries.empty() || box.empty()) return;
-  const LegendSize z = measure_legend(entries, st);
   p.rect(box.x0, box.y0, box.x1, box.y1, kLegendFill);
   p.rect_outline(box.x0, box.y0, box.x1, box.y1, st.legend_edge, kLegendEdge);
-  double y = box.y0 + st.legend_padding + 0.5 * z.row;
-  for (const LegendEntry& e : entries) {
-    const double x0 = box.x0 + st.legend_padding, x1 = x0 + st.swatch;
+  const std::size_t rows = (entries.size() + z.columns - 1) / z.columns;
+  const double step =
+      z.columns > 1 ? (box.width() - 2 * st.legend_padding - z.column) / (z.columns - 1) : 0.0;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const LegendEntry& e = entries[k];
+    const double y = box.y0 + st.legend_padding + (0.5 + static_cast<double>(k % rows)) * z.row;
+    const double x0 = box.x0 + st.legend_padding + static_cast<double>(k / rows) * step,
+                 x1 = x0 + st.swatch;
     if (e.filled) {
       p.rect(x0, y - 0.3 * z.row, x1, y + 0.3 * z.row, e.color);
     } else {
@@ -203,8 +223,12 @@ void draw_legend(Canvas& p, const std::vector<LegendEntry>& entries, const Scree
     }
     p.text(e.label, x1 + st.swatch_gap, y, st.legend_font, kTextColor, HAlign::kLeft,
            VAlign::kCenter);
-    y += z.row;
   }
+}
+
+void draw_legend(Canvas& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
+                 const Style& st) {
+  draw_legend(p, entries, box, st, measure_legend(entries, st));
 }
 
 }  // namespace rigid::render::detail

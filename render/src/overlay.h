@@ -90,14 +90,24 @@ struct LegendEntry {
   double marker_size = 0;  ///< reference pixels
 };
 
-/// The size of a legend box in pixels and the height of one row.
+/// The size of a legend box in pixels, the height of one row, and its columns: the
+/// entries fill the first column top to bottom, then the next.
 struct LegendSize {
   double width = 0, height = 0, row = 0;
+  int columns = 1;
+  double column = 0;  ///< the width of one column, swatch and text
 };
 
-/// Measures the legend box for a list of entries.
+/// Measures the legend box for a list of entries in one column.
 LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& st);
+/// Measures it in as few rows as the columns that fit in `max_width` allow, columns of
+/// balanced length (10 entries in 3 columns of 4, 4 and 2).
+LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& st,
+                          double max_width);
 /// Draws a legend's entries in a box of the measured size.
+void draw_legend(Canvas& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
+                 const Style& st, const LegendSize& size);
+/// Draws a legend of one column.
 void draw_legend(Canvas& p, const std::vector<LegendEntry>& entries, const ScreenRect& box,
                  const Style& st);
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "overlay.h"
 #include "painter.h"
@@ -106,14 +107,50 @@ bool at_bottom(Spot s) {
   return s == Spot::kBottomRight || s == Spot::kBottomLeft || s == Spot::kBottom;
 }
 
+// The colour each series and band is drawn in: its own, or the palette's next.
+struct PanelColors {
+  std::vector<Color> series, bands;
+};
+PanelColors resolve_colors(const Panel& pn) {
+  PanelColors c;
+  std::size_t k = 0;
+  for (const Series& s : pn.series)
+    c.series.push_back(s.color.a < 0 ? palette_color(k++) : s.color);
+  for (const Band& b : pn.bands) c.bands.push_back(b.color.a < 0 ? palette_color(k++) : b.color);
+  return c;
+}
+
+// The legend entries of a panel's labelled series, bands and spans, each drawn as what it
+// names is: one source for a swatch and its item.
+std::vector<detail::LegendEntry> legend_entries(const Panel& pn, const PanelColors& colors) {
+  std::vector<detail::LegendEntry> entries;
+  for (std::size_t k = 0; k < pn.series.size(); ++k) {
+    const Series& s = pn.series[k];
+    if (!s.label.empty())
+      entries.push_back(
+          {s.label, colors.series[k], false, s.width, s.dash, s.marker, s.marker_size});
+  }
+  for (std::size_t k = 0; k < pn.bands.size(); ++k)
+    if (!pn.bands[k].label.empty())
+      entries.push_back({pn.bands[k].label,
+                         colors.bands[k].with_alpha(std::max(0.35f, pn.bands[k].opacity)), true});
+  for (const Span& s : pn.spans)
+    if (!s.label.empty())
+      entries.push_back({s.label, s.color.with_alpha(std::max(0.3f, s.opacity)), true});
+  return entries;
+}
+
 // Everything about one panel at one size, worked out before drawing.
 class PanelPlan {
  public:
-  PanelPlan(const Panel& panel, const Style& st, const ScreenRect& cell)
-      : pn_(panel), st_(st), cell_(cell) {
-    resolve_colors();
+  // `own_legend` false: the figure's shared legend lists this panel's entries.
+  PanelPlan(const Panel& panel, const Style& st, const ScreenRect& cell, bool own_legend = true)
+      : pn_(panel), st_(st), cell_(cell), colors_(resolve_colors(panel)) {
     data_ranges();
-    legend_entries();
+    if (own_legend && pn_.legend != LegendPlace::kNone) {
+      entries_ = legend_entries(pn_, colors_);
+      legend_size_ = detail::measure_legend(entries_, st_);
+    }
     plan();
   }
 
@@ -126,6 +163,7 @@ class PanelPlan {
     for (const ScreenRect& r : ref_boxes_)
       if (!r.empty()) out.ref_labels.push_back(r);
     out.x_lo = xm_.lo, out.x_hi = xm_.hi, out.y_lo = ym_.lo, out.y_hi = ym_.hi;
+    out.x_ticks = xt_.values, out.y_ticks = yt_.values;
     return out;
   }
 
@@ -139,14 +177,6 @@ class PanelPlan {
 
  private:
   // ---- Planning ----------------------------------------------------------
-
-  void resolve_colors() {
-    std::size_t k = 0;
-    for (const Series& s : pn_.series)
-      series_colors_.push_back(s.color.a < 0 ? palette_color(k++) : s.color);
-    for (const Band& b : pn_.bands)
-      band_colors_.push_back(b.color.a < 0 ? palette_color(k++) : b.color);
-  }
 
   void data_ranges() {
     Range rx, ry;
@@ -183,25 +213,6 @@ class PanelPlan {
     ym_.scale = pn_.y.scale;
     finish_range(pn_.x, rx, x_lo_, x_hi_);
     finish_range(pn_.y, ry, y_lo_, y_hi_);
-  }
-
-  void legend_entries() {
-    if (pn_.legend == LegendPlace::kNone) return;
-    for (std::size_t k = 0; k < pn_.series.size(); ++k) {
-      const Series& s = pn_.series[k];
-      if (!s.label.empty())
-        entries_.push_back(
-            {s.label, series_colors_[k], false, s.width, s.dash, s.marker, s.marker_size});
-    }
-    for (std::size_t k = 0; k < pn_.bands.size(); ++k)
-      if (!pn_.bands[k].label.empty())
-        entries_.push_back({pn_.bands[k].label,
-                            band_colors_[k].with_alpha(std::max(0.35f, pn_.bands[k].opacity)),
-                            true});
-    for (const Span& s : pn_.spans)
-      if (!s.label.empty())
-        entries_.push_back({s.label, s.color.with_alpha(std::max(0.3f, s.opacity)), true});
-    legend_size_ = detail::measure_legend(entries_, st_);
   }
 
   // Ranges, frame and ticks; then the legend, growing the y range for it if it must; then
@@ -265,6 +276,14 @@ class PanelPlan {
       for (std::size_t i = 1; i < t.values.size(); ++i)
         gap = std::min(gap, std::abs(m(t.values[i]) - m(t.values[i - 1])));
       if (gap >= need || t.values.size() <= 2) break;
+    }
+    // two ticks at least where a finer step gives them room: one alone gives no scale
+    for (int finer = target + 1; t.values.size() < 2 && finer <= target + 4; ++finer) {
+      const Ticks more = make_ticks(axis, m.lo, m.hi, finer);
+      const TextExtent e = tick_extent(more);
+      const double need = horizontal ? e.width + 2.5 * st_.pad : e.height() + 1.2 * st_.pad;
+      if (more.values.size() >= 2 && std::abs(m(more.values[1]) - m(more.values[0])) >= need)
+        t = more;
     }
     return t;
   }
@@ -564,7 +583,7 @@ class PanelPlan {
     // Bands first (translucent, under the lines), as quads between consecutive samples.
     for (std::size_t b = 0; b < pn_.bands.size(); ++b) {
       const Band& band = pn_.bands[b];
-      const Color c = band_colors_[b].with_alpha(band.opacity);
+      const Color c = colors_.bands[b].with_alpha(band.opacity);
       const std::size_t n = std::min({band.x.size(), band.y_lo.size(), band.y_hi.size()});
       for (std::size_t i = 0; i + 1 < n; ++i) {
         if (!xm_.valid(band.x[i]) || !xm_.valid(band.x[i + 1]) || !ym_.valid(band.y_lo[i]) ||
@@ -584,9 +603,10 @@ class PanelPlan {
       else
         p.polyline({{rect_.x0, ym_(r.value), 0}, {rect_.x1, ym_(r.value), 0}}, w, r.color, dash);
     }
-    for (std::size_t k = 0; k < pn_.series.size(); ++k) {
+    for (std::size_t i = 0; i < pn_.series.size(); ++i) {
+      const std::size_t k = pn_.first_on_top ? pn_.series.size() - 1 - i : i;
       const Series& s = pn_.series[k];
-      const Color c = series_colors_[k];
+      const Color c = colors_.series[k];
       const std::size_t n = std::min(s.x.size(), s.y.size());
       if (s.width > 0) {
         const double w = st_.line(s.width);
@@ -713,7 +733,7 @@ class PanelPlan {
   const Panel& pn_;
   Style st_;  // a copy: plans are moved about with their figure
   ScreenRect cell_;
-  std::vector<Color> series_colors_, band_colors_;
+  PanelColors colors_;
   double x_lo_ = 0, x_hi_ = 1, y_lo_ = 0, y_hi_ = 1;  // ranges before equal aspect
   AxisMap xm_, ym_;
   Ticks xt_, yt_;
@@ -732,11 +752,28 @@ struct FigurePlan {
   Style st;
   detail::TitleBlock title;
   std::vector<PanelPlan> panels;
+  std::vector<detail::LegendEntry> legend;  // the shared legend's entries
+  detail::LegendSize legend_size;
+  ScreenRect legend_box;
 };
 
+// The shared legend's entries: every panel's, a label once.
+std::vector<detail::LegendEntry> shared_entries(const Plot2D& plot) {
+  std::vector<detail::LegendEntry> entries;
+  for (int r = 0; r < plot.rows(); ++r)
+    for (int c = 0; c < plot.cols(); ++c) {
+      const Panel& pn = plot.panel(r, c);
+      for (detail::LegendEntry& e : legend_entries(pn, resolve_colors(pn))) {
+        const auto same = [&](const detail::LegendEntry& o) { return o.label == e.label; };
+        if (std::none_of(entries.begin(), entries.end(), same)) entries.push_back(std::move(e));
+      }
+    }
+  return entries;
+}
+
 FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
-  FigurePlan fp{
-      detail::figure_style(width, plot.style_height > 0 ? plot.style_height : height), {}, {}};
+  FigurePlan fp;
+  fp.st = detail::figure_style(width, plot.style_height > 0 ? plot.style_height : height);
   const Style& st = fp.st;
   fp.title = detail::layout_title(plot.title, st.title_font, st.margin, width - st.margin,
                                   0.5 * width, st.margin);
@@ -744,13 +781,26 @@ FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
   // margin: a panel's outermost text then sits at the margin, as the title does.
   const double edge = st.margin - st.pad;
   const double top = plot.title.empty() ? edge : fp.title.box.y1 + 0.8 * st.pad;
-  const double cw = (width - 2 * edge) / plot.cols(), ch = (height - edge - top) / plot.rows();
+  // A shared legend sits centred under the panels, at the margin.
+  double bottom = height - edge;
+  if (plot.shared_legend) {
+    fp.legend = shared_entries(plot);
+    fp.legend_size = detail::measure_legend(fp.legend, st, width - 2 * st.margin);
+    if (!fp.legend.empty()) {
+      const double w = fp.legend_size.width, h = fp.legend_size.height;
+      fp.legend_box = {std::round(0.5 * (width - w)), std::round(height - st.margin - h),
+                       std::round(0.5 * (width + w)), std::round(height - st.margin)};
+      bottom = fp.legend_box.y0 - 0.5 * st.pad;
+    }
+  }
+  const double cw = (width - 2 * edge) / plot.cols(), ch = (bottom - top) / plot.rows();
   fp.panels.reserve(static_cast<std::size_t>(plot.rows()) * plot.cols());
   for (int r = 0; r < plot.rows(); ++r)
     for (int c = 0; c < plot.cols(); ++c)
       fp.panels.emplace_back(
           plot.panel(r, c), st,
-          ScreenRect{edge + c * cw, top + r * ch, edge + (c + 1) * cw, top + (r + 1) * ch});
+          ScreenRect{edge + c * cw, top + r * ch, edge + (c + 1) * cw, top + (r + 1) * ch},
+          !plot.shared_legend);
   return fp;
 }
 
@@ -762,6 +812,7 @@ Plot2D::Layout layout(const Plot2D& plot, int width, int height) {
   out.title = fp.title.box;
   out.title_lines = static_cast<int>(fp.title.lines.size());
   out.title_size = fp.title.size;
+  out.legend = fp.legend_box;
   for (const PanelPlan& p : fp.panels) out.panels.push_back(p.report());
   return out;
 }
@@ -770,6 +821,7 @@ namespace {
 void draw_planned(const FigurePlan& fp, detail::Canvas& canvas) {
   detail::draw_title(canvas, fp.title);
   for (const PanelPlan& panel : fp.panels) panel.draw(canvas);
+  detail::draw_legend(canvas, fp.legend, fp.legend_box, fp.st, fp.legend_size);
 }
 }  // namespace
 

@@ -252,6 +252,59 @@ TEST_CASE("legend: a panel full of data gets headroom and the legend covers none
   }
 }
 
+TEST_CASE("legend: a shared legend sits under the panels in columns and grows no axis",
+          "[render][legend]") {
+  // two panels drawing the same ten labelled curves, edge to edge, as the integrator
+  // figures do: one legend box for both, where no axis makes room for it
+  const auto fill = [](Plot2D& plot) {
+    for (int col = 0; col < 2; ++col) {
+      for (int k = 0; k < 10; ++k) {
+        std::vector<double> t, y;
+        for (int i = 0; i <= 200; ++i) {
+          t.push_back(0.05 * i);
+          y.push_back(std::sin(t.back() + k));
+        }
+        plot.panel(0, col).add_line(t, y, "method " + std::to_string(k) + ", tol 1.5e-12");
+      }
+    }
+  };
+  for (const auto& [w, h] : {std::pair{1600, 1200}, std::pair{800, 600}, std::pair{1920, 1080}}) {
+    INFO(w << "x" << h);
+    Plot2D own(1, 2), shared(1, 2);
+    fill(own);
+    fill(shared);
+    shared.shared_legend = true;
+    const Plot2D::Layout a = layout(own, w, h), b = layout(shared, w, h);
+    CHECK(a.legend.empty());
+    REQUIRE(!b.legend.empty());
+    const double m = margin_at(w, h);
+    CHECK(b.legend.x0 >= m - 1);
+    CHECK(b.legend.x1 <= w - m + 1);
+    CHECK(b.legend.y1 <= h - m + 1);
+    for (const Plot2D::PanelLayout& p : b.panels) {
+      CHECK(p.legend.empty());
+      CHECK(b.legend.y0 > p.frame.y1);  // under the frames (and their x labels' row)
+      // the data's range padded by 4 %, not grown for a box
+      CHECK(p.y_hi == Approx(1.08).epsilon(1e-3));
+      CHECK(p.y_lo == Approx(-1.08).epsilon(1e-3));
+    }
+    // ten rows in one column (a panel's own legend) are over twice as tall
+    CHECK(b.legend.height() < 0.5 * a.panels[0].legend.height());
+  }
+}
+
+TEST_CASE("ticks: a narrow panel's axis has two labelled ticks at least", "[render][ticks]") {
+  // four panels side by side at 800x600: each x axis is about 150 px for 0.1 to 3.1,
+  // where a step of 2 would label only "2"
+  Plot2D plot(1, 4);
+  for (int col = 0; col < 4; ++col) plot.panel(0, col).add_line({0.1, 3.1}, {1e-12, 1e-4});
+  for (int col = 0; col < 4; ++col) plot.panel(0, col).y.scale = Scale::kLog10;
+  for (const Plot2D::PanelLayout& p : layout(plot, 800, 600).panels) {
+    CHECK(p.x_ticks.size() >= 2);
+    CHECK(p.y_ticks.size() >= 2);
+  }
+}
+
 TEST_CASE("annotation: placed texts overlap no data, no legend and no other text",
           "[render][annotation]") {
   // A damped wave with notes crowded about its first peaks, one at the frame's corner, and

@@ -26,12 +26,14 @@ struct Plot2D::PanelLayout {
   std::vector<ScreenRect> annotations;  ///< each annotation's text, in the panel's order
   std::vector<ScreenRect> ref_labels;   ///< each labelled reference line's label, in order
   double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;  ///< the axis ranges drawn
+  std::vector<double> x_ticks, y_ticks;           ///< the labelled ticks' values
 };
 
 /// Where the figure's parts land at a size: the title (one or two lines, maybe shrunk) and
 /// every panel, row by row.
 struct Plot2D::Layout {
   ScreenRect title;
+  ScreenRect legend;  ///< the shared legend under the panels (empty when there is none)
   int title_lines = 0;
   double title_size = 0;  ///< the title's font size in pixels
   std::vector<PanelLayout> panels;

@@ -111,6 +111,10 @@ struct Panel {
   std::vector<Annotation> annotations;
   LegendPlace legend = LegendPlace::kAuto;
   bool equal_aspect = false;  ///< one data unit is as long on x as on y (phase portraits)
+  /// Series are drawn in order, a later one over an earlier; true draws them last to first,
+  /// so that the legend's first entries lie on top (the most accurate methods, where
+  /// several meet at a floor).
+  bool first_on_top = false;
 
   /// Adds a line series and returns it for further settings.
   Series& add_line(std::vector<double> x, std::vector<double> y, std::string label = {});
@@ -144,6 +148,11 @@ class Plot2D {
 
   /// Figure title over all panels (text.h markup); empty for none.
   std::string title;
+  /// One legend for the whole figure, in columns under the panels, instead of one a
+  /// panel: for panels that draw the same items (each method's error and its energy
+  /// error), so no panel's axis grows to make room for a box. It lists every panel's
+  /// labelled items, a label once (its first panel's style).
+  bool shared_legend = false;
   /// The height the figure style (fonts, line widths, margins) is sized for; 0: the
   /// image's own. A strip under an animation's scene sets the whole frame's height,
   /// so its text matches the scene's instead of shrinking with the strip.
