@@ -46,6 +46,8 @@ constexpr float kPlotShare = 0.34f;  // of the height under the scene's top
 // A script's frame: 1/30 s of wall time, so a script plays the same on any machine.
 constexpr double kScriptFrameSeconds = 1.0 / 30.0;
 constexpr double kMinSpeed = 0.1, kMaxSpeed = 10.0;
+// The legend entry of the exact motion laid faintly over an integrator's.
+const char* const kExactGhost = "the exact motion (faint): the drift is the gap";
 // A motion longer than this plays faster than real time at first (the Earth's
 // precession takes two days): in kLongMotionPlay seconds, and the speed reaches that far.
 constexpr double kLongMotionPlay = 10.0;
@@ -528,6 +530,21 @@ const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& n
 
 }  // namespace
 
+const Explorer::MotionEnvelope& Explorer::motion_envelope() const {
+  MotionEnvelope& e = motion_envelope_;
+  if (e.generation == session_->generation() && e.lab == lab_index_) return e;
+  const lab::Animation* motion = session_->animation();
+  e.scene = lab::motion_envelope(*motion);
+  e.scene.title = session_->report().figure_title(e.scene.title);
+  render::Scene3D legend = e.scene;
+  if (const lab::Animation* exact = exact_motion())
+    legend.merge(exact->scene(0.0).faded(kExactGhost));
+  e.legend = std::make_shared<const render::Scene3D>(std::move(legend));
+  e.generation = session_->generation();
+  e.lab = lab_index_;
+  return e;
+}
+
 const render::Scene3D* Explorer::shown_scene() const {
   const lab::Animation* motion = session_->animation();
   const auto names = choices_of(*session_, true, motion != nullptr);
@@ -541,9 +558,9 @@ const render::Scene3D* Explorer::shown_scene() const {
       m.scene.title = session_->report().figure_title(m.scene.title);
       // an integrator's motion, with the exact one laid over it faintly: drift is seen
       if (const lab::Animation* exact = exact_motion()) {
-        m.scene.merge(exact->scene(std::min(time_, exact->seconds))
-                          .faded("the exact motion (faint): the drift is the gap"));
+        m.scene.merge(exact->scene(std::min(time_, exact->seconds)).faded(kExactGhost));
       }
+      m.scene.legend_from = motion_envelope().legend;
       m.generation = session_->generation();
       m.time = time_;
       m.lab = lab_index_;
@@ -599,20 +616,14 @@ render::Camera Explorer::base_camera(int width, int height) {
   }
   const render::Scene3D* shown = shown_scene();
   const lab::Animation* motion = session_->animation();
-  render::Scene3D envelope = *shown;
-  if (motion != nullptr && scene_choice_ == 0) {
-    constexpr int kFitSamples = 16;  // as the command line's --animate fits its camera
-    envelope = motion->scene(0.0);
-    envelope.title = session_->report().figure_title(envelope.title);
-    for (int k = 1; k < kFitSamples; ++k)
-      envelope.merge(motion->scene(motion->seconds * k / kFitSamples));
-  }
+  // as the command line's --animate fits its camera
+  const bool moving = motion != nullptr && scene_choice_ == 0;
   fit_ = {session_->inputs_generation(),
           scene_choice_,
           width,
           height,
           lab_index_,
-          render::fitted_camera(envelope, width, height)};
+          render::fitted_camera(moving ? motion_envelope().scene : *shown, width, height)};
   return fit_.camera;
 }
 

@@ -153,6 +153,16 @@ class Explorer {
     render::Scene3D scene;
   };
   mutable MotionScene motion_scene_;
+  // the whole motion's scenes spread over it (lab::motion_envelope): what the camera is
+  // fitted to; and with the exact motion's ghost, the legend every frame keeps
+  struct MotionEnvelope {
+    long generation = -1;
+    std::size_t lab = 0;
+    render::Scene3D scene;
+    std::shared_ptr<const render::Scene3D> legend;
+  };
+  mutable MotionEnvelope motion_envelope_;
+  const MotionEnvelope& motion_envelope() const;
   // the plot's panels against the motion's time: where the time cursor goes
   struct Cursor {
     render::ScreenRect frame;

@@ -76,7 +76,6 @@ std::string parse_size(const std::string& text, int min_w, int min_h, int max_w,
 
 // Frame k at k/frames of the motion (the last frame one short of its end, so a periodic
 // motion loops without a repeated frame), the camera fitted at kFitSamples more.
-constexpr int kFitSamples = 16;
 // The most pixels an animation may draw, frames x width x height: 3840x2160 for
 // 1200 frames (10 s at 120 fps) or 1920x1080 for 4800 frames (80 s at 60 fps).
 constexpr double kMaxPixelFrames = 1e10;
@@ -854,10 +853,8 @@ void Command::animate(const Computed& computed) {
   try {
     render::context();
     // one camera for every frame, fitted to the union of frames spread over the motion
-    render::Scene3D envelope = motion.scene(0.0);
+    render::Scene3D envelope = motion_envelope(motion);
     envelope.title = report.figure_title(envelope.title);
-    for (int k = 1; k < kFitSamples; ++k)
-      envelope.merge(motion.scene(frame_time(motion_seconds, k, kFitSamples)));
     const render::Camera camera = render::fitted_camera(envelope, w, h_scene);
     // and one legend, of every part any frame shows
     const auto legend = std::make_shared<const render::Scene3D>(envelope);

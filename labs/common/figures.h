@@ -71,6 +71,21 @@ struct Animation {
   double strip_share = 0.0;
 };
 
+/// How many scenes, spread over a motion (at k/16 of it), a film's one camera is fitted
+/// to and its one legend gathered from.
+inline constexpr int kFitSamples = 16;
+
+/// The union of `motion`'s scenes at kFitSamples times spread over it, with its first
+/// scene's title: what one camera for the whole film is fitted to, and whose legend (of
+/// every part any frame shows) every frame keeps, through Scene3D::legend_from, so that
+/// it neither grows nor reorders when a part appears mid-film.
+inline render::Scene3D motion_envelope(const Animation& motion) {
+  render::Scene3D envelope = motion.scene(0.0);
+  for (int k = 1; k < kFitSamples; ++k)
+    envelope.merge(motion.scene(motion.seconds * k / kFitSamples));
+  return envelope;
+}
+
 /// The Animation that plays `motion` (a lab's Motion: seconds() and scene(t)), shared
 /// by every copy of its functions.
 template <class Motion>

@@ -330,6 +330,7 @@ Scene3D Scene3D::faded(const std::string& label, float opacity) const {
 }
 
 std::vector<std::string> Scene3D::legend_labels() const {
+  if (legend_from) return legend_from->legend_labels();
   std::vector<std::string> out;
   const auto add = [&out](const std::string& label) {
     if (!label.empty() && std::find(out.begin(), out.end(), label) == out.end())
@@ -360,6 +361,8 @@ Scene3D Scene3D::without(const std::vector<std::string>& hidden) const {
   };
   filter(out.objects_);
   filter(out.polylines_);
+  // a hidden part leaves the legend it shares with other frames too
+  if (legend_from) out.legend_from = std::make_shared<const Scene3D>(legend_from->without(hidden));
   return out;
 }
 

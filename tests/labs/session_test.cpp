@@ -3,6 +3,7 @@
 // reproduces it; and random slider moves across every lab never leave a NaN in what
 // is shown (the report, the figures, the motion), nor crash (the sanitizer build runs
 // this too).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -242,4 +243,24 @@ TEST_CASE("session: 1000 random slider moves across every lab show no NaN and ne
   // most moves along a slider are taken, and the rules refuse some
   CHECK(taken > 500);
   CHECK(refused > 0);
+}
+
+TEST_CASE("session: a film's one legend lists every part any of its frames shows") {
+  // the command line's --animate and the explorer's live view keep the legend of
+  // motion_envelope() in every frame: it must not miss a part that shows between the
+  // times it is gathered at
+  for (const rigid::lab::LabEntry& entry : rigid::lab::all_labs()) {
+    auto session = entry.make();
+    session->wait();
+    const rigid::lab::Animation* motion = session->animation();
+    if (motion == nullptr) continue;
+    const std::vector<std::string> listed = rigid::lab::motion_envelope(*motion).legend_labels();
+    for (int k = 0; k < 97; ++k) {
+      const double t = motion->seconds * k / 97;
+      for (const std::string& label : motion->scene(t).legend_labels()) {
+        INFO(entry.name << " at t = " << t << " s: " << label);
+        CHECK(std::find(listed.begin(), listed.end(), label) != listed.end());
+      }
+    }
+  }
 }

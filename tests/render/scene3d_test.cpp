@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "rigid/render/draw.h"
 #include "rigid/render/image.h"
@@ -283,6 +284,18 @@ TEST_CASE("scene3d: a part hidden by its legend entry takes its unlabelled follo
   CHECK(without.polylines().empty());
   CHECK(without.legend_labels() == std::vector<std::string>{"body", "L"});
   CHECK(s.without({}).objects().size() == s.objects().size());
+}
+
+TEST_CASE("scene3d: a frame that keeps a film's legend lists its parts and hides them there too") {
+  Scene3D film;
+  film.add_sphere({0, 0, 0}, 1.0, {}, "body");
+  film.add_tube({{0, 0, 0}, {1, 0, 0}}, 0.1, {}, "polhode");
+  Scene3D first;  // the first frame: no polhode drawn yet
+  first.add_sphere({0, 0, 0}, 1.0, {}, "body");
+  first.legend_from = std::make_shared<const Scene3D>(film);
+  CHECK(first.legend_labels() == std::vector<std::string>{"body", "polhode"});
+  CHECK(first.without({"polhode"}).legend_labels() == std::vector<std::string>{"body"});
+  CHECK(layout(first.without({"body", "polhode"}), 800, 600).legend.empty());
 }
 
 TEST_CASE("scene3d: a faded scene is the same geometry, faint, under one legend entry") {

@@ -135,11 +135,11 @@ class Scene3D {
   /// of its own, no labels, and one legend entry, `label`, for all of it.
   Scene3D faded(const std::string& label, float opacity = 0.3f) const;
 
-  /// The labels of the legend's entries, in its order, each once.
+  /// The labels of the legend's entries, in its order, each once (legend_from's, if set).
   std::vector<std::string> legend_labels() const;
   /// The scene without the parts of the legend's entries in `hidden`: each surface or line
   /// labelled so, and the unlabelled ones added right after it (a polhode's other loops,
-  /// the point an arrow ends on), up to the next labelled one.
+  /// the point an arrow ends on), up to the next labelled one; legend_from's too.
   Scene3D without(const std::vector<std::string>& hidden) const;
 
   /// What the scene holds; public so the renderer (and tests) can read it.
