@@ -25,6 +25,7 @@
 #include "explorer.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/context.h"
+#include "rigid/support/cli.h"
 #include "rigid/support/text.h"
 #include "script.h"
 
@@ -72,6 +73,7 @@ int fail(const std::string& option, const std::string& rule) {
 std::string apply_lab_options(
     const rigid::lab::Session& s, const std::vector<std::string>& args,
     const std::function<std::string(const std::string&, const std::string&)>& set) {
+  std::vector<std::size_t> given;
   for (std::size_t k = 0; k < args.size(); ++k) {
     std::string flag = args[k], value;
     bool has_value = false;
@@ -83,6 +85,12 @@ std::string apply_lab_options(
     const std::size_t i = s.find(flag);
     if (i >= s.input_count()) {
       return flag + ": not an input of " + s.name() + " (the explorer takes only the lab's inputs)";
+    }
+    // as on the lab's command line: which of two values was meant is not guessed
+    if (s.rule(i).kind() != rigid::lab::InputKind::kFlag) {
+      if (std::find(given.begin(), given.end(), i) != given.end())
+        return flag + ": given twice: give it once";
+      given.push_back(i);
     }
     if (!has_value && s.rule(i).kind() != rigid::lab::InputKind::kFlag) {
       if (k + 1 >= args.size()) return flag + ": needs a value";
@@ -144,6 +152,10 @@ int main(int argc, char** argv) {
       "opens (exit 2, naming the file and the line). Examples: explore/demos/.");
   app.allow_extras();
   app.positionals_at_end(false);
+  if (const std::string twice =
+          rigid::support::repeated_option(app, std::vector<std::string>(argv + 1, argv + argc));
+      !twice.empty())
+    return fail(twice, "given twice: give it once");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -103,6 +103,13 @@ TEST_CASE("contract: input no lab accepts exits 2 with one line naming the optio
       // a side that wraps to 800 in an int is too large, not 800
       {"--figure-size 4294968096x600 --figures /tmp", "--figure-size"},
       {"--figure-size 800x4294967896 --figures /tmp", "--figure-size"},
+      // an option given twice: which value was meant is not guessed
+      {"--figures a --figures=b", "--figures: given twice: give it once"},
+      {"--figure-size 800x600 --figures a --figure-size 900x600", "--figure-size: given twice"},
+      // a figure's setting with no figures to draw is refused, not ignored
+      {"--figure-format svg", "--figure-format: sets the figures: give --figures DIR too"},
+      {"--figure-size 1920x1080", "--figure-size: sets the figures"},
+      {"--figure-prefix book-", "--figure-prefix: sets the figures"},
   };
   for (const std::string& lab : all_labs()) {
     for (const auto& [args, option] : cases) {

@@ -344,6 +344,8 @@ TEST_CASE("explore: bad options are one line and exit 2 before any window opens"
       {"top_nutation --size 10x10", "--size: must be WxH"},
       {"top_nutation --mass -1", "--mass: must be positive (got -1)"},
       {"top_nutation --mass", "--mass: needs a value"},
+      {"top_nutation --mass 1 --mass=2", "--mass: given twice: give it once"},
+      {"top_nutation --size 800x600 --size 900x600", "--size: given twice: give it once"},
       {"top_nutation --json", "--json: not an input of top_nutation"},
       {"poinsot --inertia 1,1,3", "I1 + I2 >= I3"},
       {"top_nutation --script /nonexistent/s.txt", "--script: /nonexistent/s.txt: cannot be read"},

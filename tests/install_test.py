@@ -76,7 +76,9 @@ def main():
                             (["figures", "--out", bad_out, "--figure-prefix", "a/b"],
                              "rigidlab: error: figures: --figure-prefix: "),
                             (["figures", "--out", "/proc/rigidlab-cannot"],
-                             "rigidlab: error: figures: --out: ")]:
+                             "rigidlab: error: figures: --out: "),
+                            (["figures", "--out", bad_out, "--out", bad_out + "2"],
+                             "rigidlab: error: figures: --out: given twice")]:
             bad = run("rigidlab", *args)
             if (bad.returncode != 2 or not bad.stderr.startswith(start)
                     or bad.stderr.count("\n") != 1 or bad.stdout):

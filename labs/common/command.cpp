@@ -28,6 +28,7 @@
 #include "rigid/render/draw.h"
 #include "rigid/render/png.h"
 #include "rigid/render/video.h"
+#include "rigid/support/cli.h"
 #include "rigid/support/programs.h"
 #include "rigid/support/progress.h"
 #include "rigid/support/text.h"
@@ -484,6 +485,12 @@ void Command::check_output_paths() const {
   if (app_.count("--figures") > 0 && figures_dir_.empty()) {
     throw InputError("--figures", "needs a directory name");
   }
+  // as the animation's options without --animate: a setting for nothing is not ignored
+  if (app_.count("--figures") == 0) {
+    for (const char* flag : {"--figure-format", "--figure-size", "--figure-prefix"}) {
+      if (app_.count(flag) > 0) throw InputError(flag, "sets the figures: give --figures DIR too");
+    }
+  }
   if (!figures_dir_.empty()) {
     // a figure's file: PREFIX + LAB + "_" + its name (a word of at most 32 bytes) + ".png",
     // ".svg" or ".pdf",
@@ -504,6 +511,10 @@ void Command::check_output_paths() const {
 void Command::parse(int argc, char** argv) {
   app_.allow_extras();
   for (int i = 0; i < argc; ++i) outputs_.command.emplace_back(argv[i]);
+  const std::vector<std::string> args(outputs_.command.begin() + std::min(argc, 1),
+                                      outputs_.command.end());
+  if (const std::string twice = support::repeated_option(app_, args); !twice.empty())
+    throw InputError(twice, "given twice: give it once");
   try {
     app_.parse(argc, argv);
   } catch (const CLI::ArgumentMismatch& e) {

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/support/cli.h"
 #include "rigid/support/programs.h"
 #include "rigid/support/text.h"
 
@@ -426,6 +427,10 @@ int run(int argc, char** argv) {
     app.add_option("--figure-prefix", prefix, "prefix of the figure files' names");
     app.add_option("--figure-format", format, "png, svg or pdf (vectors for slides and papers)")
         ->capture_default_str();
+    if (const std::string twice = rigid::support::repeated_option(app, args); !twice.empty()) {
+      std::cerr << "rigidlab: error: figures: " << twice << ": given twice: give it once\n";
+      return 2;
+    }
     try {
       app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
     } catch (const CLI::ParseError& e) {
