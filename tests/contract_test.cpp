@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -528,6 +529,27 @@ TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave n
     fs::remove_all(dir);
     fs::remove(status_file);
   }
+}
+
+TEST_CASE("contract: rigidlab figures says a killed run's staging folder is left and keeps it") {
+  // kill -9 leaves OUT/.rigidlab-stage-PID (no handler runs); the next run names it for
+  // the user to remove, and leaves it: it did not make it
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() / ("rigid_left_" + std::to_string(::getpid()));
+  const fs::path left = out / ".rigidlab-stage-2147483646";  // a pid no process has
+  fs::create_directories(left);
+  const std::string err = (out.string() + ".err");
+  const std::string command = std::string(RIGID_LAB_DIR) +
+                              "/rigidlab figures --figure-size 800x600 --out '" + out.string() +
+                              "' 2> '" + err + "'";
+  CHECK(std::system(command.c_str()) == 0);
+  std::ifstream in(err);
+  const std::string said((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(said.find("rigidlab: warning: figures: " + left.string() +
+                  " was left by a run that was killed") != std::string::npos);
+  CHECK(fs::is_directory(left));
+  fs::remove_all(out);
+  fs::remove(err);
 }
 
 TEST_CASE("contract: rigidlab figures lands every lab's figures or none") {

@@ -18,6 +18,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -274,6 +275,21 @@ class Staging {
   bool made_out_ = false;
 };
 
+// Staging folders in `out` of runs killed outright (SIGKILL, a power cut: nothing could
+// remove them), said once each for the user to remove: not this run's to delete.
+void say_left_stages(const std::string& out, const std::string& ours) {
+  const std::string stem = ".rigidlab-stage-";
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(out, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(stem, 0) != 0 || entry.path() == fs::path(ours)) continue;
+    const long pid = std::strtol(name.c_str() + stem.size(), nullptr, 10);
+    if (pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM)) continue;
+    std::cerr << "rigidlab: warning: figures: " << rigid::support::terminal_safe(entry.path())
+              << " was left by a run that was killed before it could remove it: remove it\n";
+  }
+}
+
 // Every lab's figures into `out`, as many labs at once as there are processors.
 int figures(const std::string& out, const std::string& size, const std::string& prefix,
             const std::string& format) {
@@ -308,6 +324,7 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     std::cerr << "rigidlab: error: figures: " << err.substr(0, err.find('\n')) << "\n";
     return 2;
   }
+  say_left_stages(out, stage.dir());
   std::cerr << err;
   int failed = first == 0 ? 0 : 1;
   std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED")
