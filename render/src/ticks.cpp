@@ -79,7 +79,24 @@ Ticks log_ticks(double lo, double hi, int max_count) {
         const double v = m * std::pow(10.0, k);
         if (v >= lo && v <= hi) t.minor.push_back(v);
       }
-  // Under one decade: fall back to 1-2-5 ticks so the axis is still readable.
+  // Under two decades: 1, 2 and 5 times each power of ten, still a log axis's ticks
+  // (the decade among them labelled as a decade), where two or more fall inside.
+  if (t.values.size() < 2) {
+    Ticks f;
+    f.lo = lo;
+    f.hi = hi;
+    for (int k = k0 - 1; k <= k1; ++k)
+      for (const int m : {1, 2, 5}) {
+        const double v = m * std::pow(10.0, k);
+        if (v < lo * (1 - 1e-9) || v > hi * (1 + 1e-9)) continue;
+        f.values.push_back(v);
+        f.labels.push_back((m == 1 ? "" : std::to_string(m) + "\u00d7") + "10^{" +
+                           std::to_string(k) + "}");
+      }
+    if (f.values.size() >= 2 && static_cast<int>(f.values.size()) <= std::max(2, max_count))
+      return f;
+  }
+  // Under one 1-2-5 step: linear ticks, so the axis is still readable.
   if (t.values.size() < 2) {
     Ticks lin = linear_ticks(lo, hi, 4);
     lin.minor.clear();

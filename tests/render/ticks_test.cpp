@@ -56,4 +56,13 @@ TEST_CASE("ticks: many decades are thinned, few fall back to 1-2-5", "[render][t
   for (double v : t.values) CHECK(std::abs(std::log10(v) - std::round(std::log10(v))) < 1e-9);
   const Ticks f = log_ticks(2, 8, 8);
   CHECK(f.values.size() >= 2);  // no decade inside: linear ticks instead
+  // a decade and a bit (an error floored at 1e-12 under a curve at 8e-12): 1, 2 and 5
+  // times the powers of ten, the floor's decade labelled
+  const Ticks g = log_ticks(3.3e-13, 9.1e-12, 8);
+  REQUIRE(g.values.size() == 4);
+  CHECK(g.values[0] == Approx(5e-13));
+  CHECK(g.values[1] == Approx(1e-12));
+  CHECK(g.values[3] == Approx(5e-12));
+  CHECK(g.labels[1] == "10^{-12}");
+  CHECK(g.labels[2] == "2\u00d710^{-12}");
 }
