@@ -4,11 +4,13 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <csignal>
@@ -44,13 +46,54 @@ constexpr int kMaxHeld = 64;
 char g_held[kMaxHeld][PATH_MAX];
 volatile std::sig_atomic_t g_used[kMaxHeld] = {};
 
+// Another thread (a PNG encoding while the next figure draws) may be creating a
+// temporary while the handler runs: the handler says the process is dying, then waits
+// for every creation under way to be held, so that none lands after its unlinks; a
+// creation that sees the process dying makes nothing. A thread blocks SIGINT and
+// SIGTERM while it creates, so the handler never waits for its own thread (the signal
+// goes to another thread, or waits until the temporary is held). Lock-free atomics:
+// what a handler may touch.
+std::atomic<int> g_creating{0};
+std::atomic<bool> g_dying{false};
+static_assert(std::atomic<int>::is_always_lock_free && std::atomic<bool>::is_always_lock_free);
+
 extern "C" void remove_held_and_die(int sig) {
+  g_dying.store(true);
+  while (g_creating.load() > 0) {
+  }
   for (int i = 0; i < kMaxHeld; ++i) {
     if (g_used[i]) ::unlink(g_held[i]);
   }
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
+
+// Brackets the making of a temporary (held, then created): see remove_held_and_die.
+class Creating {
+ public:
+  Creating() {
+    sigset_t block;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    ::pthread_sigmask(SIG_BLOCK, &block, &old_);
+    g_creating.fetch_add(1);
+    if (g_dying.load()) {
+      // the handler is removing the temporaries and ends the process: make nothing
+      g_creating.fetch_sub(1);
+      for (;;) ::pause();
+    }
+  }
+  ~Creating() {
+    g_creating.fetch_sub(1);
+    ::pthread_sigmask(SIG_SETMASK, &old_, nullptr);
+  }
+  Creating(const Creating&) = delete;
+  Creating& operator=(const Creating&) = delete;
+
+ private:
+  sigset_t old_;
+};
 
 void install_handlers_once() {
   static const bool installed = [] {
@@ -167,8 +210,12 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   const std::string tmp = temporary_name(path);
   // O_EXCL: never write through a file (or link) that is already there; 0666
   // less the umask gives an ordinary file's permissions.
-  const int slot = hold(tmp);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  int slot = -1, fd = -1;
+  {
+    const Creating creating;
+    slot = hold(tmp);
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  }
   if (fd < 0) {
     const int e = errno;
     release(slot);
