@@ -90,17 +90,16 @@ void figures(const Report& report, FigureSink& sink) {
     double largest = report.omega0.norm();
     for (const auto& piece : curve)
       for (const Vector3d& w : piece) largest = std::max(largest, w.norm());
-    sink.add(
-        "integrators",
-        fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
-                    "{} against the exact solution",
-                    kEqualCostEvaluations, report.comparisons.at_cost_periods, period_name),
-        integrators_plot(
-            method_curves(report.comparisons.at_cost),
-            fmt::format("at equal cost, {:g} evaluations a period", kEqualCostEvaluations),
-            {report.scale, period_name}, "error in \\omega",
-            "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0", kRoundoffFloor,
-            {2 * largest / report.omega0.norm(), "\\omega reversed: as far off as a run can be"}));
+    sink.add("integrators",
+             fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
+                         "{} against the exact solution",
+                         kEqualCostEvaluations, report.comparisons.at_cost_periods, period_name),
+             integrators_plot(
+                 method_curves(report.comparisons.at_cost),
+                 fmt::format("at equal cost, {:g} evaluations a period", kEqualCostEvaluations),
+                 {report.scale, period_name}, "error in \\omega",
+                 "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0", kRoundoffFloor,
+                 {2 * largest / report.omega0.norm(), "\\omega reversed (the largest error)"}));
   }
   if (periodic) {
     sink.add("herpolhode",

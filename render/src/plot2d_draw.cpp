@@ -405,12 +405,16 @@ class PanelPlan {
   void place_ref_labels(const detail::Occupancy& grid) {
     ref_boxes_.assign(pn_.ref_lines.size(), ScreenRect{});
     ref_on_data_.assign(pn_.ref_lines.size(), false);
+    ref_sizes_.assign(pn_.ref_lines.size(), st_.note_font);
     std::vector<ScreenRect> taken;
     const double gap = 0.4 * st_.pad, end = 0.5 * st_.pad;
     for (std::size_t k = 0; k < pn_.ref_lines.size(); ++k) {
       const RefLine& r = pn_.ref_lines[k];
       if (r.label.empty()) continue;
-      const TextExtent e = measure_text(r.label, st_.note_font);
+      // a label longer than its line's run inside the frame shrinks to fit it
+      ref_sizes_[k] = detail::fitting_size(r.label, st_.note_font,
+                                           (r.vertical ? rect_.height() : rect_.width()) - 2 * end);
+      const TextExtent e = measure_text(r.label, ref_sizes_[k]);
       std::vector<ScreenRect> c;
       if (r.vertical) {
         const double x = xm_(r.value), w = e.height(), h = e.width;
@@ -649,9 +653,9 @@ class PanelPlan {
         p.rect(b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m, detail::kLegendFill);
       }
       if (r.vertical)
-        p.text(r.label, b.x1, b.y0, st_.note_font, r.color, HAlign::kRight, VAlign::kBottom, true);
+        p.text(r.label, b.x1, b.y0, ref_sizes_[k], r.color, HAlign::kRight, VAlign::kBottom, true);
       else
-        p.text(r.label, b.x0, b.y0, st_.note_font, r.color, HAlign::kLeft, VAlign::kTop);
+        p.text(r.label, b.x0, b.y0, ref_sizes_[k], r.color, HAlign::kLeft, VAlign::kTop);
     }
     p.no_clip();
     annotations(p);
@@ -745,6 +749,7 @@ class PanelPlan {
   ScreenRect legend_;
   std::vector<ScreenRect> ref_boxes_, note_boxes_;
   std::vector<bool> ref_on_data_;  ///< each reference label covers data where it is
+  std::vector<double> ref_sizes_;  ///< each reference label's font size
 };
 
 // The figure at a size: its title and one plan per panel, row by row.

@@ -293,6 +293,28 @@ TEST_CASE("legend: a shared legend sits under the panels in columns and grows no
   }
 }
 
+TEST_CASE("ref line: a label longer than its panel shrinks to fit inside the frame",
+          "[render][annotation]") {
+  Plot2D plot(1, 2);
+  for (int col = 0; col < 2; ++col) {
+    Panel& p = plot.panel(0, col);
+    p.add_line({0, 1, 2, 3}, {1e-12, 1e-6, 1, 1});
+    p.y.scale = Scale::kLog10;
+    p.add_ref_line(2.0, false, "a reference line whose label is longer than a narrow panel");
+  }
+  for (const auto& [w, h] : {std::pair{800, 600}, std::pair{1600, 1200}}) {
+    for (const Plot2D::PanelLayout& l : layout(plot, w, h).panels) {
+      INFO(w << "x" << h);
+      REQUIRE(l.ref_labels.size() == 1);
+      const ScreenRect& b = l.ref_labels[0];
+      CHECK(b.x0 >= l.frame.x0);
+      CHECK(b.x1 <= l.frame.x1);
+      CHECK(b.y0 >= l.frame.y0);
+      CHECK(b.y1 <= l.frame.y1);
+    }
+  }
+}
+
 TEST_CASE("ticks: a narrow panel's axis has two labelled ticks at least", "[render][ticks]") {
   // four panels side by side at 800x600: each x axis is about 150 px for 0.1 to 3.1,
   // where a step of 2 would label only "2"
