@@ -158,8 +158,7 @@ class Explorer {
   struct MotionEnvelope {
     long generation = -1;
     std::size_t lab = 0;
-    render::Scene3D scene;
-    std::shared_ptr<const render::Scene3D> legend;
+    std::shared_ptr<const render::Scene3D> scene, legend;
   };
   mutable MotionEnvelope motion_envelope_;
   const MotionEnvelope& motion_envelope() const;
