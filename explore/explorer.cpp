@@ -533,21 +533,20 @@ const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& n
 const Explorer::MotionEnvelope& Explorer::motion_envelope() const {
   MotionEnvelope& e = motion_envelope_;
   // Made once for a set of inputs, as the camera is fitted (a later result for the same
-  // inputs shows the same parts), and held while a slider is dragged: sixteen scenes a
-  // step were most of a dragged top's step (29 -> 50 ms a frame).
+  // inputs shows the same parts), and held while a slider is dragged: sixteen scenes
+  // would be most of a dragged step's time (a part the drag brings in is still named:
+  // legend_from adds what it lacks).
   const bool current =
       e.generation == session_->inputs_generation() || (interacting_ && e.generation >= 0);
   if (current && e.lab == lab_index_) return e;
   const lab::Animation* motion = session_->animation();
   render::Scene3D envelope = lab::motion_envelope(*motion);
   envelope.title = session_->report().figure_title(envelope.title);
+  render::Scene3D legend = envelope.legend_only();
+  if (const lab::Animation* exact = exact_motion())
+    legend.merge(exact->scene(0.0).faded(kExactGhost).legend_only());
   e.scene = std::make_shared<const render::Scene3D>(std::move(envelope));
-  e.legend = e.scene;
-  if (const lab::Animation* exact = exact_motion()) {
-    render::Scene3D legend = *e.scene;
-    legend.merge(exact->scene(0.0).faded(kExactGhost));
-    e.legend = std::make_shared<const render::Scene3D>(std::move(legend));
-  }
+  e.legend = std::make_shared<const render::Scene3D>(std::move(legend));
   e.generation = session_->inputs_generation();
   e.lab = lab_index_;
   return e;

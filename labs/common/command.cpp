@@ -75,17 +75,12 @@ std::string parse_size(const std::string& text, int min_w, int min_h, int max_w,
   return "";
 }
 
-// Frame k at k/frames of the motion (the last frame one short of its end, so a periodic
-// motion loops without a repeated frame), the camera fitted at kFitSamples more.
 // The most pixels an animation may draw, frames x width x height: 3840x2160 for
 // 1200 frames (10 s at 120 fps) or 1920x1080 for 4800 frames (80 s at 60 fps).
 constexpr double kMaxPixelFrames = 1e10;
 
 int frame_count(double duration, double fps) {
   return std::max(1, static_cast<int>(std::lround(duration * fps)));
-}
-double frame_time(double motion_seconds, int k, int frames) {
-  return motion_seconds * k / frames;
 }
 
 // One lab input as a CLI11 option: where CLI11 stores what was typed.
@@ -833,8 +828,8 @@ void Command::draw_figures(const Computed& computed) {
 std::vector<double> Command::animation_times(double motion_seconds) const {
   const int frames = frame_count(animation_duration_, animation_fps_);
   std::vector<double> times;
-  for (int k = 0; k < frames; ++k) times.push_back(frame_time(motion_seconds, k, frames));
-  for (int k = 0; k < kFitSamples; ++k) times.push_back(frame_time(motion_seconds, k, kFitSamples));
+  for (int k = 0; k < frames; ++k) times.push_back(film_time(motion_seconds, k, frames));
+  for (int k = 0; k < kFitSamples; ++k) times.push_back(film_time(motion_seconds, k, kFitSamples));
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   return times;
@@ -855,7 +850,7 @@ void Command::animate(const Computed& computed) {
 #if RIGID_HAVE_RENDER
   const auto start = std::chrono::steady_clock::now();
   const int frames = frame_count(animation_duration_, animation_fps_);
-  const auto motion_time = [&](int k) { return frame_time(motion_seconds, k, frames); };
+  const auto motion_time = [&](int k) { return film_time(motion_seconds, k, frames); };
   const int w = animation_width_, h = animation_height_;
   // the scene above, the strip (if any) below: both even, for H.264
   const int h_strip =
@@ -868,7 +863,7 @@ void Command::animate(const Computed& computed) {
     envelope.title = report.figure_title(envelope.title);
     const render::Camera camera = render::fitted_camera(envelope, w, h_scene);
     // and one legend, of every part any frame shows
-    const auto legend = std::make_shared<const render::Scene3D>(envelope);
+    const auto legend = std::make_shared<const render::Scene3D>(envelope.legend_only());
 
     render::VideoWriter writer(animation_path_, *render::video_format_for(animation_path_),
                                {w, h, animation_fps_});

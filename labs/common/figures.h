@@ -75,6 +75,12 @@ struct Animation {
 /// to and its one legend gathered from.
 inline constexpr int kFitSamples = 16;
 
+/// The time of frame k of `count` spread over `seconds` of motion: k/count of it (the
+/// last one short of the end, so a periodic motion loops without a repeated frame).
+inline double film_time(double seconds, int k, int count) {
+  return seconds * k / count;
+}
+
 /// The union of `motion`'s scenes at kFitSamples times spread over it, with its first
 /// scene's title: what one camera for the whole film is fitted to, and whose legend (of
 /// every part any frame shows) every frame keeps, through Scene3D::legend_from, so that
@@ -82,7 +88,7 @@ inline constexpr int kFitSamples = 16;
 inline render::Scene3D motion_envelope(const Animation& motion) {
   render::Scene3D envelope = motion.scene(0.0);
   for (int k = 1; k < kFitSamples; ++k)
-    envelope.merge(motion.scene(motion.seconds * k / kFitSamples));
+    envelope.merge(motion.scene(film_time(motion.seconds, k, kFitSamples)));
   return envelope;
 }
 

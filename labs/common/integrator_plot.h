@@ -41,7 +41,8 @@ struct TimeAxis {
 /// their axes start there: the same pixels on every machine.
 inline constexpr double kRoundoffFloor = 1e-12;
 
-/// The most a run can be off, in the error's unit (e.g. 2 |omega0|: omega reversed), named
+/// The most a run that keeps its invariants can be off, in the error's unit (omega
+/// reversed; theta across the whole nutation band), named
 /// for the reader; drawn as a line where some run comes within a decade of it, so that a
 /// curve stopped at it reads as "as wrong as can be" (a motion this sensitive, or a run
 /// this cheap), not as a level of accuracy. Value 0: none.

@@ -85,8 +85,9 @@ void figures(const Report& report, FigureSink& sink) {
   const std::string period_name = periodic ? "polhode periods" : "turns";
   // (a live view's first look at new inputs has not compared the methods yet)
   if (!report.comparisons.at_cost.empty()) {
-    // A run can be at most omega reversed off: 2 |omega| at its largest on the polhode
-    // (|omega| is not conserved; T and |L| are), over |omega0|.
+    // A run that keeps T and |L| is at most omega reversed off: 2 |omega| at its largest
+    // on the polhode (|omega| is not conserved; T and |L| are), over |omega0|; one that
+    // drifts may pass it.
     double largest = report.omega0.norm();
     for (const auto& piece : curve)
       for (const Vector3d& w : piece) largest = std::max(largest, w.norm());
@@ -99,7 +100,7 @@ void figures(const Report& report, FigureSink& sink) {
                  fmt::format("at equal cost, {:g} evaluations a period", kEqualCostEvaluations),
                  {report.scale, period_name}, "error in \\omega",
                  "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0", kRoundoffFloor,
-                 {2 * largest / report.omega0.norm(), "\\omega reversed (the largest error)"}));
+                 {2 * largest / report.omega0.norm(), "\\omega reversed"}));
   }
   if (periodic) {
     sink.add("herpolhode",

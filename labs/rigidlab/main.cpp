@@ -280,7 +280,9 @@ class Staging {
 void say_left_stages(const std::string& out, const std::string& ours) {
   const std::string stem = ".rigidlab-stage-";
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(out, ec)) {
+  // increment(ec): a range-for's ++ would throw on a folder that fails mid-listing
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::directory_entry& entry = *it;
     const std::string name = entry.path().filename().string();
     if (name.rfind(stem, 0) != 0 || entry.path() == fs::path(ours)) continue;
     const long pid = std::strtol(name.c_str() + stem.size(), nullptr, 10);

@@ -8,6 +8,7 @@
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -46,20 +47,29 @@ constexpr int kMaxHeld = 64;
 char g_held[kMaxHeld][PATH_MAX];
 volatile std::sig_atomic_t g_used[kMaxHeld] = {};
 
-// Another thread (a PNG encoding while the next figure draws) may be creating a
-// temporary while the handler runs: the handler says the process is dying, then waits
-// for every creation under way to be held, so that none lands after its unlinks; a
-// creation that sees the process dying makes nothing. A thread blocks SIGINT and
-// SIGTERM while it creates, so the handler never waits for its own thread (the signal
-// goes to another thread, or waits until the temporary is held). Lock-free atomics:
-// what a handler may touch.
+// Another thread (a PNG encoded while the next figure draws) may be making a temporary
+// while the handler runs: the handler says the process is dying, then waits for every
+// creation under way to be held, so that none lands after its unlinks; a creation that
+// sees the process dying makes nothing. No thread can be interrupted by the handler
+// while it holds what a creation waits for: SIGINT and SIGTERM are blocked while a
+// thread creates a temporary or holds g_mutex (the signal then goes to another thread,
+// or waits until it is let go). The wait is bounded (an open() on a stalled network
+// file system), after which the handler unlinks what is held. Lock-free atomics and
+// clock_gettime: what a handler may touch.
 std::atomic<int> g_creating{0};
 std::atomic<bool> g_dying{false};
 static_assert(std::atomic<int>::is_always_lock_free && std::atomic<bool>::is_always_lock_free);
 
+double handler_seconds() {
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
 extern "C" void remove_held_and_die(int sig) {
   g_dying.store(true);
-  while (g_creating.load() > 0) {
+  const double give_up = handler_seconds() + 2.0;
+  while (g_creating.load() > 0 && handler_seconds() < give_up) {
   }
   for (int i = 0; i < kMaxHeld; ++i) {
     if (g_used[i]) ::unlink(g_held[i]);
@@ -68,15 +78,28 @@ extern "C" void remove_held_and_die(int sig) {
   std::raise(sig);
 }
 
-// Brackets the making of a temporary (held, then created): see remove_held_and_die.
-class Creating {
+// SIGINT and SIGTERM blocked in this thread for a scope.
+class SignalsBlocked {
  public:
-  Creating() {
+  SignalsBlocked() {
     sigset_t block;
     sigemptyset(&block);
     sigaddset(&block, SIGINT);
     sigaddset(&block, SIGTERM);
     ::pthread_sigmask(SIG_BLOCK, &block, &old_);
+  }
+  ~SignalsBlocked() { ::pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
+  SignalsBlocked(const SignalsBlocked&) = delete;
+  SignalsBlocked& operator=(const SignalsBlocked&) = delete;
+
+ private:
+  sigset_t old_;
+};
+
+// Brackets the making of a temporary (held, then created): see remove_held_and_die.
+class Creating {
+ public:
+  Creating() {
     g_creating.fetch_add(1);
     if (g_dying.load()) {
       // the handler is removing the temporaries and ends the process: make nothing
@@ -84,15 +107,12 @@ class Creating {
       for (;;) ::pause();
     }
   }
-  ~Creating() {
-    g_creating.fetch_sub(1);
-    ::pthread_sigmask(SIG_SETMASK, &old_, nullptr);
-  }
+  ~Creating() { g_creating.fetch_sub(1); }
   Creating(const Creating&) = delete;
   Creating& operator=(const Creating&) = delete;
 
  private:
-  sigset_t old_;
+  SignalsBlocked blocked_;  // made before the count goes up, let go after it comes down
 };
 
 void install_handlers_once() {
@@ -101,6 +121,9 @@ void install_handlers_once() {
       struct sigaction action {};
       action.sa_handler = remove_held_and_die;
       sigemptyset(&action.sa_mask);
+      // the other one waits while this handler runs
+      sigaddset(&action.sa_mask, SIGINT);
+      sigaddset(&action.sa_mask, SIGTERM);
       ::sigaction(sig, &action, nullptr);
     }
     return true;
@@ -113,6 +136,7 @@ std::mutex g_mutex;
 
 int hold(const std::string& tmp) {
   install_handlers_once();
+  const SignalsBlocked blocked;
   const std::lock_guard<std::mutex> lock(g_mutex);
   for (int i = 0; i < kMaxHeld; ++i) {
     if (!g_used[i] && tmp.size() < PATH_MAX) {
@@ -125,6 +149,7 @@ int hold(const std::string& tmp) {
 }
 
 void release(int slot) {
+  const SignalsBlocked blocked;
   const std::lock_guard<std::mutex> lock(g_mutex);
   if (slot >= 0) g_used[slot] = 0;
 }
@@ -251,6 +276,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
   if (std::fclose(f) != 0 && error.empty()) error = std::strerror(errno);
   if (error.empty()) {
+    const SignalsBlocked blocked;
     const std::lock_guard<std::mutex> lock(g_mutex);
     if (g_transaction != nullptr) {
       g_transaction->push_back({tmp, path, slot});  // renamed at commit()

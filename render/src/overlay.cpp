@@ -99,7 +99,7 @@ double fitting_size(std::string_view markup, double size, double max_width) {
     size = std::min(size * max_width / w, size - 0.5);
     w = measure_text(markup, size).width;
   }
-  return size;
+  return std::max(size, 1.0);  // no room at all still gives a size, not zero or less
 }
 
 std::vector<std::string> split_title(std::string_view m, double size) {
@@ -186,7 +186,9 @@ LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& 
                           double max_width) {
   LegendSize z = measure_legend(entries, st);
   if (entries.empty()) return z;
-  // columns a text's width apart, with a swatch's gap between them
+  // as few rows as the columns that fit allow, then as few columns as those rows need
+  // (10 entries, room for 3: rows of 4, columns of 4, 4 and 2); columns a text's width
+  // apart, with two swatch gaps between them
   const double gap = 2 * st.swatch_gap;
   const int n = static_cast<int>(entries.size());
   const int fit = static_cast<int>((max_width - 2 * st.legend_padding + gap) / (z.column + gap));

@@ -100,8 +100,8 @@ struct LegendSize {
 
 /// Measures the legend box for a list of entries in one column.
 LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& st);
-/// Measures it in as few rows as the columns that fit in `max_width` allow, columns of
-/// balanced length (10 entries in 3 columns of 4, 4 and 2).
+/// Measures it in as few rows as the columns that fit in `max_width` allow, then as few
+/// columns as those rows need (10 entries, room for 3: columns of 4, 4 and 2).
 LegendSize measure_legend(const std::vector<LegendEntry>& entries, const Style& st,
                           double max_width);
 /// Draws a legend's entries in a box of the measured size.

@@ -267,23 +267,24 @@ class PanelPlan {
   Ticks ticks_fitting(const Axis& axis, const AxisMap& m, bool horizontal) const {
     const double len = std::abs(m.p1 - m.p0);
     int target = std::max(2, static_cast<int>(len / ((horizontal ? 190 : 120) * st_.f)));
-    Ticks t;
-    for (; target >= 1; --target) {
-      t = make_ticks(axis, m.lo, m.hi, target);
+    // the labels clear each other along the axis, at the closest two ticks
+    const auto fit = [&](const Ticks& t) {
       const TextExtent e = tick_extent(t);
       const double need = horizontal ? e.width + 2.5 * st_.pad : e.height() + 1.2 * st_.pad;
       double gap = std::numeric_limits<double>::infinity();
       for (std::size_t i = 1; i < t.values.size(); ++i)
         gap = std::min(gap, std::abs(m(t.values[i]) - m(t.values[i - 1])));
-      if (gap >= need || t.values.size() <= 2) break;
+      return gap >= need;
+    };
+    Ticks t;
+    for (; target >= 1; --target) {
+      t = make_ticks(axis, m.lo, m.hi, target);
+      if (fit(t) || t.values.size() <= 2) break;
     }
     // two ticks at least where a finer step gives them room: one alone gives no scale
     for (int finer = target + 1; t.values.size() < 2 && finer <= target + 4; ++finer) {
-      const Ticks more = make_ticks(axis, m.lo, m.hi, finer);
-      const TextExtent e = tick_extent(more);
-      const double need = horizontal ? e.width + 2.5 * st_.pad : e.height() + 1.2 * st_.pad;
-      if (more.values.size() >= 2 && std::abs(m(more.values[1]) - m(more.values[0])) >= need)
-        t = more;
+      Ticks more = make_ticks(axis, m.lo, m.hi, finer);
+      if (more.values.size() >= 2 && fit(more)) t = std::move(more);
     }
     return t;
   }
@@ -410,10 +411,11 @@ class PanelPlan {
     const double gap = 0.4 * st_.pad, end = 0.5 * st_.pad;
     for (std::size_t k = 0; k < pn_.ref_lines.size(); ++k) {
       const RefLine& r = pn_.ref_lines[k];
-      if (r.label.empty()) continue;
+      // (a frame with no room along the line has no place for a label)
+      const double room = (r.vertical ? rect_.height() : rect_.width()) - 2 * end;
+      if (r.label.empty() || room <= 0) continue;
       // a label longer than its line's run inside the frame shrinks to fit it
-      ref_sizes_[k] = detail::fitting_size(r.label, st_.note_font,
-                                           (r.vertical ? rect_.height() : rect_.width()) - 2 * end);
+      ref_sizes_[k] = detail::fitting_size(r.label, st_.note_font, room);
       const TextExtent e = measure_text(r.label, ref_sizes_[k]);
       std::vector<ScreenRect> c;
       if (r.vertical) {
@@ -645,7 +647,7 @@ class PanelPlan {
     for (std::size_t k = 0; k < pn_.ref_lines.size(); ++k) {
       const RefLine& r = pn_.ref_lines[k];
       const ScreenRect& b = ref_boxes_[k];
-      if (r.label.empty()) continue;
+      if (r.label.empty() || b.empty()) continue;
       // A label with no place clear of the data (a line the data crosses often) stands
       // on a pale ground, as a legend does, so that it reads and the data shows through.
       if (ref_on_data_[k]) {

@@ -330,14 +330,39 @@ Scene3D Scene3D::faded(const std::string& label, float opacity) const {
 }
 
 std::vector<std::string> Scene3D::legend_labels() const {
-  if (legend_from) return legend_from->legend_labels();
-  std::vector<std::string> out;
+  std::vector<std::string> out =
+      legend_from ? legend_from->legend_labels() : std::vector<std::string>{};
   const auto add = [&out](const std::string& label) {
     if (!label.empty() && std::find(out.begin(), out.end(), label) == out.end())
       out.push_back(label);
   };
   for (const Object& o : objects_) add(o.label);
   for (const Polyline& pl : polylines_) add(pl.label);
+  return out;
+}
+
+Scene3D Scene3D::legend_only() const {
+  Scene3D out;
+  out.title = title;
+  std::vector<std::string> seen;
+  const auto first = [&seen](const std::string& label) {
+    if (label.empty() || std::find(seen.begin(), seen.end(), label) != seen.end()) return false;
+    seen.push_back(label);
+    return true;
+  };
+  for (const Object& o : objects_)
+    if (first(o.label)) {
+      Object kept = o;
+      kept.path.clear();
+      kept.mesh = {};
+      out.objects_.push_back(std::move(kept));
+    }
+  for (const Polyline& pl : polylines_)
+    if (first(pl.label)) {
+      Polyline kept = pl;
+      kept.points.clear();
+      out.polylines_.push_back(std::move(kept));
+    }
   return out;
 }
 

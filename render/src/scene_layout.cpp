@@ -32,35 +32,40 @@ double facing_light() {
 // viewer is drawn in (lit, then a translucent one over white), markers as dots,
 // polylines as lines.
 std::vector<LegendEntry> legend_entries(const Scene3D& shown) {
-  const Scene3D& scene = shown.legend_from ? *shown.legend_from : shown;
   std::vector<LegendEntry> out;
   std::set<std::string> listed;  // an entry once, the first of its name (merged frames)
   const float light = static_cast<float>(facing_light());
-  for (const Scene3D::Object& o : scene.objects())
-    if (!o.label.empty() && listed.insert(o.label).second) {
-      const float a = o.material.opacity;
-      const Color c = o.material.color;
-      const float k = o.material.lit ? light : 1.0f;
-      // A closed translucent shape is seen through two of its faces (its back, then
-      // its front, each blended over what lies behind); an open one (a disk, a plane)
-      // through one.
-      const bool open = is_open(o.shape);
-      const auto shown = [&](float v) {
-        const float lit = std::min(1.0f, v * k), once = lit * a + (1 - a);
-        return open ? once : lit * a + (1 - a) * once;
-      };
-      const Color swatch{shown(c.r), shown(c.g), shown(c.b), 1};
-      // a point (a start, a mass, a pivot) is a dot, not a bar, so it is not read as a
-      // line of its colour (the separatrix beside omega_0's ball)
-      if (o.marker) {
-        out.push_back({o.label, swatch, false, 0, Dash::kSolid, Marker::kCircle, 18});
-      } else {
-        out.push_back({o.label, swatch, true});
+  const auto add = [&](const Scene3D& scene) {
+    for (const Scene3D::Object& o : scene.objects())
+      if (!o.label.empty() && listed.insert(o.label).second) {
+        const float a = o.material.opacity;
+        const Color c = o.material.color;
+        const float k = o.material.lit ? light : 1.0f;
+        // A closed translucent shape is seen through two of its faces (its back, then
+        // its front, each blended over what lies behind); an open one (a disk, a plane)
+        // through one.
+        const bool open = is_open(o.shape);
+        const auto seen = [&](float v) {
+          const float lit = std::min(1.0f, v * k), once = lit * a + (1 - a);
+          return open ? once : lit * a + (1 - a) * once;
+        };
+        const Color swatch{seen(c.r), seen(c.g), seen(c.b), 1};
+        // a point (a start, a mass, a pivot) is a dot, not a bar, so it is not read as a
+        // line of its colour (the separatrix beside omega_0's ball)
+        if (o.marker) {
+          out.push_back({o.label, swatch, false, 0, Dash::kSolid, Marker::kCircle, 18});
+        } else {
+          out.push_back({o.label, swatch, true});
+        }
       }
-    }
-  for (const Scene3D::Polyline& pl : scene.polylines())
-    if (!pl.label.empty() && listed.insert(pl.label).second)
-      out.push_back({pl.label, pl.color, false, pl.width});
+    for (const Scene3D::Polyline& pl : scene.polylines())
+      if (!pl.label.empty() && listed.insert(pl.label).second)
+        out.push_back({pl.label, pl.color, false, pl.width});
+  };
+  // a film's legend first, then any part this frame draws that it lacks (one the inputs
+  // of a dragged slider brought in): every part drawn is named
+  if (shown.legend_from) add(*shown.legend_from);
+  add(shown);
   return out;
 }
 

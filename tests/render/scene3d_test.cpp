@@ -296,6 +296,19 @@ TEST_CASE("scene3d: a frame that keeps a film's legend lists its parts and hides
   CHECK(first.legend_labels() == std::vector<std::string>{"body", "polhode"});
   CHECK(first.without({"polhode"}).legend_labels() == std::vector<std::string>{"body"});
   CHECK(layout(first.without({"body", "polhode"}), 800, 600).legend.empty());
+  // a part the frame draws and the film's legend lacks (brought in by a dragged slider)
+  // is named after the film's
+  first.add_arrow({0, 0, 0}, {0, 0, 2}, 0.05, {}, "L");
+  CHECK(first.legend_labels() == std::vector<std::string>{"body", "polhode", "L"});
+  // and drawn: a row more than the film's two
+  CHECK(layout(first, 800, 600).legend.height() >
+        layout(first.without({"L"}), 800, 600).legend.height() + 1);
+  // what a legend needs of a film and no more: each label once, no geometry
+  film.add_tube({{0, 0, 1}, {1, 0, 1}, {2, 0, 1}}, 0.1, {}, "polhode");
+  const Scene3D kept = film.legend_only();
+  CHECK(kept.legend_labels() == std::vector<std::string>{"body", "polhode"});
+  REQUIRE(kept.objects().size() == 2);
+  CHECK(kept.objects()[1].path.empty());
 }
 
 TEST_CASE("scene3d: a faded scene is the same geometry, faint, under one legend entry") {

@@ -32,7 +32,7 @@ inline constexpr Color kYellow = rgb8(240, 228, 66);
 inline constexpr Color kBlack = rgb8(0, 0, 0);
 
 // Two more for a figure that needs more than Okabe-Ito's seven that read on white (ten
-// integrators): an olive (a yellow dark enough for text on white) and Paul Tol's wine
+// curves): an olive (a yellow dark enough for text on white) and Paul Tol's wine
 // (#882255, of his colour-blind-safe "muted" set).
 inline constexpr Color kOlive = rgb8(150, 135, 0);
 inline constexpr Color kWine = rgb8(136, 34, 85);

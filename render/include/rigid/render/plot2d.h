@@ -112,8 +112,8 @@ struct Panel {
   LegendPlace legend = LegendPlace::kAuto;
   bool equal_aspect = false;  ///< one data unit is as long on x as on y (phase portraits)
   /// Series are drawn in order, a later one over an earlier; true draws them last to first,
-  /// so that the legend's first entries lie on top (the most accurate methods, where
-  /// several meet at a floor).
+  /// so that the legend's first entries lie on top where curves coincide (several at a
+  /// floor).
   bool first_on_top = false;
 
   /// Adds a line series and returns it for further settings.

@@ -68,9 +68,10 @@ class Scene3D {
   Camera camera;
   std::string title;        ///< drawn at the top (text.h markup)
   bool show_legend = true;  ///< a legend of labelled objects in the top-right corner
-  /// When set, the legend drawn is this scene's (each entry once): an animation's frames
-  /// share the legend of all of them, so it neither grows nor reorders when a part
-  /// appears mid-film (the path so far, the herpolhode).
+  /// When set, the legend drawn is this scene's (each entry once), then any part of this
+  /// scene's own it lacks: an animation's frames share the legend of all of them, so it
+  /// neither grows nor reorders when a part appears mid-film (the path so far, the
+  /// herpolhode).
   std::shared_ptr<const Scene3D> legend_from;
 
   /// Sphere of a radius about a centre.
@@ -135,8 +136,13 @@ class Scene3D {
   /// of its own, no labels, and one legend entry, `label`, for all of it.
   Scene3D faded(const std::string& label, float opacity = 0.3f) const;
 
-  /// The labels of the legend's entries, in its order, each once (legend_from's, if set).
+  /// The labels of the legend's entries, in its order, each once: legend_from's, if set,
+  /// then any of this scene's own it lacks.
   std::vector<std::string> legend_labels() const;
+  /// What a legend needs of the scene and no more: each label's first part, its
+  /// geometry (paths, points, meshes) dropped; for legend_from, where a film's frames
+  /// share it and a copy a frame must stay cheap.
+  Scene3D legend_only() const;
   /// The scene without the parts of the legend's entries in `hidden`: each surface or line
   /// labelled so, and the unlabelled ones added right after it (a polhode's other loops,
   /// the point an arrow ends on), up to the next labelled one; legend_from's too.

@@ -15,6 +15,7 @@ namespace rigid::support {
 inline std::string repeated_option(const CLI::App& app, const std::vector<std::string>& args) {
   std::vector<std::string> seen;
   for (const std::string& arg : args) {
+    if (arg == "--") break;  // what follows is not options
     if (arg.rfind("--", 0) != 0) continue;
     const std::string name = arg.substr(0, arg.find('='));
     const CLI::Option* option = app.get_option_no_throw(name);
