@@ -545,8 +545,10 @@ const Explorer::MotionEnvelope& Explorer::motion_envelope() const {
   render::Scene3D legend = envelope.legend_only();
   if (const lab::Animation* exact = exact_motion())
     legend.merge(exact->scene(0.0).faded(kExactGhost).legend_only());
-  e.scene = std::make_shared<const render::Scene3D>(std::move(envelope));
   e.legend = std::make_shared<const render::Scene3D>(std::move(legend));
+  // the camera is fitted clear of the legend the frames draw (the ghost's entry with it)
+  envelope.legend_from = e.legend;
+  e.scene = std::make_shared<const render::Scene3D>(std::move(envelope));
   e.generation = session_->inputs_generation();
   e.lab = lab_index_;
   return e;

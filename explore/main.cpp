@@ -86,15 +86,15 @@ std::string apply_lab_options(
     if (i >= s.input_count()) {
       return flag + ": not an input of " + s.name() + " (the explorer takes only the lab's inputs)";
     }
-    // as on the lab's command line: which of two values was meant is not guessed
     if (s.rule(i).kind() != rigid::lab::InputKind::kFlag) {
+      // as on the lab's command line: which of two values was meant is not guessed
       if (std::find(given.begin(), given.end(), i) != given.end())
         return flag + ": given twice: give it once";
       given.push_back(i);
-    }
-    if (!has_value && s.rule(i).kind() != rigid::lab::InputKind::kFlag) {
-      if (k + 1 >= args.size()) return flag + ": needs a value";
-      value = args[++k];
+      if (!has_value) {
+        if (k + 1 >= args.size()) return flag + ": needs a value";
+        value = args[++k];
+      }
     }
     if (std::string why = set(flag, value); !why.empty()) return why;
   }

@@ -135,21 +135,22 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
   plot.shared_legend = true;
   // the most accurate on top: where several meet at the floor, the best shows
   error.first_on_top = energy.first_on_top = true;
-  double worst = 0.0;
-  for (const render::Series& series : error.series)
-    for (const double v : series.y) worst = std::max(worst, v);
+  // the largest value a panel draws, its axis's start at least
+  const auto largest = [](const render::Panel& panel) {
+    double top = panel.y.min;
+    for (const auto& series : panel.series)
+      for (const double v : series.y) top = std::max(top, v);
+    return top;
+  };
+  const double worst = largest(error);
   if (ceiling.value > 0.0 && worst >= 0.1 * ceiling.value) {
     error.add_ref_line(ceiling.value, false, ceiling.label).color = render::kBlack;
     // room above it, so that the line and the curves stopped at it are not the frame
     error.y.max = 5 * std::max(ceiling.value, worst);
   }
   // every curve at its floor: a decade above it to show them on
-  for (render::Panel* panel : {&error, &energy}) {
-    double top = panel->y.min;
-    for (const auto& series : panel->series)
-      for (const double v : series.y) top = std::max(top, v);
-    if (!(top > 3 * panel->y.min)) panel->y.max = 30 * panel->y.min;
-  }
+  for (render::Panel* panel : {&error, &energy})
+    if (!(largest(*panel) > 3 * panel->y.min)) panel->y.max = 30 * panel->y.min;
   return plot;
 }
 

@@ -201,6 +201,15 @@ int run_captured(const std::string& lab, const std::vector<std::string>& args, s
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+// The entries of a folder; `ec` says why a listing failed or stopped (increment(ec):
+// a range-for's ++ would throw on a folder that fails mid-listing).
+std::vector<fs::path> entries_of(const fs::path& dir, std::error_code& ec) {
+  std::vector<fs::path> out;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    out.push_back(it->path());
+  return out;
+}
+
 // Every lab's figures land in `out` together or not at all: the labs draw into a
 // staging folder, OUT/.rigidlab-stage-PID, whose files are renamed into `out` only once
 // every lab has succeeded. A failure or a signal removes the staging folder, and `out`
@@ -242,8 +251,8 @@ class Staging {
   // found before any file moves, so that all land or none; "" if there is none.
   std::string blocked() const {
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(dir_, ec)) {
-      const fs::path target = fs::path(out_) / entry.path().filename();
+    for (const fs::path& file : entries_of(dir_, ec)) {
+      const fs::path target = fs::path(out_) / file.filename();
       if (fs::is_directory(fs::symlink_status(target, ec)))
         return "'" + target.string() + "' is a directory, not a figure";
     }
@@ -252,8 +261,7 @@ class Staging {
   // Renames every staged file into `out`; "" or what failed, with how many had landed.
   std::string land() const {
     std::error_code ec;
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(dir_, ec)) files.push_back(entry.path());
+    const std::vector<fs::path> files = entries_of(dir_, ec);
     if (ec) return "cannot read " + dir_ + ": " + ec.message();
     std::size_t landed = 0;
     for (const fs::path& file : files) {
@@ -280,14 +288,12 @@ class Staging {
 void say_left_stages(const std::string& out, const std::string& ours) {
   const std::string stem = ".rigidlab-stage-";
   std::error_code ec;
-  // increment(ec): a range-for's ++ would throw on a folder that fails mid-listing
-  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec)) {
-    const fs::directory_entry& entry = *it;
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(stem, 0) != 0 || entry.path() == fs::path(ours)) continue;
+  for (const fs::path& entry : entries_of(out, ec)) {
+    const std::string name = entry.filename().string();
+    if (name.rfind(stem, 0) != 0 || entry == fs::path(ours)) continue;
     const long pid = std::strtol(name.c_str() + stem.size(), nullptr, 10);
     if (pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM)) continue;
-    std::cerr << "rigidlab: warning: figures: " << rigid::support::terminal_safe(entry.path())
+    std::cerr << "rigidlab: warning: figures: " << rigid::support::terminal_safe(entry)
               << " was left by a run that was killed before it could remove it: remove it\n";
   }
 }

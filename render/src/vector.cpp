@@ -4,8 +4,8 @@
 // raster image inside a page of the same size; and as pixels, cairo's antialiased
 // rasteriser on the CPU (no multisampled buffers to clear, resolve and read back: a
 // plot's fixed cost in the GL path was about 30 ms). libcairo (with the FreeType
-// it uses) is opened on the first vector figure, as OSMesa, EGL and the video
-// encoders are, so a process that never writes one never loads it.
+// it uses) is opened on the first plot drawn or vector figure written, as OSMesa, EGL
+// and the video encoders are, so a process that draws neither never loads it.
 #include <cairo-ft.h>
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
