@@ -202,6 +202,12 @@ void Report::note(const std::string& text) {
   notes_.push_back(text);
 }
 
+void Report::erratum(const Erratum& e) {
+  notes_.push_back("errata: " + e.where + ": the text prints \"" + e.printed + "\"; " +
+                   e.correction);
+  errata_.push_back(e);
+}
+
 // The text's printed values as numbers in the result's unit where the print is a
 // plain number (a parenthetical after it, "0.076 (76 g)", is commentary) or a list
 // of them ("(0.20 : 0.25 : 0.33)"); where it is an expression ("0.493 ma^2",

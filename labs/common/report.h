@@ -29,6 +29,14 @@ inline constexpr char kQuaternionConvention[] =
     "(Hamilton's convention, scalar first; v_space = q v_body q*), the identity at t = 0 "
     "unless the start sets it";
 
+/// An error in the text: where (the section and equation), what the text prints, quoted,
+/// and the correction with this run's numbers. docs/errata.md is made from these.
+struct Erratum {
+  std::string where;       ///< "section 8.1", "eq. 150", "eqs. 137-138"
+  std::string printed;     ///< the text's own words or formula, as printed
+  std::string correction;  ///< what is right, and the numbers that show it
+};
+
 /// One line of the human table: a heading, or a quantity with its value, unit,
 /// the text's value and a remark.
 struct TableRow {
@@ -125,6 +133,9 @@ class Report {
   void alias(const std::string& old_key, const std::string& key);
   /// A note under the table and in JSON "notes"; errata start with "errata:".
   void note(const std::string& text);
+  /// An error in the text: a note "errata: WHERE: the text prints "PRINTED"; CORRECTION"
+  /// and an entry of JSON "errata".
+  void erratum(const Erratum& e);
   /// A warning about an input the run does not use: a note starting "warning:", and
   /// one line on stderr from the command line once the run has succeeded.
   void warn(const std::string& input, const std::string& text);
@@ -140,6 +151,7 @@ class Report {
   const std::vector<TableRow>& rows() const { return rows_; }
   const std::vector<std::string>& notes() const { return notes_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
+  const std::vector<Erratum>& errata() const { return errata_; }
   const TimeSeries& time_series() const { return series_; }
 
  private:
@@ -154,6 +166,7 @@ class Report {
   std::vector<InputRule> symbols_;  ///< the inputs' rules, for figure titles
   std::vector<TableRow> rows_;
   std::vector<std::string> notes_, warnings_;
+  std::vector<Erratum> errata_;
   TimeSeries series_;
 };
 

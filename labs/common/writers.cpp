@@ -132,6 +132,11 @@ void write_json(std::ostream& out, const Report& report, const RunOutputs& outpu
   if (!outputs.animation.is_null()) files.push_back(outputs.animation["path"]);
   json["outputs"] = files;
   json["notes"] = report.notes();
+  json["errata"] = Json::array();
+  for (const Erratum& e : report.errata()) {
+    json["errata"].push_back(
+        {{"where", e.where}, {"printed", e.printed}, {"correction", e.correction}});
+  }
   out << utf8_safe(json).dump(2) << "\n";
 }
 
