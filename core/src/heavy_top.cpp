@@ -2,9 +2,11 @@
 #include "rigid/heavy_top.h"
 
 #include <algorithm>
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/ellint_rc.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -37,6 +39,64 @@ void require_positive(double value, const char* what) {
     throw std::invalid_argument(std::string(what) + " must be positive and finite, got " +
                                 format_number(value));
   }
+}
+
+// The start's terms that decide the motion (heavy_top.h's header comment): formed in
+// 113-bit arithmetic from the double inputs and each rounded once. In doubles, b - a =
+// phi_dot0 sin^2 - a (1 - cos) kept only eps of its two terms (a top started to reach
+// upright, b - a = 3.5e-16, came out 0: its theta_min of 1.6e-11 deg read 0, and its
+// period 3 % short), and 1 + cos(theta0) rounded to 0 within 1e-8 rad of the bottom.
+struct StartTerms {
+  double st, s2, u0, omu0, opu0;  // sin, sin^2, cos, 1 - cos, 1 + cos of theta0
+  double a, beta, d0, c0;         // p_psi / I, 2 mgl / I, phi_dot0 sin^2, theta_dot0^2 + ...
+  double A, B, C;                 // f(u0 + w) = beta w^3 + A w^2 + B w + C
+  double b_minus_a, b_plus_a;     // b - a u at u = 1 and at u = -1
+  // the cubic about u = 1 (v = u - 1) and about u = -1 (v = 1 + u), g(v) = beta v^3 + ...,
+  // with P = c0 - beta (1 - u0) and c0 + beta (1 + u0), the energy's margin over each pole
+  double north2, north1, north0;  // 2 beta - P - a^2, 2 (a Q - P), -Q^2 with Q = b - a
+  double south2, south1, south0;  // -(2 beta + P + a^2), 2 (P + a Q), -Q^2 with Q = b + a
+  double w3;                      // the largest root, u3 - u0 (+inf where it overflows)
+};
+
+StartTerms start_terms(const HeavyTop& top, const TopStart& s) {
+  using Quad = boost::multiprecision::cpp_bin_float_quad;
+  const Quad pi = boost::math::constants::pi<Quad>();
+  const Quad theta = s.theta_deg ? Quad(*s.theta_deg) * pi / 180 : Quad(s.theta);
+  const Quad st = sin(theta), u0 = cos(theta), half = sin(theta / 2), half_c = cos(theta / 2);
+  const Quad s2 = st * st, omu0 = 2 * half * half, opu0 = 2 * half_c * half_c;
+  const Quad I = top.I, a = Quad(top.Is) * s.spin / I, beta = 2 * Quad(top.mgl) / I;
+  const Quad thd = s.theta_dot, phd = s.phi_dot;
+  const Quad d0 = phd * s2, c0 = thd * thd + phd * phd * s2;
+  const Quad A = -c0 + 2 * beta * u0 - a * a, B = -2 * c0 * u0 - beta * s2 + 2 * a * d0;
+  const Quad C = thd * thd * s2;
+  // The largest root lies right of the cubic's inflection point, where f is convex:
+  // Newton's method from an upper bound (Cauchy's) falls to it monotonically. In
+  // 113-bit numbers w^3 cannot overflow (at rates of 1e60 rad/s w3 ~ 1e117: in
+  // doubles f(w) was inf from rates of 3e52 on, and the roots wrong).
+  const auto f = [&](const Quad& w) { return ((beta * w + A) * w + B) * w + C; };
+  const auto df = [&](const Quad& w) { return (3 * beta * w + 2 * A) * w + B; };
+  Quad w = 1 + std::max({Quad(abs(A)), Quad(abs(B)), Quad(abs(C))}) / beta;
+  if (w < omu0) w = omu0;
+  for (int it = 0; it < 2000; ++it) {
+    const Quad next = w - f(w) / df(w);
+    if (!(next < w)) break;
+    w = next;
+  }
+  if (w < omu0) w = omu0;  // u3 >= 1: f(1) = -(b - a)^2 <= 0
+  const Quad Qn = d0 - a * omu0, Qs = d0 + a * opu0;
+  const Quad Pn = c0 - beta * omu0, Ps = c0 + beta * opu0;
+  const auto d = [](const Quad& x) { return static_cast<double>(x); };
+  StartTerms t;
+  t.st = d(st), t.s2 = d(s2), t.u0 = d(u0), t.omu0 = d(omu0), t.opu0 = d(opu0);
+  t.a = d(a), t.beta = d(beta), t.d0 = d(d0), t.c0 = d(c0);
+  t.A = d(A), t.B = d(B), t.C = d(C);
+  t.b_minus_a = d(Qn), t.b_plus_a = d(Qs);
+  // 2 beta - P - a^2 cancels to 1 % at the text's top spun near S_min: formed here, it
+  // keeps its digits, where in doubles it held 1e-14 and u1 came out 3 ulps off
+  t.north2 = d(2 * beta - Pn - a * a), t.north1 = d(2 * (a * Qn - Pn)), t.north0 = d(-Qn * Qn);
+  t.south2 = d(-(2 * beta + Ps + a * a)), t.south1 = d(2 * (Ps + a * Qs)), t.south0 = d(-Qs * Qs);
+  t.w3 = d(w);
+  return t;
 }
 
 double rf(double x, double y, double z) {
@@ -176,16 +236,24 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
         "a top upright at rest (theta0 = 0, no spin, no theta_dot) does not move");
   }
   const double I = top.I, Is = top.Is;
-  const double st = std::sin(s.theta), s2 = st * st;
-  u0_ = std::cos(s.theta);
-  one_minus_u0_ = 2.0 * std::pow(std::sin(0.5 * s.theta), 2);  // 1 - cos, without cancellation
-  a_ = Is * s.spin / I;
-  beta_ = 2.0 * top.mgl / I;
-  d0_ = s.phi_dot * s2;
+  const StartTerms terms = start_terms(top, s);
+  const double st = terms.st, s2 = terms.s2;
+  u0_ = terms.u0;
+  one_minus_u0_ = terms.omu0;
+  one_plus_u0_ = terms.opu0;
+  a_ = terms.a;
+  beta_ = terms.beta;
+  d0_ = terms.d0;
   p_psi_ = Is * s.spin;                        // eq. 176
   p_phi_ = I * s.phi_dot * s2 + p_psi_ * u0_;  // eq. 177
-  const double c0 = s.theta_dot * s.theta_dot + s.phi_dot * s.phi_dot * s2;
+  const double c0 = terms.c0;
   energy_ = 0.5 * I * c0 + top.mgl * u0_ + 0.5 * Is * s.spin * s.spin;  // eqs. 191-193
+  if (!std::isfinite(energy_) || !std::isfinite(p_phi_) || !std::isfinite(terms.A) ||
+      !std::isfinite(terms.B) || !std::isfinite(terms.w3) || !std::isfinite(st)) {
+    throw std::invalid_argument(
+        "the rates are too large against gravity: the energy or the cubic's third root u3 "
+        "overflows a double (1.8e308); slow the rates or strengthen gravity");
+  }
 
   // An upright top with no theta_dot stays upright: it sleeps (stably or not).
   if (s.theta == 0.0 && s.theta_dot == 0.0) {
@@ -196,22 +264,8 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   }
 
   // f(u0 + w) = beta w^3 + A w^2 + B w + C (header comment).
-  const double A = -c0 + 2.0 * beta_ * u0_ - a_ * a_;
-  const double B = -2.0 * c0 * u0_ - beta_ * s2 + 2.0 * a_ * d0_;
-  const double C = s.theta_dot * s.theta_dot * s2;
-  const auto f = [&](double w) { return ((beta_ * w + A) * w + B) * w + C; };
-  const auto df = [&](double w) { return (3.0 * beta_ * w + 2.0 * A) * w + B; };
-  // The largest root lies right of the cubic's inflection point, where f is convex:
-  // Newton's method from an upper bound (Cauchy's) falls to it monotonically.
-  double w = 1.0 + std::max({std::abs(A), std::abs(B), std::abs(C)}) / beta_;
-  w = std::max(w, one_minus_u0_);
-  for (int it = 0; it < 500; ++it) {
-    const double step = f(w) / df(w);
-    const double next = w - step;
-    if (!(next < w) || !std::isfinite(next)) break;
-    w = next;
-  }
-  w3_ = std::max(w, one_minus_u0_);  // u3 >= 1: f(1) = -(b - a)^2 <= 0
+  const double A = terms.A, B = terms.B, C = terms.C;
+  w3_ = terms.w3;
   // The other two roots from Vieta's relations with w3: w1 w2 = -C / (beta w3) <= 0,
   // so they are real with w1 <= 0 <= w2 (f(0) = C >= 0), and w1 + w2 = (B/beta -
   // w1 w2) / w3, which (unlike -A/beta - w3) has no cancellation when w3 >> |w1|,
@@ -223,18 +277,18 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   const double other = r != 0.0 ? product / r : 0.0;
   w1_ = std::min(std::min(r, other), 0.0);
   w2_ = std::max(std::max(r, other), 0.0);
-  w1_ = std::max(w1_, -1.0 - u0_);
+  w1_ = std::max(w1_, -one_plus_u0_);
   w2_ = std::min(w2_, one_minus_u0_);
   if (w2_ > w3_) std::swap(w2_, w3_);
   // b - a u at the poles. Where it is exactly zero, f(+-1) = 0: the pole is a
   // root, so the axis goes through it (a start upright with theta_dot, or no spin
   // and no p_phi); set that root exactly, not to within roundoff.
-  b_minus_a_ = d0_ - a_ * one_minus_u0_;  // at u = 1
-  b_plus_a_ = d0_ + a_ * (1.0 + u0_);     // at u = -1
+  b_minus_a_ = terms.b_minus_a;  // at u = 1
+  b_plus_a_ = terms.b_plus_a;    // at u = -1
   // u = -1 can only be u1; u = +1 is u2 (the axis reaches upright) or u3 (it does
   // not): whichever computed root lies nearer.
   through_south_ = b_plus_a_ == 0.0;
-  if (through_south_) w1_ = -1.0 - u0_;
+  if (through_south_) w1_ = -one_plus_u0_;
   if (b_minus_a_ == 0.0) {
     through_north_ = std::abs(w2_ - one_minus_u0_) < std::abs(w3_ - one_minus_u0_);
     (through_north_ ? w2_ : w3_) = one_minus_u0_;
@@ -246,14 +300,13 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // is g(v) = v (2 - v)(P - beta v) - (Q - a v)^2 with P = c0 + beta (1 + u0) and
   // Q = b + a, both formed without cancellation: its small root by Newton's method
   // from Q^2 / g'(0) (g(0) = -Q^2 <= 0 < g'(0) = 2 (P + a Q)).
-  opu1_ = (1.0 + u0_) + w1_;
+  opu1_ = one_plus_u0_ + w1_;
   if (!through_south_ && opu1_ < 1e-3) {
-    const double P = c0 + beta_ * (1.0 + u0_), Q = b_plus_a_;
-    const double c2 = -(2.0 * beta_ + P + a_ * a_), c1 = 2.0 * (P + a_ * Q);
-    const double v = cubic_root_near(beta_, c2, c1, -Q * Q, c1 > 0.0 ? Q * Q / c1 : opu1_);
+    const double c2 = terms.south2, c1 = terms.south1, Q2 = -terms.south0;
+    const double v = cubic_root_near(beta_, c2, c1, -Q2, c1 > 0.0 ? Q2 / c1 : opu1_);
     if (v > 0.0 && v < 2e-3) {
       opu1_ = v;
-      w1_ = v - (1.0 + u0_);
+      w1_ = v - one_plus_u0_;
     }
   }
 
@@ -263,10 +316,12 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // formula, polished by Newton's method on g. A top released near upright (theta0 =
   // 1e-6 deg: 1 - u0 = 1.5e-16) has u3 - u2 ~ 1 - u0, which the roots about u0 held
   // only to roundoff of 1: k'^2 off by its size, the period by 8 %.
+  // Where the axis goes through the pole (b - a = 0: v2 = 0 is a root), u3 still
+  // needs this form: a top started to just reach upright has u3 - 1 = 7.7e-9, which
+  // the roots about u0 held to its size (1.5e-8).
   omu2_ = one_minus_u0_ - w2_;
-  if (!through_north_ && (omu2_ < 1e-3 || w3_ - one_minus_u0_ < 1e-3)) {
-    const double P = c0 - beta_ * one_minus_u0_, Q = b_minus_a_;
-    const double A2 = 2.0 * beta_ - P - a_ * a_, B2 = 2.0 * (a_ * Q - P), C2 = -Q * Q;
+  if (omu2_ < 1e-3 || w3_ - one_minus_u0_ < 1e-3) {
+    const double A2 = terms.north2, B2 = terms.north1, C2 = terms.north0;
     const auto polish = [&](double v) { return cubic_root_near(beta_, A2, B2, C2, v); };
     const double disc = B2 * B2 - 4.0 * A2 * C2;
     const double q = -0.5 * (B2 + std::copysign(std::sqrt(std::max(disc, 0.0)), B2));
@@ -277,17 +332,18 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
       // roots about u0 held it to 2e-10 at 1 - u2 = 1e-14).
       const double r2 = polish(C2 / q), r1 = A2 > 0.0 ? polish(q / A2) : r2;
       const double v3 = std::max(r1, r2), v2 = std::min(r1, r2);
-      if (v3 >= 0.0 && v3 < 1e-3 && !through_south_ && opu1_ >= 1e-3) {
+      const bool v3_small = through_north_ ? A2 > 0.0 && v3 > 0.0 : v3 >= 0.0;
+      if (v3_small && v3 < 1e-3 && !through_south_ && opu1_ >= 1e-3) {
         // and u1 again from Vieta's relations with this w3 (they held its roundoff)
         w3_ = one_minus_u0_ + v3;
         const double product = -C / (beta_ * w3_), sum = (B / beta_ - product) / w3_;
         const double w2_here = C != 0.0 && v2 <= 0.0 && v2 > -1e-3 ? one_minus_u0_ + v2 : w2_;
-        w1_ = std::max(w2_here != 0.0 ? product / w2_here : sum - w2_here, -1.0 - u0_);
-        opu1_ = (1.0 + u0_) + w1_;
+        w1_ = std::max(w2_here != 0.0 ? product / w2_here : sum - w2_here, -one_plus_u0_);
+        opu1_ = one_plus_u0_ + w1_;
       }
       // u2 = u0 exactly when released with theta_dot = 0 (f(u0) = 0): kept
-      if (C != 0.0 && v2 <= 0.0 && v2 > -1e-3) w2_ = one_minus_u0_ + v2;
-      if (v2 <= 0.0 && v2 > -1e-3) omu2_ = C != 0.0 ? -v2 : one_minus_u0_;
+      if (!through_north_ && C != 0.0 && v2 <= 0.0 && v2 > -1e-3) w2_ = one_minus_u0_ + v2;
+      if (!through_north_ && v2 <= 0.0 && v2 > -1e-3) omu2_ = C != 0.0 ? -v2 : one_minus_u0_;
     }
   }
 
@@ -299,7 +355,7 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // precession by ~sqrt of that distance: 2e-8 at 1 + u1 = 8e-16).
   if (!through_south_ && !(opu1_ >= std::numeric_limits<double>::min())) {
     through_south_ = true;
-    w1_ = -1.0 - u0_;
+    w1_ = -one_plus_u0_;
     opu1_ = 0.0;
   }
   // (North: only where phi_dot's spike there, (b - a)/(2 (1 - u2)), is far beyond the
@@ -333,7 +389,7 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   if (s.theta == 0.0) v0_ = -K_;
   const double amplitude = w2_ - w1_;
   const double one_minus_u1 = one_minus_u0_ - w1_, one_plus_u1 = opu1_;
-  const double one_plus_u2 = (1.0 + u0_) + w2_;
+  const double one_plus_u2 = one_plus_u0_ + w2_;
   // Steady: no nodding beyond roundoff, measured against the distance of the
   // circles from the poles (near upright, u moves by theta^2 only).
   regime_ = amplitude <= 64 * kEps * std::min(one_minus_u1, one_plus_u2) ? TopRegime::kSteady
@@ -470,7 +526,7 @@ HeavyTopExact::Where HeavyTopExact::at(double sn2, double cn2) const {
   } else {
     x.w = w2_ - delta * cn2;
     x.omu = omu2_ + delta * cn2;
-    x.opu = ((1.0 + u0_) + w2_) - delta * cn2;
+    x.opu = (one_plus_u0_ + w2_) - delta * cn2;
     // likewise b - a u = (b - a) + a (1 - u) near the north pole, without b - a where
     // the pole is taken as the turning circle
     x.numerator = through_north_ ? a_ * x.omu

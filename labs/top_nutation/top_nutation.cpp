@@ -307,11 +307,12 @@ Report compute(const Inputs& in) {
   report_section_8_1(report, in, S, theta0);
 
   report.section("9 the motion: E' = I theta_dot^2 / 2 + V(theta) (eqs. 191-195)");
-  report.motion.emplace(for_input("--theta0-deg", [&] {
-    return HeavyTopExact(report.top, {theta0, in.thetadot0, in.phidot0, S});
-  }));
+  TopStart start{theta0, in.thetadot0, in.phidot0, S};
+  start.theta_deg = in.theta0_deg;
+  report.motion.emplace(
+      for_input("--theta0-deg", [&] { return HeavyTopExact(report.top, start); }));
   const HeavyTopExact& motion = *report.motion;
-  report_section_9(report, {theta0, in.thetadot0, in.phidot0, S});
+  report_section_9(report, start);
 
   // Sampling: 200 a nutation period (or a turn of the spin for a sleeping top).
   const bool sleeping = motion.regime() == TopRegime::kSleeping;

@@ -73,6 +73,10 @@ struct TopStart {
   double spin = 0.0;       ///< S = omega_3, rad/s
   double phi = 0.0;        ///< rad
   double psi = 0.0;        ///< rad
+  /// theta as given in degrees, where it was: sin and cos of theta, and 1 - cos and
+  /// 1 + cos near a pole, are then those of the angle meant, where the radians keep
+  /// it only to ulp(pi) (at 179.9999999 deg, 1 + cos theta to 1e-7 of itself).
+  std::optional<double> theta_deg = std::nullopt;
 };
 
 /// The fast top (Goldstein 5.7, Is S much more than sqrt(m g l I)): its nodding, to
@@ -124,10 +128,17 @@ Eigen::Vector3d euler_omega_body(const TopAngles& a);
 TopAngles euler_angles_and_rates(const Eigen::Quaterniond& q, const Eigen::Vector3d& omega_body);
 
 /// The exact motion of the heavy symmetric top from a start.
+///
+/// The quantities that decide the motion near a pole or the separatrix (1 -+ cos theta0,
+/// b -+ a, the energy's margin over the poles, and the cubic's coefficients and largest
+/// root) are formed in 113-bit arithmetic from the double inputs and rounded once, so
+/// a turning circle a hair from a pole, or a root a hair from another, keeps its digits.
 class HeavyTopExact {
  public:
   /// Throws std::invalid_argument for an invalid top, a non-finite start, theta
-  /// outside [0, pi), or a top at rest upright (theta = 0, no spin, no theta_dot).
+  /// outside [0, pi), a top at rest upright (theta = 0, no spin, no theta_dot), or rates
+  /// so large against gravity that the energy, or the cubic's third root u3, overflows a
+  /// double (|rate| beyond ~1e150 rad/s; at the text's top u3 ~ (rate / 6)^2).
   HeavyTopExact(const HeavyTop& top, const TopStart& start);
 
   /// The Euler angles and rates at time t.
@@ -184,7 +195,7 @@ class HeavyTopExact {
   HeavyTop top_;
   TopStart start_;
   TopRegime regime_ = TopRegime::kSteady;
-  double u0_ = 1.0, one_minus_u0_ = 0.0;
+  double u0_ = 1.0, one_minus_u0_ = 0.0, one_plus_u0_ = 2.0;
   double a_ = 0.0, beta_ = 0.0, d0_ = 0.0;  // p_psi/I, 2 mgl/I, phi_dot0 sin^2(theta0)
   double w1_ = 0.0, w2_ = 0.0, w3_ = 0.0;   // the roots, u_i - u0
   double opu1_ = 0.0;                       // 1 + u1, to its own relative accuracy
