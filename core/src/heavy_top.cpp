@@ -159,6 +159,11 @@ SteadyPrecession steady_precession_rates(const HeavyTop& top, double spin, doubl
   const double root = std::sqrt(D);
   // I c phi_dot^2 - Is S phi_dot + mgl = 0; the root without cancellation first.
   const double big = L3 >= 0 ? L3 + root : L3 - root;
+  // Horizontal with no spin (big = 0): eq. 187 asks m g l = 0, no rate balances gravity
+  if (big == 0.0) {
+    p.exists = false;
+    return p;
+  }
   p.slow = 2.0 * top.mgl / big;
   p.fast = c == 0.0 ? std::copysign(std::numeric_limits<double>::infinity(), big)
                     : big / (2.0 * top.I * c);
@@ -188,6 +193,10 @@ std::string to_string(TopRegime regime) {
       return "looping";
     case TopRegime::kCusped:
       return "cusped";
+    case TopRegime::kThroughPole:
+      return "through the pole";
+    case TopRegime::kPlanar:
+      return "planar";
     case TopRegime::kSteady:
       break;
   }
@@ -442,21 +451,48 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
     if (through_south_) mean_phi_dot_ += std::copysign(kPi, b_plus_a_) / period_;
   }
 
+  // A pole that is a root of f (b -+ a = 0, not a circle within underflow of it): the
+  // axis goes through the vertical, phi is undefined there and turns by pi at once, and
+  // which way is the limit of a path a hair to either side. The motion takes the way of
+  // the sign of zero; the mean precession has both limits, pi / period apart a pole.
+  const int root_poles =
+      (through_north_ && b_minus_a_ == 0.0) + (through_south_ && b_plus_a_ == 0.0);
+  const double spread = std::isfinite(period_) ? root_poles * kPi / period_ : 0.0;
+  const double base =
+      mean_phi_dot_ -
+      (through_north_ && b_minus_a_ == 0.0 ? std::copysign(spread / root_poles, b_minus_a_) : 0.0) -
+      (through_south_ && b_plus_a_ == 0.0 ? std::copysign(spread / root_poles, b_plus_a_) : 0.0);
+  mean_limits_ = {base - spread, base + spread};
+
   // phi_dot at the turning circles.
-  phi_dot_u1_ = at(0.0, 1.0).phi_dot;
-  phi_dot_u2_ = at(1.0, 0.0).phi_dot;
+  const Where at_u1 = at(0.0, 1.0), at_u2 = at(1.0, 0.0);
+  phi_dot_u1_ = at_u1.phi_dot;
+  phi_dot_u2_ = at_u2.phi_dot;
   if (regime_ == TopRegime::kWavy) {
-    // A numerator within roundoff of zero is a cusp (released with phi_dot = theta_dot
-    // = 0); through a pole counts as a cusp too: the axis stops turning there.
-    const auto numerator = [&](double wi, bool pole) {
-      const double n = d0_ - a_ * wi;
-      return pole || std::abs(n) <= 16 * kEps * (std::abs(d0_) + std::abs(a_ * wi)) ? 0.0 : n;
-    };
-    const double n1 = numerator(w1_, through_south_), n2 = numerator(w2_, through_north_);
-    if (n1 == 0.0 || n2 == 0.0) {
-      regime_ = TopRegime::kCusped;
-    } else if ((n1 > 0) != (n2 > 0)) {
-      regime_ = TopRegime::kLooping;
+    if (a_ == 0.0 && d0_ == 0.0) {
+      // no spin and no p_phi: phi_dot = 0 but at the poles, the axis swings in a plane
+      regime_ = TopRegime::kPlanar;
+    } else if (root_poles > 0) {
+      regime_ = TopRegime::kThroughPole;
+    } else {
+      // b - a u at each turning circle as at() forms it (from the nearer pole's b -+ a
+      // near a pole, each term to its own accuracy); within the roundoff of its terms
+      // it is a cusp (released with phi_dot = theta_dot = 0), as is a circle taken as
+      // the pole itself (within underflow of it).
+      const auto numerator = [&](const Where& x, double w, double pole_term, double to_pole,
+                                 bool pole) {
+        const double bound = to_pole < 1e-3
+                                 ? 16 * kEps * (std::abs(pole_term) + std::abs(a_ * to_pole))
+                                 : 16 * kEps * (std::abs(d0_) + std::abs(a_ * w));
+        return pole || std::abs(x.numerator) <= bound ? 0.0 : x.numerator;
+      };
+      const double n1 = numerator(at_u1, w1_, b_plus_a_, opu1_, through_south_);
+      const double n2 = numerator(at_u2, w2_, b_minus_a_, omu2_, through_north_);
+      if (n1 == 0.0 || n2 == 0.0) {
+        regime_ = TopRegime::kCusped;
+      } else if ((n1 > 0) != (n2 > 0)) {
+        regime_ = TopRegime::kLooping;
+      }
     }
   }
 }

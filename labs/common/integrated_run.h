@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -104,8 +105,10 @@ OdeOptions integration_options(Report& report, const IntegrationInputs& in, bool
                                double default_step);
 
 /// What a run samples and how: the method's options (its step `scale` / 2000 unless
-/// --step was given), 200 samples a `scale` up to t_end (a fixed step's on its own
-/// grid), after refusing a t_end beyond check_phase_digits.
+/// --step was given, and at most `fastest` / 200, the time the motion's fastest rate
+/// takes to turn once: a long nutation period must not set the step of a fast spin),
+/// 200 samples a `scale` up to t_end (a fixed step's on its own grid), after refusing a
+/// t_end beyond check_phase_digits.
 struct RunPlan {
   OdeOptions options;
   std::vector<double> times;
@@ -113,7 +116,7 @@ struct RunPlan {
   double t_end = 0.0;
 };
 RunPlan plan_run(Report& report, const IntegrationInputs& in, bool compared, double t_end,
-                 double scale);
+                 double scale, double fastest = std::numeric_limits<double>::infinity());
 /// Reports the plan's end time (t_end_s) and, for a fixed step, the step (step_s) and,
 /// when t_end is not a whole number of steps, the last one, shortened to end there
 /// (last_step_s).

@@ -71,8 +71,11 @@ void report_section_8_1(Report& report, const Inputs& in, double S, double theta
     report.result_json_none("steady_precession_slow_rad_s", "rad/s");
     report.result_json_none("steady_precession_fast_rad_s", "rad/s");
   } else if (!steady.exists) {
-    report.result_none("steady_precession_rates_rad_s", rates, "rad/s",
-                       "Is^2 S^2 < 4 m g l I cos(theta0): no steady precession");
+    report.result_none(
+        "steady_precession_rates_rad_s", rates, "rad/s",
+        S == 0.0 && std::abs(std::cos(theta0)) < 1e-15
+            ? "horizontal with no spin: eq. 187 would need m g l = 0, nothing balances gravity"
+            : "Is^2 S^2 < 4 m g l I cos(theta0): no steady precession");
     report.result_json_none("steady_precession_slow_rad_s", "rad/s");
     report.result_json_none("steady_precession_fast_rad_s", "rad/s");
   } else if (!std::isfinite(steady.fast)) {
@@ -91,6 +94,55 @@ void report_section_8_1(Report& report, const Inputs& in, double S, double theta
                   report.textbook("(0.81, 0.24)"));
     report.result_json("steady_precession_slow_rad_s", steady.slow, "rad/s");
     report.result_json("steady_precession_fast_rad_s", steady.fast, "rad/s");
+  }
+}
+
+// Two angles in degrees with the fewest significant digits, at least 4, that tell them
+// apart (179.9999999 and 179.99999992576 read "180 and 180" at 4).
+std::pair<std::string, std::string> distinct_degrees(double lo_rad, double hi_rad) {
+  const double lo = rad_to_deg(lo_rad), hi = rad_to_deg(hi_rad);
+  for (int digits = 4; digits < 17; ++digits) {
+    std::string a = fmt::format("{:.{}g}", lo, digits), b = fmt::format("{:.{}g}", hi, digits);
+    if (a != b || lo == hi) return {a, b};
+  }
+  return {fmt::format("{:.17g}", lo), fmt::format("{:.17g}", hi)};
+}
+
+// Why the mean precession is undefined where the axis goes through the vertical: phi is
+// no coordinate there and turns by pi at once, either way; a path a hair to one side or
+// the other takes one of the two limits.
+std::string undefined_mean(const HeavyTopExact& motion) {
+  const auto& limits = motion.mean_precession_limits();
+  if (motion.regime() == TopRegime::kPlanar) {
+    return fmt::format(
+        "undefined: the axis swings in one vertical plane and phi only jumps by pi where it "
+        "passes the vertical (a hair of spin either way makes the mean {:.6g} or {:.6g} rad/s)",
+        limits[0], limits[1]);
+  }
+  return fmt::format(
+      "undefined: the axis goes through the vertical, where phi turns by pi at once either way; "
+      "a path a hair to one side or the other precesses at a mean {:.6g} or {:.6g} rad/s",
+      limits[0], limits[1]);
+}
+
+// A turning circle a hair from a pole: which side of the vertical the axis passes is the
+// sign of b -+ a, and where that is below the rounding of the inputs that form it (each
+// to half an ulp), the last digit of an input decides the path's name and its mean
+// precession, which moves by 2 pi / period between the two sides.
+void report_pass_side(Report& report, const HeavyTopExact& motion) {
+  for (const auto& [value, pole] :
+       {std::pair{motion.b_minus_a(), "upright"}, {motion.b_plus_a(), "the bottom"}}) {
+    const double terms = motion.pole_terms(pole[0] == 'u');
+    if (std::abs(value) > 1e3 * std::numeric_limits<double>::epsilon() * terms) continue;
+    if (!std::isfinite(motion.nutation_period())) continue;
+    report.note(fmt::format(
+        "the axis passes {:.3g} deg from {}, on the side the sign of b {} a decides; b {} a is "
+        "within 1e3 ulps of the terms that form it ({:.3g}), so an input's last digits decide "
+        "the side: on the other, the mean precession is {:.6g} rad/s, not {:.6g}",
+        rad_to_deg(pole[0] == 'u' ? motion.theta_min() : kPi - motion.theta_max()), pole,
+        pole[0] == 'u' ? "-" : "+", pole[0] == 'u' ? "-" : "+", terms,
+        motion.mean_precession_rate() - std::copysign(2 * kPi, value) / motion.nutation_period(),
+        motion.mean_precession_rate()));
   }
 }
 
@@ -161,8 +213,18 @@ void report_section_9(Report& report, const TopStart& start) {
       report.result_none("nutation_period_s", "nutation period", "s",
                          "on the separatrix: never returns");
     }
-    report.result("mean_precession_rate_rad_s", "mean phi_dot over a nutation period",
-                  motion.mean_precession_rate(), "rad/s");
+    if (motion.mean_precession_defined()) {
+      report.result("mean_precession_rate_rad_s", "mean phi_dot over a nutation period",
+                    motion.mean_precession_rate(), "rad/s");
+      report_pass_side(report, motion);
+    } else {
+      report.result_none("mean_precession_rate_rad_s", "mean phi_dot over a nutation period",
+                         "rad/s", undefined_mean(motion));
+    }
+    report.result_json("mean_precession_limits_rad_s_low", motion.mean_precession_limits()[0],
+                       "rad/s");
+    report.result_json("mean_precession_limits_rad_s_high", motion.mean_precession_limits()[1],
+                       "rad/s");
     report.result("phi_dot_turning_rad_s", "phi_dot at theta_max and at theta_min",
                   Vector2d(motion.phi_dot_at_u1(), motion.phi_dot_at_u2()), "rad/s");
     report_fast_top(report, start);
@@ -321,8 +383,15 @@ Report compute(const Inputs& in) {
                      : motion.nutation_period();
   report.t_end = end_time(in.t_end, in.periods, report.scale, 3.0 * report.scale);
   // Every method runs at --step and --tolerance in the comparison, so neither is unused.
+  // The step also from the fastest turn: omega_3 = S, and the axis's own speed, at most
+  // sqrt(2 (E' + m g l) / I) where it is lowest. Near S_min a top released a hair from
+  // upright nods once in minutes (period / 2000 = 33 s) while it spins 50 times a second.
+  const double E_prime = motion.energy() - 0.5 * report.top.Is * S * S;
+  const double fastest =
+      2 * kPi /
+      (std::abs(S) + std::sqrt(2 * std::max(E_prime + report.top.mgl, 0.0) / report.top.I));
   const RunPlan plan =
-      plan_run(report, in.integration, /*compared=*/true, report.t_end, report.scale);
+      plan_run(report, in.integration, /*compared=*/true, report.t_end, report.scale, fastest);
   report.method = in.integration.method;
   report.options = plan.options;
   report.fixed = plan.fixed;
@@ -369,26 +438,61 @@ Report compute(const Inputs& in) {
   report.series(std::move(series));
   // In short: the axis's path and the numbers that decide it.
   const double S_min = sleeping_min_spin(report.top);
-  const std::string sleep = fmt::format("S = {:.4g} rpm is {} S_min = {:.4g} rpm: upright, it {}",
-                                        S / kRpm, S >= S_min ? "above" : "below", S_min / kRpm,
-                                        S >= S_min ? "could sleep" : "would topple");
-  if (motion.regime() == TopRegime::kSleeping) {
-    report.answer("sleeping: the axis stays upright; " + sleep);
-  } else if (motion.regime() == TopRegime::kSteady) {
-    report.answer(
-        fmt::format("steady precession: the axis stays at {:.4g} deg and goes round "
-                    "at {:.4g} rad/s; {}",
-                    rad_to_deg(motion.theta_min()), motion.mean_precession_rate(), sleep));
-  } else {
-    const std::string every = std::isfinite(motion.nutation_period())
-                                  ? fmt::format("every {:.4g} s", motion.nutation_period())
-                                  : std::string("once, never to return (the separatrix)");
-    report.answer(fmt::format(
-        "{}: the axis nods between {:.4g} and {:.4g} deg {} while it precesses at a mean "
-        "{:.4g} rad/s (phi_dot {:.4g} rad/s at theta_max, {:.4g} at theta_min); {}",
-        to_string(motion.regime()), rad_to_deg(motion.theta_min()), rad_to_deg(motion.theta_max()),
-        every, motion.mean_precession_rate(), motion.phi_dot_at_u1(), motion.phi_dot_at_u2(),
-        sleep));
+  const std::string sleep =
+      S == 0.0     ? fmt::format("with no spin (S_min = {:.4g} rpm) it is a pendulum", S_min / kRpm)
+      : S >= S_min ? fmt::format(
+                         "S = {:.4g} rpm is above S_min = {:.4g} rpm: upright, it could "
+                         "sleep",
+                         S / kRpm, S_min / kRpm)
+                   : fmt::format(
+                         "S = {:.4g} rpm is below S_min = {:.4g} rpm: upright, any nudge "
+                         "would topple it",
+                         S / kRpm, S_min / kRpm);
+  const auto [lo, hi] = distinct_degrees(motion.theta_min(), motion.theta_max());
+  const std::string every = std::isfinite(motion.nutation_period())
+                                ? fmt::format("every {:.4g} s", motion.nutation_period())
+                                : std::string("once, never to return (the separatrix)");
+  const std::string mean =
+      motion.mean_precession_defined()
+          ? fmt::format("precesses at a mean {:.4g} rad/s", motion.mean_precession_rate())
+          : fmt::format(
+                "has no mean precession (it is {:.4g} or {:.4g} rad/s as the path passes "
+                "a hair to one side of the vertical or the other)",
+                motion.mean_precession_limits()[0], motion.mean_precession_limits()[1]);
+  switch (motion.regime()) {
+    case TopRegime::kSleeping:
+      report.answer(S >= S_min
+                        ? "sleeping, stable: the axis stays upright; " + sleep
+                        : fmt::format("upright but unstable: S = {:.4g} rpm is below S_min = "
+                                      "{:.4g} rpm, so the least nudge topples it",
+                                      S / kRpm, S_min / kRpm));
+      break;
+    case TopRegime::kSteady:
+      report.answer(fmt::format(
+          "steady precession: the axis stays at {} deg and goes round at {:.4g} rad/s; {}", lo,
+          motion.mean_precession_rate(), sleep));
+      break;
+    case TopRegime::kPlanar:
+      report.answer(fmt::format(
+          "planar: with no spin and no precession the axis swings in one vertical plane "
+          "through the {} to {} deg on the other side {} (back where it started in twice that); "
+          "{}",
+          motion.theta_max() >= kPi / 2 ? "bottom" : "top", motion.theta_max() >= kPi / 2 ? lo : hi,
+          every, sleep));
+      break;
+    case TopRegime::kThroughPole:
+      report.answer(fmt::format(
+          "through the pole: the axis passes through the vertical and out to {} deg {} (phi_dot "
+          "{:.4g} rad/s at theta_max, {:.4g} at theta_min), and {}; {}",
+          motion.theta_min() == 0.0 ? hi : lo, every, motion.phi_dot_at_u1(),
+          motion.phi_dot_at_u2(), mean, sleep));
+      break;
+    default:
+      report.answer(fmt::format(
+          "{}: the axis nods between {} and {} deg {} while it {} (phi_dot {:.4g} rad/s at "
+          "theta_max, {:.4g} at theta_min); {}",
+          to_string(motion.regime()), lo, hi, every, mean, motion.phi_dot_at_u1(),
+          motion.phi_dot_at_u2(), sleep));
   }
   return report;
 }

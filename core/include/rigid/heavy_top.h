@@ -26,6 +26,9 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -58,7 +61,8 @@ double horizontal_precession_rate(const HeavyTop& top, double spin);
 /// The two steady precession rates at tilt theta (eq. 187, from eq. 184 with
 /// theta_ddot = 0: mgl = Is S phi_dot - I phi_dot^2 cos(theta)).
 struct SteadyPrecession {
-  bool exists = false;  ///< false when Is^2 S^2 < 4 mgl I cos(theta) (eq. 188)
+  bool exists = false;  ///< false when Is^2 S^2 < 4 mgl I cos(theta) (eq. 188), or horizontal
+                        ///< with no spin (eq. 187 would need m g l = 0)
   double slow = 0.0;    ///< (Is S - sqrt(D)) / (2 I cos theta), formed as 2 mgl / (Is S + sqrt(D))
   double fast = 0.0;    ///< (Is S + sqrt(D)) / (2 I cos theta); +inf at theta = 90 deg
                         ///< (any theta within 2 ulps of it)
@@ -97,13 +101,15 @@ FastTopNutation fast_top_nutation(const HeavyTop& top, const TopStart& start);
 
 /// The figure the symmetry axis traces on the unit sphere.
 enum class TopRegime {
-  kSleeping,  ///< upright and not nodding: theta = 0 for all t
-  kSteady,    ///< u1 = u2: steady precession at one tilt
-  kWavy,      ///< phi_dot keeps one sign at both turning circles
-  kLooping,   ///< phi_dot changes sign: the axis loops back
-  kCusped,    ///< phi_dot = 0 at a turning circle (a top released with phi_dot = theta_dot = 0)
+  kSleeping,     ///< upright and not nodding: theta = 0 for all t
+  kSteady,       ///< u1 = u2: steady precession at one tilt
+  kWavy,         ///< phi_dot keeps one sign at both turning circles
+  kLooping,      ///< phi_dot changes sign: the axis loops back
+  kCusped,       ///< phi_dot = 0 at a turning circle (a top released with phi_dot = theta_dot = 0)
+  kThroughPole,  ///< a turning circle is a pole (b -+ a = 0): the axis passes the vertical
+  kPlanar,       ///< no spin and no p_phi: the axis swings in one vertical plane
 };
-/// "sleeping", "steady", "wavy", "looping" or "cusped".
+/// "sleeping", "steady", "wavy", "looping", "cusped", "through the pole" or "planar".
 std::string to_string(TopRegime regime);
 
 /// Euler angles and their rates at one time.
@@ -162,10 +168,27 @@ class HeavyTopExact {
   /// The nutation period 2 K(k) / lambda, s (pi / lambda in the steady limit; +inf for a
   /// top on the separatrix, u2 = u3, which takes forever to leave the vertical).
   double nutation_period() const { return period_; }
-  /// The mean of phi_dot over a nutation period, rad/s.
+  /// The mean of phi_dot over a nutation period, rad/s: the one this motion's phi(t)
+  /// takes where the axis goes through a pole (see mean_precession_defined).
   double mean_precession_rate() const { return mean_phi_dot_; }
+  /// False where the axis goes through a pole (kThroughPole, kPlanar): phi turns by pi
+  /// there at once, either way, and the mean is either of mean_precession_limits().
+  bool mean_precession_defined() const { return mean_limits_[0] == mean_limits_[1]; }
+  /// The least and the greatest mean phi_dot a path a hair beside this one takes (equal
+  /// where the mean is defined), rad/s.
+  const std::array<double, 2>& mean_precession_limits() const { return mean_limits_; }
   /// The regime of the symmetry axis's path.
   TopRegime regime() const { return regime_; }
+  /// phi_dot's numerator b - a u at the poles, b - a (u = 1) and b + a (u = -1), rad/s: its
+  /// sign is the side of the vertical a turning circle near a pole passes on. Each is a
+  /// difference of terms of size pole_terms(north): within the inputs' rounding of it, their
+  /// last digits decide that side.
+  double b_minus_a() const { return b_minus_a_; }
+  double b_plus_a() const { return b_plus_a_; }
+  /// The size of the terms b - a (north) or b + a is formed from, |d0| + |a| (1 -+ u0).
+  double pole_terms(bool north) const {
+    return std::abs(d0_) + std::abs(a_) * (north ? one_minus_u0_ : one_plus_u0_);
+  }
   /// phi_dot at the turning circles theta_max (u1) and theta_min (u2), rad/s.
   double phi_dot_at_u1() const { return phi_dot_u1_; }
   double phi_dot_at_u2() const { return phi_dot_u2_; }
@@ -208,6 +231,7 @@ class HeavyTopExact {
   bool use_plus_ = false, use_minus_ = false;           // the J+ and J- terms of phi, psi
   double G_plus_0_ = 0.0, G_minus_0_ = 0.0;
   double mean_phi_dot_ = 0.0, phi_dot_u1_ = 0.0, phi_dot_u2_ = 0.0;
+  std::array<double, 2> mean_limits_{0.0, 0.0};
   double energy_ = 0.0, p_phi_ = 0.0, p_psi_ = 0.0;
   JacobiElliptic jacobi_{1.0};
 };
