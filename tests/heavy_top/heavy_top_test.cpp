@@ -486,3 +486,15 @@ TEST_CASE(
       std::abs(kText.I * std::cos(off) * p.fast * p.fast - kText.Is * kS500 * p.fast + kText.mgl) <=
       16 * DBL_EPSILON * kText.Is * kS500 * p.fast);  // roundoff of its largest terms
 }
+
+TEST_CASE("heavy top: the Euler rates at either pole take that pole's sign") {
+  // At the north pole 3 = z and omega_3 = phi_dot + psi_dot; at the south pole 3 = -z and
+  // omega_3 = -(phi_dot - psi_dot). psi is 0 there (euler_zxz), so phi_dot = +omega_3 up,
+  // -omega_3 down: the top's CSV reads its phi_dot from this.
+  const Eigen::Vector3d w(0.0, 0.0, 2.5);
+  const auto up = rigid::euler_angles_and_rates(rigid::euler_attitude(0.3, 0.0, 0.0), w);
+  CHECK(up.phi_dot == 2.5);
+  const auto down = rigid::euler_angles_and_rates(rigid::euler_attitude(0.3, M_PI, 0.0), w);
+  CHECK(down.phi_dot == -2.5);
+  CHECK(down.psi_dot == 0.0);
+}

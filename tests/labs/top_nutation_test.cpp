@@ -746,3 +746,153 @@ TEST_CASE("top_nutation: the answer in short - the axis's path and what decides 
   CHECK_THAT(compute(slow).results().at("answer").get<std::string>(),
              Catch::Contains("below S_min"));
 }
+
+// Edges against mpmath at 80 digits from the lab's own double inputs (make_lab_edges.py).
+struct LabEdge {
+  const char* name;
+  double I, Is, mgl, theta0_deg, theta_dot0, phi_dot0, spin;
+  double theta_min_deg, theta_max_deg, period, mean_base, phi_dot_u1, phi_dot_u2, u3;
+};
+const LabEdge kLabEdges[] = {
+#include "../heavy_top/reference_lab_edges.inc"
+};
+
+const LabEdge& lab_edge(const std::string& name) {
+  for (const LabEdge& e : kLabEdges)
+    if (name == e.name) return e;
+  throw std::logic_error("no reference " + name);
+}
+
+auto edge_results(const LabEdge& e) {
+  Inputs in;
+  in.inertia = Eigen::Vector2d(e.I, e.Is);
+  in.g = e.mgl / (in.mass * in.arm);
+  in.theta0_deg = e.theta0_deg, in.thetadot0 = e.theta_dot0, in.phidot0 = e.phi_dot0;
+  in.spin = e.spin;
+  return compute(in).results();
+}
+
+bool near_rel(double x, double ref, double rel) {
+  return std::abs(x - ref) <= rel * std::abs(ref);
+}
+
+TEST_CASE("top_nutation: a hair from the bottom, 1 + cos theta0 below the roundoff of 1") {
+  // 179.9999999 deg from rest: cos theta0 rounds to -1, and the lab had the top 'steady' at
+  // 180 deg with phi_dot -14.7. From the degrees, 1 + cos keeps its digits: 180 - theta_max
+  // (7.4e-8 deg) to the ulps of 180 (2.8e-14), the period and phi_dot to a few hundred ulps
+  // (K, lambda and the third-kind integrals each to a few ulps).
+  const LabEdge& e = lab_edge("from rest at 179.9999999 deg");
+  const auto r = edge_results(e);
+  CHECK(r.at("regime") == "cusped");
+  CHECK(std::abs(value(r, "theta_max_deg") - e.theta_max_deg) < 4 * 2.9e-14);
+  CHECK(std::abs(value(r, "theta_min_deg") - e.theta_min_deg) < 4 * 2.9e-14);
+  CHECK(near_rel(value(r, "nutation_period_s"), e.period, 1e-13));
+  CHECK(near_rel(value(r, "mean_precession_rate_rad_s"), e.mean_base, 1e-12));
+  CHECK(near_rel(element(r, "phi_dot_turning_rad_s", 0), e.phi_dot_u1, 1e-12));
+  CHECK(std::abs(element(r, "phi_dot_turning_rad_s", 1)) < 1e-12);  // the cusp
+  // the answer tells the two angles apart
+  CHECK_THAT(r.at("answer").get<std::string>(),
+             Catch::Contains("between 179.9999999 and 179.99999993 deg"));
+}
+
+TEST_CASE("top_nutation: rates of 1e60 keep their turning angles and period") {
+  // u3 ~ 7e116: the cubic at u3 overflowed a double from rates of 3e52 on (theta_max 97.7
+  // deg for 150). Its largest root is found in 113-bit numbers; the rest keeps its digits.
+  const LabEdge& e = lab_edge("phi_dot0 = 1e60 at 30 deg");
+  const auto r = edge_results(e);
+  CHECK(std::abs(value(r, "theta_max_deg") - e.theta_max_deg) < 1e-12);
+  CHECK(std::abs(value(r, "theta_min_deg") - e.theta_min_deg) < 1e-12);
+  CHECK(near_rel(value(r, "nutation_period_s"), e.period, 1e-13));
+  CHECK(near_rel(value(r, "mean_precession_rate_rad_s"), e.mean_base, 1e-12));
+  CHECK(near_rel(element(r, "cubic_roots", 2), e.u3, 1e-13));
+  // past the input's bound, a rule, not a number
+  Inputs past;
+  past.thetadot0 = 1e300;
+  CHECK_THROWS_MATCHES(compute(past), InputError, rigid::test::names_input("--thetadot0"));
+}
+
+TEST_CASE("top_nutation: a top that just reaches upright, its roots polished about the pole") {
+  // b - a = 3.5e-16 of terms of 17: in doubles it came out 0, theta_min read 0 and the
+  // period 2.0465 (3 % short). u3 - 1 = 7.7e-9 is held to ulp(1) as u3 is a double (3e-8 of
+  // it), which moves the period by that over ln(16 / k'^2) = 21.6: 1.4e-9, the bound.
+  const LabEdge& e = lab_edge("just reaching upright");
+  const auto r = edge_results(e);
+  CHECK(r.at("regime") == "wavy");  // phi_dot 20.9 and 4.6e9 rad/s: one sign
+  CHECK(std::abs(element(r, "cubic_roots", 2) - e.u3) < 4 * DBL_EPSILON);
+  CHECK(near_rel(value(r, "theta_min_deg"), e.theta_min_deg, 1e-9));
+  CHECK(near_rel(value(r, "theta_max_deg"), e.theta_max_deg, 1e-13));
+  CHECK(near_rel(value(r, "nutation_period_s"), e.period, 2e-9));
+  CHECK(near_rel(value(r, "mean_precession_rate_rad_s"), e.mean_base, 2e-9));
+  CHECK(near_rel(element(r, "phi_dot_turning_rad_s", 1), e.phi_dot_u2, 1e-8));
+}
+
+TEST_CASE("top_nutation: through the pole and planar swings have no mean precession") {
+  // Exactly through the vertical phi turns by pi at once, either way: the mean is either
+  // limit, base -+ pi / period, and null, with both in the reason.
+  for (const char* name : {"upright with theta_dot0 = 1", "no spin at 150 deg"}) {
+    INFO(name);
+    const LabEdge& e = lab_edge(name);
+    const auto r = edge_results(e);
+    CHECK(r.at("regime") == (e.spin == 0.0 ? "planar" : "through the pole"));
+    CHECK(r.at("mean_precession_rate_rad_s").is_null());
+    const double low = e.mean_base - M_PI / e.period, high = e.mean_base + M_PI / e.period;
+    CHECK_THAT(value(r, "mean_precession_limits_rad_s_low"), WithinAbs(low, 1e-12 * high));
+    CHECK_THAT(value(r, "mean_precession_limits_rad_s_high"), WithinAbs(high, 1e-12 * high));
+    CHECK(near_rel(value(r, "nutation_period_s"), e.period, 1e-13));
+    CHECK(near_rel(value(r, "theta_max_deg"), e.theta_max_deg, 1e-13));
+    const std::string answer = r.at("answer");
+    CHECK_THAT(answer, Catch::StartsWith(r.at("regime").get<std::string>() + ":"));
+    if (e.spin != 0.0) {
+      CHECK_THAT(answer, Catch::Contains(fmt::format("{:.4g} or {:.4g} rad/s", low, high)));
+      // phi_dot at theta_max first, then at theta_min, each where it is
+      CHECK_THAT(answer, Catch::Contains(fmt::format("phi_dot {:.4g} rad/s at theta_max, {:.4g} "
+                                                     "at theta_min",
+                                                     e.phi_dot_u1, e.phi_dot_u2)));
+    }
+  }
+  // the pendulum released level runs: no steady rate, said why
+  Inputs level;
+  level.spin = 0, level.theta0_deg = 90;
+  const auto r = compute(level).results();
+  CHECK(r.at("regime") == "planar");
+  CHECK(r.at("steady_precession_slow_rad_s").is_null());
+  const auto report = compute(level);
+  bool said = false;
+  for (const auto& row : report.rows())
+    said |= row.textbook.find("nothing balances") != std::string::npos;
+  CHECK(said);
+}
+
+TEST_CASE("top_nutation: the answer names phi_dot at theta_max and theta_min the right way") {
+  Inputs in;
+  in.phidot0 = 3.0, in.thetadot0 = 0.5;  // wavy, phi_dot differs at the two circles
+  const auto r = compute(in).results();
+  const double at_max = element(r, "phi_dot_turning_rad_s", 0);
+  const double at_min = element(r, "phi_dot_turning_rad_s", 1);
+  REQUIRE(std::abs(at_max - at_min) > 0.1 * std::abs(at_max));
+  CHECK_THAT(r.at("answer").get<std::string>(),
+             Catch::Contains(fmt::format("phi_dot {:.4g} rad/s at theta_max, {:.4g} at theta_min",
+                                         at_max, at_min)));
+  // upright: stable on one side of S_min, unstable on the other, in the answer's words
+  const double S_min = value(r, "min_spin_rad_s");
+  for (const double f : {1.001, 0.999}) {
+    Inputs up;
+    up.theta0_deg = 0, up.spin = f * S_min;
+    CHECK_THAT(compute(up).results().at("answer").get<std::string>(),
+               Catch::StartsWith(f > 1 ? "sleeping, stable" : "upright but unstable"));
+  }
+}
+
+TEST_CASE("top_nutation: the default step comes from the fastest turn, not only the period") {
+  // A hair from upright at S_min the top nods once in minutes; period / 2000 was a 33 s step
+  // for rk4, which diverged. The step is at most 1/200 of the spin's turn.
+  Inputs in;
+  in.theta0_deg = 1e-9;
+  const auto probe = compute(Inputs{}).results();
+  in.spin = value(probe, "min_spin_rad_s");
+  in.integration.method = "rk4";
+  in.t_end = 1.0;  // its three periods would take 5e8 steps: past the work budget, refused
+  const auto r = compute(in).results();
+  CHECK(value(r, "step_s") <= 2 * M_PI / *in.spin / 200);
+  CHECK(value(r, "max_theta_error_deg") < 1e-6);
+}
