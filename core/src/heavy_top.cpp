@@ -309,13 +309,17 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // is g(v) = v (2 - v)(P - beta v) - (Q - a v)^2 with P = c0 + beta (1 + u0) and
   // Q = b + a, both formed without cancellation: its small root by Newton's method
   // from Q^2 / g'(0) (g(0) = -Q^2 <= 0 < g'(0) = 2 (P + a Q)).
-  opu1_ = one_plus_u0_ + w1_;
-  if (!through_south_ && opu1_ < 1e-3) {
+  // Released with theta_dot0 = 0 at u0 = u1 (the axis rises from it), 1 + u1 is 1 + u0
+  // exactly: the small root below would land within rounding on either side of it, and
+  // above it (u1 > u0) left no phase to start from (v0 NaN a hair from the bottom).
+  const bool u0_is_u1 = C == 0.0 && w1_ == 0.0;
+  opu1_ = u0_is_u1 ? one_plus_u0_ : one_plus_u0_ + w1_;
+  if (!through_south_ && !u0_is_u1 && opu1_ < 1e-3) {
     const double c2 = terms.south2, c1 = terms.south1, Q2 = -terms.south0;
     const double v = cubic_root_near(beta_, c2, c1, -Q2, c1 > 0.0 ? Q2 / c1 : opu1_);
     if (v > 0.0 && v < 2e-3) {
-      opu1_ = v;
-      w1_ = v - one_plus_u0_;
+      opu1_ = std::min(v, one_plus_u0_);  // u1 <= u0
+      w1_ = opu1_ - one_plus_u0_;
     }
   }
 
@@ -328,6 +332,11 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // Where the axis goes through the pole (b - a = 0: v2 = 0 is a root), u3 still
   // needs this form: a top started to just reach upright has u3 - 1 = 7.7e-9, which
   // the roots about u0 held to its size (1.5e-8).
+  // Released with theta_dot0 = 0, u0 is a root: u2 itself (kept exact) where the axis
+  // falls from it, or u1 where it rises (a start faster than steady a hair from upright:
+  // then u2 is this form's small root, where taking u2 = u0 had theta_min 6 % off).
+  const bool u0_is_u2 = C == 0.0 && w2_ == 0.0;
+  double u3_minus_1 = std::numeric_limits<double>::quiet_NaN();  // where found about the pole
   omu2_ = one_minus_u0_ - w2_;
   if (omu2_ < 1e-3 || w3_ - one_minus_u0_ < 1e-3) {
     const double A2 = terms.north2, B2 = terms.north1, C2 = terms.north0;
@@ -345,14 +354,15 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
       if (v3_small && v3 < 1e-3 && !through_south_ && opu1_ >= 1e-3) {
         // and u1 again from Vieta's relations with this w3 (they held its roundoff)
         w3_ = one_minus_u0_ + v3;
+        u3_minus_1 = v3;
         const double product = -C / (beta_ * w3_), sum = (B / beta_ - product) / w3_;
-        const double w2_here = C != 0.0 && v2 <= 0.0 && v2 > -1e-3 ? one_minus_u0_ + v2 : w2_;
+        const double w2_here = !u0_is_u2 && v2 <= 0.0 && v2 > -1e-3 ? one_minus_u0_ + v2 : w2_;
         w1_ = std::max(w2_here != 0.0 ? product / w2_here : sum - w2_here, -one_plus_u0_);
         opu1_ = one_plus_u0_ + w1_;
       }
       // u2 = u0 exactly when released with theta_dot = 0 (f(u0) = 0): kept
-      if (!through_north_ && C != 0.0 && v2 <= 0.0 && v2 > -1e-3) w2_ = one_minus_u0_ + v2;
-      if (!through_north_ && v2 <= 0.0 && v2 > -1e-3) omu2_ = C != 0.0 ? -v2 : one_minus_u0_;
+      if (!through_north_ && !u0_is_u2 && v2 <= 0.0 && v2 > -1e-3) w2_ = one_minus_u0_ + v2;
+      if (!through_north_ && v2 <= 0.0 && v2 > -1e-3) omu2_ = !u0_is_u2 ? -v2 : one_minus_u0_;
     }
   }
 
@@ -380,7 +390,9 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // sn^2 of the phase, its modulus and rate.
   const double span = w3_ - w1_;  // u3 - u1 > 0
   k2_ = (w2_ - w1_) / span;
-  kp2_ = (w3_ - w2_) / span;
+  // u3 - u2 from the pole where both are near it: (1 - u0 + v3) - (1 - u0 - (1 - u2))
+  // kept only eps (1 - u0) of a difference of 1e-9 (the period 1e-8 off by it)
+  kp2_ = (std::isnan(u3_minus_1) ? w3_ - w2_ : u3_minus_1 + omu2_) / span;
   lambda_ = 0.5 * std::sqrt(beta_ * span);
   jacobi_ = JacobiElliptic(kp2_);
   // K(k) = R_F(0, k'^2, 1); infinite on the separatrix (k' = 0).
@@ -437,7 +449,12 @@ HeavyTopExact::HeavyTopExact(const HeavyTop& top, const TopStart& start)
   // A fast top's two terms are ~a each and cancel to ~mgl/(Is S) (at S = 1e8 rad/s to
   // 3e-3 of it; at 1e10 to 0): then the mean of phi_dot = (d0 - a w)/((1 - u)(1 + u)),
   // free of that cancellation pointwise, over a nutation period (periodic_mean).
+  // Only where phi_dot is smooth: a turning circle nearer a pole than the nod is wide
+  // puts a spike of phi_dot there (a turn by nearly pi in a sliver of the period) that
+  // sampling misses, where the terms hold it (a pass 4e-21 deg from upright: the mean
+  // 6.78 rad/s for 0.0091).
   if (!through_north_ && !through_south_ && std::isfinite(K_) && K_ > 0.0 &&
+      std::min(omu2_, opu1_) > w2_ - w1_ &&
       std::abs(term_plus) + std::abs(term_minus) > 1e3 * std::abs(mean_phi_dot_)) {
     mean_phi_dot_ = periodic_mean(
         [&](double t) {
