@@ -270,8 +270,12 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
   bottom.add_line(t, phi_dot, "exact").color = render::kBlue;
   if (integrated_run) bottom.add_points(ti, phi_doti, integrated).color = render::kVermillion;
   // the unit is the axis's: a short label finds a gap between the curve's crossings
-  bottom.add_ref_line(motion.mean_precession_rate(), false,
-                      fmt::format("mean {:.4g}", motion.mean_precession_rate()));
+  // only a mean there is: none through a pole (two limits), none below its roundoff
+  if (motion.mean_precession_defined() &&
+      std::abs(motion.mean_precession_rate()) > motion.mean_precession_error()) {
+    bottom.add_ref_line(motion.mean_precession_rate(), false,
+                        fmt::format("mean {:.4g}", motion.mean_precession_rate()));
+  }
   bottom.legend = render::LegendPlace::kNone;
   return plot;
 }

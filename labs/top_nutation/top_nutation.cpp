@@ -213,7 +213,15 @@ void report_section_9(Report& report, const TopStart& start) {
       report.result_none("nutation_period_s", "nutation period", "s",
                          "on the separatrix: never returns");
     }
-    if (motion.mean_precession_defined()) {
+    const double mean_error = motion.mean_precession_error();
+    if (motion.mean_precession_defined() &&
+        !(std::abs(motion.mean_precession_rate()) > mean_error)) {
+      report.result_none(
+          "mean_precession_rate_rad_s", "mean phi_dot over a nutation period", "rad/s",
+          fmt::format("below the roundoff of the two turns (about each pole) it is the "
+                      "difference of: |mean| < {:.2g} rad/s",
+                      mean_error));
+    } else if (motion.mean_precession_defined()) {
       report.result("mean_precession_rate_rad_s", "mean phi_dot over a nutation period",
                     motion.mean_precession_rate(), "rad/s");
       report_pass_side(report, motion);
@@ -221,6 +229,7 @@ void report_section_9(Report& report, const TopStart& start) {
       report.result_none("mean_precession_rate_rad_s", "mean phi_dot over a nutation period",
                          "rad/s", undefined_mean(motion));
     }
+    report.result_json("mean_precession_rate_error_rad_s", mean_error, "rad/s");
     report.result_json("mean_precession_limits_rad_s_low", motion.mean_precession_limits()[0],
                        "rad/s");
     report.result_json("mean_precession_limits_rad_s_high", motion.mean_precession_limits()[1],
@@ -452,8 +461,12 @@ Report compute(const Inputs& in) {
   const std::string every = std::isfinite(motion.nutation_period())
                                 ? fmt::format("every {:.4g} s", motion.nutation_period())
                                 : std::string("once, never to return (the separatrix)");
+  const bool resolved = std::abs(motion.mean_precession_rate()) > motion.mean_precession_error();
   const std::string mean =
-      motion.mean_precession_defined()
+      motion.mean_precession_defined() && !resolved
+          ? fmt::format("precesses at a mean below its roundoff (|mean| < {:.2g} rad/s)",
+                        motion.mean_precession_error())
+      : motion.mean_precession_defined()
           ? fmt::format("precesses at a mean {:.4g} rad/s", motion.mean_precession_rate())
           : fmt::format(
                 "has no mean precession (it is {:.4g} or {:.4g} rad/s as the path passes "

@@ -171,6 +171,9 @@ class HeavyTopExact {
   /// The mean of phi_dot over a nutation period, rad/s: the one this motion's phi(t)
   /// takes where the axis goes through a pole (see mean_precession_defined).
   double mean_precession_rate() const { return mean_phi_dot_; }
+  /// A bound on the mean's rounding error, rad/s: where it exceeds the mean, the mean is
+  /// a difference of two turns (about the two poles) below their roundoff.
+  double mean_precession_error() const { return mean_error_; }
   /// False where the axis goes through a pole (kThroughPole, kPlanar): phi turns by pi
   /// there at once, either way, and the mean is either of mean_precession_limits().
   bool mean_precession_defined() const { return mean_limits_[0] == mean_limits_[1]; }
@@ -232,6 +235,7 @@ class HeavyTopExact {
   double G_plus_0_ = 0.0, G_minus_0_ = 0.0;
   double mean_phi_dot_ = 0.0, phi_dot_u1_ = 0.0, phi_dot_u2_ = 0.0;
   std::array<double, 2> mean_limits_{0.0, 0.0};
+  double mean_error_ = 0.0;
   double energy_ = 0.0, p_phi_ = 0.0, p_psi_ = 0.0;
   JacobiElliptic jacobi_{1.0};
 };
