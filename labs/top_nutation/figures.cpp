@@ -44,7 +44,7 @@ double effective_potential(const HeavyTopExact& m, double theta) {
 
 // V(theta) with E' = E - Is S^2 / 2, the turning points where they meet, and the
 // minimum: steady precession (the text's Figure 9.8.2, for this top).
-render::Plot2D potential_plot(const HeavyTopExact& m) {
+render::Plot2D potential_plot(const HeavyTopExact& m, std::optional<double> table) {
   const HeavyTop& top = m.top();
   const double S = m.start().spin;
   const double E_prime = m.energy() - 0.5 * top.Is * S * S;
@@ -86,6 +86,17 @@ render::Plot2D potential_plot(const HeavyTopExact& m) {
           render::Marker::kSquare)
       .marker_size = 18;
   panel.series.back().color = render::kBlack;
+  // where a table under the tip would catch the disk's rim, if in view
+  if (table && *table > a && *table < b) {
+    // a legend entry, not a line label: the legend then keeps clear of the line and the
+    // minimum's marker alike
+    render::Series& rim =
+        panel.add_line({rad_to_deg(*table), rad_to_deg(*table)}, {y_bottom, y_top},
+                       fmt::format("rim on a table, {:.4g}\\deg", rad_to_deg(*table)));
+    rim.color = render::kGray;
+    rim.width = 2.5;
+    rim.dash = render::Dash::kDashed;
+  }
   return plot;
 }
 
@@ -235,7 +246,7 @@ double phi_dot_of(const RotationState& x) {
 // theta(t) and phi_dot(t): the exact motion beside an integrated run.
 // `integrated_run` null: none beside it (`why_none` goes in the title).
 render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integrated_run,
-                          double t_end, const std::string& why_none) {
+                          double t_end, const std::string& why_none, std::optional<double> table) {
   std::vector<double> t, theta, phi_dot, ti, thetai, phi_doti;
   for (int k = 0; k <= 1200; ++k) {
     t.push_back(t_end * k / 1200);
@@ -263,6 +274,11 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
   if (integrated_run) top.add_points(ti, thetai, integrated).color = render::kVermillion;
   top.add_ref_line(rad_to_deg(motion.theta_min()), false, "\\theta_{min}");
   top.add_ref_line(rad_to_deg(motion.theta_max()), false, "\\theta_{max}");
+  // the tilt where a table under the tip would catch the rim, where the axis goes past it
+  if (table && *table > motion.theta_min() && *table < motion.theta_max()) {
+    top.add_ref_line(rad_to_deg(*table), false,
+                     fmt::format("rim on a table, {:.4g}\\deg", rad_to_deg(*table)));
+  }
   render::Panel& bottom = plot.panel(1, 0);
   bottom.x.label = "t (s)";
   top.x.motion_time = bottom.x.motion_time = true;
@@ -304,13 +320,13 @@ void figures(const Report& report, FigureSink& sink) {
     }
   }
   sink.add("potential", "the effective potential, E' and the turning points",
-           potential_plot(motion));
+           potential_plot(motion, report.table_theta));
   sink.add("paths", "the axis's path on the sphere: this run's beside the other regimes",
            paths_scene(motion));
   sink.add("band", "the same paths as theta against phi: waves, cusps or loops at any spin",
            band_plot(motion));
   sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
-           theta_plot(motion, integrated, report.t_end, why_none));
+           theta_plot(motion, integrated, report.t_end, why_none, report.table_theta));
   sink.add("top", "the top, L, the gravity torque and the precession circle",
            Motion(report).scene(0.0));
   // A sleeping top has no comparison at equal cost: the one at the lab's settings.

@@ -269,6 +269,24 @@ const ExactErrorWords& top_words() {
   return words;
 }
 
+// A top on a table, not a pivot: the disk's lowest point, l cos theta - r sin theta above
+// the tip, reaches the table at tan theta = l / r (38.66 deg for the text's top). The text
+// (and this lab) take a pivot with nothing below the disk; where the motion tilts past
+// that angle, a student's top on a table would catch its rim there.
+void report_table(Report& report, const Inputs& in) {
+  if (in.inertia) return;  // moments given: no disk to catch
+  const double table = std::atan2(in.arm, in.disk_radius);
+  report.table_theta = table;
+  const HeavyTopExact& motion = *report.motion;
+  if (!(motion.theta_max() > table)) return;
+  report.note(fmt::format(
+      "a table: the disk's rim (r = {:g} m, l = {:g} m up the axis) would touch a table under "
+      "the tip where l cos theta = r sin theta, at theta = {:.4g} deg; this motion tilts to "
+      "{:.4g} deg, through it. The text's top, like this lab's, turns on a pivot with nothing "
+      "below the disk.",
+      in.disk_radius, in.arm, rad_to_deg(table), rad_to_deg(motion.theta_max())));
+}
+
 // The text's numbers use S rounded to 52.4 rad/s; the exact ones differ in the last digit.
 void report_errata(Report& report, double S, double theta0) {
   const HeavyTop& top = report.top;
@@ -277,23 +295,27 @@ void report_errata(Report& report, double S, double theta0) {
     const SteadyPrecession steady = steady_precession_rates(top, S, theta0);
     const SteadyPrecession text_steady = steady_precession_rates(top, S_text, theta0);
     const double text_horizontal = horizontal_precession_rate(top, S_text);
-    report.note(fmt::format(
-        "errata: section 8.1 rounds S = {:.6g} rad/s to {:g} before using it. With the exact S, "
-        "phi_dot (horizontal) = {:.4g} rad/s = {:.4g} rpm and the slow steady rate at 30 deg "
-        "is {:.4g} rad/s. The text's 5.98 and 7.75 rad/s come from S = {:g} ({:.4g} and "
-        "{:.4g}), and its 57.1 rpm from the rounded 5.98 rad/s ({:.4g} rpm).",
-        S, S_text, horizontal_precession_rate(top, S), horizontal_precession_rate(top, S) / kRpm,
-        steady.slow, S_text, text_horizontal, text_steady.slow,
-        rounded(text_horizontal, 3) / kRpm));
+    report.erratum(
+        {"section 8.1 (b), (c)",
+         "S = 52.4 rad/s ... phi_dot = mgl / (Is S) = 5.98 rad/s = 57.1 rpm ... The precession "
+         "rates are 7.75 rad/s",
+         fmt::format("500 rpm is S = {:.6g} rad/s; the text rounds it to {:g} before using it. "
+                     "With the exact S, phi_dot (horizontal) = {:.4g} rad/s = {:.4g} rpm and the "
+                     "slow steady rate at 30 deg is {:.4g} rad/s. The text's 5.98 and 7.75 rad/s "
+                     "come from S = {:g} ({:.4g} and {:.4g}), and its 57.1 rpm from the rounded "
+                     "5.98 rad/s ({:.4g} rpm).",
+                     S, S_text, horizontal_precession_rate(top, S),
+                     horizontal_precession_rate(top, S) / kRpm, steady.slow, S_text,
+                     text_horizontal, text_steady.slow, rounded(text_horizontal, 3) / kRpm)});
     const double S_min = sleeping_min_spin(top);
-    report.note(fmt::format(
-        "errata: the sleeping top's spin period 2 pi / S_min = {:.5g} s rounds to {:.3f} s, not "
-        "the text's 0.132 s.",
-        2 * kPi / S_min, 2 * kPi / S_min));
+    report.erratum({"section 8.1 (a), eq. 189", "This is a period of 0.132 s",
+                    fmt::format("the sleeping top's spin period 2 pi / S_min = {:.5g} s rounds to "
+                                "{:.3f} s.",
+                                2 * kPi / S_min, 2 * kPi / S_min)});
   }
-  report.note(
-      "errata: eq. 186 is misprinted: theta_ddot = 0 in eq. 184 gives m g l = Is S phi_dot - "
-      "I phi_dot^2 cos(theta), with I, not S, in the last term (eq. 187 solves the right one).");
+  report.erratum({"eq. 186", "mgl = Is S phi_dot - S phi_dot^2 cos(theta)",
+                  "theta_ddot = 0 in eq. 184 gives m g l = Is S phi_dot - I phi_dot^2 "
+                  "cos(theta), with I, not S, in the last term (eq. 187 solves the right one)."});
 }
 
 }  // namespace
@@ -421,6 +443,7 @@ Report compute(const Inputs& in) {
         compare_every_method(report, problem, motion, plan, report.scale, at_cost, top_words());
   }
   report_errata(report, S, theta0);
+  report_table(report, in);
 
   TimeSeries series{
       {"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",

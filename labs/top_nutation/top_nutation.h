@@ -49,10 +49,13 @@ struct Report : lab::Report {
   /// The exact motion from the inputs' start (always set by compute()).
   std::optional<HeavyTopExact> motion;
   double arm = 0.0, disk_radius = 0.0;  ///< for drawing the top, m
-  std::string method;                   ///< "exact" or the integrator's name
-  OdeOptions options;                   ///< the chosen method's settings
-  bool fixed = false;                   ///< the method takes a fixed step
-  HeavyTopRun run;                      ///< the lab's run: exact, or the chosen integrator
+  /// Where the disk's rim would touch a table under the tip, l cos theta = r sin theta
+  /// (rad); none for moments given without a disk.
+  std::optional<double> table_theta;
+  std::string method;  ///< "exact" or the integrator's name
+  OdeOptions options;  ///< the chosen method's settings
+  bool fixed = false;  ///< the method takes a fixed step
+  HeavyTopRun run;     ///< the lab's run: exact, or the chosen integrator
   /// Every integrator at the lab's settings and at the same cost, kEqualCostEvaluations
   /// a nutation period (none at equal cost for a top with no nutation to count by).
   MethodComparisons comparisons;

@@ -576,27 +576,37 @@ TEST_CASE("top_nutation: the rounding errata quote the exact rates, the slow one
   };
   const double horizontal = mgl / (Is * S), text_horizontal = mgl / (Is * S_text);
   const auto report = compute(Inputs{});
-  REQUIRE(report.notes().size() == 3);
-  CHECK(report.notes()[0] ==
-        fmt::format("errata: section 8.1 rounds S = {:.6g} rad/s to 52.4 before using it. With "
-                    "the exact S, phi_dot (horizontal) = {:.4g} rad/s = {:.4g} rpm and the slow "
-                    "steady rate at 30 deg is {:.4g} rad/s. The text's 5.98 and 7.75 rad/s come "
-                    "from S = 52.4 ({:.4g} and {:.4g}), and its 57.1 rpm from the rounded 5.98 "
-                    "rad/s ({:.4g} rpm).",
+  REQUIRE(report.errata().size() == 3);
+  CHECK(report.errata()[0].where == "section 8.1 (b), (c)");
+  CHECK_THAT(report.errata()[0].printed, Catch::Contains("5.98 rad/s = 57.1 rpm"));
+  CHECK(report.errata()[0].correction ==
+        fmt::format("500 rpm is S = {:.6g} rad/s; the text rounds it to 52.4 before using it. "
+                    "With the exact S, phi_dot (horizontal) = {:.4g} rad/s = {:.4g} rpm and the "
+                    "slow steady rate at 30 deg is {:.4g} rad/s. The text's 5.98 and 7.75 rad/s "
+                    "come from S = 52.4 ({:.4g} and {:.4g}), and its 57.1 rpm from the rounded "
+                    "5.98 rad/s ({:.4g} rpm).",
                     S, horizontal, horizontal / rpm, slow(S), text_horizontal, slow(S_text),
                     std::round(100 * text_horizontal) / 100 / rpm));
   // eq. 189: S_min = sqrt(4 m g l I) / Is
   const double period = 2 * M_PI * Is / std::sqrt(4 * mgl * I);
-  CHECK(report.notes()[1] ==
-        fmt::format("errata: the sleeping top's spin period 2 pi / S_min = {:.5g} s rounds to "
-                    "{:.3f} s, not the text's 0.132 s.",
+  CHECK(report.errata()[1].printed == "This is a period of 0.132 s");
+  CHECK(report.errata()[1].correction ==
+        fmt::format("the sleeping top's spin period 2 pi / S_min = {:.5g} s rounds to {:.3f} s.",
                     period, period));
-  // eq. 186's misprint is the text's whatever the top; the rounding errata only for its top
+  // each erratum is also a note, in the same order
+  for (std::size_t k = 0; k < 3; ++k) {
+    CHECK(report.notes()[k].rfind("errata: " + report.errata()[k].where + ": the text prints", 0) ==
+          0);
+  }
+  // eq. 186's misprint is the text's whatever the top; the rounding errata only for its top,
+  // and with I where the text has S in the last term
   Inputs other;
   other.spin_rpm = 600;
   const auto changed = compute(other);
-  REQUIRE(changed.notes().size() == 1);
-  CHECK(changed.notes()[0].rfind("errata: eq. 186 is misprinted", 0) == 0);
+  REQUIRE(changed.errata().size() == 1);
+  CHECK(changed.errata()[0].where == "eq. 186");
+  CHECK_THAT(changed.errata()[0].printed, Catch::Contains("- S phi_dot^2 cos(theta)"));
+  CHECK_THAT(changed.errata()[0].correction, Catch::Contains("- I phi_dot^2 cos(theta)"));
 }
 
 TEST_CASE("top_nutation: each regime word on its side of its threshold") {
@@ -896,4 +906,30 @@ TEST_CASE("top_nutation: the default step comes from the fastest turn, not only 
   const auto r = compute(in).results();
   CHECK(value(r, "step_s") <= 2 * M_PI / *in.spin / 200);
   CHECK(value(r, "max_theta_error_deg") < 1e-6);
+}
+
+TEST_CASE("top_nutation: a table under the tip would catch the rim past tan theta = l / r") {
+  // The text's top: l cos theta = r sin theta at atan(0.04 / 0.05) = 38.66 deg, and its
+  // own example nods to 52.36 deg, through such a table: said, with both numbers.
+  const auto report = compute(Inputs{});
+  REQUIRE(report.table_theta);
+  CHECK(*report.table_theta == Approx(std::atan2(0.04, 0.05)).epsilon(4 * DBL_EPSILON));
+  const auto notes = report.notes();
+  const auto table = std::find_if(notes.begin(), notes.end(),
+                                  [](const std::string& n) { return n.rfind("a table:", 0) == 0; });
+  REQUIRE(table != notes.end());
+  CHECK_THAT(*table, Catch::Contains(fmt::format("at theta = {:.4g} deg", 38.65980825409009)));
+  CHECK_THAT(*table, Catch::Contains(fmt::format("tilts to {:.4g} deg",
+                                                 value(report.results(), "theta_max_deg"))));
+  // a fast top released at 10 deg stays clear of it; moments given have no disk to catch
+  Inputs clear;
+  clear.theta0_deg = 10, clear.spin_rpm = 3000;
+  Inputs moments;
+  moments.inertia = Eigen::Vector2d(4.45e-3, 2.5e-3);
+  for (const Inputs& in : {clear, moments}) {
+    const auto r = compute(in);
+    CHECK(std::none_of(r.notes().begin(), r.notes().end(),
+                       [](const std::string& n) { return n.rfind("a table:", 0) == 0; }));
+  }
+  CHECK_FALSE(compute(moments).table_theta);
 }
