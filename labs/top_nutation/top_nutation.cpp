@@ -108,6 +108,38 @@ std::pair<std::string, std::string> distinct_degrees(double lo_rad, double hi_ra
   return {fmt::format("{:.17g}", lo), fmt::format("{:.17g}", hi)};
 }
 
+// The period's condition number: the largest |d ln T / d ln x| over the start's theta0
+// and rates x, by central differences at a relative step of 1e-7, or less near the
+// separatrix, where a step must not carry the start across it: 1e-3 of k'^2 = (u3 - u2) /
+// (u3 - u1) (T to ~1e-15: the number to 1e-15 / h, read where it is large). It grows as
+// 1 / k'^2 there: a top started to just reach upright (u3 - 1 = 7.7e-9) has 3.6e8.
+double period_condition(const HeavyTopExact& motion) {
+  const double kp2 = (motion.u3() - motion.u2()) / (motion.u3() - motion.u1());
+  const double h = std::min(1e-7, 1e-3 * std::max(kp2, 1e-12)), T = motion.nutation_period();
+  double worst = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    TopStart s = motion.start();
+    double* x = k == 0 ? &s.theta : k == 1 ? &s.theta_dot : k == 2 ? &s.phi_dot : &s.spin;
+    if (*x == 0.0) continue;
+    double T_at[2];
+    for (const int side : {0, 1}) {
+      TopStart t = s;
+      double* y = k == 0 ? &t.theta : k == 1 ? &t.theta_dot : k == 2 ? &t.phi_dot : &t.spin;
+      *y = *x * (side ? 1 + h : 1 - h);
+      if (k == 0)
+        t.theta_deg =
+            s.theta_deg ? std::optional(*s.theta_deg * (side ? 1 + h : 1 - h)) : std::nullopt;
+      try {
+        T_at[side] = HeavyTopExact(motion.top(), t).nutation_period();
+      } catch (const std::invalid_argument&) {
+        T_at[side] = T;  // a step past a rule (theta0 at 180): that side left out
+      }
+    }
+    worst = std::max(worst, std::abs(T_at[1] - T_at[0]) / (2 * h * T));
+  }
+  return std::isfinite(worst) ? worst : std::numeric_limits<double>::infinity();
+}
+
 // Why the mean precession is undefined where the axis goes through the vertical: phi is
 // no coordinate there and turns by pi at once, either way; a path a hair to one side or
 // the other takes one of the two limits.
@@ -209,6 +241,14 @@ void report_section_9(Report& report, const TopStart& start) {
     if (std::isfinite(motion.nutation_period())) {
       report.result("nutation_period_s", "nutation period 2 K(k) / lambda",
                     motion.nutation_period(), "s");
+      const double condition = period_condition(motion);
+      report.result_json("nutation_period_condition", condition, "");
+      if (condition > 1e3) {
+        report.remark(fmt::format(
+            "(condition number {:.2g}: a relative change d in theta0 or a rate moves it by up "
+            "to {:.2g} d; near the separatrix it grows as 1 / (u3 - u2))",
+            condition, condition));
+      }
     } else {
       report.result_none("nutation_period_s", "nutation period", "s",
                          "on the separatrix: never returns");

@@ -761,7 +761,7 @@ TEST_CASE("top_nutation: the answer in short - the axis's path and what decides 
 struct LabEdge {
   const char* name;
   double I, Is, mgl, theta0_deg, theta_dot0, phi_dot0, spin;
-  double theta_min_deg, theta_max_deg, period, mean_base, phi_dot_u1, phi_dot_u2, u3;
+  double theta_min_deg, theta_max_deg, period, mean_base, phi_dot_u1, phi_dot_u2, u3, condition;
 };
 const LabEdge kLabEdges[] = {
 #include "../heavy_top/reference_lab_edges.inc"
@@ -773,13 +773,17 @@ const LabEdge& lab_edge(const std::string& name) {
   throw std::logic_error("no reference " + name);
 }
 
-auto edge_results(const LabEdge& e) {
+Inputs edge_inputs(const LabEdge& e) {
   Inputs in;
   in.inertia = Eigen::Vector2d(e.I, e.Is);
   in.g = e.mgl / (in.mass * in.arm);
   in.theta0_deg = e.theta0_deg, in.thetadot0 = e.theta_dot0, in.phidot0 = e.phi_dot0;
   in.spin = e.spin;
-  return compute(in).results();
+  return in;
+}
+
+auto edge_results(const LabEdge& e) {
+  return compute(edge_inputs(e)).results();
 }
 
 bool near_rel(double x, double ref, double rel) {
@@ -835,6 +839,20 @@ TEST_CASE("top_nutation: a top that just reaches upright, its roots polished abo
   CHECK(near_rel(value(r, "nutation_period_s"), e.period, 1e-13));
   CHECK(near_rel(value(r, "mean_precession_rate_rad_s"), e.mean_base, 1e-13));
   CHECK(near_rel(element(r, "phi_dot_turning_rad_s", 1), e.phi_dot_u2, 1e-8));
+  // the period's condition number, 4.6e6, stated: by differences at 1e-3 of k'^2 = 6.5e-9,
+  // T to 1e-15 over a step of 6.5e-12, so to ~2e-4 of itself
+  CHECK(near_rel(value(r, "nutation_period_condition"), e.condition, 1e-3));
+  bool stated = false;
+  const auto report = compute(edge_inputs(e));
+  for (const auto& row : report.rows()) {
+    stated |= row.remark.rfind(fmt::format("(condition number {:.2g}", e.condition), 0) == 0;
+  }
+  CHECK(stated);
+  // well away from it, small, and not in the table
+  for (const char* name : {"from rest at 179.9999999 deg", "phi_dot0 = 1e60 at 30 deg"}) {
+    const LabEdge& other = lab_edge(name);
+    CHECK(near_rel(value(edge_results(other), "nutation_period_condition"), other.condition, 1e-6));
+  }
 }
 
 TEST_CASE("top_nutation: through the pole and planar swings have no mean precession") {
