@@ -951,3 +951,29 @@ TEST_CASE("top_nutation: a table under the tip would catch the rim past tan thet
   }
   CHECK_FALSE(compute(moments).table_theta);
 }
+
+TEST_CASE("top_nutation: planar and through-the-pole on their side of the threshold only") {
+  const auto regime = [](double theta0_deg, double thetadot0, double phidot0, double spin) {
+    Inputs in;
+    in.theta0_deg = theta0_deg, in.thetadot0 = thetadot0, in.phidot0 = phidot0, in.spin = spin;
+    return compute(in).results();
+  };
+  // no spin, no phi_dot0: a plane; a hair of either, and the axis goes round the vertical
+  CHECK(regime(150, 0, 0, 0).at("regime") == "planar");
+  for (const auto& r : {regime(150, 0, 0, 1e-6), regime(150, 0, 1e-6, 0)}) {
+    CHECK(r.at("regime") != "planar");
+    CHECK(r.at("regime") != "through the pole");
+    CHECK_FALSE(r.at("mean_precession_rate_rad_s").is_null());
+  }
+  // started upright with theta_dot0: through the pole; a hair off upright, beside it
+  CHECK(regime(0, 1, 0, 52.36).at("regime") == "through the pole");
+  const auto beside = regime(1e-9, 1, 0, 52.36);
+  CHECK(beside.at("regime") != "through the pole");
+  CHECK_FALSE(beside.at("mean_precession_rate_rad_s").is_null());
+  // and beside it the mean is one of the two limits through it
+  const auto through = regime(0, 1, 0, 52.36);
+  const double mean = value(beside, "mean_precession_rate_rad_s");
+  const double low = value(through, "mean_precession_limits_rad_s_low");
+  const double high = value(through, "mean_precession_limits_rad_s_high");
+  CHECK(std::min(std::abs(mean - low), std::abs(mean - high)) < 1e-6 * high);
+}
