@@ -122,11 +122,13 @@ Report compute(const Inputs& in) {
   report.alias("torque_unbalanced_nm", "torque_unbalanced_n_m");
   report.alias("torque_balanced_nm", "torque_balanced_n_m");
   if (report.textbook_inputs()) {
-    report.note(fmt::format(
-        "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "
-        "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
-        "b = {:g} cm, theta = {:g} deg",
-        1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset, in.tilt_deg));
+    report.erratum({"section 2.3, eqs. 60-61",
+                    "we find the required balancing masses to be m0 = 76 grams",
+                    fmt::format("its own small-angle formula (eq. 61) gives {:.1f} g and the "
+                                "exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
+                                "b = {:g} cm, theta = {:g} deg",
+                                1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius,
+                                100 * wheel.offset, in.tilt_deg)});
   }
 
   // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.

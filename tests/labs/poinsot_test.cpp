@@ -572,14 +572,28 @@ TEST_CASE("poinsot: the notes carry their own numbers, the herpolhode's folded t
     Inputs in;
     in.omega0 = omega0;
     const auto report = compute(in);
-    const auto ratios = notes_starting(report, "errata: section 4.1 rescales");
-    REQUIRE(ratios.size() == 1);
-    CHECK(contains(ratios[0], "touching on axis 1 gives " + touching(0) + " and on axis 2 " +
-                                  touching(1) + ", where"));
-    const auto root5 = notes_starting(report, "errata: 1/sqrt(5)");
-    REQUIRE(root5.size() == 1);
-    CHECK(contains(root5[0], fmt::format("= {:.4f} rounds to {:.2f};", 1 / std::sqrt(5.0),
-                                         1 / std::sqrt(5.0))));
+    REQUIRE(report.errata().size() == 2);
+    const auto& ratios = report.errata()[0];
+    CHECK(ratios.where == "section 4.1, the momentum ratios touching on axes 1 and 2");
+    CHECK(ratios.printed ==
+          "resulting is (0.44:0.55:0.73) ... However for the 2-axis, intermediate moment, the "
+          "ratio becomes (0.40:0.50:0.66)");
+    CHECK(ratios.correction ==
+          "the text rescales ratios it has already rounded; exactly, touching on axis 1 gives " +
+              touching(0) + " and on axis 2 " + touching(1));
+    const auto& root5 = report.errata()[1];
+    CHECK(root5.where == "section 4.1, the energy ellipsoid's ratios");
+    CHECK(root5.printed == "the ratio from kinetic energy is (0.44:0.50:0.58)");
+    CHECK(root5.correction ==
+          fmt::format("1/sqrt(5) = {:.4f} rounds to {:.2f}, which the text truncates to 0.44: "
+                      "({:.2f} : {:.2f} : {:.2f})",
+                      1 / std::sqrt(5.0), 1 / std::sqrt(5.0), 1 / std::sqrt(5.0),
+                      1 / std::sqrt(4.0), 1 / std::sqrt(3.0)));
+    for (const auto& e : report.errata()) {
+      CHECK(notes_starting(report, "errata: " + e.where + ": the text prints \"" + e.printed +
+                                       "\"; " + e.correction)
+                .size() == 1);
+    }
     // After kHerpolhodePeriods periods the contact point has turned N x turn; its
     // distance from the start is that angle folded into [0, 180] deg.
     const double turn = value(report.results(), "herpolhode_turn_per_period_deg");

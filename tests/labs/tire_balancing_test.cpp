@@ -183,16 +183,24 @@ TEST_CASE(
   const double exact = t * m * a * a / 4 / (4 * a * b - 2 * t * (a * a - b * b));
   const auto report = compute(Inputs{});
   REQUIRE(report.notes().size() == 1);
-  CHECK(report.notes()[0] ==
-        fmt::format("errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) "
-                    "gives {:.1f} g and the exact eq. 60 gives {:.1f} g for m = 10 kg, a = 18 cm, "
-                    "b = 5 cm, theta = 1 deg",
+  REQUIRE(report.errata().size() == 1);
+  const auto& erratum = report.errata()[0];
+  CHECK(erratum.where == "section 2.3, eqs. 60-61");
+  CHECK(erratum.printed == "we find the required balancing masses to be m0 = 76 grams");
+  CHECK(erratum.correction ==
+        fmt::format("its own small-angle formula (eq. 61) gives {:.1f} g and the exact eq. 60 "
+                    "gives {:.1f} g for m = 10 kg, a = 18 cm, b = 5 cm, theta = 1 deg",
                     1e3 * small, 1e3 * exact));
+  CHECK(report.notes()[0] ==
+        "errata: section 2.3, eqs. 60-61: the text prints \"we find the "
+        "required balancing masses to be m0 = 76 grams\"; " +
+            erratum.correction);
   // Another wheel is not the text's: no errata, no printed values.
   Inputs other;
   other.tilt_deg = 2;
   const auto changed = compute(other);
   CHECK(changed.notes().empty());
+  CHECK(changed.errata().empty());
   CHECK(changed.textbook_printed().empty());
 }
 
