@@ -72,7 +72,7 @@ void report_errata(Report& report, const Inputs& in, bool example) {
   }
   if (p.contact != ConeContact::kNone) {
     report.erratum(
-        {"section 6.1, the applet and Marion's description (alpha)",
+        {"section 6.1, the applet and Marion's alpha, before eq. 142",
          "The angle between vertical and the yellow(red) vector, i.e. between z and omega, is "
          "alpha ... the angular velocity omega precesses around the z-axis making a constant "
          "angle alpha with the angular momentum",
@@ -100,7 +100,7 @@ void report_errata(Report& report, const Inputs& in, bool example) {
   if (in.preset == "earth" && example) {
     const double day_ratio = kSolarDay / kSiderealDay;
     report.erratum(
-        {"section 6.1, the free precession of the Earth",
+        {"section 6.1, the Earth's free precession after eq. 149",
          "2 pi/Omega = 305 days ... yielding a period of 0.997 days",
          fmt::format("the two periods use two different days. With omega = 2 pi per sidereal "
                      "day, 2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d; with omega = 2 pi "

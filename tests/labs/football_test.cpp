@@ -306,7 +306,7 @@ TEST_CASE("football: the motion is exact at any time, in any order; its still is
 TEST_CASE("football: the cone errata quote section 6.1 and turn it round, with the numbers") {
   constexpr double kDeg = M_PI / 180;
   const std::string cones = "section 6.1, after eq. 144";
-  const std::string alpha_where = "section 6.1, the applet and Marion's description (alpha)";
+  const std::string alpha_where = "section 6.1, the applet and Marion's alpha, before eq. 142";
   const std::string quote =
       "This means that the space cone can engulf the body cone (prolate case) or the space cone "
       "can be outside the body cone (oblate case).";
@@ -379,7 +379,7 @@ TEST_CASE("football: the cone errata quote section 6.1 and turn it round, with t
 
 TEST_CASE("football: Feynman's ratio for any thrown plate, the Earth's days for the text's") {
   const std::string feynman = "section 6.1, Feynman's plate after eq. 149";
-  const std::string days = "section 6.1, the free precession of the Earth";
+  const std::string days = "section 6.1, the Earth's free precession after eq. 149";
   const auto frisbee = compute(preset("frisbee"));
   const auto earth = compute(preset("earth"));
   REQUIRE(errata_at(frisbee, feynman).size() == 1);

@@ -573,7 +573,7 @@ TEST_CASE("poinsot: the notes carry their own numbers, the herpolhode's folded t
     in.omega0 = omega0;
     const auto report = compute(in);
     REQUIRE(report.errata().size() == 2);
-    const auto& ratios = report.errata()[0];
+    const auto& ratios = report.errata()[1];
     CHECK(ratios.where == "section 4.1, the momentum ratios touching on axes 1 and 2");
     CHECK(ratios.printed ==
           "resulting is (0.44:0.55:0.73) ... However for the 2-axis, intermediate moment, the "
@@ -581,7 +581,7 @@ TEST_CASE("poinsot: the notes carry their own numbers, the herpolhode's folded t
     CHECK(ratios.correction ==
           "the text rescales ratios it has already rounded; exactly, touching on axis 1 gives " +
               touching(0) + " and on axis 2 " + touching(1));
-    const auto& root5 = report.errata()[1];
+    const auto& root5 = report.errata()[0];
     CHECK(root5.where == "section 4.1, the energy ellipsoid's ratios");
     CHECK(root5.printed == "the ratio from kinetic energy is (0.44:0.50:0.58)");
     CHECK(root5.correction ==
