@@ -126,7 +126,7 @@ std::string readable_period(double seconds) {
 
 // The rates against alpha for this body, as the rates figure draws them and --csv
 // writes them: Omega / omega and phi_dot / omega at alpha = 0.5, 1, .., 89.5 deg, or,
-// where the run's alpha lies below 0.5 deg (the Earth's 0.2 arcsec), at 180 angles
+// where the run's alpha lies below 0.5 deg (the Earth's 0.2 arcsec), at 179 angles
 // spaced evenly in log alpha from a decade below it to 89.5 deg.
 TimeSeries rate_sweep(double I, double Is, double alpha_deg) {
   TimeSeries sweep{{"alpha_deg", "Omega_over_omega", "phi_dot_over_omega"},

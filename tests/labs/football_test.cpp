@@ -436,10 +436,16 @@ TEST_CASE("football: Feynman's ratio for any thrown plate, the Earth's days for 
                  fmt::format("solar day (86400 s), they are {:.4g} d and {:.4g} d.",
                              body_days * solar / sidereal, space_days * solar / sidereal)));
   CHECK(contains(said.correction, "305 needs the sidereal day, 0.997 the solar one."));
-  // Another tilt is not the text's example: no such erratum.
+  // Beside it, not an erratum: the observed wobble and why it is longer than the rigid one.
+  const std::string chandler =
+      "The observed free wobble of the Earth, the Chandler wobble, has a period of about 433 "
+      "days (the text says 440)";
+  CHECK(notes_starting(earth, chandler).size() == 1);
+  // Another tilt is not the text's example: neither.
   Inputs tilted = preset("earth");
   tilted.alpha_deg = 1.0;
   CHECK(errata_at(compute(tilted), days).empty());
+  CHECK(notes_starting(compute(tilted), chandler).empty());
 }
 
 TEST_CASE("football: the answer in short - which cone rolls on which, and how fast") {
@@ -520,6 +526,14 @@ TEST_CASE("football: the rates figure shows the Earth's two rates apart, with th
   CHECK(panel.annotations[1].text ==
         fmt::format("2\\pi / |\\Omega| = {:.4g} d", sidereal / (k * c) / 86400));
   CHECK(panel.annotations[1].y == points.y[1]);
+  // log alpha from just below the sweep's first angle, 0.5 deg; linear from it on
+  for (const auto& [alpha_deg, log] : {std::pair{std::nextafter(0.5, 0.0), true}, {0.5, false}}) {
+    Inputs in = preset("earth");
+    in.alpha_deg = alpha_deg;
+    KeptFigures f;
+    rigid::lab::football::figures(compute(in), f);
+    CHECK((f.plots.at("rates").panel().x.scale == Scale::kLog10) == log);
+  }
   // The football's rates are of one size: linear, signed, no annotations (its committed figure).
   KeptFigures ball;
   rigid::lab::football::figures(compute(Inputs{}), ball);
