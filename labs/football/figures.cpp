@@ -102,32 +102,56 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   return scene;
 }
 
-// Omega / omega and phi_dot / omega against alpha for this body.
+// Omega / omega and phi_dot / omega against alpha for this body. Where the two rates differ
+// by more than 20 times (the Earth's 0.00327 and 1.00327), they are drawn on a log scale as
+// |Omega| / omega, and where alpha is tiny (the Earth's 0.2 arcsec) against log alpha: the run's
+// two points then carry their periods, which a linear plot could not show apart.
 render::Plot2D rates_plot(const Report& report) {
   const SymmetricPrecession& p = report.precession;
+  const double body_rate = p.body_rate / report.omega, space_rate = p.space_rate / report.omega;
+  const bool log_rates = body_rate != 0.0 && (std::abs(body_rate) < space_rate / 20.0 ||
+                                              std::abs(body_rate) > space_rate * 20.0);
+  const bool log_alpha = report.alpha_deg < 0.5;
   // the sweep --csv writes (rate_sweep): alpha, Omega / omega, phi_dot / omega
   std::vector<double> alpha_deg, body, space;
   for (const std::vector<double>& row : report.time_series().rows) {
     alpha_deg.push_back(row[0]);
-    body.push_back(row[1]);
+    body.push_back(log_rates ? std::abs(row[1]) : row[1]);
     space.push_back(row[2]);
   }
   render::Plot2D plot;
   plot.title = fmt::format("rates against \\alpha, Is/I = {:.4g}", report.Is / report.I);
   render::Panel& panel = plot.panel();
-  panel.x = {"angle \\alpha between \\omega and 3 (\\deg)", render::Scale::kLinear, 0, 90};
-  panel.y = {"rate / \\omega"};
+  if (log_alpha) {
+    panel.x = {"angle \\alpha between \\omega and 3 (\\deg), log scale", render::Scale::kLog10,
+               alpha_deg.front(), 90};
+  } else {
+    panel.x = {"angle \\alpha between \\omega and 3 (\\deg)", render::Scale::kLinear, 0, 90};
+  }
+  panel.y = {log_rates ? "rate / \\omega, log scale" : "rate / \\omega"};
+  if (log_rates) panel.y.scale = render::Scale::kLog10;
   // In the colours of the cones' axes: the turn about L (the space cone's), the turn
   // about 3 (the body cone's).
   panel.add_line(alpha_deg, space, "\\phi-dot / \\omega, 3 about L in space (eq. 147)").color =
       colors::kL;
-  panel.add_line(alpha_deg, body, "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
-      .color = colors::kSymmetryAxis;
   panel
-      .add_points({report.alpha_deg, report.alpha_deg},
-                  {p.space_rate / report.omega, p.body_rate / report.omega},
+      .add_line(alpha_deg, body,
+                log_rates ? "|\\Omega| / \\omega, \\omega about 3 in the body (eq. 109)"
+                          : "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
+      .color = colors::kSymmetryAxis;
+  const double body_point = log_rates ? std::abs(body_rate) : body_rate;
+  panel
+      .add_points({report.alpha_deg, report.alpha_deg}, {space_rate, body_point},
                   fmt::format("this run, \\alpha = {:.3g}\\deg", report.alpha_deg))
       .color = colors::kMarker;
+  if (log_rates || log_alpha) {
+    panel.annotate(report.alpha_deg, space_rate,
+                   "2\\pi / \\phi-dot = " + readable_period(p.space_period));
+    if (body_rate != 0.0) {
+      panel.annotate(report.alpha_deg, body_point,
+                     "2\\pi / |\\Omega| = " + readable_period(p.body_period));
+    }
+  }
   return plot;
 }
 

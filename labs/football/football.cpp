@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -41,11 +42,93 @@ Preset preset_of(const std::string& name) {
   return {ball.I_com(1, 1), ball.I_com(0, 0), 60.0, 10.0};
 }
 
+// What section 6.1 prints wrong, with this run's numbers: the cones' cases the wrong way
+// round and alpha named for two angles (for any body with cones), Feynman's ratio upside
+// down (the frisbee, a plate), the Earth's two periods from two different days.
+void report_errata(Report& report, const Inputs& in, bool example) {
+  const SymmetricPrecession& p = report.precession;
+  const double theta_deg = rad_to_deg(p.theta), cone_deg = rad_to_deg(p.space_cone);
+  const std::string numbers =
+      fmt::format("Is/I = {:.6g}, alpha = {:.6g} deg, theta = {:.6g} deg, omega to L = {:.6g} deg",
+                  report.Is / report.I, report.alpha_deg, theta_deg, cone_deg);
+  const char* cones_printed =
+      "This means that the space cone can engulf the body cone (prolate case) or the space "
+      "cone can be outside the body cone (oblate case).";
+  if (p.contact == ConeContact::kOutside) {
+    report.erratum(
+        {"section 6.1, after eq. 144", cones_printed,
+         "the cases are the other way round. For this prolate body (" + numbers +
+             ") theta > alpha: omega lies between L and 3, and the body cone rolls on the "
+             "outside of the space cone; neither engulfs the other. It is an oblate body whose "
+             "space cone lies inside its body cone. The text's 'alpha < theta for prolate' is "
+             "right."});
+  } else if (p.contact == ConeContact::kInside) {
+    report.erratum(
+        {"section 6.1, after eq. 144", cones_printed,
+         "the cases are the other way round. For this oblate body (" + numbers +
+             ") theta < alpha: L lies between 3 and omega, and the space cone lies inside the "
+             "body cone, which rolls round it. A prolate body's cones touch from outside, "
+             "neither engulfing the other. The text's 'alpha > theta for oblate' is right."});
+  }
+  if (p.contact != ConeContact::kNone) {
+    report.erratum(
+        {"section 6.1, the applet and Marion's alpha, before eq. 142",
+         "The angle between vertical and the yellow(red) vector, i.e. between z and omega, is "
+         "alpha ... the angular velocity omega precesses around the z-axis making a constant "
+         "angle alpha with the angular momentum",
+         fmt::format("in eqs. 142-147 alpha is the angle between omega and the symmetry axis 3 "
+                     "(omega_z' = omega cos alpha, eq. 142), not between z (L) and omega. Here "
+                     "omega makes the space cone's half-angle |theta - alpha| = {:.6g} deg with "
+                     "L, and alpha = {:.6g} deg with 3.",
+                     cone_deg, report.alpha_deg)});
+  }
+  // A thin plate (Is = 2I): phi_dot / |psi_dot| = sqrt(1 + 3 cos^2 alpha) / cos alpha, at
+  // least 2 at any alpha, so the wobble is never half the spin.
+  if (in.preset == "frisbee" && !in.inertia && !in.moment_ratio) {
+    const double spin = std::abs(p.spin_rate);
+    report.erratum(
+        {"section 6.1, Feynman's plate after eq. 149",
+         "the medallion rotates twice as fast as the wobble rate",
+         fmt::format("the quote has the ratio upside down, and the text sets it beside eq. 149 "
+                     "without comment; eq. 149 is right. The wobble, phi_dot = {:.6g} rad/s (3 "
+                     "about L in space), is {:.6g} times the medallion's spin about the plate's "
+                     "own axis, |psi_dot| = omega cos alpha = {:.6g} rad/s (equal in size to the "
+                     "body-frame rate Omega = {:.6g} rad/s): wobble : spin = 2 : 1 at a slight "
+                     "angle, not 1 : 2.",
+                     p.space_rate, p.space_rate / spin, spin, p.body_rate)});
+  }
+  if (in.preset == "earth" && example) {
+    const double day_ratio = kSolarDay / kSiderealDay;
+    report.erratum(
+        {"section 6.1, the Earth's free precession after eq. 149",
+         "2 pi/Omega = 305 days ... yielding a period of 0.997 days",
+         fmt::format("the two periods use two different days. With omega = 2 pi per sidereal "
+                     "day, 2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d; with omega = 2 pi "
+                     "per solar day (86400 s), they are {:.4g} d and {:.4g} d. 305 needs the "
+                     "sidereal day, 0.997 the solar one.",
+                     p.body_period / kSolarDay, p.space_period / kSolarDay,
+                     p.body_period / kSolarDay * day_ratio,
+                     p.space_period / kSolarDay * day_ratio)});
+    report.note(
+        "The observed free wobble of the Earth, the Chandler wobble, has a period of about "
+        "433 days (the text says 440): the Earth is not rigid (its elastic mantle and oceans "
+        "yield to the wobble), which lengthens the rigid-body period.");
+  }
+}
+
 }  // namespace
 
+std::string readable_period(double seconds) {
+  if (seconds < 1000.0) return fmt::format("{:.4g} s", seconds);
+  if (seconds < 0.5 * kSolarDay) return fmt::format("{:.4g} h", seconds / 3600.0);
+  return fmt::format("{:.4g} d", seconds / kSolarDay);
+}
+
 // The rates against alpha for this body, as the rates figure draws them and --csv
-// writes them: Omega / omega and phi_dot / omega at alpha = 0.5, 1, .., 89.5 deg.
-TimeSeries rate_sweep(double I, double Is) {
+// writes them: Omega / omega and phi_dot / omega at alpha = 0.5, 1, .., 89.5 deg, or,
+// where the run's alpha lies below 0.5 deg (the Earth's 0.2 arcsec), at 179 angles
+// spaced evenly in log alpha from a decade below it to 89.5 deg.
+TimeSeries rate_sweep(double I, double Is, double alpha_deg) {
   TimeSeries sweep{{"alpha_deg", "Omega_over_omega", "phi_dot_over_omega"},
                    {},
                    {"football: the rates against alpha for this body (a sweep: the lab has no "
@@ -54,8 +137,10 @@ TimeSeries rate_sweep(double I, double Is) {
                     "Omega_over_omega: omega's turn about 3 in the body over |omega| (eq. 109, "
                     "+: along omega_3); phi_dot_over_omega: 3's turn about L in space over "
                     "|omega| (eq. 147)"}};
+  const bool fine = alpha_deg < 0.5;
+  const double low = std::max(std::log10(alpha_deg) - 1.0, -300.0), high = std::log10(89.5);
   for (int k = 1; k < 180; ++k) {
-    const double a = 0.5 * k;
+    const double a = fine ? std::pow(10.0, low + (high - low) * (k - 1) / 178.0) : 0.5 * k;
     const SymmetricPrecession q = free_symmetric_precession(I, Is, 1.0, deg_to_rad(a));
     sweep.rows.push_back({a, q.body_rate, q.space_rate});
   }
@@ -129,7 +214,7 @@ Report compute(const Inputs& in) {
   const SymmetricPrecession p =
       for_input("--inertia", [&] { return free_symmetric_precession(I, Is, omega, alpha); });
   report.precession = p;
-  report.series(rate_sweep(I, Is));
+  report.series(rate_sweep(I, Is, alpha_deg));
   // The text's printed values of a preset's fixed example: only for that preset
   // with nothing else changed.
   const bool example = !in.inertia && !in.moment_ratio && !in.omega && !in.day && !in.alpha_deg;
@@ -223,57 +308,7 @@ Report compute(const Inputs& in) {
   report.result_text("cones_touch", "the body cone rolls on the space cone's",
                      to_string(p.contact));
 
-  const std::string numbers =
-      fmt::format("Is/I = {:.6g}, alpha = {:.6g} deg, theta = {:.6g} deg, omega to L = {:.6g} deg",
-                  Is / I, alpha_deg, theta_deg, rad_to_deg(p.space_cone));
-  if (p.contact == ConeContact::kOutside) {
-    report.note(
-        "errata: section 6.1 says the space cone can engulf the body cone for a prolate "
-        "body; it cannot: here (" +
-        numbers +
-        ") theta > alpha, omega lies between L and 3, "
-        "and the body cone rolls on the OUTSIDE of the space cone (neither encloses the "
-        "other). The text's 'alpha < theta for prolate' is right.");
-  } else if (p.contact == ConeContact::kInside) {
-    report.note(
-        "errata: section 6.1 says the space cone can be outside the body cone for an "
-        "oblate body; it is inside: here (" +
-        numbers +
-        ") theta < alpha, L lies between "
-        "3 and omega, and the body cone surrounds the space cone and rolls on it. The "
-        "text's 'alpha > theta for oblate' is right.");
-  }
-  if (p.contact != ConeContact::kNone) {
-    report.note(fmt::format(
-        "errata: section 6.1 (the applet and Marion's description) calls the angle between L "
-        "(z) and omega alpha; in eqs. 142-149 alpha is the angle between omega and the symmetry "
-        "axis 3. The angle omega makes with L is the space cone's half-angle |theta - alpha| = "
-        "{:.6g} deg, not alpha = {:.6g} deg.",
-        rad_to_deg(p.space_cone), alpha_deg));
-  }
-  if (in.preset == "frisbee" && example) {
-    report.note(fmt::format(
-        "Feynman's plate (section 6.1): the quote says the medallion rotates twice as fast as "
-        "the wobble; eq. 149 and these numbers say the reverse. The wobble, phi_dot = {:.6g} "
-        "rad/s (3 about L in space), is {:.6g} times the spin of the plate about its own axis, "
-        "|psi_dot| = omega cos alpha = {:.6g} rad/s (equal in size to the body-frame rate "
-        "Omega = {:.6g} rad/s). The 2:1 is wobble:spin, as the text's eq. 149 says.",
-        p.space_rate, p.space_rate / std::abs(p.spin_rate), std::abs(p.spin_rate), p.body_rate));
-  }
-  if (in.preset == "earth" && example) {
-    const double day_ratio = kSolarDay / kSiderealDay;
-    report.note(fmt::format(
-        "errata: the text's 305 and 0.997 days use two different days. With omega = 2 pi per "
-        "sidereal day, 2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d; with omega = 2 pi per "
-        "solar day (86400 s), they are {:.4g} d and {:.4g} d. 305 needs the sidereal day, 0.997 "
-        "the solar one.",
-        p.body_period / kSolarDay, p.space_period / kSolarDay,
-        p.body_period / kSolarDay * day_ratio, p.space_period / kSolarDay * day_ratio));
-    report.note(
-        "The observed free wobble of the Earth, the Chandler wobble, has a period of about "
-        "433 days (the text says 440): the Earth is not rigid (its elastic mantle and oceans "
-        "yield to the wobble), which lengthens the rigid-body period.");
-  }
+  report_errata(report, in, example);
 
   // In short: which cone rolls on which, and how fast.
   const std::string kind = Is < I ? "prolate" : Is > I ? "oblate" : "a sphere";
@@ -282,11 +317,10 @@ Report compute(const Inputs& in) {
   } else {
     report.answer(fmt::format(
         "{} (Is/I = {:.6g}): the body cone ({:.3g} deg about 3) rolls {} the space cone ({:.3g} "
-        "deg about L); 3 and omega go round L every {:.4g} s, omega round 3 in the body every "
-        "{:.4g} s",
+        "deg about L); 3 and omega go round L every {}, omega round 3 in the body every {}",
         kind, Is / I, rad_to_deg(p.body_cone),
         p.contact == ConeContact::kInside ? "round, enclosing" : "on the outside of",
-        rad_to_deg(p.space_cone), p.space_period, p.body_period));
+        rad_to_deg(p.space_cone), readable_period(p.space_period), readable_period(p.body_period)));
   }
 
   // Beside the run, the other kind of body at the same omega and alpha: the frisbee's

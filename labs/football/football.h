@@ -61,6 +61,10 @@ struct Report : lab::Report {
   Contrast contrast;
 };
 
+/// A period in the unit a student reads it in: seconds up to 1000 s, hours up to half a
+/// day, days of 86400 s beyond (the Earth's 0.994 d and 305 d, as the text says them).
+std::string readable_period(double seconds);
+
 /// The inputs' rules: options, widgets and compute()'s checks.
 const InputTable<Inputs>& input_table();
 /// Everything the lab reports. Throws InputError naming a broken input.

@@ -107,11 +107,11 @@ Report compute(const Inputs& in) {
     const Vec3 unit_L = L / (ma2 * in.omega);
     const double Lx_printed = std::round(1e3 * unit_L.x()) / 1e3;
     const double Ly_printed = std::round(1e2 * unit_L.y()) / 1e2;
-    report.note(fmt::format(
-        "errata: |L| = {:.4f} ma^2 omega exactly; the text's 0.793 comes from rounding L_x "
-        "to {:.3f} before taking the norm (|({:.3f}, {:.2f}, 0)| = {:.4f})",
-        unit_L.stableNorm(), Lx_printed, Lx_printed, Ly_printed,
-        std::hypot(Lx_printed, Ly_printed)));
+    report.erratum({"section 1.1, after eq. 28", "The magnitude of this (L) is 0.793ma^2 omega",
+                    fmt::format("|L| = {:.4f} ma^2 omega exactly; 0.793 comes from rounding L_x "
+                                "to {:.3f} before taking the norm (|({:.3f}, {:.2f}, 0)| = {:.4f})",
+                                unit_L.stableNorm(), Lx_printed, Lx_printed, Ly_printed,
+                                std::hypot(Lx_printed, Ly_printed))});
   }
 
   report.section("1.2 kinetic energy (eqs. 33-34)");
@@ -151,12 +151,15 @@ Report compute(const Inputs& in) {
   report.result("body_diagonal_deg", "body diagonal, for contrast", rad_to_deg(std::atan2(in.b, a)),
                 "deg", report.textbook("63.4"));
   if (report.textbook_inputs()) {
-    report.note(fmt::format(
-        "errata: the text calls the axis at {:.1f} deg 'the 1-axis', but its moment is "
-        "{:.3f} ma^2 (I2 when moments ascend, as in its section 2.4); the axis at {:.1f} deg "
-        "carries I1 = {:.3f} ma^2",
-        rad_to_deg(plane.theta), plane.moment / ma2, rad_to_deg(plane.theta_other),
-        plane.moment_other / ma2));
+    report.erratum(
+        {"section 2.3, after eq. 56",
+         "So the 1-axis is at -22 deg and the 2-axis is at 67.5 deg relative to the original "
+         "x-axis",
+         fmt::format("the axis at {:.1f} deg has the moment {:.3f} ma^2, I2 when moments ascend "
+                     "(as in the text's own section 2.4); the axis at {:.1f} deg carries "
+                     "I1 = {:.3f} ma^2",
+                     rad_to_deg(plane.theta), plane.moment / ma2, rad_to_deg(plane.theta_other),
+                     plane.moment_other / ma2)});
   }
 
   report.section("2.4 principal moments and axes by diagonalisation (eqs. 62-69)");
@@ -176,10 +179,11 @@ Report compute(const Inputs& in) {
   report.result("fixed_axis_torque_x_principal", "N1, N2, N3 for rotation about x", N_x, "N m",
                 report.textbook("(0, 0, 0.500) ma^2 omega^2"));
   if (report.textbook_inputs()) {
-    report.note(fmt::format(
-        "errata: for rotation about +x, N3 = omega1 omega2 (I2 - I1) = {:.3f} ma^2 omega^2; "
-        "the text prints +0.500 (right size, wrong sign): the axle pushes along -z",
-        N_x(2) / (ma2 * in.omega * in.omega)));
+    report.erratum({"section 3.1, after eq. 77", "we find N1 = N2 = 0, N3 = 0.500 ma^2 omega^2",
+                    fmt::format("for rotation about +x, N3 = omega1 omega2 (I2 - I1) = {:.3f} "
+                                "ma^2 omega^2: the right size with the wrong sign; the axle "
+                                "pushes along -z",
+                                N_x(2) / (ma2 * in.omega * in.omega))});
   }
   const double L_omega = rad_to_deg(angle_between(L, omega));
   report.answer(

@@ -63,15 +63,19 @@ void report_text_example(Report& report) {
                 momentum_ratios_touching(ratios, 2), "", printed("(0.35 : 0.43 : 0.58)"));
   const Vector3d touch1 = momentum_ratios_touching(ratios, 0);
   const Vector3d touch2 = momentum_ratios_touching(ratios, 1);
-  report.note(fmt::format(
-      "errata: section 4.1 rescales ratios it has already rounded; exactly, touching on axis 1 "
-      "gives ({:.3f} : {:.3f} : {:.3f}) and on axis 2 ({:.3f} : {:.3f} : {:.3f}), where the "
-      "text prints (0.44 : 0.55 : 0.73) and (0.40 : 0.50 : 0.66)",
-      touch1(0), touch1(1), touch1(2), touch2(0), touch2(1), touch2(2)));
-  report.note(
-      fmt::format("errata: 1/sqrt(5) = {:.4f} rounds to {:.2f}; the text's energy ratio "
-                  "prints 0.44, truncated",
-                  energy_ellipsoid_ratios(ratios)(0), energy_ellipsoid_ratios(ratios)(0)));
+  const Vector3d energy = energy_ellipsoid_ratios(ratios);
+  report.erratum({"section 4.1, the energy ellipsoid's ratios",
+                  "the ratio from kinetic energy is (0.44:0.50:0.58)",
+                  fmt::format("1/sqrt(5) = {:.4f} rounds to {:.2f}, which the text truncates to "
+                              "0.44: ({:.2f} : {:.2f} : {:.2f})",
+                              energy(0), energy(0), energy(0), energy(1), energy(2))});
+  report.erratum(
+      {"section 4.1, the momentum ratios touching on axes 1 and 2",
+       "resulting is (0.44:0.55:0.73) ... However for the 2-axis, intermediate moment, the "
+       "ratio becomes (0.40:0.50:0.66)",
+       fmt::format("the text rescales ratios it has already rounded; exactly, touching on axis 1 "
+                   "gives ({:.3f} : {:.3f} : {:.3f}) and on axis 2 ({:.3f} : {:.3f} : {:.3f})",
+                   touch1(0), touch1(1), touch1(2), touch2(0), touch2(1), touch2(2))});
 }
 
 // The run as --csv writes it: t, omega, the attitude, T and |L| at each sample.

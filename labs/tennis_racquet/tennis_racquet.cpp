@@ -256,17 +256,23 @@ Report compute(const Inputs& in) {
   }
 
   if (predicted[1].rate != simplified[1].rate) {
-    report.note(fmt::format(
-        "errata: eq. 92 sets (I2 - I1)/(I2 + I1) = {:.4f} to 1, and with it every rate to the "
-        "spin. In full (eqs. 86-88), about axis 2 the disturbance grows at omega sqrt((I2 - "
-        "I1)(I3 - I2)/(I1 I3)) = {:.6g} 1/s, not omega = {:.6g} 1/s; about axis 1 it goes round "
-        "at {:.6g} rad/s, not {:.6g}, {}, not the circle of eqs. 96-97. About axis 3 the rate "
-        "omega_3 and the circle are exact for a lamina.",
-        (I.I2 - I.I1) / (I.I2 + I.I1), predicted[1].rate, simplified[1].rate, predicted[0].rate,
-        simplified[0].rate,
-        std::isfinite(predicted[0].axis_ratio)
-            ? fmt::format("on an ellipse (|omega_2|/|omega_3| = {:.4f})", predicted[0].axis_ratio)
-            : std::string("with omega_3 still (I1 = I2 to double precision)")));
+    report.erratum(
+        {"section 4.1, eq. 92",
+         "For the tennis racquet model I2 >> I1, so the last equation is "
+         "approximately omega_3_dot + omega_1 omega_2 = 0",
+         fmt::format(
+             "it sets (I2 - I1)/(I2 + I1) = {:.4f} to 1, and with it every rate to the "
+             "spin. In full (eqs. 86-88), about axis 2 the disturbance grows at omega sqrt((I2 - "
+             "I1)(I3 - I2)/(I1 I3)) = {:.6g} 1/s, not omega = {:.6g} 1/s; about axis 1 it goes "
+             "round "
+             "at {:.6g} rad/s, not {:.6g}, {}, not the circle of eqs. 96-97. About axis 3 the rate "
+             "omega_3 and the circle are exact for a lamina.",
+             (I.I2 - I.I1) / (I.I2 + I.I1), predicted[1].rate, simplified[1].rate,
+             predicted[0].rate, simplified[0].rate,
+             std::isfinite(predicted[0].axis_ratio)
+                 ? fmt::format("on an ellipse (|omega_2|/|omega_3| = {:.4f})",
+                               predicted[0].axis_ratio)
+                 : std::string("with omega_3 still (I1 = I2 to double precision)"))});
   }
   if (in.perturbation > 0.05) {
     report.note(

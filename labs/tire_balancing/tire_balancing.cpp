@@ -57,7 +57,7 @@ Report compute(const Inputs& in) {
   wheel.mass = in.mass;
   wheel.radius = in.radius;
   wheel.offset = in.offset;
-  wheel.tilt = deg_to_rad(in.tilt_deg);
+  wheel.set_tilt_deg(in.tilt_deg);
   // The spin from the road: a tire of rolling radius R at speed v turns at v / R.
   const double tire_radius = in.tire_radius;
   if (in.road_speed) {
@@ -84,8 +84,9 @@ Report compute(const Inputs& in) {
   const Vec3 L0 = angular_momentum_at(wheel, 0.0, omega, 0.0);
   report.result("angle_L_axle_deg", "angle between L and the axle",
                 rad_to_deg(angle_between(L0, axle)), "deg");
-  report.result("torque_unbalanced_n_m", "bearing torque |omega x I omega|",
-                bearing_torque(wheel, 0.0, omega).stableNorm(), "N m");
+  const double torque_unbalanced = bearing_torque(wheel, 0.0, omega).stableNorm();
+  report.result("torque_unbalanced_n_m", "bearing torque |omega x I omega|", torque_unbalanced,
+                "N m");
 
   report.section("2.3 balancing masses m0 at (-b, a) and (b, -a) (eqs. 57-61)");
   // The rule 4 a b > 2 (a^2 - b^2) tan 2 theta joins the tilt, the offset and the radius.
@@ -97,36 +98,30 @@ Report compute(const Inputs& in) {
                 report.textbook("0.076 (76 g)"));
   report.result("balance_mass_small_angle_kg", "m0, small angle theta = 8 b m0 / (a m) (eq. 61)",
                 m0_small, "kg", report.textbook("0.076 (76 g)"));
-  // Roundoff of the exact balance: the eigen-solver's axis to ~eps |I| / gap (the
-  // gap between the axle's moment and the others), the torque to ~eps omega^2 |I|;
-  // 64 eps bounds both.
-  const Mat3 I_balanced = wheel_body(wheel, m0).I_com;
-  const Vec3 moments = principal_axes(I_balanced).moments;
-  const double I_axle = moment_about_axis(I_balanced, axle);
-  double gap = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(moments(i) - I_axle) > 1e-9 * moments.maxCoeff()) {
-      gap = std::min(gap, std::abs(moments(i) - I_axle));
-    }
-  }
-  constexpr double kRoundoff = 64 * std::numeric_limits<double>::epsilon();
+  // The exact m0 as a double misses eq. 60 by up to half an ulp, which turns the principal
+  // axis by eps/2 |d phi / d ln m0| (about eps theta / 2): shown as 0 within twice that.
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
   report.result_roundoff("residual_tilt_exact_deg", "principal axis to axle, exact m0",
                          rad_to_deg(principal_axis_misalignment(wheel, m0)),
-                         rad_to_deg(kRoundoff * moments.maxCoeff() / gap), "deg");
+                         rad_to_deg(kEps * std::abs(misalignment_per_mass(wheel, m0))), "deg");
+  // Eq. 61's mass taken exactly: its own rounding would hide a miss of theta^2 (a^2 - b^2)/(a b).
   report.result("residual_tilt_small_angle_deg", "principal axis to axle, small-angle m0",
-                rad_to_deg(principal_axis_misalignment(wheel, m0_small)), "deg");
+                rad_to_deg(small_angle_misalignment(wheel)), "deg");
+  // The torque the double m0 leaves, in closed form: half an ulp of m0 leaves eps/2 of the
+  // unbalanced torque; shown as 0 within eps of it.
   report.result_roundoff("torque_balanced_n_m", "bearing torque after balancing",
-                         bearing_torque(wheel, m0, omega).stableNorm(),
-                         kRoundoff * omega * omega * moments.maxCoeff(), "N m");
+                         bearing_torque_size(wheel, m0, omega), kEps * torque_unbalanced, "N m");
   // The old names (read "nm" as nanometres), kept one release (the schema says so).
   report.alias("torque_unbalanced_nm", "torque_unbalanced_n_m");
   report.alias("torque_balanced_nm", "torque_balanced_n_m");
   if (report.textbook_inputs()) {
-    report.note(fmt::format(
-        "errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) gives "
-        "{:.1f} g and the exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
-        "b = {:g} cm, theta = {:g} deg",
-        1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius, 100 * wheel.offset, in.tilt_deg));
+    report.erratum({"section 2.3, eqs. 60-61",
+                    "we find the required balancing masses to be m0 = 76 grams",
+                    fmt::format("its own small-angle formula (eq. 61) gives {:.1f} g and the "
+                                "exact eq. 60 gives {:.1f} g for m = {:g} kg, a = {:g} cm, "
+                                "b = {:g} cm, theta = {:g} deg",
+                                1e3 * m0_small, 1e3 * m0, wheel.mass, 100 * wheel.radius,
+                                100 * wheel.offset, in.tilt_deg)});
   }
 
   // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.
@@ -148,14 +143,13 @@ Report compute(const Inputs& in) {
   report.series(std::move(turn));
   const double tilt_L = rad_to_deg(angle_between(L0, axle));
   report.answer(
-      m0 == 0.0
-          ? std::string("balanced already: the axle is a principal axis, L lies along it "
-                        "and the bearings need no torque")
-          : fmt::format("unbalanced: L is {:.3g} deg off the axle and sweeps a cone, so the "
-                        "bearings must supply |N| = {:.4g} N m at omega = {:.4g} rad/s; two "
-                        "masses of {:.4g} g at (-b, a) and (b, -a) put a principal axis on "
-                        "the axle and the torque goes to 0",
-                        tilt_L, bearing_torque(wheel, 0.0, omega).stableNorm(), omega, 1e3 * m0));
+      m0 == 0.0 ? std::string("balanced already: the axle is a principal axis, L lies along it "
+                              "and the bearings need no torque")
+                : fmt::format("unbalanced: L is {:.3g} deg off the axle and sweeps a cone, so the "
+                              "bearings must supply |N| = {:.4g} N m at omega = {:.4g} rad/s; two "
+                              "masses of {:.4g} g at (-b, a) and (b, -a) put a principal axis on "
+                              "the axle and the torque goes to 0",
+                              tilt_L, torque_unbalanced, omega, 1e3 * m0));
   return report;
 }
 

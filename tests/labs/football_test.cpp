@@ -20,8 +20,10 @@ using rigid::lab::football::compute;
 using rigid::lab::football::Inputs;
 using rigid::lab::football::Motion;
 using rigid::test::check_same_scene;
+using rigid::test::contains;
 using rigid::test::KeptFigures;
 using rigid::test::kRoundoff;
+using rigid::test::notes_starting;
 using rigid::test::value;
 
 namespace {
@@ -34,7 +36,16 @@ Inputs preset(const char* name) {
   return in;
 }
 
-// The figures as they are handed over, by name.
+// The errata the report lists at `where`.
+std::vector<rigid::lab::Erratum> errata_at(const rigid::lab::Report& report,
+                                           const std::string& where) {
+  std::vector<rigid::lab::Erratum> found;
+  for (const auto& e : report.errata()) {
+    if (e.where == where) found.push_back(e);
+  }
+  return found;
+}
+
 }  // namespace
 
 TEST_CASE("football: the default football is prolate, its body cone rolls outside") {
@@ -74,9 +85,11 @@ TEST_CASE("football: the frisbee (Is = 2I) gives eqs. 148-149 and the wobble is 
   CHECK(ratio == Approx(std::sqrt(1 + 3 * std::cos(alpha) * std::cos(alpha))).epsilon(1e-15));
   CHECK(r.at("cones_touch") == "inside");
   CHECK(report.textbook_printed().contains("body_precession_rate_rad_s"));
-  bool feynman = false;
-  for (const auto& note : report.notes()) feynman |= note.find("Feynman") == 0;
-  CHECK(feynman);
+  CHECK(notes_starting(report,
+                       "errata: section 6.1, Feynman's plate after eq. 149: the text "
+                       "prints \"the medallion rotates twice as fast as the wobble "
+                       "rate\"; ")
+            .size() == 1);
   // Any other physical input takes the text's example away.
   Inputs other = preset("frisbee");
   other.omega = 10;
@@ -287,16 +300,16 @@ TEST_CASE("football: the motion is exact at any time, in any order; its still is
   }
 }
 
-// Every note of the lab: the numbers inside it (from eqs. 142-149 evaluated here) and
+// Every erratum of the lab: the numbers inside it (from eqs. 142-149 evaluated here) and
 // the condition under which it appears, on both sides.
-using rigid::test::contains;
-using rigid::test::notes_starting;
 
-TEST_CASE("football: the cone errata say prolate, oblate or nothing, with the body's numbers") {
+TEST_CASE("football: the cone errata quote section 6.1 and turn it round, with the numbers") {
   constexpr double kDeg = M_PI / 180;
-  const std::string prolate_errata = "errata: section 6.1 says the space cone can engulf";
-  const std::string oblate_errata = "errata: section 6.1 says the space cone can be outside";
-  const std::string alpha_errata = "errata: section 6.1 (the applet and Marion's description)";
+  const std::string cones = "section 6.1, after eq. 144";
+  const std::string alpha_where = "section 6.1, the applet and Marion's alpha, before eq. 142";
+  const std::string quote =
+      "This means that the space cone can engulf the body cone (prolate case) or the space cone "
+      "can be outside the body cone (oblate case).";
   // (I, Is, alpha in degrees): the football (prolate: Is < I), the frisbee (oblate: Is = 2I)
   struct Body {
     double I, Is, alpha_deg;
@@ -306,7 +319,8 @@ TEST_CASE("football: the cone errata say prolate, oblate or nothing, with the bo
   const double md = 0.175, r = 0.1375;         // the frisbee: a thin disk
   for (const Body& body : {Body{m * (a * a + b * b) / 5, m * 2 * b * b / 5, 10, true},
                            Body{md * r * r / 4, md * r * r / 2, 5, false}, Body{2.0, 1.5, 33, true},
-                           Body{1.0, 1.7, 61, false}}) {
+                           Body{1.0, 1.7, 61, false}, Body{1.0, 1.0 + 1e-9, 1, false},
+                           Body{1.0, 1.0 - 1e-9, 1, true}}) {
     INFO("I = " << body.I << ", Is = " << body.Is << ", alpha = " << body.alpha_deg);
     Inputs in;
     in.inertia = Eigen::Vector2d(body.I, body.Is);
@@ -317,48 +331,94 @@ TEST_CASE("football: the cone errata say prolate, oblate or nothing, with the bo
     const std::string numbers = fmt::format(
         "Is/I = {:.6g}, alpha = {:.6g} deg, theta = {:.6g} deg, omega to L = {:.6g} deg",
         body.Is / body.I, body.alpha_deg, theta, std::abs(theta - body.alpha_deg));
-    const auto prolate = notes_starting(report, prolate_errata);
-    const auto oblate = notes_starting(report, oblate_errata);
-    CHECK(prolate.size() == (body.prolate ? 1u : 0u));
-    CHECK(oblate.size() == (body.prolate ? 0u : 1u));
-    for (const auto& note : body.prolate ? prolate : oblate) CHECK(contains(note, numbers));
-    const auto alpha = notes_starting(report, alpha_errata);
+    const auto said = errata_at(report, cones);
+    REQUIRE(said.size() == 1);
+    CHECK(said[0].printed == quote);
+    CHECK(contains(said[0].correction, "the cases are the other way round"));
+    CHECK(contains(said[0].correction, numbers));
+    // which way round: the body's own case first, then the other kind's
+    if (body.prolate) {
+      CHECK(contains(said[0].correction, "For this prolate body (" + numbers +
+                                             ") theta > alpha: omega lies between L and 3, and "
+                                             "the body cone rolls on the outside of the space "
+                                             "cone; neither engulfs the other."));
+      CHECK(contains(said[0].correction,
+                     "It is an oblate body whose space cone lies inside its body cone."));
+    } else {
+      CHECK(contains(said[0].correction, "For this oblate body (" + numbers +
+                                             ") theta < alpha: L lies between 3 and omega, and "
+                                             "the space cone lies inside the body cone, which "
+                                             "rolls round it."));
+      CHECK(contains(said[0].correction, "A prolate body's cones touch from outside"));
+    }
+    CHECK(report.results().at("cones_touch") == (body.prolate ? "outside" : "inside"));
+    // and the note it makes, under the table
+    CHECK(notes_starting(report, "errata: " + cones + ": the text prints \"" + quote + "\"; " +
+                                     said[0].correction)
+              .size() == 1);
+    // alpha: the angle omega makes with L is the space cone's, not alpha
+    const auto alpha = errata_at(report, alpha_where);
     REQUIRE(alpha.size() == 1);
-    CHECK(contains(alpha[0], fmt::format("|theta - alpha| = {:.6g} deg, not alpha = {:.6g} deg",
-                                         std::abs(theta - body.alpha_deg), body.alpha_deg)));
+    CHECK(contains(alpha[0].printed, "between z and omega, is alpha"));
+    CHECK(contains(alpha[0].printed, "making a constant angle alpha with the angular momentum"));
+    CHECK(contains(alpha[0].correction,
+                   fmt::format("omega makes the space cone's half-angle |theta - alpha| = {:.6g} "
+                               "deg with L, and alpha = {:.6g} deg with 3.",
+                               std::abs(theta - body.alpha_deg), body.alpha_deg)));
+    CHECK(contains(alpha[0].correction,
+                   "in eqs. 142-147 alpha is the angle between omega and the symmetry axis 3"));
   }
-  // A sphere has no cones: none of the three notes.
+  // A sphere has no cones: neither erratum.
   Inputs sphere;
   sphere.inertia = Eigen::Vector2d(1.0, 1.0);
   const auto report = compute(sphere);
-  CHECK(notes_starting(report, prolate_errata).empty());
-  CHECK(notes_starting(report, oblate_errata).empty());
-  CHECK(notes_starting(report, alpha_errata).empty());
+  CHECK(errata_at(report, cones).empty());
+  CHECK(errata_at(report, alpha_where).empty());
+  CHECK(report.errata().empty());
 }
 
-TEST_CASE(
-    "football: the frisbee's wobble note and the Earth's day errata only for their examples") {
-  const std::string wobble = "Feynman's plate (section 6.1)";
-  const std::string days = "errata: the text's 305 and 0.997 days use two different days";
+TEST_CASE("football: Feynman's ratio for any thrown plate, the Earth's days for the text's") {
+  const std::string feynman = "section 6.1, Feynman's plate after eq. 149";
+  const std::string days = "section 6.1, the Earth's free precession after eq. 149";
   const auto frisbee = compute(preset("frisbee"));
   const auto earth = compute(preset("earth"));
-  REQUIRE(notes_starting(frisbee, wobble).size() == 1);
-  REQUIRE(notes_starting(earth, days).size() == 1);
-  CHECK(notes_starting(frisbee, days).empty());
-  CHECK(notes_starting(earth, wobble).empty());
-  // The wobble note's numbers: a thin disk (Is = 2I) at 30 rad/s, alpha 5 deg (eqs. 148-149):
-  // phi_dot = omega sqrt(1 + 3 cos^2 alpha), |psi_dot| = omega cos alpha.
-  const double w = 30, c = std::cos(5 * M_PI / 180);
-  const double phi_dot = w * std::sqrt(1 + 3 * c * c), psi_dot = w * c;
-  CHECK(contains(notes_starting(frisbee, wobble)[0],
-                 fmt::format("phi_dot = {:.6g} rad/s (3 about L in space), is {:.6g} times",
-                             phi_dot, phi_dot / psi_dot)));
-  // psi_dot = omega cos alpha (Is - I)/Is - ... is negative for the plate: its size is said,
-  // and the body-frame rate Omega = omega cos alpha (Is - I)/I equals it for Is = 2I.
-  CHECK(contains(notes_starting(frisbee, wobble)[0],
-                 fmt::format("|psi_dot| = omega cos alpha = {:.6g} rad/s (equal in size to the "
-                             "body-frame rate Omega = {:.6g} rad/s)",
-                             psi_dot, psi_dot)));
+  REQUIRE(errata_at(frisbee, feynman).size() == 1);
+  REQUIRE(errata_at(earth, days).size() == 1);
+  CHECK(errata_at(frisbee, days).empty());
+  CHECK(errata_at(earth, feynman).empty());
+  CHECK(errata_at(compute(Inputs{}), feynman).empty());
+  CHECK(errata_at(frisbee, feynman)[0].printed ==
+        "the medallion rotates twice as fast as the wobble rate");
+  // A thin disk (Is = 2I) at omega, alpha (eqs. 148-149): phi_dot = omega sqrt(1 + 3 cos^2
+  // alpha), |psi_dot| = omega cos alpha, so phi_dot / |psi_dot| >= 2 at any alpha: the wobble is
+  // at least twice the spin, never half. The text's 30 rad/s and 5 deg, and others.
+  for (const auto& [w, alpha_deg] : {std::pair{30.0, 5.0}, {31.0, 5.0}, {30.0, 60.0}}) {
+    INFO("omega " << w << ", alpha " << alpha_deg);
+    Inputs in = preset("frisbee");
+    if (w != 30.0) in.omega = w;
+    if (alpha_deg != 5.0) in.alpha_deg = alpha_deg;
+    const auto plate = compute(in);
+    const auto said = errata_at(plate, feynman);
+    REQUIRE(said.size() == 1);
+    const double c = std::cos(alpha_deg * M_PI / 180);
+    const double phi_dot = w * std::sqrt(1 + 3 * c * c), psi_dot = w * c;
+    CHECK(phi_dot / psi_dot >= 2);
+    CHECK(contains(said[0].correction, "the quote has the ratio upside down"));
+    CHECK(contains(said[0].correction,
+                   fmt::format("The wobble, phi_dot = {:.6g} rad/s (3 about L in space), is {:.6g} "
+                               "times the medallion's spin",
+                               phi_dot, phi_dot / psi_dot)));
+    // psi_dot = omega_3 - phi_dot cos theta = -omega cos alpha for the plate: its size is
+    // said, and the body-frame rate Omega = omega cos alpha (Is - I)/I equals it for Is = 2I.
+    CHECK(contains(said[0].correction,
+                   fmt::format("|psi_dot| = omega cos alpha = {:.6g} rad/s (equal in size to the "
+                               "body-frame rate Omega = {:.6g} rad/s): wobble : spin = 2 : 1",
+                               psi_dot, psi_dot)));
+  }
+  // Another body than the plate (its Is/I changed) is not Feynman's plate.
+  Inputs other = preset("frisbee");
+  other.moment_ratio = 1.5;
+  CHECK(errata_at(compute(other), feynman).empty());
   // The Earth's periods (eqs. 145-147 with Is/I = 1.00327, alpha = 0.2"): Omega = omega cos
   // alpha (Is - I)/I, so 2 pi/Omega is 1/0.00327 sidereal days, in solar days.
   const double sidereal = 86164.0905, solar = 86400.0, k = 0.00327;
@@ -366,21 +426,26 @@ TEST_CASE(
   const double body_days = sidereal / (std::cos(alpha) * k) / solar;
   const double space_days =
       sidereal / std::sqrt(1 + ((1 + k) * (1 + k) - 1) * std::cos(alpha) * std::cos(alpha)) / solar;
-  CHECK(contains(
-      notes_starting(earth, days)[0],
-      fmt::format("2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d", body_days, space_days)));
+  const auto said = errata_at(earth, days)[0];
+  CHECK(said.printed == "2 pi/Omega = 305 days ... yielding a period of 0.997 days");
+  CHECK(contains(said.correction, fmt::format("2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d",
+                                              body_days, space_days)));
   // With omega = 2 pi per solar day the same periods are 1/(k cos alpha) and
   // 1/sqrt(1 + ((1 + k)^2 - 1) cos^2 alpha) solar days.
-  CHECK(contains(notes_starting(earth, days)[0],
+  CHECK(contains(said.correction,
                  fmt::format("solar day (86400 s), they are {:.4g} d and {:.4g} d.",
                              body_days * solar / sidereal, space_days * solar / sidereal)));
-  // Another spin is not the text's example: neither note.
-  Inputs spun = preset("frisbee");
-  spun.omega = 31.0;
-  CHECK(notes_starting(compute(spun), wobble).empty());
+  CHECK(contains(said.correction, "305 needs the sidereal day, 0.997 the solar one."));
+  // Beside it, not an erratum: the observed wobble and why it is longer than the rigid one.
+  const std::string chandler =
+      "The observed free wobble of the Earth, the Chandler wobble, has a period of about 433 "
+      "days (the text says 440)";
+  CHECK(notes_starting(earth, chandler).size() == 1);
+  // Another tilt is not the text's example: neither.
   Inputs tilted = preset("earth");
   tilted.alpha_deg = 1.0;
-  CHECK(notes_starting(compute(tilted), days).empty());
+  CHECK(errata_at(compute(tilted), days).empty());
+  CHECK(notes_starting(compute(tilted), chandler).empty());
 }
 
 TEST_CASE("football: the answer in short - which cone rolls on which, and how fast") {
@@ -393,4 +458,119 @@ TEST_CASE("football: the answer in short - which cone rolls on which, and how fa
   const std::string oblate = compute(preset("frisbee")).results().at("answer");
   CHECK_THAT(oblate, Catch::StartsWith("oblate"));
   CHECK_THAT(oblate, Catch::Contains("rolls round, enclosing the space cone"));
+}
+
+TEST_CASE("football: the Earth's periods in days in short, any body's in its own unit") {
+  // The text's 0.997 d and 305 d: 2 pi / phi_dot and 2 pi / |Omega| for omega = 2 pi per
+  // sidereal day (eqs. 145-147, Is/I = 1.00327, alpha = 0.2"), in days of 86400 s.
+  const double sidereal = 86164.0905, k = 0.00327, c = std::cos(0.2 / 3600 * M_PI / 180);
+  const double space_days = sidereal / std::sqrt(1 + ((1 + k) * (1 + k) - 1) * c * c) / 86400;
+  const double body_days = sidereal / (k * c) / 86400;
+  const std::string earth = compute(preset("earth")).results().at("answer");
+  CHECK(fmt::format("{:.4g}", space_days) == "0.994");
+  CHECK(fmt::format("{:.4g}", body_days) == "305");
+  CHECK_THAT(earth, Catch::EndsWith(fmt::format("3 and omega go round L every {:.4g} d, omega "
+                                                "round 3 in the body every {:.4g} d",
+                                                space_days, body_days)));
+  // seconds below 1000 s, hours below half a day, days beyond: each period by its own size
+  using rigid::lab::football::readable_period;
+  CHECK(readable_period(0.18757) == "0.1876 s");
+  CHECK(readable_period(999.94) == "999.9 s");
+  CHECK(readable_period(1000.0) == "0.2778 h");
+  CHECK(readable_period(43199.0) == "12 h");
+  CHECK(readable_period(43200.0) == "0.5 d");
+  CHECK(readable_period(2.635e7) == "305 d");
+  // a slow body of one's own: its body period in days, its space period in hours
+  Inputs slow;
+  slow.inertia = Eigen::Vector2d(1, 1.01);
+  slow.omega = 2 * M_PI / 7200;  // one turn in two hours
+  slow.alpha_deg = 10;
+  const auto r = compute(slow).results();
+  CHECK_THAT(r.at("answer").get<std::string>(),
+             Catch::EndsWith(fmt::format("every {:.4g} h, omega round 3 in the body every {:.4g} d",
+                                         value(r, "space_precession_period_s") / 3600,
+                                         value(r, "body_precession_period_s") / 86400)));
+}
+
+TEST_CASE("football: the rates figure shows the Earth's two rates apart, with their periods") {
+  using rigid::render::Scale;
+  // The Earth: rates 1.00327 and 0.00327 of omega (eqs. 145-147) on a log scale, against log
+  // alpha from a decade below its 0.2 arcsec; the run's two points carry their periods.
+  const auto earth = compute(preset("earth"));
+  KeptFigures figures;
+  rigid::lab::football::figures(earth, figures);
+  const auto& panel = figures.plots.at("rates").panel();
+  CHECK(panel.y.scale == Scale::kLog10);
+  CHECK(panel.x.scale == Scale::kLog10);
+  const double alpha = 0.2 / 3600, c = std::cos(alpha * M_PI / 180), k = 0.00327;
+  REQUIRE(panel.series.size() == 3);
+  const auto& points = panel.series[2];
+  CHECK(points.x == std::vector<double>{alpha, alpha});
+  CHECK(points.y[0] == Approx(std::sqrt(1 + ((1 + k) * (1 + k) - 1) * c * c)).epsilon(kRoundoff));
+  // (Is - I)/I from moments 8e37 and 1.00327 times it: ~300 eps (see the periods' test)
+  CHECK(points.y[1] == Approx(k * c).epsilon(3e-13));
+  // the sweep starts a decade below the run's alpha and ends at 89.5 deg, log-spaced
+  const auto& sweep = panel.series[0].x;
+  CHECK(sweep.front() == Approx(alpha / 10).epsilon(1e-14));
+  CHECK(sweep.back() == Approx(89.5).epsilon(1e-14));
+  CHECK(sweep[1] / sweep[0] == Approx(sweep.back() / sweep[sweep.size() - 2]).epsilon(1e-12));
+  CHECK(panel.x.min == sweep.front());
+  // |Omega| / omega on the log scale: positive everywhere it is drawn
+  for (const double y : panel.series[1].y) CHECK(y > 0);
+  const double sidereal = 86164.0905;
+  REQUIRE(panel.annotations.size() == 2);
+  CHECK(panel.annotations[0].text ==
+        fmt::format("2\\pi / \\phi-dot = {:.4g} d",
+                    sidereal / std::sqrt(1 + ((1 + k) * (1 + k) - 1) * c * c) / 86400));
+  CHECK(panel.annotations[0].y == points.y[0]);
+  CHECK(panel.annotations[1].text ==
+        fmt::format("2\\pi / |\\Omega| = {:.4g} d", sidereal / (k * c) / 86400));
+  CHECK(panel.annotations[1].y == points.y[1]);
+  // log alpha from just below the sweep's first angle, 0.5 deg; linear from it on
+  for (const auto& [alpha_deg, log] : {std::pair{std::nextafter(0.5, 0.0), true}, {0.5, false}}) {
+    Inputs in = preset("earth");
+    in.alpha_deg = alpha_deg;
+    KeptFigures f;
+    rigid::lab::football::figures(compute(in), f);
+    CHECK((f.plots.at("rates").panel().x.scale == Scale::kLog10) == log);
+  }
+  // The football's rates are of one size: linear, signed, no annotations (its committed figure).
+  KeptFigures ball;
+  rigid::lab::football::figures(compute(Inputs{}), ball);
+  const auto& linear = ball.plots.at("rates").panel();
+  CHECK(linear.y.scale == Scale::kLinear);
+  CHECK(linear.x.scale == Scale::kLinear);
+  CHECK(linear.annotations.empty());
+  CHECK(linear.series[2].y[1] < 0);  // prolate: Omega against omega_3
+  // The scale's threshold, on both sides: phi_dot / |Omega| = sqrt(s^2 + (1 + e)^2 c^2) /
+  // (e c) at alpha = 60 deg for Is = (1 + e) I (eqs. 109, 147), 20 at the e found here by
+  // bisection (the ratio falls as e grows); a rod (Is = I / 100) at 1 deg, |Omega| / phi_dot =
+  // 0.99 c / sqrt(s^2 + 1e-4 c^2) = 49 there, and at 5 deg with Is = I / 10, 6.8.
+  const double s60 = std::sqrt(0.75), c60 = 0.5;
+  const auto space_over_body = [&](double e) {
+    return std::sqrt(s60 * s60 + (1 + e) * (1 + e) * c60 * c60) / (e * c60);
+  };
+  double lo = 1e-3, hi = 1;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = (lo + hi) / 2;
+    (space_over_body(mid) > 20 ? lo : hi) = mid;
+  }
+  struct Case {
+    double Is, alpha_deg;
+    bool log;
+  };
+  for (const Case& body :
+       {Case{1 + lo * (1 - 1e-9), 60, true}, Case{1 + lo * (1 + 1e-9), 60, false},
+        Case{0.01, 1, true}, Case{0.1, 5, false}}) {
+    INFO("Is = " << body.Is << ", alpha = " << body.alpha_deg);
+    Inputs in;
+    in.inertia = Eigen::Vector2d(1, body.Is);
+    in.alpha_deg = body.alpha_deg;
+    KeptFigures f;
+    rigid::lab::football::figures(compute(in), f);
+    const auto& p = f.plots.at("rates").panel();
+    CHECK((p.y.scale == Scale::kLog10) == body.log);
+    CHECK(p.x.scale == Scale::kLinear);
+    CHECK(p.annotations.size() == (body.log ? 2u : 0u));
+  }
 }

@@ -278,30 +278,45 @@ TEST_CASE(
   const double large = mean + half, small = mean - half;
   const double large_deg = std::atan(-(Ixx - large) / Ixy) * 180 / M_PI;
   const auto report = compute(Inputs{});
-  const std::vector<std::string> expected = {
+  // where each is, what the text prints (quoted), and the correction with the plate's numbers
+  const std::vector<rigid::lab::Erratum> expected = {
       // the text's |L| from L_x to three digits and L_y to two, as it prints them
-      fmt::format("errata: |L| = {:.4f} ma^2 omega exactly; the text's 0.793 comes from rounding "
-                  "L_x to {:.3f} before taking the norm (|({:.3f}, {:.2f}, 0)| = {:.4f})",
-                  std::hypot(Lx, Ly), std::round(1e3 * Lx) / 1e3, std::round(1e3 * Lx) / 1e3,
-                  std::round(1e2 * Ly) / 1e2,
-                  std::hypot(std::round(1e3 * Lx) / 1e3, std::round(1e2 * Ly) / 1e2)),
-      fmt::format("errata: the text calls the axis at {:.1f} deg 'the 1-axis', but its moment is "
-                  "{:.3f} ma^2 (I2 when moments ascend, as in its section 2.4); the axis at {:.1f} "
-                  "deg carries I1 = {:.3f} ma^2",
-                  large_deg, large, large_deg + 90, small),
+      {"section 1.1, after eq. 28", "The magnitude of this (L) is 0.793ma^2 omega",
+       fmt::format("|L| = {:.4f} ma^2 omega exactly; 0.793 comes from rounding L_x to {:.3f} "
+                   "before taking the norm (|({:.3f}, {:.2f}, 0)| = {:.4f})",
+                   std::hypot(Lx, Ly), std::round(1e3 * Lx) / 1e3, std::round(1e3 * Lx) / 1e3,
+                   std::round(1e2 * Ly) / 1e2,
+                   std::hypot(std::round(1e3 * Lx) / 1e3, std::round(1e2 * Ly) / 1e2))},
+      {"section 2.3, after eq. 56",
+       "So the 1-axis is at -22 deg and the 2-axis is at 67.5 deg relative to the original x-axis",
+       fmt::format("the axis at {:.1f} deg has the moment {:.3f} ma^2, I2 when moments ascend (as "
+                   "in the text's own section 2.4); the axis at {:.1f} deg carries I1 = {:.3f} "
+                   "ma^2",
+                   large_deg, large, large_deg + 90, small)},
       // about +x: N = x cross (I x) = (0, 0, Ixy) m a^2 omega^2
-      fmt::format("errata: for rotation about +x, N3 = omega1 omega2 (I2 - I1) = {:.3f} ma^2 "
-                  "omega^2; the text prints +0.500 (right size, wrong sign): the axle pushes "
-                  "along -z",
-                  Ixy)};
-  CHECK(report.notes() == expected);
+      {"section 3.1, after eq. 77", "we find N1 = N2 = 0, N3 = 0.500 ma^2 omega^2",
+       fmt::format("for rotation about +x, N3 = omega1 omega2 (I2 - I1) = {:.3f} ma^2 omega^2: the "
+                   "right size with the wrong sign; the axle pushes along -z",
+                   Ixy)}};
+  REQUIRE(report.errata().size() == expected.size());
+  std::vector<std::string> notes;
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    CHECK(report.errata()[k].where == expected[k].where);
+    CHECK(report.errata()[k].printed == expected[k].printed);
+    CHECK(report.errata()[k].correction == expected[k].correction);
+    notes.push_back("errata: " + expected[k].where + ": the text prints \"" + expected[k].printed +
+                    "\"; " + expected[k].correction);
+  }
+  CHECK(report.notes() == notes);
   // Any other plate is not the text's example: no errata.
   Inputs other;
   other.b = 3.0;
   CHECK(compute(other).notes().empty());
+  CHECK(compute(other).errata().empty());
   Inputs centred;
   centred.origin = "center";
   CHECK(compute(centred).notes().empty());
+  CHECK(compute(centred).errata().empty());
 }
 
 TEST_CASE("lamina_tensor: the answer in short, with the numbers that decide it") {

@@ -572,14 +572,28 @@ TEST_CASE("poinsot: the notes carry their own numbers, the herpolhode's folded t
     Inputs in;
     in.omega0 = omega0;
     const auto report = compute(in);
-    const auto ratios = notes_starting(report, "errata: section 4.1 rescales");
-    REQUIRE(ratios.size() == 1);
-    CHECK(contains(ratios[0], "touching on axis 1 gives " + touching(0) + " and on axis 2 " +
-                                  touching(1) + ", where"));
-    const auto root5 = notes_starting(report, "errata: 1/sqrt(5)");
-    REQUIRE(root5.size() == 1);
-    CHECK(contains(root5[0], fmt::format("= {:.4f} rounds to {:.2f};", 1 / std::sqrt(5.0),
-                                         1 / std::sqrt(5.0))));
+    REQUIRE(report.errata().size() == 2);
+    const auto& ratios = report.errata()[1];
+    CHECK(ratios.where == "section 4.1, the momentum ratios touching on axes 1 and 2");
+    CHECK(ratios.printed ==
+          "resulting is (0.44:0.55:0.73) ... However for the 2-axis, intermediate moment, the "
+          "ratio becomes (0.40:0.50:0.66)");
+    CHECK(ratios.correction ==
+          "the text rescales ratios it has already rounded; exactly, touching on axis 1 gives " +
+              touching(0) + " and on axis 2 " + touching(1));
+    const auto& root5 = report.errata()[0];
+    CHECK(root5.where == "section 4.1, the energy ellipsoid's ratios");
+    CHECK(root5.printed == "the ratio from kinetic energy is (0.44:0.50:0.58)");
+    CHECK(root5.correction ==
+          fmt::format("1/sqrt(5) = {:.4f} rounds to {:.2f}, which the text truncates to 0.44: "
+                      "({:.2f} : {:.2f} : {:.2f})",
+                      1 / std::sqrt(5.0), 1 / std::sqrt(5.0), 1 / std::sqrt(5.0),
+                      1 / std::sqrt(4.0), 1 / std::sqrt(3.0)));
+    for (const auto& e : report.errata()) {
+      CHECK(notes_starting(report, "errata: " + e.where + ": the text prints \"" + e.printed +
+                                       "\"; " + e.correction)
+                .size() == 1);
+    }
     // After kHerpolhodePeriods periods the contact point has turned N x turn; its
     // distance from the start is that angle folded into [0, 180] deg.
     const double turn = value(report.results(), "herpolhode_turn_per_period_deg");
@@ -686,5 +700,96 @@ TEST_CASE("poinsot: any body spun near its middle axis - growth rate, first flip
              (row.label.rfind("first flip", 0) == 0 && row.textbook.find(why) != std::string::npos);
     }
     CHECK(said);
+  }
+}
+
+TEST_CASE("poinsot: the invariable plane at 2T/|L| and the herpolhode's turn, as values") {
+  // tests/poinsot/make_reference.py: 2T/|L|, the polhode period and the turn about L a period
+  // (Euler's equations and the contact point's azimuth rate integrated by mpmath), 30 digits.
+  struct Row {
+    double I1, I2, I3, w1, w2, w3, plane, period, turn_deg;
+  };
+  const Row rows[] = {
+#include "../poinsot/reference_construction.inc"
+  };
+  using Shape = rigid::render::Scene3D::Shape;
+  for (const Row& row : rows) {
+    const Eigen::Vector3d I(row.I1, row.I2, row.I3), w0(row.w1, row.w2, row.w3);
+    INFO("I = " << I.transpose() << ", omega0 = " << w0.transpose());
+    Inputs in;
+    in.inertia = I;
+    in.omega0 = w0;
+    const Report report = compute(in);
+    const auto& r = report.results();
+    // 2T/|L|: sums of three products and a square root, a few roundings
+    CHECK(value(r, "invariable_plane_distance") == Approx(row.plane).epsilon(kRoundoff));
+    // the elliptic closed form's period, and its turn by a periodic mean of the rate: both
+    // measured within 2e-15 of mpmath; 1e-13 leaves room for another machine's libm
+    CHECK(value(r, "polhode_period_s") == Approx(row.period).epsilon(1e-13));
+    CHECK(value(r, "herpolhode_turn_per_period_deg") == Approx(row.turn_deg).epsilon(1e-13));
+
+    // The scene: the construction drawn at `scale` (the body's largest half-extent over the
+    // energy ellipsoid's largest semi-axis sqrt(2T / I_min)), L pointing down.
+    const double two_T = I.dot(w0.cwiseProduct(w0));
+    const double scale = report.extents.maxCoeff() / std::sqrt(two_T / I.minCoeff());
+    const Motion motion(report);
+    for (const double share : {0.0, 0.3, 1.7}) {
+      const double t = share * row.period;
+      INFO("t = " << t << " s");
+      const auto scene = motion.scene(t);
+      const rigid::render::Scene3D::Object *plane = nullptr, *ellipsoid = nullptr,
+                                           *contact = nullptr, *herpolhode = nullptr;
+      for (const auto& o : scene.objects()) {
+        if (o.label == "invariable plane") plane = &o;
+        if (o.label == "energy ellipsoid") ellipsoid = &o;
+        if (o.label == "herpolhode") herpolhode = &o;
+        if (o.marker) contact = &o;
+      }
+      REQUIRE(plane != nullptr);
+      REQUIRE(ellipsoid != nullptr);
+      REQUIRE(contact != nullptr);
+      CHECK(plane->shape == Shape::kDisk);
+      // the plane lies 2T/|L| (scaled) below the fixed point of the construction, facing L
+      const Eigen::Vector3d centre = ellipsoid->transform.translation();
+      const double plane_z = plane->transform.translation().z();
+      CHECK(centre.z() - plane_z == Approx(scale * row.plane).epsilon(8 * DBL_EPSILON));
+      CHECK(std::abs(plane->transform.linear().col(2).normalized().z()) ==
+            Approx(1.0).epsilon(kRoundoff));
+      // and the energy ellipsoid rests on it: its lowest point, centre.z - |A^T z| for the
+      // unit sphere's map A, is the plane's height (the attitude's roundoff: 1e-13)
+      const Eigen::Matrix3d A = ellipsoid->transform.linear();
+      CHECK(centre.z() - (A.transpose() * Eigen::Vector3d::UnitZ()).norm() ==
+            Approx(plane_z).margin(1e-13 * scale * row.plane));
+      // touching it at the contact point, omega, and the herpolhode drawn so far lies on it
+      CHECK(contact->transform.translation().z() ==
+            Approx(plane_z).margin(1e-13 * scale * row.plane));
+      if (herpolhode != nullptr) {
+        for (const Eigen::Vector3d& p : herpolhode->path) {
+          CHECK(p.z() == Approx(plane_z).margin(1e-13 * scale * row.plane));
+        }
+      }
+    }
+    // Seen from above: the contact point at t = 0, T, 2T, .. turns about the foot of L by the
+    // herpolhode's turn each period (modulo whole turns), on the same plane. L points down
+    // (-z): a turn about L is the negative of one about z.
+    const auto above = motion.herpolhode_scene(rigid::lab::poinsot::kHerpolhodePeriods);
+    std::vector<Eigen::Vector3d> points;
+    Eigen::Vector3d foot = Eigen::Vector3d::Zero();
+    for (const auto& o : above.objects()) {
+      if (o.marker) points.push_back(o.transform.translation());
+      if (o.label == "invariable plane") foot = o.transform.translation();
+    }
+    REQUIRE(points.size() == 7);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      CHECK(points[k].z() == Approx(foot.z()).margin(1e-13 * scale * row.plane));
+      if (k == 0) continue;
+      const auto azimuth = [&](const Eigen::Vector3d& p) {
+        return -std::atan2(p.y() - foot.y(), p.x() - foot.x()) * 180 / M_PI;
+      };
+      // the attitude at k T from the closed form, to ~1e-13 rad of a contact point ~1 from
+      // the foot: 1e-9 deg
+      CHECK(std::remainder(azimuth(points[k]) - azimuth(points[k - 1]) - row.turn_deg, 360.0) ==
+            Approx(0.0).margin(1e-9));
+    }
   }
 }

@@ -110,12 +110,19 @@ TEST_CASE("tennis_racquet: defaults reproduce eqs. 83-85 and the flip about axis
   CHECK(value(r, "max_error_vs_exact") < 1e-8);
   CHECK(value(r, "t_end_s") == period);
   // Eq. 92's errata, with the rates written out above in their places.
-  const auto errata = rigid::test::notes_starting(report, "errata: eq. 92");
+  const auto errata = rigid::test::notes_starting(
+      report,
+      "errata: section 4.1, eq. 92: the text prints \"For the tennis racquet model I2 >> I1, so "
+      "the last equation is approximately omega_3_dot + omega_1 omega_2 = 0\"; ");
   REQUIRE(errata.size() == 1);
+  REQUIRE(report.errata().size() == 1);
+  CHECK(report.errata()[0].where == "section 4.1, eq. 92");
+  CHECK(errata[0] == "errata: section 4.1, eq. 92: the text prints \"" +
+                         report.errata()[0].printed + "\"; " + report.errata()[0].correction);
   const double wobble1 = omega * std::sqrt((t.I3 - t.I1) * (t.I2 - t.I1) / (t.I2 * t.I3));
-  CHECK(rigid::test::contains(errata[0],
-                              fmt::format("errata: eq. 92 sets (I2 - I1)/(I2 + I1) = {:.4f} to 1",
-                                          (t.I2 - t.I1) / (t.I2 + t.I1))));
+  CHECK(rigid::test::contains(
+      errata[0],
+      fmt::format("\"; it sets (I2 - I1)/(I2 + I1) = {:.4f} to 1", (t.I2 - t.I1) / (t.I2 + t.I1))));
   CHECK(rigid::test::contains(
       errata[0], fmt::format("= {:.6g} 1/s, not omega = {:.6g} 1/s; about axis 1 it goes round at "
                              "{:.6g} rad/s, not {:.6g},",

@@ -5,13 +5,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cfloat>
 #include <cmath>
 
 #include "lab_library.h"
+#include "rigid/format.h"
+#include "rigid/units.h"
 
 using Catch::Matchers::WithinAbs;
+using rigid::rad_to_deg;
 using rigid::lab::tire_balancing::compute;
 using rigid::lab::tire_balancing::Inputs;
 using rigid::test::kRoundoff;
@@ -183,16 +187,24 @@ TEST_CASE(
   const double exact = t * m * a * a / 4 / (4 * a * b - 2 * t * (a * a - b * b));
   const auto report = compute(Inputs{});
   REQUIRE(report.notes().size() == 1);
-  CHECK(report.notes()[0] ==
-        fmt::format("errata: the text prints m0 = 76 g; its own small-angle formula (eq. 61) "
-                    "gives {:.1f} g and the exact eq. 60 gives {:.1f} g for m = 10 kg, a = 18 cm, "
-                    "b = 5 cm, theta = 1 deg",
+  REQUIRE(report.errata().size() == 1);
+  const auto& erratum = report.errata()[0];
+  CHECK(erratum.where == "section 2.3, eqs. 60-61");
+  CHECK(erratum.printed == "we find the required balancing masses to be m0 = 76 grams");
+  CHECK(erratum.correction ==
+        fmt::format("its own small-angle formula (eq. 61) gives {:.1f} g and the exact eq. 60 "
+                    "gives {:.1f} g for m = 10 kg, a = 18 cm, b = 5 cm, theta = 1 deg",
                     1e3 * small, 1e3 * exact));
+  CHECK(report.notes()[0] ==
+        "errata: section 2.3, eqs. 60-61: the text prints \"we find the "
+        "required balancing masses to be m0 = 76 grams\"; " +
+            erratum.correction);
   // Another wheel is not the text's: no errata, no printed values.
   Inputs other;
   other.tilt_deg = 2;
   const auto changed = compute(other);
   CHECK(changed.notes().empty());
+  CHECK(changed.errata().empty());
   CHECK(changed.textbook_printed().empty());
 }
 
@@ -207,4 +219,74 @@ TEST_CASE("tire_balancing: the answer in short, with the numbers that decide it"
   straight.tilt_deg = 0;
   CHECK_THAT(compute(straight).results().at("answer").get<std::string>(),
              Catch::Contains("balanced already"));
+}
+
+TEST_CASE("tire_balancing: tilts from 1e-300 deg to an ulp short of the limit, against mpmath") {
+  // tests/tire_balancing/make_reference.py: eqs. 57-61 at 60 digits beyond each tilt's
+  // exponent, the text's way (eq. 60 through tan 2 theta, the axis from atan2 of the
+  // tensor's entries), from the double inputs.
+  struct Row {
+    double m, a, b, omega, tilt_deg;
+    double exact_g, small_g, small_residual_deg, per_mass, angle_L_deg, torque;
+  };
+  const Row rows[] = {
+#include "../tire_balancing/reference_tilts.inc"
+  };
+  constexpr double eps = DBL_EPSILON;
+  const auto relative = [](double x, double ref) { return ref == 0 ? x : std::abs(x / ref - 1); };
+  for (const Row& row : rows) {
+    INFO("m = " << row.m << ", a = " << row.a << ", b = " << row.b << ", tilt "
+                << fmt::format("{:.17g}", row.tilt_deg) << " deg");
+    rigid::CrookedWheel wheel{row.m, row.a, row.b};
+    wheel.set_tilt_deg(row.tilt_deg);
+    // Core at any tilt. Eq. 60's m0 formed in quadruple precision and rounded once: within
+    // an ulp (2 eps relative) even where b cos theta - a sin theta keeps 1e-16 of its size.
+    const double m0 = rigid::balance_mass_exact(wheel);
+    CHECK(relative(1e3 * m0, row.exact_g) <= 2 * eps);
+    // Eq. 61: theta (one rounding from degrees) a m / (8 b): five roundings in all.
+    CHECK(relative(1e3 * rigid::balance_mass_small_angle(wheel), row.small_g) <= 5 * eps);
+    // Eq. 61's mass taken exactly misses by about theta^2 (a^2 - b^2)/(a b): from a Quad ratio,
+    // then atan and degrees in double (a few roundings); 0 where that underflows a double.
+    const double small = rad_to_deg(rigid::small_angle_misalignment(wheel));
+    CHECK(relative(small, row.small_residual_deg) <= 4 * eps);
+    // The double m0 misses eq. 60 by at most an ulp (2 eps relative, above): the axis then
+    // turns by no more than 2 eps d phi / d ln m0. d phi / d ln m0 itself, to its Quad's digits
+    // (mpmath's derivative is good to 1e-40).
+    CHECK(rigid::misalignment_per_mass(wheel, m0) == Approx(row.per_mass).epsilon(4 * eps));
+    const double residual = rigid::principal_axis_misalignment(wheel, m0);
+    CHECK(residual <= 2 * eps * row.per_mass);
+    // The lab, where its rules allow the tilt (1e-60 to 45 deg).
+    if (row.tilt_deg < 1e-60) continue;
+    Inputs in;
+    in.mass = row.m, in.radius = row.a, in.offset = row.b, in.tilt_deg = row.tilt_deg;
+    in.omega = row.omega;
+    const auto r = compute(in).results();
+    CHECK(value(r, "balance_mass_kg") == m0);
+    CHECK(relative(value(r, "residual_tilt_small_angle_deg"), row.small_residual_deg) <= 4 * eps);
+    CHECK(value(r, "residual_tilt_exact_deg") <= rad_to_deg(2 * eps * row.per_mass));
+    // angle_between's atan2 of a scaled cross and dot product, and |omega x I omega|: a few
+    // roundings each (measured at most 2 eps).
+    CHECK(relative(value(r, "angle_L_axle_deg"), row.angle_L_deg) <= 8 * eps);
+    CHECK(relative(value(r, "torque_unbalanced_n_m"), row.torque) <= 8 * eps);
+    // The torque the double m0 leaves: its ulp's share of the unbalanced torque, eps.
+    CHECK(value(r, "torque_balanced_n_m") <= eps * row.torque * (1 + 8 * eps));
+  }
+}
+
+TEST_CASE("tire_balancing: a tilt past eq. 60's limit atan(b/a) is refused with both angles") {
+  // The text's wheel: no mass reaches a tilt of atan(b/a) = atan(5/18) or more. The largest
+  // double below it runs (m0 = 2.7e16 kg, in the reference above); four ulps above (past the
+  // rounding of atan and of degrees) is refused with the rule and both angles.
+  const double limit = std::atan2(0.05, 0.18) * 180 / M_PI;
+  Inputs in;
+  in.tilt_deg = limit;
+  for (int k = 0; k < 4; ++k) in.tilt_deg = std::nextafter(in.tilt_deg, 90.0);
+  CHECK_THROWS_WITH(compute(in),
+                    Catch::StartsWith("--tilt-deg, --offset, --radius: no balancing mass reaches "
+                                      "this tilt: need a tan theta < b") &&
+                        Catch::Contains(fmt::format("got theta = {} deg against atan(b/a) = {} deg",
+                                                    rigid::format_number(in.tilt_deg, 10),
+                                                    rigid::format_number(limit, 10))));
+  in.tilt_deg = limit * (1 - 1e-12);
+  CHECK(value(compute(in).results(), "balance_mass_kg") > 1e9);
 }
