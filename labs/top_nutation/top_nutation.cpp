@@ -336,7 +336,7 @@ void report_errata(Report& report, double S, double theta0) {
     const SteadyPrecession text_steady = steady_precession_rates(top, S_text, theta0);
     const double text_horizontal = horizontal_precession_rate(top, S_text);
     report.erratum(
-        {"section 8.1 (b), (c)",
+        {"section 8.1 (b) and (c), eqs. 185 and 187",
          "S = 52.4 rad/s ... phi_dot = mgl / (Is S) = 5.98 rad/s = 57.1 rpm ... The precession "
          "rates are 7.75 rad/s",
          fmt::format("500 rpm is S = {:.6g} rad/s; the text rounds it to {:g} before using it. "

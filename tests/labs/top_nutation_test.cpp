@@ -577,7 +577,7 @@ TEST_CASE("top_nutation: the rounding errata quote the exact rates, the slow one
   const double horizontal = mgl / (Is * S), text_horizontal = mgl / (Is * S_text);
   const auto report = compute(Inputs{});
   REQUIRE(report.errata().size() == 3);
-  CHECK(report.errata()[0].where == "section 8.1 (b), (c)");
+  CHECK(report.errata()[0].where == "section 8.1 (b) and (c), eqs. 185 and 187");
   CHECK_THAT(report.errata()[0].printed, Catch::Contains("5.98 rad/s = 57.1 rpm"));
   CHECK(report.errata()[0].correction ==
         fmt::format("500 rpm is S = {:.6g} rad/s; the text rounds it to 52.4 before using it. "
