@@ -5,19 +5,13 @@
 #include <stdexcept>
 
 #include "rigid/format.h"
+#include "rigid/quad.h"
 #include "rigid/units.h"
 
 namespace rigid {
 namespace {
 
-// Quadruple precision where the hardware's long double is not: eq. 60's limit cancels
-// b cos theta - a sin theta to the angle's last bits.
-#if defined(__SIZEOF_FLOAT128__)
-using Quad = __float128;
-#else
-using Quad = long double;
-#endif
-
+// eq. 60's limit cancels b cos theta - a sin theta to the angle's last bits: in Quad
 // pi / 180 as deg_to_rad multiplies by it, and what that double leaves out (mpmath).
 constexpr double kRadPerDeg = kPi / 180.0;
 constexpr double kRadPerDegLow = 2.9486522708701687e-19;
@@ -26,23 +20,14 @@ struct SinCos {
   Quad s, c;
 };
 
-// sin and cos of 0 <= x <= pi/2 by their Taylor series, to the last bit of a Quad: the
-// terms fall below 1e-40 of the sums within 20 of each.
-SinCos sin_cos(Quad x) {
-  const Quad x2 = x * x;
-  Quad s = x, c = 1, sine_term = x, cosine_term = 1;
-  for (int k = 1; k <= 30; ++k) {
-    sine_term *= -x2 / Quad((2 * k) * (2 * k + 1));
-    cosine_term *= -x2 / Quad((2 * k - 1) * (2 * k));
-    s += sine_term;
-    c += cosine_term;
-  }
-  return {s, c};
+// sin and cos of 0 <= x <= pi/2, to the last bit of a Quad.
+SinCos sin_cos(const Quad& x) {
+  return {sin(x), cos(x)};
 }
 
 // sin x - x cos x = x^3/3 - x^5/30 + ... = sum over k >= 1 of (-1)^(k+1) 2k x^(2k+1)/(2k+1)!,
 // by its series: formed as a difference it would cancel to nothing as x -> 0.
-Quad sin_minus_x_cos(Quad x) {
+Quad sin_minus_x_cos(const Quad& x) {
   const Quad x2 = x * x;
   Quad power = x, sum = 0;  // power: x^(2k+1) / (2k+1)!
   for (int k = 1; k <= 30; ++k) {

@@ -6,7 +6,6 @@
 #include <boost/math/special_functions/ellint_rc.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
-#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -14,6 +13,7 @@
 #include "rigid/format.h"
 #include "rigid/free_body_exact.h"
 #include "rigid/periodic_mean.h"
+#include "rigid/quad.h"
 #include "rigid/rotation.h"
 #include "rigid/units.h"
 
@@ -59,7 +59,6 @@ struct StartTerms {
 };
 
 StartTerms start_terms(const HeavyTop& top, const TopStart& s) {
-  using Quad = boost::multiprecision::cpp_bin_float_quad;
   const Quad pi = boost::math::constants::pi<Quad>();
   const Quad theta = s.theta_deg ? Quad(*s.theta_deg) * pi / 180 : Quad(s.theta);
   const Quad st = sin(theta), u0 = cos(theta), half = sin(theta / 2), half_c = cos(theta / 2);
