@@ -140,23 +140,26 @@ Eigen::Vector3d generalized_force(const EulerAngles& e, const Eigen::Vector3d& t
   return rate_axes_in_body(e).transpose() * torque_body;
 }
 
-std::optional<LagrangeTerms> lagrange_terms_exact(const PrincipalMoments& I, const EulerAngles& e,
-                                                  const Eigen::Vector3d& omega_body,
-                                                  const Eigen::Vector3d& torque_body,
-                                                  std::optional<double> sin_theta) {
-  // a pole as rates_from_body_omega has it: there phi_dot and psi_dot are undefined
-  if (!rates_from_body_omega(e, omega_body, sin_theta)) return std::nullopt;
-  // theta in radians rounded from the degrees meant, where sin(theta) comes from them
+namespace {
+
+// theta's and psi's sines and cosines, each with its bound: theta in radians is taken as
+// rounded from the degrees meant where sin(theta) comes from them
+struct Trig {
+  Bounded st, ct, sp, cp;
+};
+Trig trig_of(const EulerAngles& e, std::optional<double> sin_theta) {
   const Bounded theta{e.theta, sin_theta ? kU * std::abs(e.theta) : 0.0};
-  const Bounded st = sin_theta ? Bounded{*sin_theta, 2 * kEps * std::abs(*sin_theta)}
-                               : sin_of(theta),
-                ct = cos_of(theta), sp = sin_of({e.psi, 0.0}), cp = cos_of({e.psi, 0.0});
-  const Bounded w[3] = {{omega_body(0)}, {omega_body(1)}, {omega_body(2)}};
+  return {sin_theta ? Bounded{*sin_theta, 2 * kEps * std::abs(*sin_theta)} : sin_of(theta),
+          cos_of(theta), sin_of({e.psi, 0.0}), cos_of({e.psi, 0.0})};
+}
+
+// The terms at a state given as omega in the body and the rates, one computed from the
+// other (their bounds say how well), under the body torque N.
+std::optional<LagrangeTerms> terms_at(const PrincipalMoments& I, const Trig& a,
+                                      const std::array<Bounded, 3>& w,
+                                      const std::array<Bounded, 3>& rate,
+                                      const Eigen::Vector3d& torque_body) {
   const Bounded N[3] = {{torque_body(0)}, {torque_body(1)}, {torque_body(2)}};
-  // the rates: eqs. 134-136 inverted
-  const Bounded theta_dot = w[0] * cp - w[1] * sp;
-  const Bounded phi_dot = (w[0] * sp + w[1] * cp) / st;
-  const Bounded psi_dot = w[2] - phi_dot * ct;
   // L = I omega (eq. 153's dT/d omega_i) and its rate in the body, I omega_dot = N -
   // omega x L (Euler's equations, eq. 163)
   const Bounded moments[3] = {{I.I1}, {I.I2}, {I.I3}};
@@ -168,11 +171,12 @@ std::optional<LagrangeTerms> lagrange_terms_exact(const PrincipalMoments& I, con
   }
   LagrangeTerms terms;
   // dT/dq_dot_k = L . (axis k) along the motion: the angles move at their rates
-  const auto [st_t, ct_t] = sin_cos(st, ct, theta_dot);
-  const auto [sp_t, cp_t] = sin_cos(sp, cp, psi_dot);
+  const auto [st_t, ct_t] = sin_cos(a.st, a.ct, rate[1]);
+  const auto [sp_t, cp_t] = sin_cos(a.sp, a.cp, rate[2]);
   const std::array<JetVector, 3> axes_t = rate_axes(st_t, ct_t, sp_t, cp_t);
   const JetVector torque{held(N[0]), held(N[1]), held(N[2])};
-  const JetVector rates{held(phi_dot), held(theta_dot), held(psi_dot)};
+  const JetVector rates{held(rate[0]), held(rate[1]), held(rate[2])};
+  const JetVector L_held{held(L[0].v), held(L[1].v), held(L[2].v)};
   for (int k = 0; k < 3; ++k) {
     const Jet p = dot(L, axes_t[k]);
     terms.momentum[k] = {p.v.v, p.v.e};
@@ -182,14 +186,13 @@ std::optional<LagrangeTerms> lagrange_terms_exact(const PrincipalMoments& I, con
     // dT/dq_k = L . d omega / dq_k, omega = phi_dot z + theta_dot x' + psi_dot 3 with
     // the rates held and angle k moved (eqs. 152-153; omega has no phi)
     const Bounded seed_theta{k == 1 ? 1.0 : 0.0}, seed_psi{k == 2 ? 1.0 : 0.0};
-    const auto [st_q, ct_q] = sin_cos(st, ct, seed_theta);
-    const auto [sp_q, cp_q] = sin_cos(sp, cp, seed_psi);
+    const auto [st_q, ct_q] = sin_cos(a.st, a.ct, seed_theta);
+    const auto [sp_q, cp_q] = sin_cos(a.sp, a.cp, seed_psi);
     const std::array<JetVector, 3> axes_q = rate_axes(st_q, ct_q, sp_q, cp_q);
     JetVector omega;
     for (int i = 0; i < 3; ++i) {
       omega[i] = rates[0] * axes_q[0][i] + rates[1] * axes_q[1][i] + rates[2] * axes_q[2][i];
     }
-    const JetVector L_held{held(L[0].v), held(L[1].v), held(L[2].v)};
     const Bounded dT = dot(L_held, omega).d;
     terms.dT_dq[k] = {dT.v, dT.e};
     const Bounded residual = p.d - dT - Q;
@@ -202,6 +205,35 @@ std::optional<LagrangeTerms> lagrange_terms_exact(const PrincipalMoments& I, con
     }
   }
   return terms;
+}
+
+}  // namespace
+
+std::optional<LagrangeTerms> lagrange_terms_exact(const PrincipalMoments& I, const EulerAngles& e,
+                                                  const Eigen::Vector3d& omega_body,
+                                                  const Eigen::Vector3d& torque_body,
+                                                  std::optional<double> sin_theta) {
+  // a pole as rates_from_body_omega has it: there phi_dot and psi_dot are undefined
+  if (!rates_from_body_omega(e, omega_body, sin_theta)) return std::nullopt;
+  const Trig a = trig_of(e, sin_theta);
+  const std::array<Bounded, 3> w{{{omega_body(0)}, {omega_body(1)}, {omega_body(2)}}};
+  // the rates: eqs. 134-136 inverted
+  const Bounded phi_dot = (w[0] * a.sp + w[1] * a.cp) / a.st;
+  return terms_at(I, a, w, {phi_dot, w[0] * a.cp - w[1] * a.sp, w[2] - phi_dot * a.ct},
+                  torque_body);
+}
+
+std::optional<LagrangeTerms> lagrange_terms_exact(const PrincipalMoments& I, const EulerAngles& e,
+                                                  const EulerRates& r,
+                                                  const Eigen::Vector3d& torque_body,
+                                                  std::optional<double> sin_theta) {
+  const Trig a = trig_of(e, sin_theta);
+  const std::array<Bounded, 3> rate{{{r.phi_dot}, {r.theta_dot}, {r.psi_dot}}};
+  // omega by eqs. 134-136
+  return terms_at(I, a,
+                  {rate[0] * a.st * a.sp + rate[1] * a.cp, rate[0] * a.st * a.cp - rate[1] * a.sp,
+                   rate[0] * a.ct + rate[2]},
+                  rate, torque_body);
 }
 
 PsiTerms psi_terms(const PrincipalMoments& I, const Eigen::Vector3d& omega_body) {

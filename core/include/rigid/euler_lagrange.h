@@ -81,6 +81,13 @@ std::optional<LagrangeTerms> lagrange_terms_exact(
     const PrincipalMoments& I, const EulerAngles& e, const Eigen::Vector3d& omega_body,
     const Eigen::Vector3d& torque_body = Eigen::Vector3d::Zero(),
     std::optional<double> sin_theta = std::nullopt);
+/// The same at the state given by the angles and their rates (omega by eqs. 134-136):
+/// defined at a pole too, where the terms need only the rates (phi's and psi's equations
+/// are then one, their axes z and 3 the same); none where a term overflows.
+std::optional<LagrangeTerms> lagrange_terms_exact(
+    const PrincipalMoments& I, const EulerAngles& e, const EulerRates& rates,
+    const Eigen::Vector3d& torque_body = Eigen::Vector3d::Zero(),
+    std::optional<double> sin_theta = std::nullopt);
 
 /// psi's terms, defined at a pole too, each with a bound on its rounding:
 /// dT/dpsi_dot = I3 omega_3 (eqs. 153, 156) and dT/dpsi = I1 omega_1 omega_2 + I2
