@@ -104,6 +104,11 @@ render::Scene3D rotations_scene(const Report& report) {
       scene.add_arrow(Vector3d::Zero(), tip, 0.016, {colors::kOmega},
                       "\\omega = \\phi-dot z + \\theta-dot x' + \\psi-dot 3");
     }
+  } else if (report.omega_space.norm() > 0) {
+    // at a pole omega is defined, its split between phi_dot and psi_dot is not: omega
+    // alone, at unit length
+    scene.add_arrow(Vector3d::Zero(), report.omega_space.normalized(), 0.016, {colors::kOmega},
+                    "\\omega (at the pole its \\phi-dot and \\psi-dot are undefined)");
   }
   scene.camera = camera_before_nodes(e.phi);
   return scene;
