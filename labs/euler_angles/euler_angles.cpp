@@ -144,9 +144,13 @@ double report_section_7(Report& report, const Inputs& in, const EulerAngles& e, 
                 psi.force.value, "N m");
   report.remark(fmt::format(
       "(+- {:.2g} N m: rounding; {})", psi.force.error,
-      differences ? fmt::format("by differences in psi, the rates held: {:.9g} +- {:.2g}",
-                                differences->dT_dq[2].value, differences->dT_dq[2].error)
-                  : "no differences here: " + no_differences_reason(!start)));
+      differences
+          ? fmt::format("by differences in psi, the rates held: {:.9g} +- {:.2g}{}",
+                        differences->dT_dq[2].value, differences->dT_dq[2].error,
+                        differences->dT_dq[2].error > 1e-3 * std::max(T, std::abs(psi.force.value))
+                            ? ", too coarse to tell"
+                            : "")
+          : "no differences here: " + no_differences_reason(!start)));
   report.result_json("lagrange_psi_force_error", psi.force.error, "N m");
   const Vector3d w = motion.omega_body(0.0);
   report.result("euler_psi_rate", "  Euler: I3 omega_3_dot = (I1 - I2) omega_1 omega_2 (eq. 158)",

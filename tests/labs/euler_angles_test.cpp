@@ -611,5 +611,6 @@ TEST_CASE("euler_angles: at a pole the figure shows omega alone, its split undef
                           element(report.results(), "omega_space_rad_s", 1),
                           element(report.results(), "omega_space_rad_s", 2));
   CHECK(angle_between(arrow_direction(rotations, "\\omega (at the pole"), w) < 1e-12);
+  CHECK(contains(rotations.title, "whose parts a pole leaves undefined"));
   for (const auto& object : rotations.objects()) CHECK_FALSE(contains(object.label, "\\phi-dot z"));
 }
