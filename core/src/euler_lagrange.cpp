@@ -142,13 +142,14 @@ Eigen::Vector3d generalized_force(const EulerAngles& e, const Eigen::Vector3d& t
 
 namespace {
 
-// theta's and psi's sines and cosines, each with its bound: theta in radians is taken as
-// rounded from the degrees meant where sin(theta) comes from them
+// theta's and psi's sines and cosines, each with its bound: where sin(theta) comes from
+// the degrees meant, theta in radians is taken as within 2 eps of them (pi / 180 and the
+// product each rounded)
 struct Trig {
   Bounded st, ct, sp, cp;
 };
 Trig trig_of(const EulerAngles& e, std::optional<double> sin_theta) {
-  const Bounded theta{e.theta, sin_theta ? kU * std::abs(e.theta) : 0.0};
+  const Bounded theta{e.theta, sin_theta ? 2 * kEps * std::abs(e.theta) : 0.0};
   return {sin_theta ? Bounded{*sin_theta, 2 * kEps * std::abs(*sin_theta)} : sin_of(theta),
           cos_of(theta), sin_of({e.psi, 0.0}), cos_of({e.psi, 0.0})};
 }

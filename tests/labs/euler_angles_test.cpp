@@ -182,7 +182,11 @@ TEST_CASE(
       INFO(angle);
       const std::string key = std::string("torque_lagrange_residual_") + angle;
       CHECK(std::abs(value(r, key.c_str())) <= value(r, (key + "_error").c_str()));
-      CHECK(value(r, (key + "_error").c_str()) < 1e-6);
+      CHECK(value(r, (key + "_error").c_str()) < 1e-12);
+      // and by differences along the run, Q included, to their own error
+      CHECK(std::abs(value(r, (key + "_differences").c_str())) <=
+            value(r, (key + "_differences_error").c_str()));
+      CHECK(value(r, (key + "_differences_error").c_str()) < 1e-6);
     }
     // Q_psi is N_3: without it psi's equation misses by exactly that
     CHECK(element(r, "generalized_force", 2) == torque(2));
