@@ -5,8 +5,14 @@
 // velocity is phi_dot about z, theta_dot about x' and psi_dot about 3 (eq. 124); the
 // lab gives it in the intermediate frame (eqs. 128-130), the body (134-136) and space
 // (137-139), each also as lambda applied to another frame's components, and the way
-// back, omega in the body to the rates, which a pole (theta = 0 or 180 deg) leaves
-// undefined. With a body's moments, L and T = 1/2 sum I_i omega_i^2 (eq. 150).
+// back, omega in the body to the rates, of which a pole (theta = 0 or 180 deg) leaves
+// only phi_dot +- psi_dot and theta_dot: everything else is given there too. With a
+// body's moments, L and T = 1/2 sum I_i omega_i^2 (eq. 150, whose print lacks the 1/2).
+// Section 7: each angle's Lagrange equation (eqs. 150-159), its terms exact but for a
+// stated rounding bound and checked by differences along the exact motion; psi's
+// momentum I3 omega_3 and force (I1 - I2) omega_1 omega_2, defined at a pole too;
+// section 7.2 with a constant body torque and its generalized forces, in N m (eqs.
+// 163-166). The text's errors are errata with the numbers of the run.
 #pragma once
 
 #include <Eigen/Core>
@@ -41,9 +47,10 @@ struct Inputs {
 /// What the lab reports, and what its figures draw.
 struct Report : lab::Report {
   using lab::Report::Report;
-  EulerAngles angles;         ///< rad
-  EulerRates rates;           ///< rad/s (from --from-omega where given and defined)
-  bool rates_defined = true;  ///< false at a pole with --from-omega
+  EulerAngles angles;  ///< rad
+  EulerRates rates;    ///< rad/s (from --from-omega where given and defined)
+  /// false at a pole with --from-omega: rates then holds only theta_dot
+  bool rates_defined = true;
   Eigen::Vector3d omega_space = Eigen::Vector3d::Zero();  ///< rad/s
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();   ///< rad/s
 };

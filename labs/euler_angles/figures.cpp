@@ -81,7 +81,9 @@ render::Scene3D turns_scene(const EulerAngles& e) {
 render::Scene3D rotations_scene(const Report& report) {
   const EulerAngles& e = report.angles;
   render::Scene3D scene = turns_scene(e);
-  scene.title = "the three rotations and omega as the sum of its three parts";
+  scene.title = report.rates_defined
+                    ? "the three rotations and omega as the sum of its three parts"
+                    : "the three rotations and omega, whose parts a pole leaves undefined";
   if (report.rates_defined) {
     // omega = phi_dot z + theta_dot x' + psi_dot 3 (eq. 124) drawn as that sum: each part
     // from the last one's tip, to scale, and omega from the origin to the chain's end; a
@@ -104,6 +106,11 @@ render::Scene3D rotations_scene(const Report& report) {
       scene.add_arrow(Vector3d::Zero(), tip, 0.016, {colors::kOmega},
                       "\\omega = \\phi-dot z + \\theta-dot x' + \\psi-dot 3");
     }
+  } else if (report.omega_space.norm() > 0) {
+    // at a pole omega is defined, its split between phi_dot and psi_dot is not: omega
+    // alone, at unit length
+    scene.add_arrow(Vector3d::Zero(), report.omega_space.normalized(), 0.016, {colors::kOmega},
+                    "\\omega (at the pole its \\phi-dot and \\psi-dot are undefined)");
   }
   scene.camera = camera_before_nodes(e.phi);
   return scene;

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "rigid/free_body_exact.h"
 #include "rigid/units.h"
@@ -63,7 +64,7 @@ TEST_CASE("section 7: each Euler angle's Lagrange equation holds along the exact
       // dT/dpsi_dot = I3 omega_3, so d/dt (I3 omega_3) = (I1 - I2) omega_1 omega_2
       CHECK(std::abs(terms->dT_dq[2].value - (I.I1 - I.I2) * omega(0) * omega(1)) <=
             terms->dT_dq[2].error);
-      CHECK(terms->momentum[2] == Approx(I.I3 * omega(2)).epsilon(1e-12));
+      CHECK(terms->momentum[2].value == Approx(I.I3 * omega(2)).epsilon(1e-12));
       const double euler_rate = (I.I1 - I.I2) * omega(0) * omega(1);  // I3 omega_3_dot
       INFO("psi: d/dt I3 omega_3 " << terms->momentum_rate[2].value << " +- "
                                    << terms->momentum_rate[2].error << ", Euler " << euler_rate);
@@ -140,4 +141,85 @@ TEST_CASE("section 7: eq. 150 needs its 1/2: T is half of sum I_i omega_i^2") {
   // and it is L.omega / 2 (eq. 81's T), the energy the rest of the chapter uses
   const Eigen::Vector3d L(I.I1 * w(0), I.I2 * w(1), I.I3 * w(2));
   CHECK(euler_kinetic_energy(I, e, r) == Approx(0.5 * L.dot(w)).epsilon(1e-15));
+}
+
+namespace {
+
+// A state, by omega in the body or by the rates, and its terms at 80 digits
+// (make_lagrange_exact.py): dT/dq_dot, d/dt dT/dq_dot, dT/dq and Q for phi, theta, psi.
+struct ExactCase {
+  bool given_rates;
+  double I[3], angles[3], velocity[3], torque[3];
+  double terms[3][4];
+};
+const ExactCase kExactCases[] = {
+#include "reference_lagrange_exact.inc"
+};
+
+}  // namespace
+
+TEST_CASE("section 7: the exact terms against 80-digit references, within their bounds") {
+  // Each term within the running bound on its rounding it states, and that bound tight:
+  // within 64 eps of the sizes that meet in the equations, |L| times omega's and the
+  // rates' sizes, and |N| (near a pole the rates grow as 1/sin(theta), and theta's terms
+  // and their bound with them); the residual, 0, within its bound.
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  for (const ExactCase& c : kExactCases) {
+    const PrincipalMoments I{c.I[0], c.I[1], c.I[2]};
+    const EulerAngles e{c.angles[0], c.angles[1], c.angles[2]};
+    const Eigen::Vector3d v(c.velocity[0], c.velocity[1], c.velocity[2]);
+    const Eigen::Vector3d N(c.torque[0], c.torque[1], c.torque[2]);
+    INFO("theta " << e.theta << (c.given_rates ? ", rates " : ", omega ") << v.transpose() << ", N "
+                  << N.transpose());
+    const EulerRates given{v(0), v(1), v(2)};
+    const std::optional<LagrangeTerms> terms =
+        c.given_rates ? lagrange_terms_exact(I, e, given, N) : lagrange_terms_exact(I, e, v, N);
+    REQUIRE(terms);
+    const Eigen::Vector3d w = c.given_rates ? omega_in_body(e, given) : v;
+    const EulerRates r = c.given_rates ? given : *rates_from_body_omega(e, w);
+    const double scale =
+        I.vector().cwiseProduct(w).norm() *
+            (w.norm() + std::abs(r.phi_dot) + std::abs(r.theta_dot) + std::abs(r.psi_dot)) +
+        N.norm();
+    for (int k = 0; k < 3; ++k) {
+      const Measured got[4] = {terms->momentum[k], terms->momentum_rate[k], terms->dT_dq[k],
+                               terms->force[k]};
+      for (int m = 0; m < 4; ++m) {
+        INFO("angle " << k << ", term " << m << ": " << got[m].value << " +- " << got[m].error
+                      << " against " << c.terms[k][m]);
+        CHECK(std::abs(got[m].value - c.terms[k][m]) <= got[m].error);
+      }
+      INFO("angle " << k << ": residual " << terms->residual[k].value << " +- "
+                    << terms->residual[k].error << ", scale " << scale);
+      CHECK(std::abs(terms->residual[k].value) <= terms->residual[k].error);
+      CHECK(terms->residual[k].error <= 64 * kEps * scale);
+    }
+    // psi's two terms, the same by eqs. 154-157's closed form, defined at a pole too (with
+    // omega from the rates rounded, each component within 4 eps of the rates' sum, on top)
+    const PsiTerms psi = psi_terms(I, w);
+    const double dw =
+        c.given_rates ? 4 * kEps * (std::abs(v(0)) + std::abs(v(1)) + std::abs(v(2))) : 0.0;
+    CHECK(std::abs(psi.momentum.value - c.terms[2][0]) <= psi.momentum.error + I.I3 * dw);
+    CHECK(std::abs(psi.force.value - c.terms[2][2]) <=
+          psi.force.error + (I.I1 + I.I2) * (std::abs(w(0)) + std::abs(w(1)) + dw) * dw);
+    // three roundings of (I1 + I2) |omega_1 omega_2| at most: I1 - I2 may cancel
+    CHECK(psi.force.error <= 2 * kEps * (I.I1 + I.I2) * std::abs(w(0) * w(1)));
+  }
+}
+
+TEST_CASE("section 7: the exact terms from omega are none at a pole, psi's defined there") {
+  // theta = 0 and pi exactly: omega leaves phi_dot and psi_dot undefined, only their sum
+  // or difference (from the rates the terms are defined there: the references above)
+  const PrincipalMoments I{1, 2, 3};
+  const Eigen::Vector3d w(1, 2, 3);
+  for (const double pole : {0.0, kPi}) {
+    CHECK_FALSE(lagrange_terms_exact(I, {0.5, pole, 1.2}, w));
+    // dT/dpsi_dot = I3 omega_3 = 9, dT/dpsi = (I1 - I2) omega_1 omega_2 = -2: exact
+    const PsiTerms psi = psi_terms(I, w);
+    CHECK(psi.momentum.value == 9.0);
+    CHECK(psi.force.value == -2.0);
+  }
+  // a sine given exactly is the pole only where it is 0: 1e-300 is a state
+  CHECK(lagrange_terms_exact(I, {0.5, 1e-300, 1.2}, w, Eigen::Vector3d::Zero(), 1e-300));
+  CHECK_FALSE(lagrange_terms_exact(I, {0.5, 0.0, 1.2}, w, Eigen::Vector3d::Zero(), 0.0));
 }
