@@ -135,7 +135,8 @@ RunPlan plan_run(Report& report, const IntegrationInputs& in, bool compared, dou
                  double scale, double fastest) {
   check_phase_digits(t_end, scale);
   RunPlan plan;
-  plan.options = integration_options(report, in, compared, std::min(scale / 2000.0, fastest / 200.0));
+  plan.options =
+      integration_options(report, in, compared, std::min(scale / 2000.0, fastest / 200.0));
   plan.fixed = fixed_step(in);
   // A step asked for that is longer than the whole run would be silently cut to it.
   if (plan.fixed && in.step && plan.options.step > t_end) {

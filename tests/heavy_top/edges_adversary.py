@@ -20,26 +20,22 @@ Run: edges_adversary.py LAB [--cases N] [--seed S]
 import argparse
 import json
 import math
+import os
 import random
 import subprocess
 import sys
 
 import mpmath as mp
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import make_lab_edges  # noqa: E402  (its cubic and roots)
+
 mp.mp.dps = 120
 
 
 def reference(I, Is, mgl, th_deg, thd0, phd0, S):
-    I, Is, mgl = mp.mpf(I), mp.mpf(Is), mp.mpf(mgl)
-    th0 = mp.mpf(th_deg) * mp.pi / 180
-    thd0, phd0, S = mp.mpf(thd0), mp.mpf(phd0), mp.mpf(S)
-    a, beta = Is * S / I, 2 * mgl / I
-    u0, s2 = mp.cos(th0), mp.sin(th0) ** 2
-    b = phd0 * s2 + a * u0
-    alpha = thd0 ** 2 + phd0 ** 2 * s2 + beta * u0
-    with mp.workdps(200):
-        u1, u2, u3 = sorted(mp.re(x) for x in mp.polyroots(
-            [beta, -(alpha + a * a), 2 * a * b - beta, alpha - b * b], maxsteps=4000, extraprec=4000))
+    a, b, beta, u0, s2, (u1, u2, u3) = make_lab_edges.cubic((I, Is, mgl), th_deg, thd0, phd0, S)
+    phd0 = mp.mpf(phd0)
     lam = mp.sqrt(beta * (u3 - u1)) / 2
     k2 = (u2 - u1) / (u3 - u1)
     T = 2 * mp.ellipk(k2) / lam

@@ -36,7 +36,9 @@ CASES = [
 ]
 
 
-def reference(top, theta0_deg, thd0, phd0, spin):
+def cubic(top, theta0_deg, thd0, phd0, spin):
+    """a, b, beta, u0, sin^2 theta0 and the roots u1 <= u2 <= u3 of f(u) = (alpha - beta u)
+    (1 - u^2) - (b - a u)^2 at the working precision (extra precision for the roots)."""
     I, Is, mgl = (mp.mpf(x) for x in top)
     th0 = mp.mpf(theta0_deg) * mp.pi / 180
     thd0, phd0, S = mp.mpf(thd0), mp.mpf(phd0), mp.mpf(spin)
@@ -44,9 +46,15 @@ def reference(top, theta0_deg, thd0, phd0, spin):
     u0, s2 = mp.cos(th0), mp.sin(th0) ** 2
     b = phd0 * s2 + a * u0
     alpha = thd0 ** 2 + phd0 ** 2 * s2 + beta * u0
-    roots = sorted(mp.re(x) for x in mp.polyroots(
-        [beta, -(alpha + a * a), 2 * a * b - beta, alpha - b * b], maxsteps=4000, extraprec=4000))
-    u1, u2, u3 = roots
+    with mp.workdps(max(mp.mp.dps, 200)):
+        roots = sorted(mp.re(x) for x in mp.polyroots(
+            [beta, -(alpha + a * a), 2 * a * b - beta, alpha - b * b], maxsteps=4000,
+            extraprec=4000))
+    return a, b, beta, u0, s2, roots
+
+
+def reference(top, theta0_deg, thd0, phd0, spin):
+    a, b, beta, _, _, (u1, u2, u3) = cubic(top, theta0_deg, thd0, phd0, spin)
     lam = mp.sqrt(beta * (u3 - u1)) / 2
     period = 2 * mp.ellipk((u2 - u1) / (u3 - u1)) / lam
     u = lambda x: u1 + (u2 - u1) * mp.sin(x) ** 2
@@ -58,7 +66,9 @@ def reference(top, theta0_deg, thd0, phd0, spin):
         south = 0 if b + a == 0 else (b + a) / (1 + uu)
         return (north + south) / 2
     base = 2 * mp.quad(lambda x: phi_dot(u(x)) * dt(x), [0, mp.pi / 4, mp.pi / 2]) / quad_period
-    turning = [phi_dot(u1) if u1 > -1 else 0, phi_dot(u2) if u2 < 1 else 0]
+    # at a pole that is a root its term is left out: the limit along the path
+    turning = [phi_dot(u1) if u1 > -1 or b + a == 0 else 0,
+               phi_dot(u2) if u2 < 1 or b - a == 0 else 0]
     return dict(u1=u1, u2=u2, u3=u3, theta_min_deg=mp.degrees(mp.acos(min(u2, 1))),
                 theta_max_deg=mp.degrees(mp.acos(max(u1, -1))), period=period,
                 quad_period=quad_period, mean_base=base, phi_dot_u1=turning[0],
