@@ -22,16 +22,17 @@
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/figure_format.h"
+#include "rigid/render/image.h"
+#include "rigid/support/cli.h"
+#include "rigid/support/programs.h"
+#include "rigid/support/progress.h"
+#include "rigid/support/text.h"
 
 #if RIGID_HAVE_RENDER
 #include "rigid/render/context.h"
 #include "rigid/render/draw.h"
 #include "rigid/render/png.h"
 #include "rigid/render/video.h"
-#include "rigid/support/cli.h"
-#include "rigid/support/programs.h"
-#include "rigid/support/progress.h"
-#include "rigid/support/text.h"
 #endif
 
 namespace rigid::lab {
