@@ -77,13 +77,11 @@ std::string shell_word(const std::string& word) {
 const char* const kFigureSizeRule = "size: must be WxH, each 16 to 8192";
 
 bool read_figure_size(const std::string& text, int& width, int& height) {
-  int a = 0, b = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X'))
-    return false;
-  if (a < 16 || b < 16 || a > 8192 || b > 8192) return false;
-  width = a;
-  height = b;
+  const auto size = lab::read_size(text, {16, 16, 8192, 8192, false});
+  const auto* read = std::get_if<lab::Size>(&size);
+  if (read == nullptr) return false;
+  width = read->width;
+  height = read->height;
   return true;
 }
 

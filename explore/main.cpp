@@ -170,12 +170,10 @@ int main(int argc, char** argv) {
   }
   int width = 0, height = 0;
   {
-    char x = 0, extra = 0;
-    if (std::sscanf(size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || x != 'x' ||
-        width < 640 || height < 400 || width > 8192 || height > 8192) {
-      return fail("--size",
-                  "must be WxH with 640 <= W <= 8192 and 400 <= H <= 8192 (got '" + size + "')");
-    }
+    const auto read = rigid::lab::read_size(size, {640, 400, 8192, 8192, false});
+    if (const auto* why = std::get_if<std::string>(&read)) return fail("--size", *why);
+    width = std::get<rigid::lab::Size>(read).width;
+    height = std::get<rigid::lab::Size>(read).height;
   }
   // The lab's inputs checked before any window opens: bad input is exit 2 anywhere.
   {

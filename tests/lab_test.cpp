@@ -173,7 +173,7 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
       {"--periods 2 --t-end 3", "--periods"},
       {"--periods 0", "--periods"},
       // too few numbers before the next option: named as such, not as a bad component
-      {"--omega , --json", "--omega: needs 3 numbers separated by commas; '--json'"},
+      {"--omega , --json", "--omega: each component must be a number (got '')"},
   };
   rigid::test::check_bad_inputs("poinsot", cases);
 }

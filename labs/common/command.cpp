@@ -39,40 +39,14 @@ namespace rigid::lab {
 namespace fs = std::filesystem;
 namespace {
 
-// A component the validator has accepted, as a number.
-double component(const std::string& text) {
-  double value = 0.0;
-  CLI::detail::lexical_cast(text, value);
-  return value;
-}
-
-// "1280x720" into width and height within the limits; the rule broken, or "".
-// Each side is read as digits alone, compared before it is stored: a side of
-// 4294968096 (which wraps to 800 in an int) is too large, not 800.
+// "1280x720" into width and height within the limits (the inputs' one reader of sizes):
+// the rule broken, or "".
 std::string parse_size(const std::string& text, int min_w, int min_h, int max_w, int max_h,
                        bool even, int& width, int& height) {
-  const std::string rule =
-      fmt::format("must be WxH{} with {} <= W <= {} and {} <= H <= {} (got '{}')",
-                  even ? ", both even," : "", min_w, max_w, min_h, max_h, quoted_text(text));
-  const std::size_t x = text.find_first_of("xX");
-  if (x == std::string::npos) return rule;
-  const auto side = [](const std::string& digits, int lo, int hi, int& out) {
-    if (digits.empty() || digits.size() > 9 ||
-        digits.find_first_not_of("0123456789") != std::string::npos) {
-      return false;
-    }
-    const long value = std::stol(digits);
-    if (value < lo || value > hi) return false;
-    out = static_cast<int>(value);
-    return true;
-  };
-  int w = 0, h = 0;
-  if (!side(text.substr(0, x), min_w, max_w, w) || !side(text.substr(x + 1), min_h, max_h, h) ||
-      (even && (w % 2 != 0 || h % 2 != 0))) {
-    return rule;
-  }
-  width = w;
-  height = h;
+  const auto size = read_size(text, {min_w, min_h, max_w, max_h, even});
+  if (const auto* why = std::get_if<std::string>(&size)) return *why;
+  width = std::get<Size>(size).width;
+  height = std::get<Size>(size).height;
   return "";
 }
 
@@ -92,7 +66,7 @@ struct OptionSlot {
   double number = 0.0;
   std::string word;
   bool on = false;
-  std::vector<std::string> texts;  // a vector's or pair's components (or word) as given
+  std::string text;  // a vector's or pair's text (or word) as given
 };
 
 class Command {
@@ -263,52 +237,36 @@ void Command::bind(const BoundInput& input) {
       slot.cli = app_.add_option(rule.flag(), slot.number)
                      ->type_name(rule.unit_text() == "deg" ? "DEG" : "NUMBER")
                      ->capture_default_str();
-      slot.cli->check(CLI::Validator(
+      // the inputs' one reader (read_input) decides; CLI11 then converts the value's
+      // shortest text, which reads back as the same double (a transform: it may rewrite)
+      slot.cli->transform(CLI::Validator(
           [&rule](std::string& text) -> std::string {
-            double parsed = 0.0;
-            if (!CLI::detail::lexical_cast(text, parsed)) {
-              return "must be a number (got '" + quoted_text(text) + "')";
-            }
-            return rule.broken(parsed, text);
+            const auto read = read_input(rule, text);
+            if (const auto* why = std::get_if<std::string>(&read)) return *why;
+            text = fmt::format("{}", std::get<double>(std::get<InputValue>(read)));
+            return "";
           },
           ""));
       break;
     }
     case InputKind::kPair:
     case InputKind::kVector: {
-      // CLI11 splits the value at the commas, insists on `count` values and checks each.
-      const bool vector = rule.kind() == InputKind::kVector;
-      const int count = vector ? 3 : 2;
+      // the whole text, its parts and their count read by the inputs' one reader
       std::string default_text;
       if (const auto* v = std::get_if<Eigen::Vector3d>(&input.default_value)) {
         default_text = fmt::format("{},{},{}", (*v)(0), (*v)(1), (*v)(2));
       } else if (const auto* v = std::get_if<Eigen::Vector2d>(&input.default_value)) {
         default_text = fmt::format("{},{}", (*v)(0), (*v)(1));
       }
-      std::string type_name = vector ? "X,Y,Z" : rule.value_name();
-      slot.cli = app_.add_option(rule.flag(), slot.texts)
-                     ->delimiter(',')
-                     ->expected(count)
-                     ->type_name(type_name)
-                     ->default_str(default_text);
-      if (!rule.word_names().empty()) {
-        slot.cli->expected(1, count);
-        slot.cli->type_name(type_name + "|" + rule.word_list());
-      }
+      std::string type_name = rule.kind() == InputKind::kVector ? "X,Y,Z" : rule.value_name();
+      if (!rule.word_names().empty()) type_name += "|" + rule.word_list();
+      slot.cli =
+          app_.add_option(rule.flag(), slot.text)->type_name(type_name)->default_str(default_text);
       slot.cli->check(CLI::Validator(
-          [&rule, count](std::string& text) -> std::string {
-            if (rule.takes_word(text)) return "";
-            double parsed = 0.0;
-            if (!CLI::detail::lexical_cast(text, parsed)) {
-              // too few numbers before the next option ("--omega , --json"): CLI11 took it
-              if (text.rfind("--", 0) == 0 && text.size() > 2) {
-                return fmt::format("needs {} numbers separated by commas; '{}' is the next option",
-                                   count, quoted_text(text));
-              }
-              return "each component must be a number (got '" + quoted_text(text) + "')" +
-                     (rule.word_names().empty() ? "" : ", or the value one of " + rule.word_list());
-            }
-            return rule.broken(parsed, text);
+          [&rule](std::string& text) -> std::string {
+            const auto read = read_input(rule, text);
+            const auto* why = std::get_if<std::string>(&read);
+            return why != nullptr ? *why : "";
           },
           ""));
       break;
@@ -330,7 +288,7 @@ void Command::bind(const BoundInput& input) {
     if (rule.kind() == InputKind::kNumber) {
       slot.old = app_.add_option(rule.old_flag(), slot.number);
     } else if (rule.kind() == InputKind::kPair || rule.kind() == InputKind::kVector) {
-      slot.old = app_.add_option(rule.old_flag(), slot.texts)->delimiter(',');
+      slot.old = app_.add_option(rule.old_flag(), slot.text);
     } else if (rule.kind() == InputKind::kChoice) {
       slot.old = app_.add_option(rule.old_flag(), slot.word);
     } else {
@@ -358,29 +316,13 @@ void Command::store() {
         value = slot.number;
         break;
       case InputKind::kPair:
-        if (slot.texts.size() != 2) throw InputError(rule.flag(), "must be two numbers");
-        value = Eigen::Vector2d(component(slot.texts[0]), component(slot.texts[1]));
-        break;
       case InputKind::kVector: {
-        const auto& texts = slot.texts;
-        if (texts.size() == 1 && rule.takes_word(texts[0])) {
-          value = texts[0];
-          break;
+        // checked by the option's validator, or given under the old name and read here
+        const auto read = read_input(rule, slot.text);
+        if (const auto* why = std::get_if<std::string>(&read)) {
+          throw InputError(slot.cli->count() > 0 ? rule.flag() : rule.old_flag(), *why);
         }
-        const bool has_word =
-            std::any_of(texts.begin(), texts.end(),
-                        [&rule](const std::string& t) { return rule.takes_word(t); });
-        if (texts.size() != 3 || has_word) {
-          throw InputError(
-              rule.flag(),
-              "expects three numbers X,Y,Z" +
-                  (rule.word_names().empty() ? std::string() : " or one of " + rule.word_list()));
-        }
-        const Eigen::Vector3d v(component(texts[0]), component(texts[1]), component(texts[2]));
-        if (rule.is_nonzero() && v.isZero(0.0)) {
-          throw InputError(rule.flag(), "must not be the zero vector");
-        }
-        value = v;
+        value = std::get<InputValue>(read);
         break;
       }
       case InputKind::kChoice:

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
 
 namespace rigid::lab {
 
@@ -216,6 +218,88 @@ Json to_json(const InputValue& value) {
   if (const auto* w = std::get_if<std::string>(&value)) return *w;
   if (const auto* b = std::get_if<bool>(&value)) return *b;
   return nullptr;
+}
+
+std::optional<double> read_number(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return std::nullopt;
+  const std::size_t last = text.find_last_not_of(" \t");
+  const std::string t = text.substr(first, last - first + 1);
+  char* end = nullptr;
+  const double x = std::strtod(t.c_str(), &end);
+  if (end != t.c_str() + t.size()) return std::nullopt;
+  return x;
+}
+
+std::variant<InputValue, std::string> read_input(const InputRule& rule, const std::string& text) {
+  if (text.empty() && !rule.lab_default_text().empty()) return InputValue();
+  switch (rule.kind()) {
+    case InputKind::kNumber: {
+      const auto x = read_number(text);
+      if (!x) return "must be a number (got '" + quoted_text(text) + "')";
+      if (std::string why = rule.broken(*x, text); !why.empty()) return why;
+      return InputValue(*x);
+    }
+    case InputKind::kPair:
+    case InputKind::kVector: {
+      if (rule.takes_word(text)) return InputValue(text);
+      const std::size_t count = rule.kind() == InputKind::kVector ? 3 : 2;
+      std::vector<double> xs;
+      std::stringstream parts(text);
+      for (std::string part; std::getline(parts, part, ',');) {
+        const auto x = read_number(part);
+        if (!x) {
+          return "each component must be a number (got '" + quoted_text(part) + "')" +
+                 (rule.word_names().empty() ? "" : ", or the value one of " + rule.word_list());
+        }
+        if (std::string why = rule.broken(*x, part); !why.empty()) return why;
+        xs.push_back(*x);
+      }
+      if (xs.size() != count) {
+        return fmt::format("needs {} numbers separated by commas (got '{}')", count,
+                           quoted_text(text));
+      }
+      const InputValue v = count == 3 ? InputValue(Eigen::Vector3d(xs[0], xs[1], xs[2]))
+                                      : InputValue(Eigen::Vector2d(xs[0], xs[1]));
+      if (std::string why = rule.broken(v); !why.empty()) return why;
+      return v;
+    }
+    case InputKind::kChoice: {
+      if (std::string why = rule.broken(InputValue(text)); !why.empty()) return why;
+      return InputValue(text);
+    }
+    case InputKind::kFlag:
+      if (text.empty() || text == "on" || text == "true" || text == "1") return InputValue(true);
+      if (text == "off" || text == "false" || text == "0") return InputValue(false);
+      return "is a switch: on or off (got '" + quoted_text(text) + "')";
+  }
+  return std::string("cannot be read");
+}
+
+std::variant<Size, std::string> read_size(const std::string& text, const SizeLimits& limits) {
+  const std::string rule =
+      fmt::format("must be WxH{} with {} <= W <= {} and {} <= H <= {} (got '{}')",
+                  limits.even ? ", both even," : "", limits.min_width, limits.max_width,
+                  limits.min_height, limits.max_height, quoted_text(text));
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return rule;
+  const auto side = [](const std::string& digits, int lo, int hi, int& out) {
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
+      return false;
+    }
+    const long value = std::stol(digits);
+    if (value < lo || value > hi) return false;
+    out = static_cast<int>(value);
+    return true;
+  };
+  Size size;
+  if (!side(text.substr(0, x), limits.min_width, limits.max_width, size.width) ||
+      !side(text.substr(x + 1), limits.min_height, limits.max_height, size.height) ||
+      (limits.even && (size.width % 2 != 0 || size.height % 2 != 0))) {
+    return rule;
+  }
+  return size;
 }
 
 }  // namespace rigid::lab

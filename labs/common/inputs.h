@@ -187,6 +187,33 @@ class InputRule {
 /// An input value as JSON: a number, an array, a word or a switch (null if absent).
 Json to_json(const InputValue& value);
 
+/// A number as every front door reads one: the whole text but for spaces and tabs around
+/// it, as strtod spells numbers (decimal, exponent, hex, inf, nan). A value beyond a
+/// double's range is read (as inf or 0) for the input's rule to refuse by name. None
+/// where the text is not a number.
+std::optional<double> read_number(const std::string& text);
+
+/// A size in pixels, and the sizes a reader of "WxH" takes.
+struct Size {
+  int width = 0, height = 0;
+};
+struct SizeLimits {
+  int min_width = 1, min_height = 1, max_width = 8192, max_height = 8192;
+  bool even = false;  ///< both sides even (H.264's 4:2:0 chroma)
+};
+/// "1280x720" (or "1280X720") within the limits, or the rule it breaks ("must be WxH with
+/// 800 <= W <= 8192 and 600 <= H <= 8192 (got '...')"). Each side is digits alone, compared
+/// before it is stored: 4294968096 (which an int would wrap to 800) is too large, not 800.
+std::variant<Size, std::string> read_size(const std::string& text, const SizeLimits& limits);
+
+/// The one reader of user text for an input: the command line, a live view's fields and
+/// its scripts all call it, so one text gets one verdict and one message everywhere. A
+/// number, pair or vector (its parts separated by commas), a word, or a switch (on, off,
+/// true, false, 1, 0; empty is on); the value, or the rule the text breaks ("must be
+/// positive (got -1)"). An empty text where the lab has a default of its own is that
+/// default, unset.
+std::variant<InputValue, std::string> read_input(const InputRule& rule, const std::string& text);
+
 /// One input of a lab's Inputs: its rule and how to read and write it.
 template <class In>
 struct InputField {

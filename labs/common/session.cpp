@@ -58,72 +58,9 @@ std::string argument_text(const InputValue& value) {
   return std::visit(Text{}, value);
 }
 
-namespace {
-
-// A whole number's text as a double, or nullopt: trailing text, an empty field and
-// values out of the double's range are not numbers.
-std::optional<double> number(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return std::nullopt;
-  const std::size_t last = text.find_last_not_of(" \t");
-  const std::string t = text.substr(first, last - first + 1);
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(t.c_str(), &end);
-  if (end != t.c_str() + t.size() || errno == ERANGE || !std::isfinite(x)) return std::nullopt;
-  return x;
-}
-
-}  // namespace
-
-std::variant<InputValue, std::string> parse_input(const InputRule& rule, const std::string& text) {
-  if (text.empty() && !rule.lab_default_text().empty()) return InputValue();
-  switch (rule.kind()) {
-    case InputKind::kNumber: {
-      const auto x = number(text);
-      if (!x) return "must be a number (got '" + quoted_text(text) + "')";
-      if (std::string why = rule.broken(*x, text); !why.empty()) return why;
-      return InputValue(*x);
-    }
-    case InputKind::kPair:
-    case InputKind::kVector: {
-      if (rule.takes_word(text)) return InputValue(text);
-      const std::size_t count = rule.kind() == InputKind::kVector ? 3 : 2;
-      std::vector<double> xs;
-      std::stringstream parts(text);
-      for (std::string part; std::getline(parts, part, ',');) {
-        const auto x = number(part);
-        if (!x) {
-          return "each component must be a number (got '" + quoted_text(part) + "')" +
-                 (rule.word_names().empty() ? "" : ", or the value one of " + rule.word_list());
-        }
-        if (std::string why = rule.broken(*x, part); !why.empty()) return why;
-        xs.push_back(*x);
-      }
-      if (xs.size() != count) {
-        return fmt::format("needs {} numbers separated by commas (got '{}')", count,
-                           quoted_text(text));
-      }
-      const InputValue v = count == 3 ? InputValue(Eigen::Vector3d(xs[0], xs[1], xs[2]))
-                                      : InputValue(Eigen::Vector2d(xs[0], xs[1]));
-      if (std::string why = rule.broken(v); !why.empty()) return why;
-      return v;
-    }
-    case InputKind::kChoice: {
-      if (std::string why = rule.broken(InputValue(text)); !why.empty()) return why;
-      return InputValue(text);
-    }
-    case InputKind::kFlag:
-      if (text.empty() || text == "on" || text == "true" || text == "1") return InputValue(true);
-      if (text == "off" || text == "false" || text == "0") return InputValue(false);
-      return "is a switch: on or off (got '" + quoted_text(text) + "')";
-  }
-  return std::string("cannot be read");
-}
-
 std::optional<Refusal> Session::set_text(std::size_t i, const std::string& text) {
   const InputRule& r = rule(i);
-  const auto parsed = parse_input(r, text);
+  const auto parsed = read_input(r, text);
   if (const auto* why = std::get_if<std::string>(&parsed)) {
     return Refusal{r.flag() + ": " + *why, {r.flag()}};
   }

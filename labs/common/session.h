@@ -69,7 +69,7 @@ class Session {
   /// rule, or the inputs together break one of the lab's.
   virtual std::optional<Refusal> set(std::size_t i, const InputValue& value) = 0;
   /// Sets input i from its text, as typed in a field or given on the command line
-  /// (parse_input), and computes; refused as set() is, or when the text is not a value.
+  /// (read_input), and computes; refused as set() is, or when the text is not a value.
   std::optional<Refusal> set_text(std::size_t i, const std::string& text);
   /// Back to the textbook's example.
   virtual void reset() = 0;
@@ -121,7 +121,6 @@ std::string argument_text(const InputValue& value);
 /// The value of `text` typed for an input of `rule` (its numbers, a word, "on"/"off" for a
 /// switch; "" is no value for an optional input), or the rule the text breaks, worded as
 /// the command line words it.
-std::variant<InputValue, std::string> parse_input(const InputRule& rule, const std::string& text);
 
 namespace detail {
 

@@ -1,0 +1,178 @@
+// One reader of user text: the same text given to an input on the command line (the lab
+// run as a process) and typed into a live session (what the explorer's fields and its
+// --script call) gets the same verdict, and where refused the same message. Texts: numbers
+// as people and programs spell them, spaces, overflow and underflow, infinities, vectors
+// and pairs with too few or many parts, words, and bytes that are not UTF-8.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "common/registry.h"
+#include "rigid/support/text.h"
+
+namespace {
+
+struct Verdict {
+  bool accepted = false;
+  std::string message;  ///< "--flag: rule" where refused
+};
+
+// The lab as a process with exactly these arguments: its verdict and its one error line
+// less the "LAB: error: " in front.
+Verdict command_line(const std::string& lab, const std::vector<std::string>& args) {
+  int err[2];
+  REQUIRE(::pipe(err) == 0);
+  const std::string path = std::string(RIGID_LAB_DIR) + "/" + lab;
+  const pid_t pid = ::fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    ::dup2(err[1], 2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::close(err[0]);
+    std::vector<char*> argv{const_cast<char*>(path.c_str())};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(path.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ::close(err[1]);
+  std::string text;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(err[0], buffer, sizeof buffer)) > 0;) text.append(buffer, n);
+  ::close(err[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  Verdict v;
+  v.accepted = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  const std::string prefix = lab + ": error: ";
+  if (!v.accepted && text.rfind(prefix, 0) == 0) {
+    v.message = text.substr(prefix.size());
+    if (!v.message.empty() && v.message.back() == '\n') v.message.pop_back();
+  } else if (!v.accepted) {
+    v.message = "(not one error line) " + text;
+  }
+  return v;
+}
+
+Verdict live(const std::string& lab, const std::string& flag, const std::string& text) {
+  for (const auto& entry : rigid::lab::all_labs()) {
+    if (entry.name != lab) continue;
+    const auto session = entry.make();
+    const auto refusal = session->set_text(session->find(flag), text);
+    // as the command line's terminal line shows it (invalid UTF-8 as \xNN)
+    return refusal ? Verdict{false, rigid::support::terminal_safe(refusal->message)}
+                   : Verdict{true, {}};
+  }
+  FAIL("no lab " << lab);
+  return {};
+}
+
+// The texts tried on a number input, a vector, a pair and a bounded angle.
+std::vector<std::string> number_texts() {
+  return {"2",
+          "2.5",
+          "+2",
+          "-2",
+          "0",
+          "-0",
+          "2e0",
+          "2E0",
+          "2.",
+          ".5",
+          "0x10",
+          "0x1p-3",
+          "1e-60",
+          "1e60",
+          "1e61",
+          "1e-61",
+          "1e-400",
+          "1e400",
+          "-1e400",
+          "4.9e-324",
+          "1.8e308",
+          "1e308",
+          "inf",
+          "-inf",
+          "INF",
+          "infinity",
+          "nan",
+          "NaN",
+          "-nan",
+          "",
+          " ",
+          "2 ",
+          " 2",
+          "\t2",
+          "2\t",
+          " 2 ",
+          "2 3",
+          "2,3",
+          "2x",
+          "x2",
+          "two",
+          "--",
+          "-",
+          "+",
+          "e5",
+          "1e",
+          "1e+",
+          "1..2",
+          "1.2.3",
+          "0b101",
+          "1_000",
+          "1'000",
+          "١٢",
+          "２",
+          "\xff",
+          "\xc3\x28",
+          "2\xff",
+          std::string(300, '9'),
+          "0." + std::string(400, '0') + "1",
+          std::string(50, '1') + "e-90"};
+}
+
+std::vector<std::string> vector_texts() {
+  return {"1,2,3",     "1, 2, 3",    " 1,2,3 ",  "1,2",     "1,2,3,4",  "1,,3",
+          ",2,3",      "1,2,",       "1;2;3",    "1 2 3",   "0,0,0",    "1,2,x",
+          "1,2,1e400", "1,2,1e-400", "1,2,inf",  "nan,2,3", "",         " ",
+          "1,2,3,",    "x",          "1,2,\xff", "-1,2,3",  "1e60,1,1", "1e61,1,1"};
+}
+
+std::vector<std::string> pair_texts() {
+  return {"1,1.5", "1, 1.5", "1",       "1,1.5,2",  ",1", "1,", "1,x",
+          "0,1",   "-1,1",   "1,1e400", "1e-400,1", "",   "x"};
+}
+
+void same_everywhere(const std::string& lab, const std::string& flag,
+                     const std::vector<std::string>& texts, int& disagreements) {
+  for (const std::string& text : texts) {
+    const Verdict cli = command_line(lab, {flag, text, "--json", "--quiet"});
+    const Verdict session = live(lab, flag, text);
+    INFO(lab << " " << flag << " '" << text << "': command line "
+             << (cli.accepted ? "accepts" : "refuses: " + cli.message) << "; live "
+             << (session.accepted ? "accepts" : "refuses: " + session.message));
+    CHECK(cli.accepted == session.accepted);
+    if (!cli.accepted && !session.accepted) CHECK(cli.message == session.message);
+    disagreements +=
+        cli.accepted != session.accepted || (!cli.accepted && cli.message != session.message);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("one reader: the command line and a live session read the same text the same way") {
+  int disagreements = 0;
+  same_everywhere("poinsot", "--mass", number_texts(), disagreements);
+  same_everywhere("top_nutation", "--theta0-deg", number_texts(), disagreements);
+  same_everywhere("top_nutation", "--phidot0", number_texts(), disagreements);
+  same_everywhere("poinsot", "--omega", vector_texts(), disagreements);
+  same_everywhere("top_nutation", "--inertia", pair_texts(), disagreements);
+  same_everywhere("lamina_tensor", "--axis", {"diagonal", "x", "1,1,0", "Diagonal", ""},
+                  disagreements);
+  CHECK(disagreements == 0);
+}
