@@ -131,7 +131,7 @@ double period_condition(const HeavyTopExact& motion) {
             s.theta_deg ? std::optional(*s.theta_deg * (side ? 1 + h : 1 - h)) : std::nullopt;
       try {
         T_at[side] = HeavyTopExact(motion.top(), t).nutation_period();
-      } catch (const std::invalid_argument&) {
+      } catch (const std::exception&) {
         T_at[side] = T;  // a step past a rule (theta0 at 180): that side left out
       }
     }
