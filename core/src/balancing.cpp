@@ -12,10 +12,6 @@ namespace rigid {
 namespace {
 
 // eq. 60's limit cancels b cos theta - a sin theta to the angle's last bits: in Quad
-// pi / 180 as deg_to_rad multiplies by it, and what that double leaves out (mpmath).
-constexpr double kRadPerDeg = kPi / 180.0;
-constexpr double kRadPerDegLow = 2.9486522708701687e-19;
-
 struct SinCos {
   Quad s, c;
 };
@@ -37,16 +33,16 @@ Quad sin_minus_x_cos(const Quad& x) {
   return sum;
 }
 
-// The tilt as the wheel holds it, tilt + tilt_low, with its sine and cosine; refused
-// outside [0, pi/2] (eq. 60 has no tilt beyond).
+// The tilt as the wheel holds it (from its degrees where given), with its sine and cosine;
+// refused outside [0, pi/2] (eq. 60 has no tilt beyond).
 struct Tilt {
   Quad theta;
   SinCos sc;
 };
 
 Tilt tilt_of(const CrookedWheel& wheel) {
-  const Quad theta = Quad(wheel.tilt) + Quad(wheel.tilt_low);
-  if (!(theta >= 0 && theta <= Quad(kPi / 2))) {
+  const Quad theta = wheel.tilt_deg ? quad_radians(*wheel.tilt_deg) : Quad(wheel.tilt);
+  if (!(theta >= 0 && theta <= boost::math::constants::half_pi<Quad>())) {
     throw std::invalid_argument("the tilt must lie in [0, 90] deg");
   }
   return {theta, sin_cos(theta)};
@@ -86,9 +82,8 @@ Quad misalignment_denominator(const CrookedWheel& wheel, Quad m0, const SinCos& 
 }  // namespace
 
 void CrookedWheel::set_tilt_deg(double deg) {
-  tilt = deg * kRadPerDeg;
-  // the product's rounding, exactly (fma), and the constant's own
-  tilt_low = std::fma(deg, kRadPerDeg, -tilt) + deg * kRadPerDegLow;
+  tilt = deg_to_rad(deg);
+  tilt_deg = deg;
 }
 
 Body wheel_body(const CrookedWheel& wheel, double m0) {

@@ -2,7 +2,6 @@
 #include "rigid/heavy_top.h"
 
 #include <algorithm>
-#include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/ellint_rc.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
@@ -59,8 +58,7 @@ struct StartTerms {
 };
 
 StartTerms start_terms(const HeavyTop& top, const TopStart& s) {
-  const Quad pi = boost::math::constants::pi<Quad>();
-  const Quad theta = s.theta_deg ? Quad(*s.theta_deg) * pi / 180 : Quad(s.theta);
+  const Quad theta = s.theta_deg ? quad_radians(*s.theta_deg) : Quad(s.theta);
   const Quad st = sin(theta), u0 = cos(theta), half = sin(theta / 2), half_c = cos(theta / 2);
   const Quad s2 = st * st, omu0 = 2 * half * half, opu0 = 2 * half_c * half_c;
   const Quad I = top.I, a = Quad(top.Is) * s.spin / I, beta = 2 * Quad(top.mgl) / I;

@@ -104,8 +104,8 @@ void report_errata(Report& report, const Inputs& in, bool example) {
          "2 pi/Omega = 305 days ... yielding a period of 0.997 days",
          fmt::format("the two periods use two different days. With omega = 2 pi per sidereal "
                      "day, 2 pi/Omega = {:.4g} d and 2 pi/phi_dot = {:.4g} d; with omega = 2 pi "
-                     "per solar day (86400 s), they are {:.4g} d and {:.4g} d. 305 needs the "
-                     "sidereal day, 0.997 the solar one.",
+                     "per solar day (86400 s), they are {:.4g} d and {:.4g} d. The text's printed "
+                     "305 needs the sidereal day, its printed 0.997 the solar one.",
                      p.body_period / kSolarDay, p.space_period / kSolarDay,
                      p.body_period / kSolarDay * day_ratio,
                      p.space_period / kSolarDay * day_ratio)});

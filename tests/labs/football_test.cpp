@@ -435,7 +435,9 @@ TEST_CASE("football: Feynman's ratio for any thrown plate, the Earth's days for 
   CHECK(contains(said.correction,
                  fmt::format("solar day (86400 s), they are {:.4g} d and {:.4g} d.",
                              body_days * solar / sidereal, space_days * solar / sidereal)));
-  CHECK(contains(said.correction, "305 needs the sidereal day, 0.997 the solar one."));
+  CHECK(
+      contains(said.correction,
+               "The text's printed 305 needs the sidereal day, its printed 0.997 the solar one."));
   // Beside it, not an erratum: the observed wobble and why it is longer than the rigid one.
   const std::string chandler =
       "The observed free wobble of the Earth, the Chandler wobble, has a period of about 433 "

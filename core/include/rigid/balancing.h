@@ -9,9 +9,11 @@
 // (a cos theta + b sin theta)): linear in theta as theta -> 0 (eq. 61), and unbounded as
 // theta -> atan(b/a), the direction of the masses' own line, beyond which no mass reaches.
 // Near that limit b cos theta - a sin theta cancels, and the angle a double holds in
-// radians is too coarse: the tilt carries what it leaves out (tilt_low, set from degrees),
-// and eq. 60 and the misalignments are formed in quadruple precision.
+// radians is too coarse: the tilt is taken from its degrees where given (tilt_deg, as a
+// top's theta0 is), and eq. 60 and the misalignments are formed in quadruple precision.
 #pragma once
+
+#include <optional>
 
 #include "rigid/inertia.h"
 
@@ -23,10 +25,11 @@ struct CrookedWheel {
   double radius = 0.18;  ///< disk radius a
   double offset = 0.05;  ///< distance b of each balancing mass from the disk's plane
   double tilt = 0.0;     ///< angle theta between the axle and the symmetry axis
-  /// What `tilt` rounds off the angle meant: theta = tilt + tilt_low to about 1e-32.
-  double tilt_low = 0.0;
+  /// The tilt as given in degrees, where it was: eq. 60 then takes the angle meant, where
+  /// `tilt` keeps it only to ulp(theta) (at the limit atan(b/a), too coarse for the gap).
+  std::optional<double> tilt_deg = std::nullopt;
 
-  /// Sets tilt and tilt_low from an angle in degrees (tilt is then deg_to_rad(deg)).
+  /// Sets tilt (deg_to_rad(deg)) and tilt_deg from an angle in degrees.
   void set_tilt_deg(double deg);
 };
 
