@@ -692,4 +692,53 @@ double HeavyTopExact::theta_max() const {
   return regime_ == TopRegime::kSleeping ? 0.0 : at(0.0, 1.0).theta;
 }
 
+std::vector<HeavyTopExact::UndecidedSide> HeavyTopExact::undecided_sides() const {
+  std::vector<UndecidedSide> sides;
+  if (!std::isfinite(period_)) return sides;
+  for (const bool upright : {true, false}) {
+    const double value = upright ? b_minus_a_ : b_plus_a_;
+    const double terms = std::abs(d0_) + std::abs(a_) * (upright ? one_minus_u0_ : one_plus_u0_);
+    if (std::abs(value) > 1e3 * kEps * terms) continue;
+    sides.push_back({upright, upright ? theta_min() : kPi - theta_max(), terms,
+                     mean_phi_dot_ - std::copysign(2 * kPi, value) / period_});
+  }
+  return sides;
+}
+
+double HeavyTopExact::fastest_rate() const {
+  const double E_prime = energy_ - 0.5 * top_.Is * start_.spin * start_.spin;
+  return std::abs(start_.spin) + std::sqrt(2 * std::max(E_prime + top_.mgl, 0.0) / top_.I);
+}
+
+double nutation_period_condition(const HeavyTopExact& motion) {
+  const double T = motion.nutation_period();
+  if (!std::isfinite(T)) return std::numeric_limits<double>::infinity();
+  // A relative step of 1e-7, or 1e-3 of k'^2 near the separatrix, so that no step carries
+  // the start across it (T to ~1e-15: the number to ~1e-15 / h, read where it is large).
+  const double kp2 = (motion.u3() - motion.u2()) / (motion.u3() - motion.u1());
+  const double h = std::min(1e-7, 1e-3 * std::max(kp2, 1e-12));
+  double worst = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const auto input = [k](TopStart& s) -> double& {
+      return k == 0 ? s.theta : k == 1 ? s.theta_dot : k == 2 ? s.phi_dot : s.spin;
+    };
+    TopStart s = motion.start();
+    if (input(s) == 0.0) continue;
+    double T_at[2];
+    for (const int side : {0, 1}) {
+      const double scale = side ? 1 + h : 1 - h;
+      TopStart t = s;
+      input(t) *= scale;
+      if (k == 0 && s.theta_deg) t.theta_deg = *s.theta_deg * scale;
+      try {
+        T_at[side] = HeavyTopExact(motion.top(), t).nutation_period();
+      } catch (const std::exception&) {
+        T_at[side] = T;  // a step past a rule (theta0 at 180): that side left out
+      }
+    }
+    worst = std::max(worst, std::abs(T_at[1] - T_at[0]) / (2 * h * T));
+  }
+  return std::isfinite(worst) ? worst : std::numeric_limits<double>::infinity();
+}
+
 }  // namespace rigid

@@ -108,38 +108,6 @@ std::pair<std::string, std::string> distinct_degrees(double lo_rad, double hi_ra
   return {fmt::format("{:.17g}", lo), fmt::format("{:.17g}", hi)};
 }
 
-// The period's condition number: the largest |d ln T / d ln x| over the start's theta0
-// and rates x, by central differences at a relative step of 1e-7, or less near the
-// separatrix, where a step must not carry the start across it: 1e-3 of k'^2 = (u3 - u2) /
-// (u3 - u1) (T to ~1e-15: the number to 1e-15 / h, read where it is large). It grows as
-// 1 / k'^2 there: a top started to just reach upright (u3 - 1 = 7.7e-9) has 3.6e8.
-double period_condition(const HeavyTopExact& motion) {
-  const double kp2 = (motion.u3() - motion.u2()) / (motion.u3() - motion.u1());
-  const double h = std::min(1e-7, 1e-3 * std::max(kp2, 1e-12)), T = motion.nutation_period();
-  double worst = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    TopStart s = motion.start();
-    double* x = k == 0 ? &s.theta : k == 1 ? &s.theta_dot : k == 2 ? &s.phi_dot : &s.spin;
-    if (*x == 0.0) continue;
-    double T_at[2];
-    for (const int side : {0, 1}) {
-      TopStart t = s;
-      double* y = k == 0 ? &t.theta : k == 1 ? &t.theta_dot : k == 2 ? &t.phi_dot : &t.spin;
-      *y = *x * (side ? 1 + h : 1 - h);
-      if (k == 0)
-        t.theta_deg =
-            s.theta_deg ? std::optional(*s.theta_deg * (side ? 1 + h : 1 - h)) : std::nullopt;
-      try {
-        T_at[side] = HeavyTopExact(motion.top(), t).nutation_period();
-      } catch (const std::exception&) {
-        T_at[side] = T;  // a step past a rule (theta0 at 180): that side left out
-      }
-    }
-    worst = std::max(worst, std::abs(T_at[1] - T_at[0]) / (2 * h * T));
-  }
-  return std::isfinite(worst) ? worst : std::numeric_limits<double>::infinity();
-}
-
 // Why the mean precession is undefined where the axis goes through the vertical: phi is
 // no coordinate there and turns by pi at once, either way; a path a hair to one side or
 // the other takes one of the two limits.
@@ -157,24 +125,17 @@ std::string undefined_mean(const HeavyTopExact& motion) {
       limits[0], limits[1]);
 }
 
-// A turning circle a hair from a pole: which side of the vertical the axis passes is the
-// sign of b -+ a, and where that is below the rounding of the inputs that form it (each
-// to half an ulp), the last digit of an input decides the path's name and its mean
-// precession, which moves by 2 pi / period between the two sides.
+// A turning circle a hair from a pole whose side the inputs' last digits decide (core's
+// undecided_sides): said, with the other side's mean precession.
 void report_pass_side(Report& report, const HeavyTopExact& motion) {
-  for (const auto& [value, pole] :
-       {std::pair{motion.b_minus_a(), "upright"}, {motion.b_plus_a(), "the bottom"}}) {
-    const double terms = motion.pole_terms(pole[0] == 'u');
-    if (std::abs(value) > 1e3 * std::numeric_limits<double>::epsilon() * terms) continue;
-    if (!std::isfinite(motion.nutation_period())) continue;
+  for (const HeavyTopExact::UndecidedSide& side : motion.undecided_sides()) {
+    const char* sign = side.upright ? "-" : "+";
     report.note(fmt::format(
         "the axis passes {:.3g} deg from {}, on the side the sign of b {} a decides; b {} a is "
         "within 1e3 ulps of the terms that form it ({:.3g}), so an input's last digits decide "
         "the side: on the other, the mean precession is {:.6g} rad/s, not {:.6g}",
-        rad_to_deg(pole[0] == 'u' ? motion.theta_min() : kPi - motion.theta_max()), pole,
-        pole[0] == 'u' ? "-" : "+", pole[0] == 'u' ? "-" : "+", terms,
-        motion.mean_precession_rate() - std::copysign(2 * kPi, value) / motion.nutation_period(),
-        motion.mean_precession_rate()));
+        rad_to_deg(side.distance), side.upright ? "upright" : "the bottom", sign, sign, side.terms,
+        side.other_mean, motion.mean_precession_rate()));
   }
 }
 
@@ -241,7 +202,7 @@ void report_section_9(Report& report, const TopStart& start) {
     if (std::isfinite(motion.nutation_period())) {
       report.result("nutation_period_s", "nutation period 2 K(k) / lambda",
                     motion.nutation_period(), "s");
-      const double condition = period_condition(motion);
+      const double condition = nutation_period_condition(motion);
       report.result_json("nutation_period_condition", condition, "");
       if (condition > 1e3) {
         report.remark(fmt::format(
@@ -454,13 +415,10 @@ Report compute(const Inputs& in) {
                      : motion.nutation_period();
   report.t_end = end_time(in.t_end, in.periods, report.scale, 3.0 * report.scale);
   // Every method runs at --step and --tolerance in the comparison, so neither is unused.
-  // The step also from the fastest turn: omega_3 = S, and the axis's own speed, at most
-  // sqrt(2 (E' + m g l) / I) where it is lowest. Near S_min a top released a hair from
-  // upright nods once in minutes (period / 2000 = 33 s) while it spins 50 times a second.
-  const double E_prime = motion.energy() - 0.5 * report.top.Is * S * S;
-  const double fastest =
-      2 * kPi /
-      (std::abs(S) + std::sqrt(2 * std::max(E_prime + report.top.mgl, 0.0) / report.top.I));
+  // The step also from the fastest turn (the spin and the axis's own speed): near S_min a
+  // top released a hair from upright nods once in minutes (period / 2000 = 33 s) while it
+  // spins 50 times a second.
+  const double fastest = 2 * kPi / motion.fastest_rate();
   const RunPlan plan =
       plan_run(report, in.integration, /*compared=*/true, report.t_end, report.scale, fastest);
   report.method = in.integration.method;

@@ -31,6 +31,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "rigid/free_body_exact.h"
 
@@ -133,6 +134,14 @@ Eigen::Vector3d euler_omega_body(const TopAngles& a);
 /// (euler_zxz), so phi_dot takes the whole turn, w3 (or -w3), and psi_dot is 0.
 TopAngles euler_angles_and_rates(const Eigen::Quaterniond& q, const Eigen::Vector3d& omega_body);
 
+class HeavyTopExact;
+
+/// The nutation period's condition number: the largest |d ln T / d ln x| over the start's
+/// theta0 and rates x, by central differences of the exact motion (infinite on the
+/// separatrix). Near it it grows as 1 / k'^2: a top started to just reach upright (u3 - 1 =
+/// 7.7e-9) has 4.6e6, where the text's top has 1.6.
+double nutation_period_condition(const HeavyTopExact& motion);
+
 /// The exact motion of the heavy symmetric top from a start.
 ///
 /// The quantities that decide the motion near a pole or the separatrix (1 -+ cos theta0,
@@ -182,16 +191,21 @@ class HeavyTopExact {
   const std::array<double, 2>& mean_precession_limits() const { return mean_limits_; }
   /// The regime of the symmetry axis's path.
   TopRegime regime() const { return regime_; }
-  /// phi_dot's numerator b - a u at the poles, b - a (u = 1) and b + a (u = -1), rad/s: its
-  /// sign is the side of the vertical a turning circle near a pole passes on. Each is a
-  /// difference of terms of size pole_terms(north): within the inputs' rounding of it, their
-  /// last digits decide that side.
-  double b_minus_a() const { return b_minus_a_; }
-  double b_plus_a() const { return b_plus_a_; }
-  /// The size of the terms b - a (north) or b + a is formed from, |d0| + |a| (1 -+ u0).
-  double pole_terms(bool north) const {
-    return std::abs(d0_) + std::abs(a_) * (north ? one_minus_u0_ : one_plus_u0_);
-  }
+  /// A turning circle a hair from a pole, on the side of the vertical the sign of b -+ a
+  /// (phi_dot's numerator b - a u at u = +-1) decides, where b -+ a is within 1e3 ulps of
+  /// the terms it is formed from: an input's last digits decide the side, and with it the
+  /// path's name and its mean precession, which moves by 2 pi / period between the sides.
+  struct UndecidedSide {
+    bool upright = true;      ///< the pole passed: upright (b - a), or the bottom (b + a)
+    double distance = 0.0;    ///< the turning circle's angle from that pole, rad
+    double terms = 0.0;       ///< the size of the terms b -+ a is formed from, rad/s
+    double other_mean = 0.0;  ///< the mean precession on the other side, rad/s
+  };
+  /// Each pole whose side is undecided so (none where the period is infinite).
+  std::vector<UndecidedSide> undecided_sides() const;
+  /// |S| plus the axis's greatest speed on the sphere, sqrt(2 (E' + m g l) / I), rad/s: the
+  /// motion's fastest rate, which a step must resolve whatever the nutation period.
+  double fastest_rate() const;
   /// phi_dot at the turning circles theta_max (u1) and theta_min (u2), rad/s.
   double phi_dot_at_u1() const { return phi_dot_u1_; }
   double phi_dot_at_u2() const { return phi_dot_u2_; }
