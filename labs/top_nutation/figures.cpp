@@ -42,6 +42,18 @@ double effective_potential(const HeavyTopExact& m, double theta) {
   return num * num / (2 * top.I * s * s) + top.mgl * std::cos(theta);
 }
 
+// Where a table under the tip would catch the disk's rim, as a legend entry rather than a
+// line label: the legend keeps clear of it and of the data, where a label had sat on the
+// curve.
+void add_table_line(render::Panel& panel, std::vector<double> x, std::vector<double> y,
+                    double table) {
+  render::Series& rim = panel.add_line(
+      std::move(x), std::move(y), fmt::format("rim on a table, {:.4g}\\deg", rad_to_deg(table)));
+  rim.color = render::kGray;
+  rim.width = 2.5;
+  rim.dash = render::Dash::kDashed;
+}
+
 // V(theta) with E' = E - Is S^2 / 2, the turning points where they meet, and the
 // minimum: steady precession (the text's Figure 9.8.2, for this top).
 render::Plot2D potential_plot(const HeavyTopExact& m, std::optional<double> table) {
@@ -88,14 +100,7 @@ render::Plot2D potential_plot(const HeavyTopExact& m, std::optional<double> tabl
   panel.series.back().color = render::kBlack;
   // where a table under the tip would catch the disk's rim, if in view
   if (table && *table > a && *table < b) {
-    // a legend entry, not a line label: the legend then keeps clear of the line and the
-    // minimum's marker alike
-    render::Series& rim =
-        panel.add_line({rad_to_deg(*table), rad_to_deg(*table)}, {y_bottom, y_top},
-                       fmt::format("rim on a table, {:.4g}\\deg", rad_to_deg(*table)));
-    rim.color = render::kGray;
-    rim.width = 2.5;
-    rim.dash = render::Dash::kDashed;
+    add_table_line(panel, {rad_to_deg(*table), rad_to_deg(*table)}, {y_bottom, y_top}, *table);
   }
   return plot;
 }
@@ -286,8 +291,7 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
   top.add_ref_line(rad_to_deg(motion.theta_max()), false, "\\theta_{max}");
   // the tilt where a table under the tip would catch the rim, where the axis goes past it
   if (table && *table > motion.theta_min() && *table < motion.theta_max()) {
-    top.add_ref_line(rad_to_deg(*table), false,
-                     fmt::format("rim on a table, {:.4g}\\deg", rad_to_deg(*table)));
+    add_table_line(top, {0.0, t_end}, {rad_to_deg(*table), rad_to_deg(*table)}, *table);
   }
   render::Panel& bottom = plot.panel(1, 0);
   bottom.x.label = "t (s)";
