@@ -133,3 +133,16 @@ TEST_CASE("balancing: a tilt no mass can reach throws") {
   wheel.tilt = deg_to_rad(40.0);
   CHECK_THROWS_AS(balance_mass_exact(wheel), std::invalid_argument);
 }
+
+TEST_CASE("balancing: a tilt changed in radians after set_tilt_deg is the tilt taken") {
+  // The degrees are the angle's only while the radians are theirs (quad_angle): a copy of a
+  // wheel swept in radians, as the mass figure does, must not keep the first tilt.
+  rigid::CrookedWheel from_degrees;
+  from_degrees.set_tilt_deg(5.0);
+  rigid::CrookedWheel swept = from_degrees;
+  swept.tilt = rigid::deg_to_rad(10.0);
+  rigid::CrookedWheel ten;
+  ten.set_tilt_deg(10.0);
+  CHECK(rigid::balance_mass_exact(swept) == rigid::balance_mass_exact(ten));
+  CHECK(rigid::balance_mass_exact(swept) > 1.5 * rigid::balance_mass_exact(from_degrees));
+}

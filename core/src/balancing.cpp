@@ -41,7 +41,7 @@ struct Tilt {
 };
 
 Tilt tilt_of(const CrookedWheel& wheel) {
-  const Quad theta = wheel.tilt_deg ? quad_radians(*wheel.tilt_deg) : Quad(wheel.tilt);
+  const Quad theta = quad_angle(wheel.tilt, wheel.tilt_deg);
   if (!(theta >= 0 && theta <= boost::math::constants::half_pi<Quad>())) {
     throw std::invalid_argument("the tilt must lie in [0, 90] deg");
   }

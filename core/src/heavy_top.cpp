@@ -58,7 +58,7 @@ struct StartTerms {
 };
 
 StartTerms start_terms(const HeavyTop& top, const TopStart& s) {
-  const Quad theta = s.theta_deg ? quad_radians(*s.theta_deg) : Quad(s.theta);
+  const Quad theta = quad_angle(s.theta, s.theta_deg);
   const Quad st = sin(theta), u0 = cos(theta), half = sin(theta / 2), half_c = cos(theta / 2);
   const Quad s2 = st * st, omu0 = 2 * half * half, opu0 = 2 * half_c * half_c;
   const Quad I = top.I, a = Quad(top.Is) * s.spin / I, beta = 2 * Quad(top.mgl) / I;

@@ -498,3 +498,15 @@ TEST_CASE("heavy top: the Euler rates at either pole take that pole's sign") {
   CHECK(down.phi_dot == -2.5);
   CHECK(down.psi_dot == 0.0);
 }
+
+TEST_CASE("heavy top: a theta changed after theta_deg was set is the theta taken") {
+  // As the paths figure does for an upright start: a hair off, in radians.
+  rigid::TopStart upright{0.0, 0.0, 0.0, 52.36};
+  upright.theta_deg = 0.0;
+  rigid::TopStart off = upright;
+  off.theta = 1e-3;
+  const rigid::HeavyTopExact moved(kText, off), plain(kText, {1e-3, 0.0, 0.0, 52.36});
+  CHECK(moved.regime() == plain.regime());
+  CHECK(moved.theta_max() == plain.theta_max());
+  CHECK(rigid::HeavyTopExact(kText, upright).regime() == rigid::TopRegime::kSleeping);
+}

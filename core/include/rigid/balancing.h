@@ -27,6 +27,7 @@ struct CrookedWheel {
   double tilt = 0.0;     ///< angle theta between the axle and the symmetry axis
   /// The tilt as given in degrees, where it was: eq. 60 then takes the angle meant, where
   /// `tilt` keeps it only to ulp(theta) (at the limit atan(b/a), too coarse for the gap).
+  /// Taken only while `tilt` is deg_to_rad of it (quad_angle): change tilt, and tilt rules.
   std::optional<double> tilt_deg = std::nullopt;
 
   /// Sets tilt (deg_to_rad(deg)) and tilt_deg from an angle in degrees.

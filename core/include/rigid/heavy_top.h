@@ -80,7 +80,8 @@ struct TopStart {
   double psi = 0.0;        ///< rad
   /// theta as given in degrees, where it was: sin and cos of theta, and 1 - cos and
   /// 1 + cos near a pole, are then those of the angle meant, where the radians keep
-  /// it only to ulp(pi) (at 179.9999999 deg, 1 + cos theta to 1e-7 of itself).
+  /// it only to ulp(pi) (at 179.9999999 deg, 1 + cos theta to 1e-7 of itself). Taken
+  /// only while theta is deg_to_rad of it (quad_angle): change theta, and theta rules.
   std::optional<double> theta_deg = std::nullopt;
 };
 
