@@ -139,7 +139,13 @@ RegimePaths regime_paths(const HeavyTopExact& m) {
       out.contrasts.push_back(phi_dot0);
     }
   }
-  if (out.paths.front().start.theta == 0.0) out.paths.front().start.theta = 1e-3;
+  // a top sleeping upright has no path: this run drawn a hair off (one through the pole
+  // from upright, theta_dot0 != 0, has one, and keeps its start and its name)
+  if (m.regime() == TopRegime::kSleeping) {
+    out.paths.front().start.theta = 1e-3;
+    out.paths.front().name =
+        fmt::format("this run sleeps; {:.3g}\\deg off upright", rad_to_deg(1e-3));
+  }
   return out;
 }
 
