@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """The explorer's speed, every lab, at the window size a student opens (1280x720).
 
 Each lab's explorer runs under xvfb-run (Mesa's llvmpipe, this machine's cores)

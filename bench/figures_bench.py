@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """rigidlab's side of the figure-speed benchmark.
 
 Runs the labs as a user does and times them from outside and inside:

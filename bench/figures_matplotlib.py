@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """matplotlib peer for the figure-speed benchmark.
 
 Draws the same figures as the labs (same data or data of the same size and

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """SciPy peers for the heavy-top work-precision benchmark.
 
 Integrates the same 7-dimensional system as bench_heavy_top (Euler's equations

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """SciPy peers for the free-body work-precision benchmark.
 
 Integrates the same 7-dimensional system as the C++ bench (Euler's equations

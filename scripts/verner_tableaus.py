@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Writes core/include/rigid/verner_tableaus.h from Verner's published coefficients.
 
 Source: J. H. Verner's "most efficient" pairs 6(5), 7(6), 8(7) and 9(8) with their

@@ -256,7 +256,7 @@ class InputTable {
     auto vec = f.get;
     auto set_vec = f.set;
     f.get = [vec, word](const In& in) -> InputValue {
-      const std::string& w = access(const_cast<In&>(in), word);
+      const std::string& w = access(in, word);
       return w.empty() ? vec(in) : InputValue(w);
     };
     f.set = [set_vec, word](In& in, const InputValue& v) {
@@ -285,8 +285,7 @@ class InputTable {
   void include(const InputTable<Part>& part, Field field) {
     for (const InputField<Part>& p : part.fields()) {
       fields_.push_back(
-          {p.rule,
-           [get = p.get, field](const In& in) { return get(access(const_cast<In&>(in), field)); },
+          {p.rule, [get = p.get, field](const In& in) { return get(access(in, field)); },
            [set = p.set, field](In& in, const InputValue& v) { set(access(in, field), v); }});
     }
   }
@@ -301,8 +300,11 @@ class InputTable {
   }
 
  private:
-  template <class Field>
-  static decltype(auto) access(In& in, Field field) {
+  // The field of `in` that `field` (a member pointer, or a callable taking `in`) names,
+  // as const as `in` is: a getter reads through a const In, a setter writes through an In.
+  template <class Self, class Field>
+  static decltype(auto) access(Self& in, Field field) {
+    static_assert(std::is_same_v<std::remove_const_t<Self>, In>);
     if constexpr (std::is_member_object_pointer_v<Field>) {
       return (in.*field);
     } else {
@@ -314,7 +316,7 @@ class InputTable {
     using Stored = std::decay_t<decltype(access(std::declval<In&>(), field))>;
     InputField<In> f{InputRule(kind, flag, help), {}, {}};
     f.get = [field](const In& in) -> InputValue {
-      const Stored& value = access(const_cast<In&>(in), field);
+      const Stored& value = access(in, field);
       if constexpr (std::is_same_v<Stored, std::optional<T>>) {
         return value ? InputValue(*value) : InputValue();
       } else {
