@@ -3,7 +3,7 @@
 // (TARGET.rigidlab-tmp-PID-RANDOM: a marker, the process id and 16 random hex
 // digits, within the file system's name limit), is flushed and checked, and is
 // renamed into place; a failure removes the temporary. PNG figures, the labs'
-// CSV and animations use it.
+// CSV and animations use it, and every text file a program writes (write_text_atomically).
 //
 // A FileTransaction makes a run's files land together or not at all: while one
 // lives, each file stays at its temporary name until commit() renames them all;
@@ -18,6 +18,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 
 namespace rigid::render {
@@ -26,6 +27,13 @@ namespace rigid::render {
 /// on any failure removes the temporary and throws std::runtime_error "cannot write 'PATH': REASON"
 /// (one line).
 void write_file_atomically(const std::string& path, const std::function<void(std::FILE*)>& write);
+
+/// Writes `text` as the whole file `path`, atomically as above (a short write, say on a
+/// full disk, is the stream's error and throws).
+inline void write_text_atomically(const std::string& path, std::string_view text) {
+  write_file_atomically(
+      path, [text](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+}
 
 /// What FileTransaction::commit() throws when a rename fails: the file it could not
 /// put in place, and how many of the transaction's files had landed before it.
