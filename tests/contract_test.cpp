@@ -124,7 +124,7 @@ TEST_CASE("contract: input no lab accepts exits 2 with one line naming the optio
   }
 }
 
-TEST_CASE("contract: a report that cannot be written leaves none of the run's files") {
+TEST_CASE("contract: a report that cannot be written leaves none of the run's files", "[draws]") {
   // The report is printed before the files are renamed in: a full stdout is a failed
   // run, and a failed run leaves nothing.
   namespace fs = std::filesystem;
@@ -142,7 +142,7 @@ TEST_CASE("contract: a report that cannot be written leaves none of the run's fi
   fs::remove_all(dir);
 }
 
-TEST_CASE("contract: a name no file can have is refused before any work, quoted short") {
+TEST_CASE("contract: a name no file can have is refused before any work, quoted short", "[draws]") {
   // 100,000 bytes in one name (NAME_MAX is 255), and a path of 5,000 bytes in parts
   // of 200 (PATH_MAX is 4096): refused up front, naming the option, the name cut to
   // its first 32 characters and its length.
@@ -250,7 +250,8 @@ TEST_CASE("contract: a tolerance below double precision is refused, not a crash"
   }
 }
 
-TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries are cleared") {
+TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries are cleared",
+          "[draws]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_sig_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -318,7 +319,8 @@ TEST_CASE("contract: a step asked for that is longer than the run is refused, no
   }
 }
 
-TEST_CASE("contract: a --csv that fails after the figures were drawn leaves no figure behind") {
+TEST_CASE("contract: a --csv that fails after the figures were drawn leaves no figure behind",
+          "[draws]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_txn_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -346,8 +348,8 @@ TEST_CASE("contract: a missing value is said as such, not as a vector's count") 
   CHECK(spaced.err == "poinsot: error: --omega: needs 3 numbers separated by commas (got '1')\n");
 }
 
-TEST_CASE(
-    "contract: the JSON says which version ran, the command as given and every file written") {
+TEST_CASE("contract: the JSON says which version ran, the command as given and every file written",
+          "[draws]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_prov_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -408,7 +410,8 @@ TEST_CASE("contract: a bad figure prefix or size is refused naming the option") 
   CHECK(run_lab("poinsot", "--figure-size 1920*1080").status == 2);
 }
 
-TEST_CASE("contract: two outputs in one place are refused up front, and nothing is written") {
+TEST_CASE("contract: two outputs in one place are refused up front, and nothing is written",
+          "[draws]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_same_" + std::to_string(::getpid()));
   const fs::path figures = dir / "F";
@@ -469,7 +472,8 @@ TEST_CASE("contract: any bytes in a file name: JSON stays valid, stderr and stdo
   fs::remove_all(dir);
 }
 
-TEST_CASE("contract: a figure or animation that fails lands nothing, not even the CSV or folder") {
+TEST_CASE("contract: a figure or animation that fails lands nothing, not even the CSV or folder",
+          "[draws]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_none_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -490,7 +494,8 @@ TEST_CASE("contract: a figure or animation that fails lands nothing, not even th
   fs::remove_all(dir);
 }
 
-TEST_CASE("contract: an animation with no whole frame, or beyond the work budget, is refused") {
+TEST_CASE("contract: an animation with no whole frame, or beyond the work budget, is refused",
+          "[draws]") {
   const std::pair<const char*, const char*> cases[] = {
       // 0.1 of a frame, which was stretched to a second of video
       {"--fps 1 --duration 0.1", "holds no whole frame at --fps 1"},
@@ -508,7 +513,8 @@ TEST_CASE("contract: an animation with no whole frame, or beyond the work budget
   CHECK_FALSE(std::filesystem::exists("/tmp/never.webp"));
 }
 
-TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave no temporaries") {
+TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave no temporaries",
+          "[draws]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_term_" + std::to_string(::getpid()));
   const fs::path status_file = dir.string() + ".status";
@@ -534,7 +540,8 @@ TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave n
   }
 }
 
-TEST_CASE("contract: rigidlab figures says a killed run's staging folder is left and keeps it") {
+TEST_CASE("contract: rigidlab figures says a killed run's staging folder is left and keeps it",
+          "[draws]") {
   // kill -9 leaves OUT/.rigidlab-stage-PID (no handler runs); the next run names it for
   // the user to remove, and leaves it: it did not make it
   namespace fs = std::filesystem;
@@ -555,7 +562,7 @@ TEST_CASE("contract: rigidlab figures says a killed run's staging folder is left
   fs::remove(err);
 }
 
-TEST_CASE("contract: rigidlab figures lands every lab's figures or none") {
+TEST_CASE("contract: rigidlab figures lands every lab's figures or none", "[draws]") {
   namespace fs = std::filesystem;
   const fs::path base = fs::temp_directory_path() / ("rigid_all_" + std::to_string(::getpid()));
   fs::create_directories(base);
@@ -666,4 +673,28 @@ TEST_CASE("contract: a rule that joins inputs names those of them the user gave"
     CHECK(run.one_error_line());
     CHECK(run.err.rfind(std::string("tire_balancing: error: ") + error, 0) == 0);
   }
+}
+
+// Run only where the renderer is not built (tests/CMakeLists.txt picks by tag): what would
+// draw is refused before any work, in one line naming the option and why, and nothing
+// is made.
+TEST_CASE("contract: without the renderer --figures and --animate are refused in one line",
+          "[no-renderer]") {
+  namespace fs = std::filesystem;
+  const fs::path base =
+      fs::temp_directory_path() / ("rigid_no_render_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  const std::string why =
+      ": needs the renderer, and this build has none (configured with -DRIGID_BUILD_RENDER=OFF)\n";
+  for (const std::string& lab : all_labs()) {
+    INFO(lab);
+    const auto run = run_lab(lab, "--json --figures '" + (base / "figs").string() + "'");
+    CHECK(run.status == 2);
+    CHECK(run.out.empty());
+    CHECK(run.err == lab + ": error: --figures" + why);
+  }
+  const auto run = run_lab("poinsot", "--animate '" + (base / "motion.webp").string() + "'");
+  CHECK(run.status == 2);
+  CHECK(run.err == "poinsot: error: --animate" + why);
+  CHECK_FALSE(fs::exists(base));
 }

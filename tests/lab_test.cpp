@@ -409,7 +409,8 @@ TEST_CASE("poinsot: a solid box (a phone) beside the ellipsoid, its moments by e
   CHECK(run_lab("poinsot", "--box 1,0,1").status == 2);
 }
 
-TEST_CASE("poinsot: --animate writes the motion as an MP4 or a WebP, and says so in the JSON") {
+TEST_CASE("poinsot: --animate writes the motion as an MP4 or a WebP, and says so in the JSON",
+          "[draws]") {
   const std::string dir = "/tmp/rigid_anim_test_" + std::to_string(::getpid());
   std::filesystem::create_directories(dir);
   for (const std::string ext : {"mp4", "webp"}) {
@@ -442,7 +443,7 @@ TEST_CASE("poinsot: --animate writes the motion as an MP4 or a WebP, and says so
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("poinsot: bad animation options exit 2 with one line naming the option") {
+TEST_CASE("poinsot: bad animation options exit 2 with one line naming the option", "[draws]") {
   const std::string dir = "/tmp/rigid_anim_bad_" + std::to_string(::getpid());
   std::filesystem::create_directories(dir);
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -473,7 +474,7 @@ TEST_CASE("poinsot: bad animation options exit 2 with one line naming the option
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("labs with motion: --animate writes a short animation of each") {
+TEST_CASE("labs with motion: --animate writes a short animation of each", "[draws]") {
   const std::string dir = "/tmp/rigid_anim_labs_" + std::to_string(::getpid());
   std::filesystem::create_directories(dir);
   for (const std::string lab :
@@ -505,7 +506,7 @@ TEST_CASE("labs with motion: --animate writes a short animation of each") {
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("figures of extreme valid input are drawn, not an error") {
+TEST_CASE("figures of extreme valid input are drawn, not an error", "[draws]") {
   // top_nutation at S = 1e20: theta flat at 30 deg, its axis range lo + 1 == lo (the
   // ticks threw); lamina_tensor at 1e60: |I n|^2 overflowed and L's arrow had no length
   const std::string dir = "/tmp/rigid_extreme_figures_" + std::to_string(::getpid());
