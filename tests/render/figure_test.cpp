@@ -225,7 +225,8 @@ TEST_CASE("figures: without a GL context the numbers still print, with one error
   CHECK(fs::is_empty(dir));
 }
 
-TEST_CASE("figures: --timing says where each figure's time went and it adds up to its wall time") {
+TEST_CASE(
+    "figures: --timing says where each figure's time went, every phase, within its wall time") {
   const fs::path dir = fs::path(RIGID_BINARY_DIR) / "figure-actual" / "timing";
   fs::remove_all(dir);
   const auto run = run_lab("poinsot", "--json --timing --figures " + dir.string());
@@ -245,15 +246,12 @@ TEST_CASE("figures: --timing says where each figure's time went and it adds up t
       CHECK(s > 0);  // every phase does work: a phase never timed would read 0
       sum += s;
     }
-    // The phases are laps of one clock inside the figure's own span: they add up to
-    // it, less what lies outside render::save_png() (a path check, microseconds).
+    // The phases are laps of one clock inside the figure's own span: they cannot add up
+    // to more than it. (How close they come, and that a first figure's setup costs more
+    // than a later one's, are times a busy machine moves; the bench reports them.)
     const double wall = seconds[file].get<double>();
     CHECK(sum <= wall);
-    CHECK(sum >= 0.9 * wall);
   }
-  // The first figure makes the drawing buffers; a later one of the same size reuses them.
-  const std::string first = j["figures"][0], second = j["figures"][1];
-  CHECK(phases[first]["setup"].get<double>() > phases[second]["setup"].get<double>());
 }
 
 TEST_CASE("figures: the comparison itself fails on what a reader would see changed") {

@@ -1,12 +1,11 @@
 // Poinsot's construction (sections 4, 4.1): omega lies on both ellipsoids, the
 // polhode is their intersection, the separatrix passes the intermediate axis.
-#include "rigid/poinsot.h"
-
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "rigid/free_body.h"
 #include "rigid/free_body_integrate.h"
+#include "rigid/poinsot.h"
 
 using namespace rigid;
 using Catch::Matchers::WithinAbs;

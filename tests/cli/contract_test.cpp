@@ -254,13 +254,24 @@ TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries ar
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_sig_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  // Killed by SIGTERM (or SIGINT) mid-figure: the figures are held as temporaries
-  // until the run ends, and the handler removes them; nothing lands.
-  for (const char* sig : {"TERM", "INT"}) {
-    INFO(sig);
-    run_lab("poinsot",
-            std::string("--json --figure-size 8192x8192 --figures '") + dir.string() + "'",
-            std::string("timeout -s ") + sig + " 1");
+  // Killed by SIGTERM (or SIGINT) mid-figure, once its first figure is held as a
+  // temporary (the figures are, until the run ends): the handler removes it, nothing
+  // lands, and the run ends by the signal. Poinsot draws five figures; the signal goes
+  // as soon as the first temporary shows, while the others are still to draw.
+  const auto has_temporary = [&] {
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.path().filename().string().find(".rigidlab-tmp-") != std::string::npos) return true;
+    }
+    return false;
+  };
+  for (const int sig : {SIGTERM, SIGINT}) {
+    INFO("signal " << sig);
+    rigid::test::Background lab({std::string(RIGID_LAB_DIR) + "/poinsot", "--json", "--figure-size",
+                                 "2048x2048", "--figures", dir.string()});
+    REQUIRE(lab.wait_until(has_temporary));
+    ::kill(lab.pid(), sig);
+    const int status = lab.wait();
+    CHECK((WIFSIGNALED(status) && WTERMSIG(status) == sig));
     CHECK(fs::is_empty(dir));
   }
   // A temporary a killed run left (its pid gone) is removed by the next writer, and
@@ -511,26 +522,47 @@ TEST_CASE("contract: an animation with no whole frame, or beyond the work budget
 TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave no temporaries") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_term_" + std::to_string(::getpid()));
-  const fs::path status_file = dir.string() + ".status";
-  for (const char* after : {"2", "6"}) {  // during the first lab alone, and during the others
-    INFO("SIGTERM after " << after << " s");
+  const std::vector<std::string> labs = rigid::test::all_labs();
+  // What the staging folder holds: the names of its files (the labs draw there first).
+  const auto staged = [&] {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+      names.push_back(it->path().filename().string());
+    return names;
+  };
+  const auto drawn_by = [&](auto is_lab) {
+    return [&, is_lab] {
+      for (const std::string& name : staged()) {
+        for (const std::string& lab : labs) {
+          if (is_lab(lab) && name.rfind(lab + "_", 0) == 0) return true;
+        }
+      }
+      return false;
+    };
+  };
+  // During the first lab alone (once a figure of it shows), and during the others
+  // (once a figure of another lab shows).
+  const auto first = [&](const std::string& lab) { return lab == labs.front(); };
+  const auto others = [&](const std::string& lab) { return lab != labs.front(); };
+  for (const bool during_others : {false, true}) {
+    INFO((during_others ? "during the other labs" : "during the first lab alone"));
     // To rigidlab alone (not its process group, as a terminal's Ctrl-C or timeout would).
-    const std::string script =
-        std::string("(") + RIGID_LAB_DIR + "/rigidlab figures --figure-size 8192x8192 --out '" +
-        dir.string() + "' 2>/dev/null & p=$!; sleep " + after +
-        "; kill -TERM $p; wait $p; echo $? > '" + status_file.string() + "')";
-    REQUIRE(std::system(script.c_str()) == 0);
-    std::ifstream status(status_file);
-    int code = 0;
-    status >> code;
-    CHECK(code == 128 + 15);  // rigidlab died of the signal, after its labs
+    rigid::test::Background rigidlab({std::string(RIGID_LAB_DIR) + "/rigidlab", "figures",
+                                      "--figure-size", "2048x2048", "--out", dir.string()});
+    const bool ready = during_others ? rigidlab.wait_until(drawn_by(others))
+                                     : rigidlab.wait_until(drawn_by(first));
+    REQUIRE(ready);
+    ::kill(rigidlab.pid(), SIGTERM);
+    const int status = rigidlab.wait();
+    // rigidlab died of the signal, after its labs
+    CHECK((WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM));
     // Every lab it ran has stopped (none still writes into the folder) and left no temporary.
     const std::string still = "pgrep -f -- '[-]-figures " + dir.string() + "' > /dev/null 2>&1";
     CHECK(std::system(still.c_str()) != 0);  // (the bracket keeps pgrep's own shell out)
     // Nothing landed (the labs drew into a staging folder), and the folder it made is gone.
     CHECK(!fs::exists(dir));
     fs::remove_all(dir);
-    fs::remove(status_file);
   }
 }
 

@@ -20,10 +20,12 @@ Every run must keep the lab contract:
     with one line on stderr of the form "LAB: error: --option: rule", escaped (no raw
     control character, no invalid UTF-8, no bidi override); a failure to write
     (full disk) exits 1 with one line; a signal ends the run by that signal;
-  - finish within the time limit;
+  - finish within its work bound: the CPU seconds it may spend (a busy machine
+    does not stretch them, as it does wall time); a run still alive after many
+    times that on the clock is a hang (it waits without working);
   - leave no temporary file behind, land all its outputs or none, and touch no
     file it did not create.
-Usage: fuzz_lab.py LAB_EXECUTABLE [--cases N] [--class-cases M] [--seed S] [--timeout SECONDS]
+Usage: fuzz_lab.py LAB_EXECUTABLE [--cases N] [--class-cases M] [--seed S] [--cpu-seconds S]
 Exit status 0 when every case keeps the contract, 1 otherwise.
 """
 import argparse
@@ -31,6 +33,7 @@ import json
 import os
 import random
 import re
+import resource
 import subprocess
 import sys
 import shutil
@@ -44,7 +47,7 @@ OPTION = re.compile(r"^\s+(?:-\w,)?(--[\w-]+)(?:\s+(\S+?))?(?:=(\S+))?(?:\s+x\s+
 
 def options_of(lab):
     """(name, kind, count, choices, defaults) for every option in --help."""
-    text = subprocess.run([lab, "--help"], capture_output=True, text=True, timeout=30).stdout
+    text = subprocess.run([lab, "--help"], capture_output=True, text=True).stdout
     found = []
     for line in text.splitlines():
         m = OPTION.match(line)
@@ -124,11 +127,11 @@ def stderr_problems(lab_name, err_bytes, kind="error"):
     return []
 
 
-def check(lab_name, proc, elapsed, limit, workdir, allow_write_failure=False, ours=()):
+def check(lab_name, proc, cpu, limit, workdir, allow_write_failure=False, ours=()):
     """The contract's breaches for one run, as strings."""
     problems = []
-    if elapsed > limit:
-        problems.append(f"took {elapsed:.1f} s")
+    if cpu > limit or proc.returncode == -signal.SIGXCPU:
+        return [f"worked {cpu:.1f} CPU seconds, beyond the bound of {limit:.0f}"]
     if proc.returncode == 0:
         def reject(token):
             raise ValueError(f"non-strict JSON constant {token}")
@@ -221,10 +224,25 @@ def decoys_intact(made):
     return problems
 
 
-def run(argv, cwd, timeout):
-    t0 = time.monotonic()
-    proc = subprocess.run(argv, capture_output=True, timeout=timeout, cwd=cwd)
-    return proc, time.monotonic() - t0
+def children_cpu():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def cpu_bound(seconds):
+    """A child's limit of CPU time: the kernel stops it with SIGXCPU just past it."""
+    limit = int(seconds) + 1
+    return lambda: resource.setrlimit(resource.RLIMIT_CPU, (limit, limit + 1))
+
+
+def run(argv, cwd, cpu_seconds):
+    """One run and the CPU seconds it spent; runs are one at a time, so the children's
+    total grows by this run's alone. The clock only stops a run that has stopped
+    working (a hang), at twenty times its work bound."""
+    before = children_cpu()
+    proc = subprocess.run(argv, capture_output=True, timeout=20 * cpu_seconds, cwd=cwd,
+                          preexec_fn=cpu_bound(cpu_seconds))
+    return proc, children_cpu() - before
 
 
 def random_argv(rng, lab, physical):
@@ -269,7 +287,8 @@ def main():
     ap.add_argument("--cases", type=int, default=60, help="cases of the numbers class")
     ap.add_argument("--class-cases", type=int, default=12, help="cases of each other class")
     ap.add_argument("--seed", type=int, default=20261124)
-    ap.add_argument("--timeout", type=float, default=10.0)
+    ap.add_argument("--cpu-seconds", type=float, default=10.0,
+                    help="the CPU time a run may spend")
     args = ap.parse_args()
     args.lab = os.path.abspath(args.lab)
     lab_name = os.path.basename(args.lab)
@@ -291,11 +310,11 @@ def main():
 
     def attempt(cls, argv, workdir, **kw):
         try:
-            proc, elapsed = run(argv, workdir, args.timeout * 3)
+            proc, cpu = run(argv, workdir, args.cpu_seconds)
         except subprocess.TimeoutExpired:
-            report(cls, argv, [f"hung (> {args.timeout * 3:.0f} s)"])
+            report(cls, argv, [f"hung (alive after {20 * args.cpu_seconds:.0f} s on the clock)"])
             return None
-        problems = check(lab_name, proc, elapsed, args.timeout, workdir, **kw)
+        problems = check(lab_name, proc, cpu, args.cpu_seconds, workdir, **kw)
         return proc, problems
 
     for _ in range(args.cases):  # numbers
@@ -361,7 +380,7 @@ def main():
             time.sleep(rng.uniform(0.0, 0.4))
             proc.send_signal(sig)
             try:
-                _, err = proc.communicate(timeout=args.timeout * 3)
+                _, err = proc.communicate(timeout=20 * args.cpu_seconds)
             except subprocess.TimeoutExpired:
                 proc.kill()
                 report("signals", argv, ["did not end after the signal"])

@@ -20,7 +20,7 @@ with tempfile.TemporaryDirectory() as root:
         if os.path.isfile(path) and os.access(path, os.X_OK):
             shutil.copy2(path, hostile)
     run = subprocess.run([os.path.join(hostile, "rigidlab"), "list"], capture_output=True,
-                         text=True, timeout=60)
+                         text=True)
     assert run.returncode == 0, run.stderr
     assert not os.path.exists(witness), "a shell ran part of the install path"
     lines = run.stdout.splitlines()
