@@ -10,6 +10,7 @@
 #include <cfloat>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rigid/free_body.h"
@@ -116,6 +117,44 @@ Ld tolerance(const Vector& abs_w, const Vector& abs_phi, const Tree& t, Ld value
          (dot(abs_w, abs_phi) + std::fabs(value));
 }
 
+// c_i = sum_j a_ij: the nodes are the row sums.
+template <class T>
+void check_nodes(const std::string& name) {
+  const int n = T::kTotalStages;
+  for (int i = 0; i < n; ++i) {
+    Ld sum = 0.0L, size = 0.0L;
+    for (int j = 0; j < n; ++j) sum += T::a[i][j], size += std::fabs(T::a[i][j]);
+    INFO(name << " row " << i);
+    CHECK(std::fabs(sum - T::c[i]) <= 4.0L * n * LDBL_EPSILON * (size + std::fabs(T::c[i])));
+  }
+}
+
+// The interpolant's weights b_i(theta) = sum_d r_id theta^(d+1), and their sizes (sum_d
+// |r_id| theta^(d+1)), by Horner's rule.
+template <class T>
+std::pair<Vector, Vector> interpolant_weights(Ld theta) {
+  const int n = T::kTotalStages;
+  Vector w(n, 0.0L), abs_w(n, 0.0L);
+  for (int i = 0; i < n; ++i)
+    for (int d = static_cast<int>(sizeof(T::r[0]) / sizeof(T::r[0][0])) - 1; d >= 0; --d) {
+      w[i] = (w[i] + T::r[i][d]) * theta;
+      abs_w[i] = (abs_w[i] + std::fabs(T::r[i][d])) * theta;
+    }
+  return {w, abs_w};
+}
+
+// The interpolant at theta = 1 is the step's own solution, and its extra stages drop out.
+template <class T>
+void check_interpolant_at_one(const std::string& name) {
+  for (int i = 0; i < T::kTotalStages; ++i) {
+    Ld at_one = 0.0L, size = 0.0L;
+    for (const Ld r : T::r[i]) at_one += r, size += std::fabs(r);
+    const Ld want = i < T::kStages ? T::b[i] : 0.0L;
+    INFO(name << " b_" << i << "(1)");
+    CHECK(std::fabs(at_one - want) <= 8.0L * LDBL_EPSILON * (size + std::fabs(want)));
+  }
+}
+
 template <class T>
 void check_order_conditions(const std::string& name) {
   const std::vector<Tree> trees = trees_up_to(T::kOrder + 1);
@@ -129,13 +168,7 @@ void check_order_conditions(const std::string& name) {
                             abs_phi_all = stage_vectors(trees, A_all_abs);
   const Vector b(T::b, T::b + s), e(T::e, T::e + s);
 
-  // c_i = sum_j a_ij: the nodes are the row sums
-  for (int i = 0; i < n; ++i) {
-    Ld sum = 0.0L, size = 0.0L;
-    for (int j = 0; j < n; ++j) sum += T::a[i][j], size += std::fabs(T::a[i][j]);
-    INFO(name << " row " << i);
-    CHECK(std::fabs(sum - T::c[i]) <= 4.0L * n * LDBL_EPSILON * (size + std::fabs(T::c[i])));
-  }
+  check_nodes<T>(name);
 
   // the largest residual of a condition that holds, and of one order up
   Ld b_held = 0.0L, b_next = 0.0L, e_held = 0.0L, e_next = 0.0L;
@@ -165,12 +198,7 @@ void check_order_conditions(const std::string& name) {
     // the interpolant: sum_i b_i(theta) Phi_i(t) = theta^|t| / gamma(t) to its order
     if (t.order <= T::kInterpolantOrder) {
       for (const Ld theta : {0.2L, 0.5L, 0.9L}) {
-        Vector w(n, 0.0L), abs_w(n, 0.0L);
-        for (int i = 0; i < n; ++i)
-          for (int d = static_cast<int>(sizeof(T::r[0]) / sizeof(T::r[0][0])) - 1; d >= 0; --d) {
-            w[i] = (w[i] + T::r[i][d]) * theta;
-            abs_w[i] = (abs_w[i] + std::fabs(T::r[i][d])) * theta;
-          }
+        const auto [w, abs_w] = interpolant_weights<T>(theta);
         const Ld want = std::pow(theta, static_cast<Ld>(t.order)) * exact;
         CHECK(std::fabs(dot(w, phi_all[k]) - want) <= tolerance(abs_w, abs_phi_all[k], t, want));
       }
@@ -188,15 +216,7 @@ void check_order_conditions(const std::string& name) {
   // its error estimate of a higher order than claimed)
   CHECK(b_next > 1e6L * b_held);
   CHECK(e_next > 1e6L * e_held);
-
-  // the interpolant at theta = 1 is the step's own solution, and its extra stages drop out
-  for (int i = 0; i < n; ++i) {
-    Ld at_one = 0.0L, size = 0.0L;
-    for (const Ld r : T::r[i]) at_one += r, size += std::fabs(r);
-    const Ld want = i < s ? T::b[i] : 0.0L;
-    INFO(name << " b_" << i << "(1)");
-    CHECK(std::fabs(at_one - want) <= 8.0L * LDBL_EPSILON * (size + std::fabs(want)));
-  }
+  check_interpolant_at_one<T>(name);
 }
 
 // ---- observed orders -------------------------------------------------------------
