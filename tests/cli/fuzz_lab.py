@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """A deterministic adversary for one lab, case by case in classes, with counts.
 
 Reads the lab's options from its --help (so a new lab is covered without new

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """The installed tree works on its own: `cmake --install` into a
 staging prefix, then from there, with nothing of the build tree on PATH:
 `rigidlab --version`, `rigidlab list`, a lab run through rigidlab and directly,

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """The Debian package: `cpack -G DEB` builds
 rigidlab_VERSION_amd64.deb from this build; its control file names the run-time
 dependencies (the linked libraries found by dpkg-shlibdeps, and OSMesa and the

@@ -25,7 +25,7 @@ using rigid::test::value;
 
 namespace {
 
-// An edge case at 40 digits (tests/euler_angles/make_edge_cases.py).
+// An edge case at 40 digits (tests/labs/references/euler_angles/make_edge_cases.py).
 struct EdgeCase {
   const char* name;
   double angles_deg[3];
@@ -37,7 +37,7 @@ struct EdgeCase {
   double rates[3], theta_dot;
 };
 const EdgeCase kEdgeCases[] = {
-#include "../euler_angles/reference_edge_cases.inc"
+#include "references/euler_angles/reference_edge_cases.inc"
 };
 
 Inputs inputs_of(const EdgeCase& c) {

@@ -317,13 +317,13 @@ void check_herpolhode_turn(const Motion& motion, double scale, double plane, dou
 }  // namespace
 
 TEST_CASE("poinsot: the invariable plane at 2T/|L| and the herpolhode's turn, as values") {
-  // tests/poinsot/make_reference.py: 2T/|L|, the polhode period and the turn about L a period
+  // tests/labs/references/poinsot/make_reference.py: 2T/|L|, the polhode period and the turn about L a period
   // (Euler's equations and the contact point's azimuth rate integrated by mpmath), 30 digits.
   struct Row {
     double I1, I2, I3, w1, w2, w3, plane, period, turn_deg;
   };
   const Row rows[] = {
-#include "../poinsot/reference_construction.inc"
+#include "references/poinsot/reference_construction.inc"
   };
   for (const Row& row : rows) {
     const Eigen::Vector3d I(row.I1, row.I2, row.I3), w0(row.w1, row.w2, row.w3);

@@ -169,7 +169,7 @@ struct LabEdge {
   double theta_min_deg, theta_max_deg, period, mean_base, phi_dot_u1, phi_dot_u2, u3, condition;
 };
 const LabEdge kLabEdges[] = {
-#include "../heavy_top/reference_lab_edges.inc"
+#include "../core/heavy_top/reference_lab_edges.inc"
 };
 
 const LabEdge& lab_edge(const std::string& name) {

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """top_nutation at the edges, by an adversary: random starts within 1e-12..1e-6 deg of
 each pole and within 1e-12..1e-6 (relative) of the separatrix (a turning circle at
 upright: b - a and the energy's margin over the pole both near 0), each lab run's JSON

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Long-time reference for the exact free body: omega and the
 attitude at 10, 100 and 1000 polhode periods, at 30 digits, by a route that
 shares nothing with the C++ closed form.
@@ -16,7 +16,7 @@ The times n T + s are rounded to doubles and the reference is taken at those
 doubles (s recomputed as t - n T at 30 digits), so the test asks the C++ for
 exactly the instants the reference holds. Writes reference_free_body_long.inc.
 
-Run: /usr/bin/python3 tests/free_body/make_free_body_long.py   (about a minute)
+Run: /usr/bin/python3 tests/core/free_body/make_free_body_long.py   (about a minute)
 """
 import math
 import os

@@ -1,11 +1,11 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Dense reference for sn, cn, dn: mpmath.ellipfun at 80 digits
 over k'^2 = 1, 10^-0.5, ..., 1e-30 (and 0) and, for each, arguments across the
 first period 4K (including the quarter points), negative ones, and far out to
 1e3 periods, where the argument itself carries its own rounding. The arguments
 and k'^2 are the exact binary values of doubles. Writes reference_jacobi_dense.inc.
 
-Run: /usr/bin/python3 tests/free_body/make_jacobi_dense.py   (a few seconds)
+Run: /usr/bin/python3 tests/core/free_body/make_jacobi_dense.py   (a few seconds)
 """
 import os
 

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """References for euler_lagrange_test.cpp's exact Lagrange terms (lagrange_terms_exact,
 psi_terms), at 80 digits from the exact binary values of the double inputs, by a route
 of their own: T(q, q_dot) = 1/2 sum I_i omega_i^2 with omega from eqs. 134-136, each
@@ -15,7 +15,7 @@ States given by omega: a generic one, theta within 1e-3 to 1e-12 rad of either p
 (the rates as 1/sin theta), moments spread over decades, with and without a torque. By
 the rates: theta at either pole exactly, 1e-60 deg from one, and generic.
 
-Run: /usr/bin/python3 tests/free_body/make_lagrange_exact.py
+Run: /usr/bin/python3 tests/core/free_body/make_lagrange_exact.py
 """
 import os
 

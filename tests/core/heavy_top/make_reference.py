@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """High-precision reference for the heavy symmetric top (heavy_top_test.cpp).
 
 Integrates the Euler-angle equations of motion with mpmath's Taylor-series ODE
@@ -10,7 +10,7 @@ sin + mgl sin (eq. 184), phi_dot = (p_phi - p_psi cos theta)/(I sin^2 theta)
 the double inputs. It knows nothing of the cubic, its roots or the elliptic
 functions of the C++ closed form it checks. Writes reference_heavy_top.inc.
 
-Run: /usr/bin/python3 tests/heavy_top/make_reference.py   (a few minutes)
+Run: /usr/bin/python3 tests/core/heavy_top/make_reference.py   (a few minutes)
 """
 import os
 

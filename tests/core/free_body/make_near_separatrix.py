@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Polhode periods a few ulps from the separatrix (free_body_exact_test.cpp).
 
 Landau's closed form (section 37): with the moments sorted I1 < I2 < I3 and
@@ -9,7 +9,7 @@ evaluated with mpmath at 50 digits from the exact binary values of the double
 inputs: the separatrix distance L^2 - 2 T I2 is then exact, however small.
 Writes reference_near_separatrix.inc beside this script.
 
-Run: /usr/bin/python3 tests/free_body/make_near_separatrix.py
+Run: /usr/bin/python3 tests/core/free_body/make_near_separatrix.py
 """
 import os
 

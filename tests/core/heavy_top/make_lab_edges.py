@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """References for top_nutation at the edges (tests/labs/top_nutation_test.cpp), at 80
 digits from the exact binary values of the lab's double inputs, theta0 in exact degrees
 (the lab forms its trig from the degrees): the cubic's roots by mpmath.polyroots, the
@@ -13,7 +13,7 @@ phi by pi, as 'base'; the lab's two limits are base -+ pi / period.
 - started upright with theta_dot0 = 1 (through the pole), and no spin at 150 deg (planar).
 Each with the period's condition number, max |d ln T / d ln x| over theta0 and the rates.
 
-Run: /usr/bin/python3 tests/heavy_top/make_lab_edges.py
+Run: /usr/bin/python3 tests/core/heavy_top/make_lab_edges.py
 """
 import os
 
