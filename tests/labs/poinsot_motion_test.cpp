@@ -317,8 +317,9 @@ void check_herpolhode_turn(const Motion& motion, double scale, double plane, dou
 }  // namespace
 
 TEST_CASE("poinsot: the invariable plane at 2T/|L| and the herpolhode's turn, as values") {
-  // tests/labs/references/poinsot/make_reference.py: 2T/|L|, the polhode period and the turn about L a period
-  // (Euler's equations and the contact point's azimuth rate integrated by mpmath), 30 digits.
+  // tests/labs/references/poinsot/make_reference.py: 2T/|L|, the polhode period and the turn about
+  // L a period (Euler's equations and the contact point's azimuth rate integrated by mpmath), 30
+  // digits.
   struct Row {
     double I1, I2, I3, w1, w2, w3, plane, period, turn_deg;
   };

@@ -222,8 +222,8 @@ TEST_CASE("tire_balancing: the answer in short, with the numbers that decide it"
 }
 
 TEST_CASE("tire_balancing: tilts from 1e-300 deg to an ulp short of the limit, against mpmath") {
-  // tests/labs/references/tire_balancing/make_reference.py: eqs. 57-61 at 60 digits beyond each tilt's
-  // exponent, the text's way (eq. 60 through tan 2 theta, the axis from atan2 of the
+  // tests/labs/references/tire_balancing/make_reference.py: eqs. 57-61 at 60 digits beyond each
+  // tilt's exponent, the text's way (eq. 60 through tan 2 theta, the axis from atan2 of the
   // tensor's entries), from the double inputs.
   struct Row {
     double m, a, b, omega, tilt_deg;
