@@ -1,16 +1,22 @@
 // Runs a lab executable as a student would and captures what it prints.
 #pragma once
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
 #include <catch2/catch.hpp>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace rigid::test {
@@ -52,6 +58,65 @@ inline Run run_lab(const std::string& lab, const std::string& args, const std::s
   std::remove(err_file.c_str());
   return run;
 }
+
+/// A program running in the background, its output discarded, for a test that acts
+/// on it mid-run: a signal once a file shows, never after a fixed sleep, so that the
+/// verdict is the same on a fast machine and a busy one.
+class Background {
+ public:
+  explicit Background(std::vector<std::string> argv) : argv_(std::move(argv)) {
+    std::vector<char*> args;
+    for (std::string& a : argv_) args.push_back(a.data());
+    args.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    if (::posix_spawn(&pid_, args[0], &actions, nullptr, args.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&actions);
+  }
+  Background(const Background&) = delete;
+  Background& operator=(const Background&) = delete;
+  ~Background() {
+    if (pid_ > 0 && status_ < 0) {
+      ::kill(pid_, SIGKILL);
+      wait();
+    }
+  }
+  pid_t pid() const { return pid_; }
+
+  /// Polls `ready()` while the program runs: true once it holds, false when the
+  /// program ended first (then the moment to act on it never came).
+  template <class Ready>
+  bool wait_until(Ready ready) {
+    while (pid_ > 0) {
+      if (ready()) return true;
+      int status = 0;
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        status_ = status;
+        return false;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+  }
+
+  /// Its wait status, once it has ended.
+  int wait() {
+    if (status_ < 0 && pid_ > 0) {
+      int status = 0;
+      while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+      }
+      status_ = status;
+    }
+    return status_;
+  }
+
+ private:
+  std::vector<std::string> argv_;
+  pid_t pid_ = -1;
+  int status_ = -1;
+};
 
 /// A CSV file a lab wrote: its header line and its rows of numbers.
 struct Csv {

@@ -1,4 +1,4 @@
-// The sample times every integrated run shares (compare.h).
+// The sample times every integrated run shares, and a reference run's settings (compare.h).
 #include "rigid/compare.h"
 
 #include <algorithm>
@@ -7,6 +7,13 @@
 #include <stdexcept>
 
 namespace rigid {
+
+OdeOptions reference_options() {
+  OdeOptions o;
+  o.method = Method::kVern9;
+  o.abs_tol = o.rel_tol = 1e-13;
+  return o;
+}
 
 std::vector<double> uniform_times(double t0, double t1, std::size_t n) {
   if (n == 0) throw std::invalid_argument("uniform_times: need at least one time");

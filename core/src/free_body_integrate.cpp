@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "rigid/compare_impl.h"
 #include "rigid/splitting.h"
@@ -142,6 +143,24 @@ ExactErrors FreeBodyProblem::errors_against(const Exact& exact,
     errors.error.push_back((w - exact.omega_body(s.t)).norm() / scale);
     errors.energy_error.push_back(
         std::abs(kinetic_energy(exact.moments(), w) / exact.energy() - 1.0));
+  }
+  return errors;
+}
+
+ExactErrors FreeBodyProblem::errors_against(const std::vector<Sample>& reference,
+                                            const std::vector<Sample>& samples) const {
+  if (reference.size() != samples.size() || samples.empty()) {
+    throw std::invalid_argument("a reference run must have the run's samples");
+  }
+  const double scale = omega_body(reference.front().x).norm();
+  ExactErrors errors;
+  errors.error.reserve(samples.size());
+  errors.energy_error.reserve(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const Eigen::Vector3d w = omega_body(samples[k].x), w_ref = omega_body(reference[k].x);
+    errors.error.push_back((w - w_ref).norm() / scale);
+    errors.energy_error.push_back(
+        std::abs(kinetic_energy(I_, w) / kinetic_energy(I_, w_ref) - 1.0));
   }
   return errors;
 }

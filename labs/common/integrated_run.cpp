@@ -101,7 +101,17 @@ std::string run_option(const IntegrationInputs& in, const OdeOptions& options) {
   if (in.project && !can_project(options.method)) {
     throw InputError("--project", "works with --method " + projecting_methods() + " only");
   }
-  return fixed_step(in) ? "--step" : "--tolerance";
+  return step_input(options);
+}
+
+std::string step_input(const OdeOptions& options) {
+  return is_adaptive(options.method) ? "--tolerance" : "--step";
+}
+
+double runaway_drift(const std::vector<double>& max_invariant_errors, std::size_t count) {
+  double drift = max_invariant_errors.at(0);
+  for (std::size_t k = 1; k < count; ++k) drift = std::max(drift, max_invariant_errors.at(k));
+  return drift;
 }
 
 void report_run(Report& report, const std::string& option, const std::vector<double>& errors,
@@ -114,11 +124,7 @@ void report_run(Report& report, const std::string& option, const std::vector<dou
     worst = std::max(worst, e);
   }
   // A run whose conserved quantities moved by more than themselves has no digit left to print.
-  double drift = max_invariant_errors.at(0);
-  for (std::size_t k = 1; k < words.runaway_invariants; ++k) {
-    drift = std::max(drift, max_invariant_errors.at(k));
-  }
-  refuse_runaway(option, drift);
+  refuse_runaway(option, runaway_drift(max_invariant_errors, words.runaway_invariants));
   report.result(words.key, words.label, words.in_unit ? words.in_unit(worst) : worst, words.unit);
   report.count("steps", "steps taken", steps);
 }

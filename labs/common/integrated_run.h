@@ -146,9 +146,17 @@ struct ExactErrorWords {
   std::vector<InvariantWords> invariants;  ///< the invariants reported, in order
 };
 
-/// The option a run of the chosen method answers to: "--step" or "--tolerance".
+/// The input that governs a run's step, the one its failure names: "--step" for a
+/// fixed-step method, "--tolerance" for an adaptive one.
+std::string step_input(const OdeOptions& options);
+
+/// The option a run of the chosen method answers to: step_input of its options.
 /// Throws an InputError naming --project for a method that cannot project.
 std::string run_option(const IntegrationInputs& in, const OdeOptions& options);
+
+/// What refuse_runaway judges of a run: the largest of the first `count` of its
+/// invariants' largest errors, and at least the first's (the energy's).
+double runaway_drift(const std::vector<double>& max_invariant_errors, std::size_t count);
 
 /// Reports a run's largest error against the exact motion (words.key) and its steps,
 /// after refusing (InputErrors naming `option`) a run whose errors are not finite or

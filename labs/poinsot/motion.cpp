@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <memory>
 #include <stdexcept>
 
@@ -15,13 +14,7 @@ namespace rigid::lab::poinsot {
 using Eigen::Vector3d;
 
 Motion::Motion(const Report& report, const std::vector<double>& sample_times)
-    : exact_(report.exact),
-      half_extents_(report.extents),
-      box_(report.box),
-      t_end_(report.t_end),
-      integrated_(report.method != "exact"),
-      options_(report.options),
-      step_input_(integrated_ && !is_adaptive(report.options.method) ? "--step" : "--tolerance") {
+    : exact_(report.exact), half_extents_(report.extents), box_(report.box), t_end_(report.t_end) {
   const PrincipalMoments& I = exact_.moments();
   const Vector3d w0 = exact_.omega_body(0.0);
   const Vector3d L0 = Vector3d(I.I1, I.I2, I.I3).cwiseProduct(w0);
@@ -41,21 +34,10 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
   // the herpolhode: the contact point over the whole motion, at the integrator's own
   // times, or else 240 samples a polhode period of the closed form
   std::vector<double> times;
-  if (integrated_) {
-    for (const FreeBodyRun::Sample& s : report.run.samples) {
-      states_[s.t] = s.x;
-      times.push_back(s.t);
-    }
-    if (!sample_times.empty()) {
-      // One run from the start through every sample time, as the lab's own run is
-      // made: its states there are the integrator's own, not a restart's.
-      times = sample_times;
-      std::sort(times.begin(), times.end());
-      times.erase(std::unique(times.begin(), times.end()), times.end());
-      for (const FreeBodyRun::Sample& s : integrate(exact_.state(0.0), times).samples) {
-        states_[s.t] = s.x;
-      }
-    }
+  if (report.method != "exact") {
+    integrated_.emplace(FreeBodyProblem(I), exact_.state(0.0), report.options,
+                        free_body_words().runaway_invariants, report.run.samples, sample_times);
+    times = sample_times.empty() ? report.run.times() : integrated_->sampled_times();
   } else {
     const double period = std::isfinite(exact_.period()) ? exact_.period() : t_end_;
     const int n = std::clamp(static_cast<int>(240.0 * t_end_ / period), 240, 20000);
@@ -72,30 +54,8 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
   plane_radius_ = std::max(1.2 * reach, 0.6 * size_);
 }
 
-FreeBodyRun Motion::integrate(const RotationState& x0, const std::vector<double>& times) const {
-  FreeBodyRun run;
-  try {
-    run = rigid::integrate(FreeBodyProblem(exact_.moments()), x0, times, options_);
-  } catch (const std::exception& e) {
-    throw InputError(step_input_, e.what());
-  }
-  // The lab's own run kept T and |L| over the same span; a run of other samples
-  // that did not would draw a body no longer the same, refused as the lab's would be.
-  refuse_runaway(step_input_, std::max(run.max_invariant_error[FreeBodyProblem::kEnergy],
-                                       run.max_invariant_error[FreeBodyProblem::kMomentum]));
-  return run;
-}
-
 RotationState Motion::state(double t) const {
-  if (!integrated_) return exact_.state(t);
-  const auto after = states_.upper_bound(t);
-  if (after == states_.begin()) {
-    throw std::invalid_argument(
-        fmt::format("the motion starts at t = 0 (asked for t = {:g} s)", t));
-  }
-  const auto& [t0, x0] = *std::prev(after);
-  if (t0 == t) return x0;
-  return integrate(x0, {t0, t}).samples.back().x;
+  return integrated_ ? integrated_->state(t) : exact_.state(t);
 }
 
 Vector3d Motion::to_construction(const Eigen::Matrix3d& attitude, const Vector3d& w) const {

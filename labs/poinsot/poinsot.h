@@ -6,7 +6,6 @@
 // integrator is measured against it.
 #pragma once
 
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "common/figures.h"
 #include "common/free_motion.h"
 #include "common/inputs.h"
+#include "common/integrated_motion.h"
 #include "common/integrated_run.h"
 #include "common/program.h"
 #include "common/report.h"
@@ -74,11 +74,9 @@ void figures(const Report& report, FigureSink& sink);
 class Motion {
  public:
   /// `sample_times`: times at which an integrated motion is sampled ahead in one run (the
-  /// animation's frame times), so those frames come from one run from t = 0, not from
-  /// restarts. Exact method: the closed form at any t. Integrated: states at the lab's own
-  /// run's samples and at sample_times are cached when built; any other t integrates from
-  /// the nearest earlier cached state (cost: one sample spacing). Nothing mutable: the
-  /// same t gives the same scene in any order.
+  /// animation's frame times; IntegratedMotion), so those frames come from one run from
+  /// t = 0, not from restarts. Exact method: the closed form at any t. Nothing mutable:
+  /// the same t gives the same scene in any order.
   explicit Motion(const Report& report, const std::vector<double>& sample_times = {});
   /// The span of the motion, t_end.
   double seconds() const { return t_end_; }
@@ -90,21 +88,14 @@ class Motion {
   render::Scene3D herpolhode_scene(double periods) const;
 
  private:
-  /// The state at t: the closed form's, a cached one, or integrated from the nearest
-  /// earlier cached one.
+  /// The state at t: the closed form's, or the integrated motion's.
   RotationState state(double t) const;
-  /// The chosen method from x0 at times.front() through `times`; a failure names the
-  /// input that set the step (as the lab's own run does).
-  FreeBodyRun integrate(const RotationState& x0, const std::vector<double>& times) const;
   Eigen::Vector3d to_construction(const Eigen::Matrix3d& attitude, const Eigen::Vector3d& w) const;
   FreeBodyExact exact_;
   Eigen::Vector3d half_extents_;
   bool box_;
   double t_end_;
-  bool integrated_;
-  OdeOptions options_;
-  std::string step_input_;                  ///< the input an integration failure names
-  std::map<double, RotationState> states_;  ///< integrated only: the cached states
+  std::optional<IntegratedMotion<FreeBodyProblem>> integrated_;  ///< none: the closed form
   Eigen::Matrix3d space_;  ///< the motion's space frame turned so that L points down
   double size_, omega_scale_, construction_scale_, plane_depth_, plane_radius_;
   Eigen::Vector3d offset_;                             ///< where the construction stands

@@ -45,20 +45,13 @@ render::Scene3D spin_scene(const DrawnBody& body, const FreeBodyExact& motion, i
   return scene;
 }
 
-// The states at `samples`, by time.
-void cache(std::map<double, RotationState>& states,
-           const std::vector<FreeBodyRun::Sample>& samples) {
-  for (const FreeBodyRun::Sample& s : samples) states[s.t] = s.x;
-}
-
 }  // namespace
 
 Motion::Motion(const Report& report, const std::vector<double>& sample_times)
     : body_(report.body),
       motion_(report.launches.at(report.spin_axis)),
       axis_(report.spin_axis),
-      t_end_(report.t_end),
-      integrator_(report.drawn_integrator) {
+      t_end_(report.t_end) {
   // The strip's lines are the same in every frame: sampled once.
   constexpr int kSamples = 600;
   for (int n = 0; n < kSamples; ++n) {
@@ -66,35 +59,14 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
     const Vector3d omega = motion_.omega_body(strip_t_.back());
     for (int i = 0; i < 3; ++i) strip_omega_[i].push_back(omega(i));
   }
-  if (!integrator_) return;
-  cache(states_, report.run);
-  // One run from the launch through every sample time, as the frames were always
-  // drawn (a frame time the run also sampled takes this run's state).
-  std::vector<double> times{0.0};
-  for (const double t : sample_times) {
-    if (t > 0.0) times.push_back(t);
-  }
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
-  if (times.size() < 2) return;
-  try {
-    cache(states_,
-          integrate(FreeBodyProblem(motion_.moments()), motion_.state(0.0), times, *integrator_)
-              .samples);
-  } catch (const std::exception& e) {
-    throw InputError(is_adaptive(integrator_->method) ? "--tolerance" : "--step", e.what());
-  }
+  if (!report.drawn_integrator) return;
+  integrated_.emplace(FreeBodyProblem(motion_.moments()), motion_.state(0.0),
+                      *report.drawn_integrator, free_body_words().runaway_invariants, report.run,
+                      sample_times);
 }
 
 RotationState Motion::state(double t) const {
-  if (!integrator_) return motion_.state(t);
-  auto next = states_.upper_bound(t);
-  if (next == states_.begin()) {
-    throw std::invalid_argument(fmt::format("the integrated motion starts at t = 0 (got {:g})", t));
-  }
-  const auto& [t0, x0] = *std::prev(next);
-  if (t0 == t) return x0;
-  return integrate(FreeBodyProblem(motion_.moments()), x0, {t0, t}, *integrator_).samples.back().x;
+  return integrated_ ? integrated_->state(t) : motion_.state(t);
 }
 
 render::Scene3D Motion::scene(double t) const {

@@ -9,7 +9,6 @@
 
 #include <Eigen/Core>
 #include <array>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +16,7 @@
 #include "common/figures.h"
 #include "common/free_motion.h"
 #include "common/inputs.h"
+#include "common/integrated_motion.h"
 #include "common/integrated_run.h"
 #include "common/program.h"
 #include "common/report.h"
@@ -100,10 +100,9 @@ void add_body(render::Scene3D& scene, const DrawnBody& body, const Eigen::Matrix
 class Motion {
  public:
   /// `sample_times`: times at which an integrated motion is sampled ahead in one run (the
-  /// animation's frame times), so those frames are exactly the old ones. Exact: the closed
-  /// form at any t. Integrated: states at the lab's own run's samples and at sample_times are
-  /// cached when built; any other t integrates from the nearest earlier cached state. Nothing
-  /// mutable: the same t gives the same scene in any order.
+  /// animation's frame times; IntegratedMotion), so those frames come from one run from
+  /// t = 0. Exact: the closed form at any t. Nothing mutable: the same t gives the same
+  /// scene in any order.
   explicit Motion(const Report& report, const std::vector<double>& sample_times = {});
   /// The span shown: the run's t_end.
   double seconds() const { return t_end_; }
@@ -119,9 +118,8 @@ class Motion {
   FreeBodyExact motion_;
   int axis_ = 1;
   double t_end_ = 0.0;
-  std::optional<OdeOptions> integrator_;
-  std::map<double, RotationState> states_;  ///< the integrated states cached when built
-  std::vector<double> strip_t_;             ///< omega's exact components over the run
+  std::optional<IntegratedMotion<FreeBodyProblem>> integrated_;  ///< none: the closed form
+  std::vector<double> strip_t_;  ///< omega's exact components over the run
   std::array<std::vector<double>, 3> strip_omega_;
 };
 

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -379,31 +378,13 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
     : exact_(*report.motion),
       arm_(report.arm),
       disk_radius_(report.disk_radius),
-      seconds_(report.t_end),
-      integrated_(report.method != "exact"),
-      options_(report.options),
-      option_(report.fixed ? "--step" : "--tolerance") {
-  if (!integrated_) return;
-  const auto keep = [this](const HeavyTopRun& run) {
-    // emplace keeps a state already cached: the sampled run's before the lab's
-    for (const HeavyTopRun::Sample& s : run.samples) {
-      states_.emplace(s.t, State{attitude(s.x), omega_body(s.x)});
-    }
-  };
-  if (!sample_times.empty()) {
-    // One run through every sample time, from the start, as the lab's own run is made:
-    // a frame is then what the integrator gives there, never a step of another run.
-    path_times_ = sample_times;
-    std::sort(path_times_.begin(), path_times_.end());
-    path_times_.erase(std::unique(path_times_.begin(), path_times_.end()), path_times_.end());
-    keep(for_input(option_, [&] {
-      return integrate(HeavyTopProblem(exact_.top()), heavy_top_state(exact_.angles(0.0)),
-                       path_times_, options_);
-    }));
-  } else {
-    path_times_ = report.run.times();
-  }
-  keep(report.run);
+      seconds_(report.t_end) {
+  if (report.method == "exact") return;
+  // held to every invariant, as the lab's own run is
+  integrated_.emplace(HeavyTopProblem(exact_.top()), heavy_top_state(exact_.angles(0.0)),
+                      report.options, HeavyTopProblem::kInvariantCount, report.run.samples,
+                      sample_times);
+  path_times_ = sample_times.empty() ? report.run.times() : integrated_->sampled_times();
 }
 
 Motion::State Motion::state(double t) const {
@@ -411,19 +392,8 @@ Motion::State Motion::state(double t) const {
     const TopAngles a = exact_.angles(t);
     return {euler_attitude(a.phi, a.theta, a.psi), exact_.omega_body(a)};
   }
-  const auto next = states_.upper_bound(t);
-  if (next == states_.begin()) {
-    throw std::invalid_argument(fmt::format("the motion starts at t = 0 (asked for t = {:g})", t));
-  }
-  const auto& [t0, s0] = *std::prev(next);
-  if (t0 == t) return s0;
-  // Between cached states: integrated on from the nearest earlier one, each time anew.
-  const HeavyTopRun run = for_input(option_, [&, t0 = t0, s0 = s0] {
-    return integrate(HeavyTopProblem(exact_.top()), make_state(s0.omega_body, s0.attitude), {t0, t},
-                     options_);
-  });
-  const RotationState& end = run.samples.back().x;
-  return {attitude(end), omega_body(end)};
+  const RotationState x = integrated_->state(t);
+  return {attitude(x), omega_body(x)};
 }
 
 render::Scene3D Motion::scene(double t) const {

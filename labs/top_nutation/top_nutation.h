@@ -9,13 +9,13 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "common/figures.h"
 #include "common/inputs.h"
+#include "common/integrated_motion.h"
 #include "common/integrated_run.h"
 #include "common/program.h"
 #include "common/report.h"
@@ -78,11 +78,9 @@ void figures(const Report& report, FigureSink& sink);
 class Motion {
  public:
   /// `sample_times`: times at which an integrated motion is sampled ahead in one run from
-  /// the start (the animation's frame times), so each frame is what that one run gives
-  /// there, never a step of another. Exact: the closed form at any t. Integrated: states
-  /// at the lab's own run's samples and at sample_times are cached when built; any other
-  /// t integrates from the nearest earlier cached state. Nothing mutable: the same t
-  /// gives the same scene in any order.
+  /// the start (the animation's frame times; IntegratedMotion), so each frame is what
+  /// that one run gives there, never a step of another. Exact: the closed form at any t.
+  /// Nothing mutable: the same t gives the same scene in any order.
   explicit Motion(const Report& report, const std::vector<double>& sample_times = {});
   /// The span of the motion shown: the lab's t_end, s.
   double seconds() const { return seconds_; }
@@ -100,10 +98,7 @@ class Motion {
 
   HeavyTopExact exact_;
   double arm_, disk_radius_, seconds_;
-  bool integrated_;
-  OdeOptions options_;
-  std::string option_;              ///< the input blamed if an integration fails
-  std::map<double, State> states_;  ///< integrated: the cached states
+  std::optional<IntegratedMotion<HeavyTopProblem>> integrated_;  ///< none: the closed form
   std::vector<double> path_times_;  ///< integrated: the times the axis's path runs through
 };
 

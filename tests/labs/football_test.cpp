@@ -494,6 +494,47 @@ TEST_CASE("football: the Earth's periods in days in short, any body's in its own
                                          value(r, "body_precession_period_s") / 86400)));
 }
 
+namespace {
+
+// The rates figure's scale on both sides of its threshold: log where one rate is 20 times
+// the other or more, linear below.
+void check_rate_scale_threshold() {
+  using rigid::render::Scale;
+  // The scale's threshold, on both sides: phi_dot / |Omega| = sqrt(s^2 + (1 + e)^2 c^2) /
+  // (e c) at alpha = 60 deg for Is = (1 + e) I (eqs. 109, 147), 20 at the e found here by
+  // bisection (the ratio falls as e grows); a rod (Is = I / 100) at 1 deg, |Omega| / phi_dot =
+  // 0.99 c / sqrt(s^2 + 1e-4 c^2) = 49 there, and at 5 deg with Is = I / 10, 6.8.
+  const double s60 = std::sqrt(0.75), c60 = 0.5;
+  const auto space_over_body = [&](double e) {
+    return std::sqrt(s60 * s60 + (1 + e) * (1 + e) * c60 * c60) / (e * c60);
+  };
+  double lo = 1e-3, hi = 1;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = (lo + hi) / 2;
+    (space_over_body(mid) > 20 ? lo : hi) = mid;
+  }
+  struct Case {
+    double Is, alpha_deg;
+    bool log;
+  };
+  for (const Case& body :
+       {Case{1 + lo * (1 - 1e-9), 60, true}, Case{1 + lo * (1 + 1e-9), 60, false},
+        Case{0.01, 1, true}, Case{0.1, 5, false}}) {
+    INFO("Is = " << body.Is << ", alpha = " << body.alpha_deg);
+    Inputs in;
+    in.inertia = Eigen::Vector2d(1, body.Is);
+    in.alpha_deg = body.alpha_deg;
+    KeptFigures f;
+    rigid::lab::football::figures(compute(in), f);
+    const auto& p = f.plots.at("rates").panel();
+    CHECK((p.y.scale == Scale::kLog10) == body.log);
+    CHECK(p.x.scale == Scale::kLinear);
+    CHECK(p.annotations.size() == (body.log ? 2u : 0u));
+  }
+}
+
+}  // namespace
+
 TEST_CASE("football: the rates figure shows the Earth's two rates apart, with their periods") {
   using rigid::render::Scale;
   // The Earth: rates 1.00327 and 0.00327 of omega (eqs. 145-147) on a log scale, against log
@@ -544,35 +585,5 @@ TEST_CASE("football: the rates figure shows the Earth's two rates apart, with th
   CHECK(linear.x.scale == Scale::kLinear);
   CHECK(linear.annotations.empty());
   CHECK(linear.series[2].y[1] < 0);  // prolate: Omega against omega_3
-  // The scale's threshold, on both sides: phi_dot / |Omega| = sqrt(s^2 + (1 + e)^2 c^2) /
-  // (e c) at alpha = 60 deg for Is = (1 + e) I (eqs. 109, 147), 20 at the e found here by
-  // bisection (the ratio falls as e grows); a rod (Is = I / 100) at 1 deg, |Omega| / phi_dot =
-  // 0.99 c / sqrt(s^2 + 1e-4 c^2) = 49 there, and at 5 deg with Is = I / 10, 6.8.
-  const double s60 = std::sqrt(0.75), c60 = 0.5;
-  const auto space_over_body = [&](double e) {
-    return std::sqrt(s60 * s60 + (1 + e) * (1 + e) * c60 * c60) / (e * c60);
-  };
-  double lo = 1e-3, hi = 1;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = (lo + hi) / 2;
-    (space_over_body(mid) > 20 ? lo : hi) = mid;
-  }
-  struct Case {
-    double Is, alpha_deg;
-    bool log;
-  };
-  for (const Case& body :
-       {Case{1 + lo * (1 - 1e-9), 60, true}, Case{1 + lo * (1 + 1e-9), 60, false},
-        Case{0.01, 1, true}, Case{0.1, 5, false}}) {
-    INFO("Is = " << body.Is << ", alpha = " << body.alpha_deg);
-    Inputs in;
-    in.inertia = Eigen::Vector2d(1, body.Is);
-    in.alpha_deg = body.alpha_deg;
-    KeptFigures f;
-    rigid::lab::football::figures(compute(in), f);
-    const auto& p = f.plots.at("rates").panel();
-    CHECK((p.y.scale == Scale::kLog10) == body.log);
-    CHECK(p.x.scale == Scale::kLinear);
-    CHECK(p.annotations.size() == (body.log ? 2u : 0u));
-  }
+  check_rate_scale_threshold();
 }

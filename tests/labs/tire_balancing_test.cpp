@@ -222,15 +222,15 @@ TEST_CASE("tire_balancing: the answer in short, with the numbers that decide it"
 }
 
 TEST_CASE("tire_balancing: tilts from 1e-300 deg to an ulp short of the limit, against mpmath") {
-  // tests/tire_balancing/make_reference.py: eqs. 57-61 at 60 digits beyond each tilt's
-  // exponent, the text's way (eq. 60 through tan 2 theta, the axis from atan2 of the
+  // tests/labs/references/tire_balancing/make_reference.py: eqs. 57-61 at 60 digits beyond each
+  // tilt's exponent, the text's way (eq. 60 through tan 2 theta, the axis from atan2 of the
   // tensor's entries), from the double inputs.
   struct Row {
     double m, a, b, omega, tilt_deg;
     double exact_g, small_g, small_residual_deg, per_mass, angle_L_deg, torque;
   };
   const Row rows[] = {
-#include "../tire_balancing/reference_tilts.inc"
+#include "references/tire_balancing/reference_tilts.inc"
   };
   constexpr double eps = DBL_EPSILON;
   const auto relative = [](double x, double ref) { return ref == 0 ? x : std::abs(x / ref - 1); };

@@ -23,6 +23,34 @@ template <class P>
 inline constexpr bool kHasSplitting<P, std::void_t<decltype(std::declval<const P&>().splitting(
                                            2, std::declval<const typename P::State&>()))>> = true;
 
+template <class P>
+inline constexpr bool kHasExact = !std::is_same_v<ExactOf<P>, NoExact>;
+
+template <class P, class = void>
+inline constexpr bool kHasReferenceErrors = false;
+template <class P>
+inline constexpr bool
+    kHasReferenceErrors<P, std::void_t<decltype(std::declval<const P&>().errors_against(
+                               std::declval<const std::vector<typename Run<P>::Sample>&>(),
+                               std::declval<const std::vector<typename Run<P>::Sample>&>()))>> =
+        true;
+
+// A method the problem can run: a splitting only where it has one of its own.
+template <class P>
+constexpr bool can_run(Method m) {
+  return kHasSplitting<P> || (m != Method::kSplitting && m != Method::kSplitting4);
+}
+
+// The refusals of what a problem lacks.
+[[noreturn]] inline void refuse_exact() {
+  throw std::invalid_argument(
+      "this problem has no exact solution: compare its methods with a reference run");
+}
+[[noreturn]] inline void refuse_reference() {
+  throw std::invalid_argument(
+      "this problem measures no run against a reference run (no errors_against of samples)");
+}
+
 template <class P, class = void>
 inline constexpr bool kHasProjection = false;
 template <class P>
@@ -92,26 +120,29 @@ Run<Problem> ProblemCode<Problem>::integrate(const Problem& problem, const State
 }
 
 template <class Problem>
-Run<Problem> ProblemCode<Problem>::sample_exact(const Problem& problem,
-                                                const typename Problem::Exact& exact,
+Run<Problem> ProblemCode<Problem>::sample_exact(const Problem& problem, const Exact& exact,
                                                 const std::vector<double>& times) {
-  Run<Problem> out;
-  if (times.empty()) return out;
-  Recorder<Problem> record(problem, problem.exact_state(exact, times.front()), out, times.size());
-  for (const double t : times) record(problem.exact_state(exact, t), t);
-  return out;
+  if constexpr (kHasExact<Problem>) {
+    Run<Problem> out;
+    if (times.empty()) return out;
+    Recorder<Problem> record(problem, problem.exact_state(exact, times.front()), out, times.size());
+    for (const double t : times) record(problem.exact_state(exact, t), t);
+    return out;
+  } else {
+    refuse_exact();
+  }
 }
 
-// A completed run measured against the exact motion: its errors sample by sample,
-// its cost, and each invariant's largest error and drift per period.
-template <class Problem>
-void measure(MethodComparison& c, const Problem& problem, const Run<Problem>& run,
-             const typename Problem::Exact& exact, double period) {
+// A completed run measured (its errors sample by sample, as `errors_of` gives them): its
+// cost, and each invariant's largest error and drift per period.
+template <class Problem, class ErrorsOf>
+void measure(MethodComparison& c, const Run<Problem>& run, const ErrorsOf& errors_of,
+             double period) {
   c.completed = true;
   c.evaluations = run.evaluations;
   c.steps = run.steps;
   c.t = run.times();
-  ExactErrors errors = problem.errors_against(exact, run.samples);
+  ExactErrors errors = errors_of(run);
   c.error = std::move(errors.error);
   c.energy_error = std::move(errors.energy_error);
   for (const double e : c.error) {
@@ -131,13 +162,35 @@ inline MethodComparison not_completed(const OdeOptions& options) {
   return c;
 }
 
+// Each sample of a run against the exact motion.
 template <class Problem>
-std::vector<MethodComparison> ProblemCode<Problem>::compare_methods(
-    const Problem& problem, const typename Problem::Exact& exact, const std::vector<double>& times,
-    double period, const OdeOptions& options, std::size_t max_steps) {
-  const State x0 = problem.exact_state(exact, 0.0);
+auto exact_errors(const Problem& problem, const ExactOf<Problem>& exact) {
+  return [&problem, &exact](const Run<Problem>& run) {
+    return problem.errors_against(exact, run.samples);
+  };
+}
+
+// Each sample of a run against a reference run at the same times.
+template <class Problem>
+auto reference_errors(const Problem& problem, const Reference<typename Problem::State>& reference) {
+  return [&problem, &reference](const Run<Problem>& run) {
+    const Run<Problem> truth =
+        ProblemCode<Problem>::integrate(problem, reference.x0, run.times(), reference.options);
+    return problem.errors_against(truth.samples, run.samples);
+  };
+}
+
+// compare_methods (compare.h) from x0, each run measured by `errors_of`.
+template <class Problem, class ErrorsOf>
+std::vector<MethodComparison> compare_at_settings(const Problem& problem,
+                                                  const typename Problem::State& x0,
+                                                  const ErrorsOf& errors_of,
+                                                  const std::vector<double>& times, double period,
+                                                  const OdeOptions& options,
+                                                  std::size_t max_steps) {
   std::vector<MethodComparison> out;
   for (const Method m : kAllMethods) {
+    if (!can_run<Problem>(m)) continue;
     OdeOptions o = options;
     o.method = m;
     o.project_invariants = false;
@@ -147,7 +200,8 @@ std::vector<MethodComparison> ProblemCode<Problem>::compare_methods(
     MethodComparison c;
     c.options = o;
     try {
-      measure(c, problem, integrate(problem, x0, each_times, o), exact, period);
+      measure<Problem>(c, ProblemCode<Problem>::integrate(problem, x0, each_times, o), errors_of,
+                       period);
     } catch (const std::exception&) {
       c = not_completed(o);  // more steps than allowed
     }
@@ -156,14 +210,17 @@ std::vector<MethodComparison> ProblemCode<Problem>::compare_methods(
   return out;
 }
 
-template <class Problem>
-std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
-    const Problem& problem, const typename Problem::Exact& exact, double period, double periods,
-    double evaluations_per_period, double samples_per_period) {
-  const State x0 = problem.exact_state(exact, 0.0);
+// compare_methods_at_cost (compare.h) from x0, each run measured by `errors_of`.
+template <class Problem, class ErrorsOf>
+std::vector<MethodComparison> compare_at_cost(const Problem& problem,
+                                              const typename Problem::State& x0,
+                                              const ErrorsOf& errors_of, double period,
+                                              double periods, double evaluations_per_period,
+                                              double samples_per_period) {
   const double calibration = std::min(periods, kCostCalibrationPeriods);
   std::vector<MethodComparison> out;
   for (const Method m : kAllMethods) {
+    if (!can_run<Problem>(m)) continue;
     for (const bool project : {false, true}) {
       if (project && !(kHasProjection<Problem> && can_project(m))) continue;
       const auto run_with = [&](OdeOptions o, double over) {
@@ -171,7 +228,7 @@ std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
         const auto max_samples = static_cast<std::size_t>(std::ceil(over * samples_per_period)) + 1;
         const std::vector<double> times = sample_times(
             over * period, period, is_adaptive(m) ? 0.0 : o.step, samples_per_period, max_samples);
-        return integrate(problem, x0, times, o);
+        return ProblemCode<Problem>::integrate(problem, x0, times, o);
       };
       OdeOptions o = settings_at_cost(
           m, period, calibration, evaluations_per_period,
@@ -181,7 +238,7 @@ std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
       MethodComparison c;
       c.options = o;
       try {
-        measure(c, problem, run_with(o, periods), exact, period);
+        measure<Problem>(c, run_with(o, periods), errors_of, period);
       } catch (const std::exception&) {
         c = not_completed(o);
       }
@@ -189,6 +246,54 @@ std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
     }
   }
   return out;
+}
+
+template <class Problem>
+std::vector<MethodComparison> ProblemCode<Problem>::compare_methods(
+    const Problem& problem, const Exact& exact, const std::vector<double>& times, double period,
+    const OdeOptions& options, std::size_t max_steps) {
+  if constexpr (kHasExact<Problem>) {
+    return compare_at_settings(problem, problem.exact_state(exact, 0.0),
+                               exact_errors(problem, exact), times, period, options, max_steps);
+  } else {
+    refuse_exact();
+  }
+}
+
+template <class Problem>
+std::vector<MethodComparison> ProblemCode<Problem>::compare_methods(
+    const Problem& problem, const Reference<State>& reference, const std::vector<double>& times,
+    double period, const OdeOptions& options, std::size_t max_steps) {
+  if constexpr (kHasReferenceErrors<Problem>) {
+    return compare_at_settings(problem, reference.x0, reference_errors(problem, reference), times,
+                               period, options, max_steps);
+  } else {
+    refuse_reference();
+  }
+}
+
+template <class Problem>
+std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
+    const Problem& problem, const Exact& exact, double period, double periods,
+    double evaluations_per_period, double samples_per_period) {
+  if constexpr (kHasExact<Problem>) {
+    return compare_at_cost(problem, problem.exact_state(exact, 0.0), exact_errors(problem, exact),
+                           period, periods, evaluations_per_period, samples_per_period);
+  } else {
+    refuse_exact();
+  }
+}
+
+template <class Problem>
+std::vector<MethodComparison> ProblemCode<Problem>::compare_methods_at_cost(
+    const Problem& problem, const Reference<State>& reference, double period, double periods,
+    double evaluations_per_period, double samples_per_period) {
+  if constexpr (kHasReferenceErrors<Problem>) {
+    return compare_at_cost(problem, reference.x0, reference_errors(problem, reference), period,
+                           periods, evaluations_per_period, samples_per_period);
+  } else {
+    refuse_reference();
+  }
 }
 
 }  // namespace rigid::detail

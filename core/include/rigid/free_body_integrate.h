@@ -62,6 +62,10 @@ class FreeBodyProblem {
   State exact_state(const Exact& exact, double t) const { return exact.state(t); }
   /// Each sample's |omega - omega_exact| / |omega_exact(0)| and |T / T_exact - 1| (eq. 81).
   ExactErrors errors_against(const Exact& exact, const std::vector<Sample>& samples) const;
+  /// The same against a reference run's samples at the same times: |omega - omega_ref| /
+  /// |omega_ref(0)| and |T / T_ref - 1|.
+  ExactErrors errors_against(const std::vector<Sample>& reference,
+                             const std::vector<Sample>& samples) const;
 
  private:
   PrincipalMoments I_;

@@ -233,6 +233,28 @@ class HeavyTopExact {
   // The integral of 1/(1 - n sn^2) from 0 to v (v reduced by 2K inside).
   double third_kind(double v, double n, double one_minus_n, double complete) const;
 
+  // The constructor's steps, in the book's order (heavy_top_exact.cpp).
+  struct StartTerms;  // the start's terms, formed in 113-bit arithmetic
+  static StartTerms start_terms(const HeavyTop& top, const TopStart& start);
+  // The conserved p_psi, p_phi and E (eqs. 176, 177, 191-193); throws where they overflow.
+  void take_constants(const StartTerms& terms);
+  // The turning circles u1 <= u2 and u3 >= 1, the roots of the energy equation's f(u), about u0.
+  void find_turning_circles(const StartTerms& terms);
+  // 1 + u1 to its own accuracy where u1 is near the bottom, from f about u = -1.
+  void refine_near_south_pole(const StartTerms& terms);
+  // 1 - u2 and u3 - 1 where near upright, from f about u = 1; returns u3 - 1 (NaN: not).
+  double refine_near_north_pole(const StartTerms& terms);
+  // A turning circle within underflow of a pole taken as the pole.
+  void take_poles_within_underflow();
+  // The phase: k^2, lambda, K, the nutation period, v0; steady or wavy.
+  void set_phase(double u3_minus_1);
+  // The mean precession, phi_dot's mean over a nutation period, and its limits.
+  void set_mean_precession();
+  // phi_dot at the turning circles, and the regime its signs there decide.
+  void classify_regime();
+  // The poles the axis goes through as roots of f (b -+ a = 0): 0, 1 or 2.
+  int root_poles() const;
+
   HeavyTop top_;
   TopStart start_;
   TopRegime regime_ = TopRegime::kSteady;

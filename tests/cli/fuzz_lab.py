@@ -1,0 +1,433 @@
+#!/usr/bin/env python3
+"""A deterministic adversary for one lab, case by case in classes, with counts.
+
+Reads the lab's options from its --help (so a new lab is covered without new
+code) and runs it many times. Classes (each case's class is in its report line):
+  numbers     random values for one to three options: numbers across the whole
+              double range and beyond it, NaN and infinities, malformed numbers,
+              strings with control characters, vectors of the wrong length,
+              combinations, --csv paths;
+  bytes       random bytes (invalid UTF-8, C0 and C1 controls, bidi overrides) in
+              a word option or the --csv name, under --json;
+  file names  any name the filesystem accepts (up to 255 bytes, any byte but '/'
+              and NUL) as --csv, beside decoys a careless cleanup would delete;
+  figures     the numbers class's inputs with --figures: every valid run draws;
+  signals     SIGINT or SIGTERM at a random moment of a run writing --csv and
+              --figures;
+  full disk   --csv and --figures into a small tmpfs (where this user may mount).
+Every run must keep the lab contract:
+  - exit 0 with strict JSON on stdout (no NaN, no Infinity, valid UTF-8), or exit 2
+    with one line on stderr of the form "LAB: error: --option: rule", escaped (no raw
+    control character, no invalid UTF-8, no bidi override); a failure to write
+    (full disk) exits 1 with one line; a signal ends the run by that signal;
+  - finish within its work bound: the CPU seconds it may spend (a busy machine
+    does not stretch them, as it does wall time); a run still alive after many
+    times that on the clock is a hang (it waits without working);
+  - leave no temporary file behind, land all its outputs or none, and touch no
+    file it did not create.
+Usage: fuzz_lab.py LAB_EXECUTABLE [--cases N] [--class-cases M] [--seed S] [--cpu-seconds S]
+Exit status 0 when every case keeps the contract, 1 otherwise.
+"""
+import argparse
+import json
+import os
+import random
+import re
+import resource
+import subprocess
+import sys
+import shutil
+import signal
+import tempfile
+import time
+import unicodedata
+
+OPTION = re.compile(r"^\s+(?:-\w,)?(--[\w-]+)(?:\s+(\S+?))?(?:=(\S+))?(?:\s+x\s+(\d))?\s{2,}(.*)$")
+
+
+def options_of(lab):
+    """(name, kind, count, choices, defaults) for every option in --help."""
+    text = subprocess.run([lab, "--help"], capture_output=True, text=True).stdout
+    found = []
+    for line in text.splitlines():
+        m = OPTION.match(line)
+        if not m:
+            continue
+        name, kind, default, count, rest = (m.group(1), m.group(2) or "", m.group(3), m.group(4),
+                                            m.group(5))
+        if name in ("--help", "--version", "--figures", "--figure-size", "--figure-prefix", "--timing",
+                    "--animate", "--explore"):
+            # drawing is covered by the figure and animation tests, the window (--explore) by
+            # the explorer's; here only the contract
+            continue
+        if kind.startswith("NUMBER") or kind.startswith("WORD") or kind.startswith("FILE"):
+            kind = kind.split("=")[0]
+        choices = []
+        c = re.search(r"\(([\w|.-]+)\)\s*$", rest)
+        if kind.startswith("WORD") and c:
+            choices = c.group(1).split("|")
+        defaults = []
+        for part in (default or "").split(","):
+            try:
+                defaults.append(float(part))
+            except ValueError:
+                pass
+        found.append((name, kind, int(count) if count else 1, choices, defaults))
+    return found
+
+
+def number(rng, default=None):
+    """A number as a user might type it, or mistype it: near the default (so most
+    runs compute), across the whole double range, or malformed."""
+    pick = rng.random()
+    if pick < 0.4 and default:  # the default scaled by up to 1e3 either way
+        return repr(default * 10.0 ** rng.uniform(-3, 3))
+    if pick < 0.6:  # across the whole double range, both signs
+        exp = rng.uniform(-330, 330)
+        value = rng.choice([1, -1]) * 10.0 ** exp if abs(exp) < 308 else rng.choice(["1e400", "1e-400", "-1e400"])
+        return value if isinstance(value, str) else repr(value)
+    if pick < 0.75:  # ordinary values
+        return repr(rng.choice([1, -1, 0.5, 2]) * rng.uniform(0.01, 100))
+    return rng.choice([
+        "0", "-0", "1", "-1", "nan", "NaN", "-nan", "inf", "-inf", "infinity", "1e", "abc", "",
+        "0x10", "1,2", "1e-60", "1e60", "1e-61", "1e61", "4.9e-324", "1.7976931348623157e308",
+        "1\n2", "2\x1b[31m", "--json", " 3", "3 ", "1e+308", "-1e-308", "1" * 400,
+    ])
+
+
+def value_for(rng, kind, count, choices, defaults):
+    if kind == "FILE":
+        return None  # --csv is handled by the caller
+    if choices:
+        return rng.choice(choices) if rng.random() < 0.85 else rng.choice(["", "RK4", "x\ny", "exact,rk4"])
+    if count > 1 or "," in kind:
+        n = count if rng.random() < 0.85 else rng.choice([0, 1, 2, 4])
+        return ",".join(number(rng, defaults[i] if i < len(defaults) else None)
+                        for i in range(max(n, 1))) if n else ""
+    if kind == "":
+        return ""  # a flag
+    return number(rng, defaults[0] if defaults else None)
+
+
+BIDI = {chr(c) for c in list(range(0x202A, 0x202F)) + list(range(0x2066, 0x206A))}
+
+
+def stderr_problems(lab_name, err_bytes, kind="error"):
+    """What is wrong with a one-line message on stderr ("LAB: error: --option: ...")."""
+    try:
+        err = err_bytes.decode("utf-8")
+    except UnicodeDecodeError:
+        return [f"invalid UTF-8 on stderr: {err_bytes[:200]!r}"]
+    if err.count("\n") != 1 or not err.endswith("\n"):
+        return [f"not one {kind} line: {err[:300]!r}"]
+    if not err.startswith(f"{lab_name}: error: "):
+        return [f"not an error line: {err[:300]!r}"]
+    if any(unicodedata.category(ch) == "Cc" or ch in BIDI for ch in err[:-1]):
+        return [f"raw control character in: {err[:300]!r}"]
+    return []
+
+
+def check(lab_name, proc, cpu, limit, workdir, allow_write_failure=False, ours=()):
+    """The contract's breaches for one run, as strings."""
+    problems = []
+    if cpu > limit or proc.returncode == -signal.SIGXCPU:
+        return [f"worked {cpu:.1f} CPU seconds, beyond the bound of {limit:.0f}"]
+    if proc.returncode == 0:
+        def reject(token):
+            raise ValueError(f"non-strict JSON constant {token}")
+        try:
+            out = json.loads(proc.stdout.decode("utf-8"), parse_constant=reject)
+            if not isinstance(out.get("results"), dict):
+                problems.append("JSON without results")
+        except (ValueError, UnicodeDecodeError) as e:
+            problems.append(f"stdout is not strict JSON: {e}")
+    elif proc.returncode == 2 or (proc.returncode == 1 and allow_write_failure):
+        problems += stderr_problems(lab_name, proc.stderr)
+        if proc.returncode == 2 and not proc.stderr.startswith(f"{lab_name}: error: --".encode()):
+            problems.append(f"error line names no option: {proc.stderr[:300]!r}")
+        if proc.stdout:
+            problems.append("printed to stdout as well as refusing")
+    else:
+        problems.append(f"exit status {proc.returncode}: {proc.stderr[-300:]!r}")
+    problems += leftovers(workdir, ours)
+    return problems
+
+
+def leftovers(workdir, decoys=()):
+    """Temporaries left in workdir, other than the decoys the case made itself."""
+    found = []
+    for root, _, files in os.walk(os.fsencode(workdir)):
+        for name in files:
+            path = os.path.join(root, name)
+            if path in decoys:
+                continue
+            if b".rigidlab-tmp-" in name or b".rigidlab-probe-" in name:
+                found.append(f"left {path!r} behind")
+    return found
+
+
+def random_bytes(rng, for_file_name=False):
+    """1 to 40 bytes a user could pass: printable, controls, invalid UTF-8, C1 and bidi."""
+    pieces = [
+        lambda: bytes([rng.randint(0x20, 0x7e)]),
+        lambda: bytes([rng.randint(0x01, 0x1f)]),
+        lambda: bytes([rng.choice([0x7f, 0x80, 0x9b, 0xc3, 0xff, 0xfe])]),
+        lambda: "\u202e".encode(), lambda: "\u009b".encode(), lambda: "\u00e9".encode(),
+        lambda: "\U0001f600".encode(), lambda: b" ", lambda: b"-",
+    ]
+    out = b"".join(rng.choice(pieces)() for _ in range(rng.randint(1, 40)))
+    if for_file_name:
+        out = out.replace(b"/", b"_") or b"x"
+        if out in (b".", b".."):
+            out += b"x"
+    return out
+
+
+def file_name(rng):
+    """Any name the filesystem takes: up to 255 bytes, no '/' or NUL, not . or .."""
+    pick = rng.random()
+    if pick < 0.3:
+        name = random_bytes(rng, True)
+    elif pick < 0.5:
+        name = b"n" * rng.randint(200, 251) + b".csv"
+    else:
+        name = rng.choice([b"-out.csv", b" lead", b"trail ", b"a\nb.csv", b"$(touch pwned)",
+                           b"c.csv.tmp-99999", b"x.rigidlab-tmp-1-0123456789abcdef", b".hidden",
+                           "\u00e9t\u00e9.csv".encode(), b"*?[]", b"'\"", b"\\"])
+    return name[:255]
+
+
+def decoys_for(workdir, target):
+    """Files a careless cleanup would take for its own; their bytes, by name."""
+    made = {}
+    for suffix in (b".tmp-1", b".tmp-99999", b".tmp-2024-01-05-backup", b".rigidlab-tmp-x",
+                   b".rigidlab-tmp-99999999-0123456789abcdeg"):
+        name = target + suffix
+        if len(name) > 255:
+            continue
+        path = os.path.join(os.fsencode(workdir), name)
+        with open(path, "wb") as f:
+            f.write(b"user data " + name)
+        made[path] = b"user data " + name
+    return made
+
+
+def decoys_intact(made):
+    problems = []
+    for path, content in made.items():
+        try:
+            with open(path, "rb") as f:
+                if f.read() != content:
+                    problems.append(f"changed {path!r}")
+        except OSError:
+            problems.append(f"deleted {path!r}")
+    return problems
+
+
+def children_cpu():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def cpu_bound(seconds):
+    """A child's limit of CPU time: the kernel stops it with SIGXCPU just past it."""
+    limit = int(seconds) + 1
+    return lambda: resource.setrlimit(resource.RLIMIT_CPU, (limit, limit + 1))
+
+
+def run(argv, cwd, cpu_seconds):
+    """One run and the CPU seconds it spent; runs are one at a time, so the children's
+    total grows by this run's alone. The clock only stops a run that has stopped
+    working (a hang), at twenty times its work bound."""
+    before = children_cpu()
+    proc = subprocess.run(argv, capture_output=True, timeout=20 * cpu_seconds, cwd=cwd,
+                          preexec_fn=cpu_bound(cpu_seconds))
+    return proc, children_cpu() - before
+
+
+def random_argv(rng, lab, physical):
+    argv = [lab, "--json"]
+    for name, kind, count, choices, defaults in rng.sample(
+            physical, min(len(physical), rng.randint(1, 3))):
+        value = value_for(rng, kind, count, choices, defaults)
+        argv += [name] if kind == "" else [name, value]
+    return argv
+
+
+def outputs_landed(csv, figures):
+    """(csv landed, figures landed) of a run; an output not asked for counts as landed
+    when the other did, so that "all or none" compares like with like."""
+    pngs = os.path.isdir(figures) and any(n.endswith(".png") for n in os.listdir(figures))
+    return os.path.exists(csv), pngs
+
+
+def output_argv(has_csv, has_figures, csv, figures):
+    return (["--csv", csv] if has_csv else []) + (["--figures", figures] if has_figures else [])
+
+
+def all_or_none(landed, has_csv, has_figures):
+    asked = [x for x, on in zip(landed, (has_csv, has_figures)) if on]
+    return all(asked) or not any(asked), all(asked)
+
+
+def can_mount():
+    if os.geteuid() != 0 or not shutil.which("mount"):
+        return False
+    with tempfile.TemporaryDirectory() as d:
+        ok = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", d],
+                            capture_output=True).returncode == 0
+        if ok:
+            subprocess.run(["umount", d], capture_output=True)
+        return ok
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("lab")
+    ap.add_argument("--cases", type=int, default=60, help="cases of the numbers class")
+    ap.add_argument("--class-cases", type=int, default=12, help="cases of each other class")
+    ap.add_argument("--seed", type=int, default=20261124)
+    ap.add_argument("--cpu-seconds", type=float, default=10.0,
+                    help="the CPU time a run may spend")
+    args = ap.parse_args()
+    args.lab = os.path.abspath(args.lab)
+    lab_name = os.path.basename(args.lab)
+    rng = random.Random(f"{args.seed}:{lab_name}")
+    options = options_of(args.lab)
+    help_text = subprocess.run([args.lab, "--help"], capture_output=True, text=True).stdout
+    has_csv, has_figures = "--csv" in help_text, "--figures" in help_text
+    physical = [o for o in options if o[0] not in ("--json", "--quiet", "--csv")]
+    words = [o for o in physical if o[3]]
+    start = time.monotonic()
+    tried, held = {}, {}
+
+    def report(cls, argv, problems):
+        tried[cls] = tried.get(cls, 0) + 1
+        held[cls] = held.get(cls, 0) + (not problems)
+        if problems:
+            shown = [a if isinstance(a, str) else repr(a) for a in argv[1:]]
+            print(f"FAIL {lab_name} [{cls}]: {shown!r}"[:600] + f": {'; '.join(problems)}"[:600])
+
+    def attempt(cls, argv, workdir, **kw):
+        try:
+            proc, cpu = run(argv, workdir, args.cpu_seconds)
+        except subprocess.TimeoutExpired:
+            report(cls, argv, [f"hung (alive after {20 * args.cpu_seconds:.0f} s on the clock)"])
+            return None
+        problems = check(lab_name, proc, cpu, args.cpu_seconds, workdir, **kw)
+        return proc, problems
+
+    for _ in range(args.cases):  # numbers
+        with tempfile.TemporaryDirectory() as workdir:
+            argv = random_argv(rng, args.lab, physical)
+            if has_csv and rng.random() < 0.3:
+                target = rng.choice(["out.csv", "sub/out.csv", ".", "x" * 300 + ".csv"])
+                argv += ["--csv", os.path.join(workdir, target)]
+            result = attempt("numbers", argv, workdir)
+            if result:
+                report("numbers", argv, result[1])
+
+    for _ in range(args.class_cases):  # bytes
+        with tempfile.TemporaryDirectory() as workdir:
+            argv = [os.fsencode(args.lab), b"--json"]
+            if words and (not has_csv or rng.random() < 0.5):
+                argv += [os.fsencode(rng.choice(words)[0]), random_bytes(rng)]
+            elif has_csv:
+                argv += [b"--csv", random_bytes(rng, True)]
+            result = attempt("bytes", argv, workdir)
+            if result:
+                report("bytes", argv, result[1])
+
+    for _ in range(args.class_cases if has_csv else 0):  # file names
+        with tempfile.TemporaryDirectory() as workdir:
+            name = file_name(rng)
+            made = decoys_for(workdir, name)
+            argv = [os.fsencode(args.lab), b"--json", b"--csv", name]
+            target = os.path.join(os.fsencode(workdir), name)
+            result = attempt("file names", argv, workdir, ours=set(made) | {target})
+            if result:
+                proc, problems = result
+                problems += decoys_intact(made)
+                if proc.returncode != 0:
+                    problems.append("a name the filesystem accepts was refused")
+                elif not os.path.isfile(os.path.join(os.fsencode(workdir), name)):
+                    problems.append("exit 0 but the file is not there")
+                report("file names", argv, problems)
+
+    for _ in range(args.class_cases if has_figures else 0):  # figures
+        with tempfile.TemporaryDirectory() as workdir:
+            figures = os.path.join(workdir, "figs")
+            argv = random_argv(rng, args.lab, physical) + ["--figures", figures]
+            result = attempt("figures", argv, workdir)
+            if result:
+                proc, problems = result
+                drawn = os.path.isdir(figures) and any(n.endswith(".png")
+                                                       for n in os.listdir(figures))
+                if proc.returncode == 0 and not drawn:
+                    problems.append("exit 0 without its figures")
+                if proc.returncode != 0 and os.path.exists(figures):
+                    problems.append("refused, yet made the figures folder")
+                report("figures", argv, problems)
+
+    writes = has_csv or has_figures
+    for _ in range(args.class_cases if writes else 0):  # signals
+        with tempfile.TemporaryDirectory() as workdir:
+            csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
+            argv = [args.lab, "--quiet"] + output_argv(has_csv, has_figures, csv, figures)
+            sig = rng.choice([signal.SIGINT, signal.SIGTERM])
+            proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
+                                    stderr=subprocess.PIPE)
+            time.sleep(rng.uniform(0.0, 0.4))
+            proc.send_signal(sig)
+            try:
+                _, err = proc.communicate(timeout=20 * args.cpu_seconds)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                report("signals", argv, ["did not end after the signal"])
+                continue
+            problems = leftovers(workdir)
+            landed = outputs_landed(csv, figures)
+            whole, every = all_or_none(landed, has_csv, has_figures)
+            if proc.returncode == 0:
+                if not every:
+                    problems.append(f"finished (exit 0) but landed {landed}")
+            elif proc.returncode == -sig:
+                if not whole:
+                    problems.append(f"killed by the signal with half its outputs: {landed}")
+            else:
+                problems.append(f"exit status {proc.returncode} after {sig.name}: {err[-200:]!r}")
+            report("signals", argv + [sig.name], problems)
+
+    mountable = writes and can_mount()
+    for _ in range(args.class_cases if mountable else 0):  # full disk
+        with tempfile.TemporaryDirectory() as workdir:
+            size = rng.choice(["8k", "32k", "128k", "512k"])
+            subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", workdir],
+                           check=True, capture_output=True)
+            try:
+                csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
+                argv = [args.lab, "--json"] + output_argv(has_csv, has_figures, csv, figures)
+                result = attempt("full disk", argv, workdir, allow_write_failure=True)
+                if result:
+                    proc, problems = result
+                    landed = outputs_landed(csv, figures)
+                    if proc.returncode == 0 and not all_or_none(landed, has_csv, has_figures)[1]:
+                        problems.append(f"exit 0 but landed {landed}")
+                    if proc.returncode != 0 and os.listdir(workdir):
+                        problems.append(f"failed, yet left {os.listdir(workdir)}")
+                    report("full disk", argv + [size], problems)
+            finally:
+                subprocess.run(["umount", workdir], capture_output=True)
+
+    failures = sum(tried.values()) - sum(held.values())
+    for cls in tried:
+        print(f"{lab_name} [{cls}]: {tried[cls]} tried, {held[cls]} held")
+    if writes and not mountable:
+        print(f"{lab_name} [full disk]: not tried (this user cannot mount a tmpfs)")
+    print(f"{lab_name}: {sum(tried.values())} cases, {failures} failures, "
+          f"{time.monotonic() - start:.1f} s")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
