@@ -19,22 +19,18 @@ namespace rigid::support {
 
 namespace {
 
-// The spawn's file actions, destroyed on every path out.
-struct FileActions {
-  posix_spawn_file_actions_t actions;
-  FileActions() { posix_spawn_file_actions_init(&actions); }
-  ~FileActions() { posix_spawn_file_actions_destroy(&actions); }
-  FileActions(const FileActions&) = delete;
-  FileActions& operator=(const FileActions&) = delete;
+// A posix_spawn object, destroyed on every path out.
+template <class T, int (*Init)(T*), int (*Destroy)(T*)>
+struct Scoped {
+  T value;
+  Scoped() { Init(&value); }
+  ~Scoped() { Destroy(&value); }
+  Scoped(const Scoped&) = delete;
+  Scoped& operator=(const Scoped&) = delete;
 };
-
-struct SpawnAttributes {
-  posix_spawnattr_t attributes;
-  SpawnAttributes() { posix_spawnattr_init(&attributes); }
-  ~SpawnAttributes() { posix_spawnattr_destroy(&attributes); }
-  SpawnAttributes(const SpawnAttributes&) = delete;
-  SpawnAttributes& operator=(const SpawnAttributes&) = delete;
-};
+using FileActions = Scoped<posix_spawn_file_actions_t, posix_spawn_file_actions_init,
+                           posix_spawn_file_actions_destroy>;
+using SpawnAttributes = Scoped<posix_spawnattr_t, posix_spawnattr_init, posix_spawnattr_destroy>;
 
 // `stream` (1 or 2) of the child as `redirect` says; the pipe's ends in `ends` if it is one.
 void redirect(FileActions& f, int stream, const Redirect& redirect, const int ends[2]) {
@@ -42,13 +38,13 @@ void redirect(FileActions& f, int stream, const Redirect& redirect, const int en
     case Redirect::To::kInherit:
       break;
     case Redirect::To::kNull:
-      posix_spawn_file_actions_addopen(&f.actions, stream, "/dev/null", O_WRONLY, 0);
+      posix_spawn_file_actions_addopen(&f.value, stream, "/dev/null", O_WRONLY, 0);
       break;
     case Redirect::To::kPipe:
-      posix_spawn_file_actions_adddup2(&f.actions, ends[1], stream);
+      posix_spawn_file_actions_adddup2(&f.value, ends[1], stream);
       break;
     case Redirect::To::kFile:
-      posix_spawn_file_actions_adddup2(&f.actions, redirect.fd, stream);
+      posix_spawn_file_actions_adddup2(&f.value, redirect.fd, stream);
       break;
   }
 }
@@ -68,16 +64,16 @@ Subprocess::Subprocess(const std::filesystem::path& path, const std::vector<std:
   redirect(actions, STDERR_FILENO, options.err, ends);
   SpawnAttributes attributes;
   if (options.signal_mask != nullptr) {
-    posix_spawnattr_setsigmask(&attributes.attributes, options.signal_mask);
-    posix_spawnattr_setflags(&attributes.attributes, POSIX_SPAWN_SETSIGMASK);
+    posix_spawnattr_setsigmask(&attributes.value, options.signal_mask);
+    posix_spawnattr_setflags(&attributes.value, POSIX_SPAWN_SETSIGMASK);
   }
   // execv's argv is of char*: the strings' own buffers, copied here, are writable
   std::vector<std::string> words = args;
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
-  const int spawned = ::posix_spawn(&pid_, path.c_str(), &actions.actions, &attributes.attributes,
-                                    argv.data(), environ);
+  const int spawned =
+      ::posix_spawn(&pid_, path.c_str(), &actions.value, &attributes.value, argv.data(), environ);
   if (piped) ::close(ends[1]);
   if (spawned != 0) {
     if (piped) ::close(ends[0]);
