@@ -23,6 +23,7 @@ struct Explorer::Apply {
     return taken(i, s.set_text(i, a.text));
   }
   std::string operator()(const action::SetValue& a) const {
+    if (a.input >= e.session_->input_count()) return "";  // an input of a lab left
     return taken(a.input, e.session_->set(a.input, a.value));
   }
   // The field shows the refusal, or every field the state now taken.

@@ -33,6 +33,7 @@ Explorer::~Explorer() = default;
 // A lab that has come: shown from its start, the export section's fields kept.
 void Explorer::install(std::size_t index, std::unique_ptr<lab::Session> session) {
   if (session_) loader_.close(std::move(session_));
+  queued_.clear();  // what was queued for the lab left (an export waiting for its report)
   session_ = std::move(session);
   lab_index_ = index;
   if (window_.set_title) window_.set_title("rigidlab explore: " + session_->name());
@@ -122,13 +123,13 @@ void Explorer::frame(double seconds) {
 }
 
 void Explorer::sync(double seconds) {
-  // a lab asked for, once it has come
+  // what the panels queued, for the lab they showed; then a lab asked for, once it has come
+  apply_queued();
   try {
     if (auto opened = loader_.take()) install(opened->index, std::move(opened->session));
   } catch (const std::exception& e) {
     say(support::terminal_safe(e.what()), true);
   }
-  apply_queued();
   script_held_ = false;
   if (script_) {
     seconds = kScriptFrameSeconds;
