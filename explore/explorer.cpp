@@ -208,6 +208,8 @@ void Explorer::poll_recording() {
   say(ok ? "wrote " + support::terminal_safe(recording_->path)
          : "recording failed: " + support::terminal_safe(err),
       !ok);
+  // a script's failed write is its exit status, as a screenshot's is
+  if (!ok && script_) status_ = 1;
   recording_.reset();
 }
 

@@ -488,3 +488,18 @@ TEST_CASE("explore: another lab opens off the frame's thread while the frames go
   CHECK(imgui.frame(e));
   CHECK(e.command_line() == "poinsot --mass=2.5");
 }
+
+TEST_CASE("explore: a recording that cannot be written says why and the script exits 1") {
+  const fs::path dir = fresh_dir("record");
+  const Run run = run_explorer("euler_angles",
+                               "record " + (dir / "no" / "such" / "motion.webp").string() +
+                                   "\nframes 2\nprint-command\nquit\n",
+                               dir);
+  INFO(run.out << run.err);
+  // the lab's own command refuses the folder, in its own words; the script waited for it
+  CHECK(run.status == 1);
+  CHECK(run.err.find("recording failed: euler_angles: error: --animate: cannot write into "
+                     "directory") != std::string::npos);
+  CHECK(lines_of(run.out).back() == "euler_angles");
+  CHECK_FALSE(fs::exists(dir / "no"));
+}
