@@ -447,6 +447,30 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
   }
 }
 
+// Problem p as the report titles it (an entry of group "problem") and as the SciPy run
+// starts from it (reference.json), with its exact end state.
+void describe(const Problem& p, const rigid::FreeBodyExact& exact,
+              const rigid::RotationState& x_end, Json& entries, Json& ref) {
+  Json desc;
+  desc["group"] = "problem";
+  desc["problem"] = p.name;
+  desc["title"] = p.title;
+  desc["I"] = vec(p.I.vector());
+  desc["L0_body"] = vec(p.L0_body);
+  desc["t_end"] = p.t_end;
+  desc["polhode_period"] = exact.period();
+  entries.push_back(desc);
+  Json jp;
+  jp["name"] = p.name;
+  jp["I"] = vec(p.I.vector());
+  jp["L0_body"] = vec(p.L0_body);
+  jp["omega0_body"] = vec(p.omega0_body());
+  jp["t_end"] = p.t_end;
+  jp["state_end"] = Json(std::vector<double>(x_end.begin(), x_end.end()));
+  jp["polhode_period"] = exact.period();
+  ref["problems"].push_back(jp);
+}
+
 void write_json(const std::filesystem::path& path, const Json& j) {
   const std::filesystem::path tmp = path.string() + ".tmp";
   {
@@ -492,24 +516,7 @@ int main(int argc, char** argv) {
     const rigid::RotationState x_end = reference(p, exact, entries);
     exact_ends.push_back({p, x_end});
     tick(p.name + ", reference");
-    Json desc;
-    desc["group"] = "problem";
-    desc["problem"] = p.name;
-    desc["title"] = p.title;
-    desc["I"] = vec(p.I.vector());
-    desc["L0_body"] = vec(p.L0_body);
-    desc["t_end"] = p.t_end;
-    desc["polhode_period"] = exact.period();
-    entries.push_back(desc);
-    Json jp;
-    jp["name"] = p.name;
-    jp["I"] = vec(p.I.vector());
-    jp["L0_body"] = vec(p.L0_body);
-    jp["omega0_body"] = vec(p.omega0_body());
-    jp["t_end"] = p.t_end;
-    jp["state_end"] = Json(std::vector<double>(x_end.begin(), x_end.end()));
-    jp["polhode_period"] = exact.period();
-    ref["problems"].push_back(jp);
+    describe(p, exact, x_end, entries, ref);
   }
   // the reference first, so the SciPy run can start from it whatever happens below
   write_json(dir / "reference.json", ref);

@@ -5,13 +5,13 @@
 // rasteriser on the CPU (no multisampled buffers to clear, resolve and read back: a
 // plot's fixed cost in the GL path was about 30 ms).
 //
-// Why libcairo is opened here and not linked: linked, it brings some twenty shared
-// objects (pixman, fontconfig, the X client libraries, ...) that every process linking
-// the renderer would load at start, drawing or not: tennis_racquet --json took 5 ms where
-// it takes 3 (bench/results.md, "Start-up: what a linked library costs"). So libcairo
-// (with the FreeType it uses) is opened on the first plot drawn or vector figure written,
-// as OSMesa, EGL and the video encoders are, and a process that draws neither never
-// loads it.
+// Why libcairo is opened here and not linked: linked, it and the twenty-odd shared
+// objects it needs (pixman, fontconfig, the X client libraries, ...) would load at the
+// start of every process that links the renderer, drawing or not: 1.4 ms more, where
+// the fastest lab's whole run without figures (football --json) takes 2.9 ms
+// (bench/results.md, "Start-up: what a linked library costs"). So libcairo (with the
+// FreeType it uses) is opened on the first plot drawn or vector figure written, as OSMesa,
+// EGL and the video encoders are, and a process that draws neither never loads it.
 #include <cairo-ft.h>
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
