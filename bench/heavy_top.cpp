@@ -281,37 +281,26 @@ void elliptic_entries(const TopProblem& p, const rigid::HeavyTopExact& exact, Js
     entries.push_back(e);
   };
   add("rigidlab", "theta",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) sum += exact.theta(i * dt);
-            bench::do_not_optimize(sum);
-          },
-          policy));
+      bench::best_sum_seconds(
+          kSamples, [&](int i) { return exact.theta(i * dt); }, policy));
   add("rigidlab", "theta+phi+psi",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              const rigid::TopAngles a = exact.angles(i * dt);
-              sum += a.theta + a.phi + a.psi;
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            const rigid::TopAngles a = exact.angles(i * dt);
+            return a.theta + a.phi + a.psi;
           },
           policy));
 #ifdef RIGID_BENCH_HAVE_GSL
   const double m2 = (exact.u2() - exact.u1()) / (exact.u3() - exact.u1());
   const double du = 2 * M_PI / kSamples * 20;  // about as many periods as the samples cover
   add("gsl", "elljac",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              double s, c, d;
-              gsl_sf_elljac_e(i * du, m2, &s, &c, &d);
-              sum += s + c + d;
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            double s, c, d;
+            gsl_sf_elljac_e(i * du, m2, &s, &c, &d);
+            return s + c + d;
           },
           policy));
 #endif

@@ -267,22 +267,14 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
     out.push_back(e);
   };
   add("rigidlab", "omega",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) sum += exact.omega_body(i * dt).sum();
-            bench::do_not_optimize(sum);
-          },
-          policy));
+      bench::best_sum_seconds(
+          kSamples, [&](int i) { return exact.omega_body(i * dt).sum(); }, policy));
   add("rigidlab", "omega+attitude",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              const rigid::RotationState x = exact.state(i * dt);
-              sum += x[0] + x[3];
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            const rigid::RotationState x = exact.state(i * dt);
+            return x[0] + x[3];
           },
           policy));
 #ifdef RIGID_BENCH_HAVE_GSL
@@ -291,26 +283,20 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
           [&] { bench::do_not_optimize(bench::gsl_elljac_sum(0.0, du, kSamples, m)); }, policy));
 #endif
   add("boost-default", "jacobi_elliptic",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              double cn, dn;
-              sum += boost::math::jacobi_elliptic(k, i * du, &cn, &dn) + cn + dn;
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            double cn, dn;
+            return boost::math::jacobi_elliptic(k, i * du, &cn, &dn) + cn + dn;
           },
           policy));
   using NoPromote = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
   add("boost-nopromote", "jacobi_elliptic",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              double cn, dn;
-              sum += boost::math::jacobi_elliptic(k, i * du, &cn, &dn, NoPromote()) + cn + dn;
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            double cn, dn;
+            return boost::math::jacobi_elliptic(k, i * du, &cn, &dn, NoPromote()) + cn + dn;
           },
           policy));
 }
