@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "entries.h"
 #include "output.h"
 #include "rigid/heavy_top_integrate.h"
 #include "timing.h"
@@ -271,14 +272,7 @@ void elliptic_entries(const TopProblem& p, const rigid::HeavyTopExact& exact, Js
   const double dt = p.t_end / kSamples;
   const bench::TimingPolicy policy{0.05, 5, 0.5};
   const auto add = [&](const char* tool, const char* what, double seconds) {
-    Json e;
-    e["group"] = "elliptic";
-    e["problem"] = p.name;
-    e["tool"] = tool;
-    e["what"] = what;
-    e["ns_per_sample"] = seconds / kSamples * 1e9;
-    bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
-    entries.push_back(e);
+    entries.push_back(bench::elliptic_entry(p.name, tool, what, seconds, kSamples));
   };
   add("rigidlab", "theta",
       bench::best_sum_seconds(

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "entries.h"
 #include "output.h"
 #include "peers.h"
 #include "problems.h"
@@ -256,14 +257,8 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
   const bench::TimingPolicy policy{0.05, 5, 0.5};
 
   const auto add = [&](const char* tool, const char* what, double seconds) {
-    Json e;
-    e["group"] = "elliptic";
-    e["problem"] = p.name;
-    e["tool"] = tool;
-    e["what"] = what;
-    e["ns_per_sample"] = seconds / kSamples * 1e9;
+    Json e = bench::elliptic_entry(p.name, tool, what, seconds, kSamples);
     e["k2"] = m;
-    bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
     out.push_back(e);
   };
   add("rigidlab", "omega",
