@@ -397,8 +397,8 @@ void controller_section(std::ostream& md, const Json& all) {
   }
 }
 
-void work_precision_sections(std::ostream& md, const Json& all, const std::string& dir,
-                             Targets& targets) {
+void work_precision_sections(std::ostream& md, const Json& all,
+                             [[maybe_unused]] const std::string& dir, Targets& targets) {
   std::map<std::string, std::string> titles;
   for (const Json& e : all)
     if (text(e, "group") == "problem") titles[text(e, "problem")] = text(e, "title");
