@@ -7,8 +7,8 @@
 //
 // Why libcairo is opened here and not linked: linked, it and the twenty-odd shared
 // objects it needs (pixman, fontconfig, the X client libraries, ...) would load at the
-// start of every process that links the renderer, drawing or not: 1.4 ms more, where
-// the fastest lab's whole run without figures (football --json) takes 2.9 ms
+// start of every process that links the renderer, drawing or not: 1.2 to 1.4 ms more,
+// where the fastest lab's whole run without figures takes 2 to 3 ms
 // (bench/results.md, "Start-up: what a linked library costs"). So libcairo (with the
 // FreeType it uses) is opened on the first plot drawn or vector figure written, as OSMesa,
 // EGL and the video encoders are, and a process that draws neither never loads it.

@@ -168,11 +168,12 @@ class WebpEncoder final : public Encoder {
 
 // Why FFmpeg is opened here and not linked: linked, its four libraries bring about 130
 // shared objects (every codec Debian builds in), which would load at the start of every
-// process that links the renderer, animating or not: 26 ms more, where the fastest lab's
-// whole run without figures (football --json) takes 2.9 ms (bench/results.md, "Start-up:
+// process that links the renderer, animating or not: 24 to 26 ms more, where the fastest
+// lab's whole run without figures takes 2 to 3 ms (bench/results.md, "Start-up:
 // what a linked library costs"). Opened on the first MP4, only an animation pays. The
 // libraries opened are those of the headers built against (the major version is the
 // soname's), and each entry point is typed by its header's declaration.
+
 // FFmpeg's library lib<name> of the given major version (the number its soname
 // carries), or nullptr with `error` set, naming the Debian package that has it.
 void* open_ffmpeg(const std::string& name, int major, std::string& error) {
