@@ -139,6 +139,9 @@ class WebpEncoder final : public Encoder {
         !api_.WebPAnimEncoderAssemble(encoder_, &data))
       throw std::runtime_error(std::string("libwebp: ") + api_.WebPAnimEncoderGetError(encoder_));
     const bool written = std::fwrite(data.bytes, 1, data.size, file_) == data.size;
+    // WebPData holds the buffer it hands over as const and WebPFree takes it as not
+    // (libwebp's own WebPDataClear casts the same way; inline, it would call a WebPFree
+    // linked, not this one)
     api_.WebPFree(const_cast<std::uint8_t*>(data.bytes));
     if (!written) throw std::runtime_error("short write");
   }
