@@ -59,6 +59,7 @@ import subprocess  # noqa: E402
 import sys  # noqa: E402
 import tempfile  # noqa: E402
 import textwrap  # noqa: E402
+import types  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from progress import Progress, add_arguments, configure, detail, duration  # noqa: E402
@@ -980,6 +981,90 @@ def poinsot_animation(d, series, path, on_frame=None):
     plt.close(fig)
 
 
+def lab_runs(labs, work):
+    """What the figures draw: each lab's results and series, run as a user runs it."""
+    r = types.SimpleNamespace()
+    r.lamina = run_lab(labs, "lamina_tensor")["results"]
+    r.tire = run_lab(labs, "tire_balancing", "--csv", os.path.join(work, "tire.csv"))
+    r.poinsot = run_lab(labs, "poinsot", "--csv", os.path.join(work, "poinsot.csv"))
+    r.series = read_csv(os.path.join(work, "poinsot.csv"))
+    r.football = run_lab(labs, "football")["results"]
+    # the contrast beside this prolate football: an oblate thin disk (Is = 2I) at its alpha
+    r.disk_body = run_lab(labs, "football", "--inertia", "1,2", "--alpha-deg",
+                          f"{r.football['body_cone_half_angle_deg']:.17g}")["results"]
+    tennis = run_lab(labs, "tennis_racquet", "--csv", os.path.join(work, "tennis.csv"))
+    r.tennis_inputs, r.tennis = tennis["inputs"], tennis["results"]
+    r.racquet = tennis_motion(r.tennis, r.tennis_inputs, read_csv(os.path.join(work, "tennis.csv")))
+    # theta(t) beside an integrated run: splitting4, as the lab draws it beside the exact one
+    top = run_lab(labs, "top_nutation", "--method", "splitting4",
+                  "--csv", os.path.join(work, "top.csv"))
+    r.top_inputs, r.top = top["inputs"], top["results"]
+    r.top_series = read_csv(os.path.join(work, "top.csv"))
+    r.top_paths_data = top_path_runs(labs, work, r.top)
+    return r
+
+
+def figure_list(r):
+    """Every figure rigidlab draws, by its PNG's name, as a function of the path."""
+    return [
+        ("lamina_tensor_scene.png", lambda p: lamina_scene(r.lamina, p)),
+        ("lamina_tensor_moment.png", lambda p: lamina_moment(r.lamina, p)),
+        ("tire_balancing_scene.png", lambda p: tire_scene(r.tire, p)),
+        ("tire_balancing_mass.png", lambda p: tire_mass(r.tire, p)),
+        ("poinsot_ellipsoids.png", lambda p: poinsot_ellipsoids(r.poinsot, r.series, p)),
+        ("poinsot_polhodes.png", lambda p: poinsot_polhodes(r.poinsot, r.series, p)),
+        ("poinsot_omega.png", lambda p: poinsot_omega(r.poinsot, r.series, p)),
+        ("poinsot_integrators.png", lambda p: poinsot_integrators(r.poinsot, p)),
+        ("football_cones.png", lambda p: football_cones(r.football, p)),
+        ("football_cones_contrast.png",
+         lambda p: football_cones(r.disk_body, p, "for contrast, an oblate thin disk: ")),
+        ("football_rates.png", lambda p: football_rates(r.football, p)),
+        ("tennis_racquet_omega.png", lambda p: tennis_omega(r.tennis, r.racquet, p)),
+        ("tennis_racquet_growth.png", lambda p: tennis_growth(r.tennis, r.racquet, p)),
+        ("tennis_racquet_flip.png",
+         lambda p: tennis_flip(r.tennis, r.tennis_inputs, r.racquet, p)),
+        ("tennis_racquet_polhodes.png", lambda p: tennis_polhodes(r.tennis, r.racquet, p)),
+        ("top_nutation_potential.png", lambda p: top_potential(r.top, p)),
+        ("top_nutation_paths.png", lambda p: top_paths(r.top, r.top_paths_data, p)),
+        ("top_nutation_band.png", lambda p: top_band(r.top, r.top_paths_data, p)),
+        ("top_nutation_theta.png", lambda p: top_theta(r.top, r.top_series, p)),
+        ("top_nutation_top.png", lambda p: top_top(r.top, r.top_inputs, r.top_series, p)),
+        ("top_nutation_integrators.png", lambda p: top_integrators(r.top, p)),
+    ]
+
+
+def time_figures(figures, out_dir, repeats, progress):
+    """The best time of each figure, in rounds over the whole set, so a burst of load on
+    the machine hits one round, not one figure."""
+    best = {name: math.inf for name, _ in figures}
+    for _ in range(repeats):
+        for name, draw in figures:
+            t0 = time.perf_counter()
+            draw(os.path.join(out_dir, name))
+            best[name] = min(best[name], time.perf_counter() - t0)
+            progress.update(progress.done + WEIGHT["figure"], name)
+    entries = []
+    for name, _ in figures:
+        entries.append({"group": "figures", "case": name, "tool": "matplotlib",
+                        "seconds": best[name], "kind": "figure"})
+        detail(f"figures_matplotlib: {name}: {best[name] * 1e3:.1f} ms")
+    return entries
+
+
+def time_animation(r, out_dir, progress):
+    """The poinsot animation, once (it takes tens of seconds): its entry."""
+    figures_done = progress.done
+    t0 = time.perf_counter()
+    poinsot_animation(r.poinsot, r.series, os.path.join(out_dir, "poinsot_motion.mp4"),
+                      lambda i, n: progress.update(figures_done + (i + 1) * WEIGHT["frame"],
+                                                   f"animation frame {i + 1}/{n}"))
+    seconds = time.perf_counter() - t0
+    detail(f"figures_matplotlib: poinsot animation (300 frames, 1280x720): {seconds:.1f} s")
+    return {"group": "figures", "case": "poinsot animation", "tool": "matplotlib",
+            "seconds": seconds, "kind": "animation", "frames": ANIMATION["frames"],
+            "fps": ANIMATION["fps"], "size": "1280x720"}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--labs", required=True, help="directory with the lab executables")
@@ -993,82 +1078,22 @@ def main():
     work = tempfile.mkdtemp(prefix="rigid_mpl_")
     out_dir = args.keep or work
     os.makedirs(out_dir, exist_ok=True)
-    lamina = run_lab(args.labs, "lamina_tensor")["results"]
-    tire = run_lab(args.labs, "tire_balancing", "--csv", os.path.join(work, "tire.csv"))
-    poinsot = run_lab(args.labs, "poinsot", "--csv", os.path.join(work, "poinsot.csv"))
-    series = read_csv(os.path.join(work, "poinsot.csv"))
-    football = run_lab(args.labs, "football")["results"]
-    # the contrast beside this prolate football: an oblate thin disk (Is = 2I) at its alpha
-    disk_body = run_lab(args.labs, "football", "--inertia", "1,2", "--alpha-deg",
-                        f"{football['body_cone_half_angle_deg']:.17g}")["results"]
-    tennis = run_lab(args.labs, "tennis_racquet", "--csv", os.path.join(work, "tennis.csv"))
-    tennis_inputs, tennis = tennis["inputs"], tennis["results"]
-    racquet = tennis_motion(tennis, tennis_inputs, read_csv(os.path.join(work, "tennis.csv")))
-    # theta(t) beside an integrated run: splitting4, as the lab draws it beside the exact one
-    top = run_lab(args.labs, "top_nutation", "--method", "splitting4",
-                  "--csv", os.path.join(work, "top.csv"))
-    top_inputs, top = top["inputs"], top["results"]
-    top_series = read_csv(os.path.join(work, "top.csv"))
-    top_paths_data = top_path_runs(args.labs, work, top)
-
-    figures = [
-        ("lamina_tensor_scene.png", lambda p: lamina_scene(lamina, p)),
-        ("lamina_tensor_moment.png", lambda p: lamina_moment(lamina, p)),
-        ("tire_balancing_scene.png", lambda p: tire_scene(tire, p)),
-        ("tire_balancing_mass.png", lambda p: tire_mass(tire, p)),
-        ("poinsot_ellipsoids.png", lambda p: poinsot_ellipsoids(poinsot, series, p)),
-        ("poinsot_polhodes.png", lambda p: poinsot_polhodes(poinsot, series, p)),
-        ("poinsot_omega.png", lambda p: poinsot_omega(poinsot, series, p)),
-        ("poinsot_integrators.png", lambda p: poinsot_integrators(poinsot, p)),
-        ("football_cones.png", lambda p: football_cones(football, p)),
-        ("football_cones_contrast.png",
-         lambda p: football_cones(disk_body, p, "for contrast, an oblate thin disk: ")),
-        ("football_rates.png", lambda p: football_rates(football, p)),
-        ("tennis_racquet_omega.png", lambda p: tennis_omega(tennis, racquet, p)),
-        ("tennis_racquet_growth.png", lambda p: tennis_growth(tennis, racquet, p)),
-        ("tennis_racquet_flip.png", lambda p: tennis_flip(tennis, tennis_inputs, racquet, p)),
-        ("tennis_racquet_polhodes.png", lambda p: tennis_polhodes(tennis, racquet, p)),
-        ("top_nutation_potential.png", lambda p: top_potential(top, p)),
-        ("top_nutation_paths.png", lambda p: top_paths(top, top_paths_data, p)),
-        ("top_nutation_band.png", lambda p: top_band(top, top_paths_data, p)),
-        ("top_nutation_theta.png", lambda p: top_theta(top, top_series, p)),
-        ("top_nutation_top.png", lambda p: top_top(top, top_inputs, top_series, p)),
-        ("top_nutation_integrators.png", lambda p: top_integrators(top, p)),
-    ]
-    entries = [{"group": "figures", "case": "import", "tool": "matplotlib",
-                "seconds": IMPORT_SECONDS, "kind": "import"}]
-    best = {name: math.inf for name, _ in figures}
+    runs = lab_runs(args.labs, work)
+    figures = figure_list(runs)
     animating = shutil.which("ffmpeg") is not None
     progress = Progress("bench figures_matplotlib", None,
                         args.repeats * len(figures) * WEIGHT["figure"]
                         + (ANIMATION["frames"] * WEIGHT["frame"] if animating else 0.0),
                         args.quiet)
-    # rounds over the whole set, so a burst of load on the machine hits one round, not one figure
-    for _ in range(args.repeats):
-        for name, draw in figures:
-            t0 = time.perf_counter()
-            draw(os.path.join(out_dir, name))
-            best[name] = min(best[name], time.perf_counter() - t0)
-            progress.update(progress.done + WEIGHT["figure"], name)
-    for name, _ in figures:
-        entries.append({"group": "figures", "case": name, "tool": "matplotlib",
-                        "seconds": best[name], "kind": "figure"})
-        detail(f"figures_matplotlib: {name}: {best[name] * 1e3:.1f} ms")
+    entries = [{"group": "figures", "case": "import", "tool": "matplotlib",
+                "seconds": IMPORT_SECONDS, "kind": "import"}]
+    entries += time_figures(figures, out_dir, args.repeats, progress)
     detail(f"figures_matplotlib: import {IMPORT_SECONDS * 1e3:.1f} ms")
     summary = f"{len(figures)} figures"
-    # the animation, once (it takes tens of seconds), where ffmpeg is installed
+    # the animation where ffmpeg is installed
     if animating:
-        figures_done = progress.done
-        t0 = time.perf_counter()
-        poinsot_animation(poinsot, series, os.path.join(out_dir, "poinsot_motion.mp4"),
-                          lambda i, n: progress.update(figures_done + (i + 1) * WEIGHT["frame"],
-                                                       f"animation frame {i + 1}/{n}"))
-        seconds = time.perf_counter() - t0
-        entries.append({"group": "figures", "case": "poinsot animation", "tool": "matplotlib",
-                        "seconds": seconds, "kind": "animation", "frames": ANIMATION["frames"],
-                        "fps": ANIMATION["fps"], "size": "1280x720"})
-        detail(f"figures_matplotlib: poinsot animation (300 frames, 1280x720): {seconds:.1f} s")
-        summary += f" and the poinsot animation ({seconds:.1f} s)"
+        entries.append(time_animation(runs, out_dir, progress))
+        summary += f" and the poinsot animation ({entries[-1]['seconds']:.1f} s)"
     with open(args.out + ".tmp", "w") as f:
         json.dump(entries, f, indent=1)
     os.replace(args.out + ".tmp", args.out)

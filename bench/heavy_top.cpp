@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "entries.h"
 #include "output.h"
 #include "rigid/heavy_top_integrate.h"
 #include "timing.h"
@@ -233,6 +234,72 @@ void sweep(const TopProblem& p, const Solver& s, double theta_exact, double nuta
   }
 }
 
+// Every solver's sweep on problem p, timed in rounds: an entry a measurement.
+void work_precision_entries(const TopProblem& p, const std::vector<Solver>& all,
+                            const rigid::HeavyTopExact& exact, double theta_exact, int rounds,
+                            bool quick, const std::function<void(const std::string&)>& tick,
+                            Json& entries) {
+  std::vector<Measurement> ms;
+  bench::measure_in_rounds<Solver, Measurement>(
+      all, ms, rounds,
+      [&](const Solver& s) { sweep(p, s, theta_exact, exact.nutation_period(), quick, ms); },
+      [&](const Measurement& m) {
+        Measurement again;
+        return measure(p, *m.solver, m.param, theta_exact, again) ? again.seconds : -1.0;
+      },
+      [&](const std::string& what) { tick(p.name + ", " + what); });
+  for (const Measurement& m : ms) {
+    bench::detail("  %-24s %s %-9.3g theta error %-9.2e %9.3f ms %9lld steps\n",
+                  m.solver->name.c_str(), m.solver->adaptive ? "tol" : "h  ", m.param, m.error,
+                  m.seconds * 1e3, m.steps);
+    Json e;
+    e["group"] = "work_precision";
+    e["problem"] = p.name;
+    e["solver"] = m.solver->name;
+    e["peer"] = m.solver->peer;
+    e[m.solver->adaptive ? "tolerance" : "step"] = m.param;
+    e["error"] = m.error;
+    e["seconds"] = m.seconds;
+    e["steps"] = m.steps;
+    e["evaluations"] = m.evaluations;
+    entries.push_back(e);
+  }
+}
+
+void elliptic_entries(const TopProblem& p, const rigid::HeavyTopExact& exact, Json& entries) {
+  // One exact theta sample against one gsl_sf_elljac_e call at the same k^2.
+  constexpr int kSamples = 1 << 14;
+  const double dt = p.t_end / kSamples;
+  const bench::TimingPolicy policy{0.05, 5, 0.5};
+  const auto add = [&](const char* tool, const char* what, double seconds) {
+    entries.push_back(bench::elliptic_entry(p.name, tool, what, seconds, kSamples));
+  };
+  add("rigidlab", "theta",
+      bench::best_sum_seconds(
+          kSamples, [&](int i) { return exact.theta(i * dt); }, policy));
+  add("rigidlab", "theta+phi+psi",
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            const rigid::TopAngles a = exact.angles(i * dt);
+            return a.theta + a.phi + a.psi;
+          },
+          policy));
+#ifdef RIGID_BENCH_HAVE_GSL
+  const double m2 = (exact.u2() - exact.u1()) / (exact.u3() - exact.u1());
+  const double du = 2 * M_PI / kSamples * 20;  // about as many periods as the samples cover
+  add("gsl", "elljac",
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            double s, c, d;
+            gsl_sf_elljac_e(i * du, m2, &s, &c, &d);
+            return s + c + d;
+          },
+          policy));
+#endif
+}
+
 void write_json(const std::filesystem::path& path, const Json& j) {
   const auto tmp = path.string() + ".tmp";
   std::ofstream(tmp) << j.dump(1) << "\n";
@@ -280,82 +347,8 @@ int main(int argc, char** argv) {
                                {"x0", x0},
                                {"t_end", p.t_end},
                                {"theta_end", theta_exact}});
-    std::vector<Measurement> ms;
-    bench::measure_in_rounds<Solver, Measurement>(
-        all, ms, rounds,
-        [&](const Solver& s) { sweep(p, s, theta_exact, exact.nutation_period(), quick, ms); },
-        [&](const Measurement& m) {
-          Measurement again;
-          return measure(p, *m.solver, m.param, theta_exact, again) ? again.seconds : -1.0;
-        },
-        [&](const std::string& what) { tick(p.name + ", " + what); });
-    for (const Measurement& m : ms) {
-      bench::detail("  %-24s %s %-9.3g theta error %-9.2e %9.3f ms %9lld steps\n",
-                    m.solver->name.c_str(), m.solver->adaptive ? "tol" : "h  ", m.param, m.error,
-                    m.seconds * 1e3, m.steps);
-      Json e;
-      e["group"] = "work_precision";
-      e["problem"] = p.name;
-      e["solver"] = m.solver->name;
-      e["peer"] = m.solver->peer;
-      e[m.solver->adaptive ? "tolerance" : "step"] = m.param;
-      e["error"] = m.error;
-      e["seconds"] = m.seconds;
-      e["steps"] = m.steps;
-      e["evaluations"] = m.evaluations;
-      entries.push_back(e);
-    }
-
-    // One exact theta sample against one gsl_sf_elljac_e call at the same k^2.
-    constexpr int kSamples = 1 << 14;
-    const double dt = p.t_end / kSamples;
-    const bench::TimingPolicy policy{0.05, 5, 0.5};
-    const auto add = [&](const char* tool, const char* what, double seconds) {
-      Json e;
-      e["group"] = "elliptic";
-      e["problem"] = p.name;
-      e["tool"] = tool;
-      e["what"] = what;
-      e["ns_per_sample"] = seconds / kSamples * 1e9;
-      bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what,
-                    e["ns_per_sample"].get<double>());
-      entries.push_back(e);
-    };
-    add("rigidlab", "theta",
-        bench::best_seconds(
-            [&] {
-              double sum = 0;
-              for (int i = 0; i < kSamples; ++i) sum += exact.theta(i * dt);
-              bench::do_not_optimize(sum);
-            },
-            policy));
-    add("rigidlab", "theta+phi+psi",
-        bench::best_seconds(
-            [&] {
-              double sum = 0;
-              for (int i = 0; i < kSamples; ++i) {
-                const rigid::TopAngles a = exact.angles(i * dt);
-                sum += a.theta + a.phi + a.psi;
-              }
-              bench::do_not_optimize(sum);
-            },
-            policy));
-#ifdef RIGID_BENCH_HAVE_GSL
-    const double m2 = (exact.u2() - exact.u1()) / (exact.u3() - exact.u1());
-    const double du = 2 * M_PI / kSamples * 20;  // about as many periods as the samples cover
-    add("gsl", "elljac",
-        bench::best_seconds(
-            [&] {
-              double sum = 0;
-              for (int i = 0; i < kSamples; ++i) {
-                double s, c, d;
-                gsl_sf_elljac_e(i * du, m2, &s, &c, &d);
-                sum += s + c + d;
-              }
-              bench::do_not_optimize(sum);
-            },
-            policy));
-#endif
+    work_precision_entries(p, all, exact, theta_exact, rounds, quick, tick, entries);
+    elliptic_entries(p, exact, entries);
     std::fflush(stdout);
     tick(p.name + ", elliptic functions");
   }

@@ -18,6 +18,12 @@ struct TimingPolicy {
   double max_total_s = 0.6;   ///< unless this much time is spent already (one long run is enough)
 };
 
+/// Keeps a value alive so the optimiser cannot drop the computation behind it.
+template <class T>
+inline void do_not_optimize(const T& value) {
+  asm volatile("" : : "r,m"(value) : "memory");
+}
+
 /// Runs f() repeatedly and returns the fastest single run in seconds.
 template <class F>
 double best_seconds(F&& f, const TimingPolicy& policy = {}) {
@@ -33,6 +39,19 @@ double best_seconds(F&& f, const TimingPolicy& policy = {}) {
     if (rep >= policy.min_repeats && total >= policy.min_total_s) break;
   }
   return best;
+}
+
+/// The fastest time of one pass summing sample(i) over i = 0 .. samples - 1 (the sum is
+/// kept, so that no sample is optimised away).
+template <class F>
+double best_sum_seconds(int samples, F&& sample, const TimingPolicy& policy = {}) {
+  return best_seconds(
+      [&] {
+        double sum = 0;
+        for (int i = 0; i < samples; ++i) sum += sample(i);
+        do_not_optimize(sum);
+      },
+      policy);
 }
 
 /// Each solver's sweep (`sweep(s)` appends its settings' measurements, each with its
@@ -59,12 +78,6 @@ void measure_in_rounds(const std::vector<Solver>& solvers, std::vector<Measureme
       tick(s.name + ", round " + std::to_string(round + 1));
     }
   }
-}
-
-/// Keeps a value alive so the optimiser cannot drop the computation behind it.
-template <class T>
-inline void do_not_optimize(const T& value) {
-  asm volatile("" : : "r,m"(value) : "memory");
 }
 
 }  // namespace bench

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "entries.h"
 #include "output.h"
 #include "peers.h"
 #include "problems.h"
@@ -256,33 +257,19 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
   const bench::TimingPolicy policy{0.05, 5, 0.5};
 
   const auto add = [&](const char* tool, const char* what, double seconds) {
-    Json e;
-    e["group"] = "elliptic";
-    e["problem"] = p.name;
-    e["tool"] = tool;
-    e["what"] = what;
-    e["ns_per_sample"] = seconds / kSamples * 1e9;
+    Json e = bench::elliptic_entry(p.name, tool, what, seconds, kSamples);
     e["k2"] = m;
-    bench::detail("  %-16s %-16s %8.1f ns/sample\n", tool, what, e["ns_per_sample"].get<double>());
     out.push_back(e);
   };
   add("rigidlab", "omega",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) sum += exact.omega_body(i * dt).sum();
-            bench::do_not_optimize(sum);
-          },
-          policy));
+      bench::best_sum_seconds(
+          kSamples, [&](int i) { return exact.omega_body(i * dt).sum(); }, policy));
   add("rigidlab", "omega+attitude",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              const rigid::RotationState x = exact.state(i * dt);
-              sum += x[0] + x[3];
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            const rigid::RotationState x = exact.state(i * dt);
+            return x[0] + x[3];
           },
           policy));
 #ifdef RIGID_BENCH_HAVE_GSL
@@ -291,26 +278,20 @@ void elliptic(const Problem& p, const rigid::FreeBodyExact& exact, Json& out) {
           [&] { bench::do_not_optimize(bench::gsl_elljac_sum(0.0, du, kSamples, m)); }, policy));
 #endif
   add("boost-default", "jacobi_elliptic",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              double cn, dn;
-              sum += boost::math::jacobi_elliptic(k, i * du, &cn, &dn) + cn + dn;
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            double cn, dn;
+            return boost::math::jacobi_elliptic(k, i * du, &cn, &dn) + cn + dn;
           },
           policy));
   using NoPromote = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
   add("boost-nopromote", "jacobi_elliptic",
-      bench::best_seconds(
-          [&] {
-            double sum = 0;
-            for (int i = 0; i < kSamples; ++i) {
-              double cn, dn;
-              sum += boost::math::jacobi_elliptic(k, i * du, &cn, &dn, NoPromote()) + cn + dn;
-            }
-            bench::do_not_optimize(sum);
+      bench::best_sum_seconds(
+          kSamples,
+          [&](int i) {
+            double cn, dn;
+            return boost::math::jacobi_elliptic(k, i * du, &cn, &dn, NoPromote()) + cn + dn;
           },
           policy));
 }
@@ -447,6 +428,30 @@ void invariants(const Problem& p, const rigid::FreeBodyExact& exact, const Setti
   }
 }
 
+// Problem p as the report titles it (an entry of group "problem") and as the SciPy run
+// starts from it (reference.json), with its exact end state.
+void describe(const Problem& p, const rigid::FreeBodyExact& exact,
+              const rigid::RotationState& x_end, Json& entries, Json& ref) {
+  Json desc;
+  desc["group"] = "problem";
+  desc["problem"] = p.name;
+  desc["title"] = p.title;
+  desc["I"] = vec(p.I.vector());
+  desc["L0_body"] = vec(p.L0_body);
+  desc["t_end"] = p.t_end;
+  desc["polhode_period"] = exact.period();
+  entries.push_back(desc);
+  Json jp;
+  jp["name"] = p.name;
+  jp["I"] = vec(p.I.vector());
+  jp["L0_body"] = vec(p.L0_body);
+  jp["omega0_body"] = vec(p.omega0_body());
+  jp["t_end"] = p.t_end;
+  jp["state_end"] = Json(std::vector<double>(x_end.begin(), x_end.end()));
+  jp["polhode_period"] = exact.period();
+  ref["problems"].push_back(jp);
+}
+
 void write_json(const std::filesystem::path& path, const Json& j) {
   const std::filesystem::path tmp = path.string() + ".tmp";
   {
@@ -492,24 +497,7 @@ int main(int argc, char** argv) {
     const rigid::RotationState x_end = reference(p, exact, entries);
     exact_ends.push_back({p, x_end});
     tick(p.name + ", reference");
-    Json desc;
-    desc["group"] = "problem";
-    desc["problem"] = p.name;
-    desc["title"] = p.title;
-    desc["I"] = vec(p.I.vector());
-    desc["L0_body"] = vec(p.L0_body);
-    desc["t_end"] = p.t_end;
-    desc["polhode_period"] = exact.period();
-    entries.push_back(desc);
-    Json jp;
-    jp["name"] = p.name;
-    jp["I"] = vec(p.I.vector());
-    jp["L0_body"] = vec(p.L0_body);
-    jp["omega0_body"] = vec(p.omega0_body());
-    jp["t_end"] = p.t_end;
-    jp["state_end"] = Json(std::vector<double>(x_end.begin(), x_end.end()));
-    jp["polhode_period"] = exact.period();
-    ref["problems"].push_back(jp);
+    describe(p, exact, x_end, entries, ref);
   }
   // the reference first, so the SciPy run can start from it whatever happens below
   write_json(dir / "reference.json", ref);

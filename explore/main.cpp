@@ -5,6 +5,8 @@
 //
 //   rigidlab-explore [LAB] [--script FILE] [--size WxH] [LAB'S OPTIONS...]
 //   rigidlab explore LAB ...  and  LAB --explore ...  run it.
+// The window's OpenGL 3.3 core names (GL_READ_FRAMEBUFFER, PFNGLREADPIXELSPROC, ...).
+#define GLFW_INCLUDE_GLCOREARB
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -17,7 +19,9 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -38,13 +42,13 @@ std::string g_glfw_error = "GLFW gave no reason";
 
 // The few GL calls the loop makes itself, from the window's context.
 struct WindowGl {
-  void (*Viewport)(int, int, int, int) = nullptr;
-  void (*ClearColor)(float, float, float, float) = nullptr;
-  void (*Clear)(unsigned) = nullptr;
-  void (*BindFramebuffer)(unsigned, unsigned) = nullptr;
-  void (*ReadBuffer)(unsigned) = nullptr;
-  void (*PixelStorei)(unsigned, int) = nullptr;
-  void (*ReadPixels)(int, int, int, int, unsigned, unsigned, void*) = nullptr;
+  PFNGLVIEWPORTPROC Viewport = nullptr;
+  PFNGLCLEARCOLORPROC ClearColor = nullptr;
+  PFNGLCLEARPROC Clear = nullptr;
+  PFNGLBINDFRAMEBUFFERPROC BindFramebuffer = nullptr;
+  PFNGLREADBUFFERPROC ReadBuffer = nullptr;
+  PFNGLPIXELSTOREIPROC PixelStorei = nullptr;
+  PFNGLREADPIXELSPROC ReadPixels = nullptr;
   template <class F>
   static void load(F& f, const char* name) {
     f = reinterpret_cast<F>(glfwGetProcAddress(name));
@@ -60,6 +64,22 @@ struct WindowGl {
     return Viewport && ClearColor && Clear && BindFramebuffer && ReadBuffer && PixelStorei &&
            ReadPixels;
   }
+  // The back buffer just drawn, rows top to bottom.
+  rigid::render::Image read_back(int w, int h) const {
+    rigid::render::Image img;
+    img.width = w;
+    img.height = h;
+    img.rgb.resize(static_cast<std::size_t>(w) * h * 3);
+    BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    ReadBuffer(GL_BACK);
+    PixelStorei(GL_PACK_ALIGNMENT, 1);
+    ReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, img.rgb.data());
+    const std::size_t row = static_cast<std::size_t>(w) * 3;
+    for (int y = 0; y < h / 2; ++y)
+      std::swap_ranges(img.rgb.begin() + y * row, img.rgb.begin() + (y + 1) * row,
+                       img.rgb.begin() + (h - 1 - y) * row);
+    return img;
+  }
 };
 
 int fail(const std::string& option, const std::string& rule) {
@@ -69,7 +89,8 @@ int fail(const std::string& option, const std::string& rule) {
 }
 
 // The lab's options as on its command line ("--flag value", "--flag=value", "--switch"),
-// each handed to `set` (flag, text); the first refusal, or "".
+// each handed to `set` (flag, text), which reads the text as the lab's command line does;
+// the first refusal, or "".
 std::string apply_lab_options(
     const rigid::lab::Session& s, const std::vector<std::string>& args,
     const std::function<std::string(const std::string&, const std::string&)>& set) {
@@ -101,23 +122,22 @@ std::string apply_lab_options(
   return "";
 }
 
-}  // namespace
+// What the command line asks for.
+struct Options {
+  std::string lab = "top_nutation", script_path, size = "1280x720", frame_log;
+  std::vector<std::string> lab_options;  // the lab's own, as on its command line
+  int width = 0, height = 0;
+  std::vector<rigid::lab::LabEntry> labs;
+  std::unique_ptr<rigid::explore::Script> script;
+};
 
-int main(int argc, char** argv) {
-  if (argc > 0 && argv[0][0] != '\0') g_name = std::filesystem::path(argv[0]).filename().string();
-  CLI::App app(
-      "rigidlab-explore: a lab live in a window: its inputs as sliders and fields, its scene "
-      "turned with the mouse, its motion played, its numbers and plots recomputed on every "
-      "change. Any other options are the lab's own (see LAB --help).",
-      "rigidlab-explore");
-  std::string lab = "top_nutation", script_path, size = "1280x720";
-  app.add_option("lab", lab, "the lab to open (rigidlab list names them)")->capture_default_str();
-  app.add_option("--script", script_path,
+void describe(CLI::App& app, Options& o) {
+  app.add_option("lab", o.lab, "the lab to open (rigidlab list names them)")->capture_default_str();
+  app.add_option("--script", o.script_path,
                  "run the commands of FILE, one a frame, then close (the commands: below)")
       ->type_name("FILE");
-  app.add_option("--size", size, "the window's size in pixels")->capture_default_str();
-  std::string frame_log;
-  app.add_option("--frame-log", frame_log,
+  app.add_option("--size", o.size, "the window's size in pixels")->capture_default_str();
+  app.add_option("--frame-log", o.frame_log,
                  "write each frame's wall time (and whether the inputs changed in it) to FILE "
                  "as JSON on exit, for bench/")
       ->type_name("FILE");
@@ -140,6 +160,7 @@ int main(int argc, char** argv) {
       "  show-scene NAME | show-plot NAME       motion, strip or a figure of the lab\n"
       "  hide PART | show PART    a part of the scene, by its legend entry (\"in quotes\")\n"
       "  frames N | wait SECONDS  draws N frames; waits, the window live\n"
+      "  wait-for FILE            waits until FILE exists, the window live\n"
       "  screenshot FILE          the window as a PNG\n"
       "  save-figure NAME FILE [WxH]            a figure, as the lab's --figures draws it "
       "(FILE.svg,\n"
@@ -152,6 +173,17 @@ int main(int argc, char** argv) {
       "opens (exit 2, naming the file and the line). Examples: explore/demos/.");
   app.allow_extras();
   app.positionals_at_end(false);
+}
+
+// The options read and checked, the lab's inputs among them, before any window opens
+// (bad input is exit 2 anywhere); the exit status if the run ends here.
+std::optional<int> read_options(int argc, char** argv, Options& o) {
+  CLI::App app(
+      "rigidlab-explore: a lab live in a window: its inputs as sliders and fields, its scene "
+      "turned with the mouse, its motion played, its numbers and plots recomputed on every "
+      "change. Any other options are the lab's own (see LAB --help).",
+      "rigidlab-explore");
+  describe(app, o);
   if (const std::string twice =
           rigid::support::repeated_option(app, std::vector<std::string>(argv + 1, argv + argc));
       !twice.empty())
@@ -162,175 +194,203 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);
     return fail("", e.what());
   }
-  std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs();
-  if (std::none_of(labs.begin(), labs.end(), [&](const auto& l) { return l.name == lab; })) {
+  o.lab_options = app.remaining();
+  o.labs = rigid::lab::all_labs();
+  const auto entry =
+      std::find_if(o.labs.begin(), o.labs.end(), [&](const auto& l) { return l.name == o.lab; });
+  if (entry == o.labs.end()) {
     std::string names;
-    for (const auto& l : labs) names += (names.empty() ? "" : ", ") + l.name;
-    return fail("LAB", "'" + lab + "' is not a lab (one of " + names + ")");
+    for (const auto& l : o.labs) names += (names.empty() ? "" : ", ") + l.name;
+    return fail("LAB", "'" + o.lab + "' is not a lab (one of " + names + ")");
   }
-  int width = 0, height = 0;
-  {
-    const auto read = rigid::lab::read_size(size, {640, 400, 8192, 8192, false});
-    if (const auto* why = std::get_if<std::string>(&read)) return fail("--size", *why);
-    width = std::get<rigid::lab::Size>(read).width;
-    height = std::get<rigid::lab::Size>(read).height;
-  }
-  // The lab's inputs checked before any window opens: bad input is exit 2 anywhere.
-  {
-    std::unique_ptr<rigid::lab::Session> check;
-    for (const auto& l : labs) {
-      if (l.name == lab) check = l.make();
-    }
-    const std::string why = apply_lab_options(
-        *check, app.remaining(), [&check](const std::string& flag, const std::string& text) {
-          const auto refusal = check->set_text(check->find(flag), text);
-          return refusal ? refusal->message : std::string();
-        });
-    if (!why.empty()) return fail("", why);
-  }
-  std::unique_ptr<rigid::explore::Script> script;
-  if (!script_path.empty()) {
+  const auto read = rigid::lab::read_size(o.size, {640, 400, 8192, 8192, false});
+  if (const auto* why = std::get_if<std::string>(&read)) return fail("--size", *why);
+  o.width = std::get<rigid::lab::Size>(read).width;
+  o.height = std::get<rigid::lab::Size>(read).height;
+  const std::unique_ptr<rigid::lab::Session> check = entry->make();
+  const std::string why = apply_lab_options(
+      *check, o.lab_options, [&check](const std::string& flag, const std::string& text) {
+        const auto refusal = check->set_text(check->find(flag), text);
+        return refusal ? refusal->message : std::string();
+      });
+  if (!why.empty()) return fail("", why);
+  if (!o.script_path.empty()) {
     try {
-      script = std::make_unique<rigid::explore::Script>(rigid::explore::Script::read(script_path));
+      o.script =
+          std::make_unique<rigid::explore::Script>(rigid::explore::Script::read(o.script_path));
     } catch (const std::invalid_argument& e) {
       return fail("--script", e.what());
     }
   }
+  return std::nullopt;
+}
 
+// A window with an OpenGL 3.3 core context, current; nullptr (said why) if none.
+GLFWwindow* open_window(const Options& o) {
   // GLFW's own words on a failure, said in the one line that reports it
   glfwSetErrorCallback([](int, const char* what) { g_glfw_error = what; });
   if (!glfwInit()) {
     std::cerr << g_name << ": error: no window can be opened (" << terminal_safe(g_glfw_error)
               << "; headless: xvfb-run -a rigidlab-explore ...)\n";
-    return 1;
+    return nullptr;
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  const std::string title = "rigidlab explore: " + lab;
-  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  const std::string title = "rigidlab explore: " + o.lab;
+  GLFWwindow* window = glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
   if (window == nullptr) {
     std::cerr << g_name << ": error: no OpenGL 3.3 window could be made ("
               << terminal_safe(g_glfw_error) << ")\n";
     glfwTerminate();
-    return 1;
+    return nullptr;
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
-  WindowGl gl;
-  int status = 0;
-  try {
-    if (!gl.load_all()) throw std::runtime_error("the window's OpenGL lacks a function");
-    rigid::render::use_current_context(glfwGetProcAddress);
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;  // the layout is the explorer's, not remembered
-    ImGui::StyleColorsLight();
-    ImGuiStyle& style = ImGui::GetStyle();
-    style.FrameRounding = 3.0f;
-    style.WindowBorderSize = 0.0f;
-    // the figures' own font, so the window and its figures read alike
-    if (io.Fonts->AddFontFromFileTTF(RIGID_FONT_PATH, 15.0f) == nullptr) io.Fonts->AddFontDefault();
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+  return window;
+}
 
-    rigid::explore::Window hooks;
-    hooks.set_clipboard = [window](const std::string& text) {
-      glfwSetClipboardString(window, text.c_str());
-    };
-    hooks.close = [window] { glfwSetWindowShouldClose(window, GLFW_TRUE); };
-    hooks.set_title = [window](const std::string& text) {
-      glfwSetWindowTitle(window, text.c_str());
-    };
-    hooks.read_frame = [window, &gl] {
-      int w = 0, h = 0;
-      glfwGetFramebufferSize(window, &w, &h);
-      rigid::render::Image img;
-      img.width = w;
-      img.height = h;
-      img.rgb.resize(static_cast<std::size_t>(w) * h * 3);
-      gl.BindFramebuffer(0x8CA8 /*GL_READ_FRAMEBUFFER*/, 0);
-      gl.ReadBuffer(0x0405 /*GL_BACK*/);
-      gl.PixelStorei(0x0D05 /*GL_PACK_ALIGNMENT*/, 1);
-      gl.ReadPixels(0, 0, w, h, 0x1907 /*GL_RGB*/, 0x1401 /*GL_UNSIGNED_BYTE*/, img.rgb.data());
-      const std::size_t row = static_cast<std::size_t>(w) * 3;
-      for (int y = 0; y < h / 2; ++y)
-        std::swap_ranges(img.rgb.begin() + y * row, img.rgb.begin() + (y + 1) * row,
-                         img.rgb.begin() + (h - 1 - y) * row);
-      return img;
-    };
-    rigid::explore::Explorer explorer(std::move(labs), lab, hooks);
+// Dear ImGui on the window: its backends, the light style, the figures' own font.
+void start_imgui(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the layout is the explorer's, not remembered
+  ImGui::StyleColorsLight();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.FrameRounding = 3.0f;
+  style.WindowBorderSize = 0.0f;
+  // the figures' own font, so the window and its figures read alike
+  if (io.Fonts->AddFontFromFileTTF(RIGID_FONT_PATH, 15.0f) == nullptr) io.Fonts->AddFontDefault();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+// What the window does for the explorer.
+rigid::explore::Window hooks_of(GLFWwindow* window, const WindowGl& gl) {
+  rigid::explore::Window hooks;
+  hooks.set_clipboard = [window](const std::string& text) {
+    glfwSetClipboardString(window, text.c_str());
+  };
+  hooks.close = [window] { glfwSetWindowShouldClose(window, GLFW_TRUE); };
+  hooks.set_title = [window](const std::string& text) { glfwSetWindowTitle(window, text.c_str()); };
+  hooks.read_frame = [window, &gl] {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    return gl.read_back(w, h);
+  };
+  return hooks;
+}
+
+// One frame: the explorer's UI built and drawn, a screenshot taken, the frame shown.
+void draw_frame(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer& explorer,
+                double seconds) {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  explorer.frame(seconds);
+  ImGui::Render();
+  int fw = 0, fh = 0;
+  glfwGetFramebufferSize(window, &fw, &fh);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl.Viewport(0, 0, fw, fh);
+  gl.ClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  gl.Clear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  explorer.after_render();
+  glfwSwapBuffers(window);
+}
+
+// The frames until the window closes, waiting for events while nothing moves; each
+// frame's time into `frames` if a log is asked for.
+void loop(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer& explorer, bool log,
+          nlohmann::json& frames) {
+  // After an event ImGui needs a frame or two to settle (hover, release): a few more
+  // frames are drawn before the loop waits again.
+  int settle = 3;
+  auto last = std::chrono::steady_clock::now();
+  while (!glfwWindowShouldClose(window)) {
+    if (explorer.animating() || settle > 0) {
+      glfwPollEvents();
+    } else {
+      glfwWaitEvents();
+      settle = 3;
+    }
+    --settle;
+    const auto now = std::chrono::steady_clock::now();
+    const double dt = std::chrono::duration<double>(now - last).count();
+    last = now;
+    const long generation = explorer.session().generation();
+    draw_frame(window, gl, explorer, dt);
+    if (log) {
+      frames.push_back(
+          {{"seconds",
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count()},
+           {"changed", explorer.session().generation() != generation}});
+    }
+    // A display without vertical sync (Xvfb, some drivers) would let a playing motion
+    // take every cycle: frames are paced to 60 a second (a script runs unpaced).
+    if (!explorer.scripted()) {
+      std::this_thread::sleep_until(now + std::chrono::microseconds(16667));
+    }
+  }
+}
+
+void write_frame_log(const Options& o, const nlohmann::json& frames) {
+  const auto& info = rigid::render::context();
+  const nlohmann::json log = {{"lab", o.lab},
+                              {"width", o.width},
+                              {"height", o.height},
+                              {"gl_renderer", info.gl_renderer},
+                              {"samples", info.samples},
+                              {"frames", frames}};
+  const std::string text = log.dump();
+  rigid::render::write_file_atomically(
+      o.frame_log, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+}
+
+// The explorer in the window, to its end; the exit status.
+int explore(GLFWwindow* window, Options& o) {
+  WindowGl gl;
+  if (!gl.load_all()) throw std::runtime_error("the window's OpenGL lacks a function");
+  rigid::render::use_current_context(glfwGetProcAddress);
+  start_imgui(window);
+  int status = 0;
+  {
+    rigid::explore::Explorer explorer(std::move(o.labs), o.lab, hooks_of(window, gl));
     const std::string why =
-        apply_lab_options(explorer.session(), app.remaining(),
+        apply_lab_options(explorer.session(), o.lab_options,
                           [&explorer](const std::string& flag, const std::string& text) {
-                            return explorer.set_text(flag, text);
+                            return explorer.apply(rigid::explore::action::SetText{flag, text});
                           });
     if (!why.empty()) {
       status = fail("", why);
     } else {
-      if (script) explorer.run(std::move(script));
-      // After an event ImGui needs a frame or two to settle (hover, release): a few more
-      // frames are drawn before the loop waits again.
-      int settle = 3;
-      auto last = std::chrono::steady_clock::now();
+      if (o.script) explorer.run(std::move(o.script));
       nlohmann::json frames = nlohmann::json::array();
-      while (!glfwWindowShouldClose(window)) {
-        if (explorer.animating() || settle > 0) {
-          glfwPollEvents();
-        } else {
-          glfwWaitEvents();
-          settle = 3;
-        }
-        --settle;
-        const auto now = std::chrono::steady_clock::now();
-        const double dt = std::chrono::duration<double>(now - last).count();
-        last = now;
-        const long generation = explorer.session().generation();
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        explorer.frame(dt);
-        ImGui::Render();
-        int fw = 0, fh = 0;
-        glfwGetFramebufferSize(window, &fw, &fh);
-        gl.BindFramebuffer(0x8D40 /*GL_FRAMEBUFFER*/, 0);
-        gl.Viewport(0, 0, fw, fh);
-        gl.ClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-        gl.Clear(0x00004000 /*GL_COLOR_BUFFER_BIT*/);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-        explorer.after_render();
-        glfwSwapBuffers(window);
-        if (!frame_log.empty()) {
-          frames.push_back(
-              {{"seconds",
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count()},
-               {"changed", explorer.session().generation() != generation}});
-        }
-        // A display without vertical sync (Xvfb, some drivers) would let a playing motion
-        // take every cycle: frames are paced to 60 a second (a script runs unpaced).
-        if (!explorer.scripted()) {
-          std::this_thread::sleep_until(now + std::chrono::microseconds(16667));
-        }
-      }
+      loop(window, gl, explorer, !o.frame_log.empty(), frames);
       status = explorer.status();
-      if (!frame_log.empty()) {
-        const auto& info = rigid::render::context();
-        const nlohmann::json log = {{"lab", lab},
-                                    {"width", width},
-                                    {"height", height},
-                                    {"gl_renderer", info.gl_renderer},
-                                    {"samples", info.samples},
-                                    {"frames", frames}};
-        const std::string text = log.dump();
-        rigid::render::write_file_atomically(
-            frame_log, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
-      }
+      if (!o.frame_log.empty()) write_frame_log(o, frames);
     }
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc > 0 && argv[0][0] != '\0') g_name = std::filesystem::path(argv[0]).filename().string();
+  Options options;
+  if (const std::optional<int> status = read_options(argc, argv, options)) return *status;
+  GLFWwindow* window = open_window(options);
+  if (window == nullptr) return 1;
+  int status = 0;
+  try {
+    status = explore(window, options);
   } catch (const std::exception& e) {
     std::cerr << g_name << ": error: " << terminal_safe(e.what()) << '\n';
     status = 1;

@@ -8,9 +8,6 @@
 //
 // The labs are the executables beside this one (bin/ when installed, build/labs/
 // in a build tree); rigidlab holds no physics and no drawing of its own.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -22,15 +19,21 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "rigid/support/cli.h"
 #include "rigid/support/programs.h"
+#include "rigid/support/subprocess.h"
 #include "rigid/support/text.h"
 
 namespace fs = std::filesystem;
+using rigid::support::Redirect;
+using rigid::support::Subprocess;
 
 namespace {
 
@@ -57,33 +60,14 @@ fs::path lab_path(const std::string& lab) {
 // A lab's title: the first line of its --help, read from the lab run directly (no
 // shell: the install path may hold any character a shell would act on).
 std::string title_of(const std::string& lab) {
-  const std::string path = lab_path(lab).string();
-  int out[2];
-  if (::pipe(out) != 0) return "(not found beside rigidlab)";
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
-  posix_spawn_file_actions_addclose(&actions, out[0]);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  std::string help_flag = "--help";
-  char* argv[] = {const_cast<char*>(path.c_str()), help_flag.data(), nullptr};
-  pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, path.c_str(), &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(out[1]);
   std::string text;
-  if (spawned == 0) {
-    std::array<char, 512> buffer{};
-    ssize_t n = 0;
-    while (text.find('\n') == std::string::npos &&
-           (n = ::read(out[0], buffer.data(), buffer.size())) > 0) {
-      text.append(buffer.data(), static_cast<std::size_t>(n));
-    }
-  }
-  ::close(out[0]);
-  if (spawned == 0) {
-    int status = 0;
-    ::waitpid(pid, &status, 0);
+  try {
+    Subprocess help(lab_path(lab), {lab_path(lab).string(), "--help"},
+                    {Redirect::pipe(), Redirect::null()});
+    text = help.read_to_end();
+    help.wait();
+  } catch (const std::system_error&) {
+    // not there to run: said below as no title
   }
   const std::string line = text.substr(0, text.find_first_of("\r\n"));
   return line.empty() ? "(not found beside rigidlab)" : line;
@@ -141,64 +125,40 @@ void die_if_signalled() {
   std::raise(g_signal);
 }
 
-// Starts a lab with `args`, its stdout to /dev/null and stderr kept (or into `err_fd`
-// if one is given); returns the pid.
-pid_t start(const std::string& lab, const std::vector<std::string>& args, int err_fd = -1) {
-  // A signal arriving between fork and track would miss the child: held until then.
+// Starts a lab with `args`, its stdout to /dev/null and its stderr as `err` says. A
+// lab that cannot be started has its one line in `why` and no process.
+std::optional<Subprocess> start(const std::string& lab, const std::vector<std::string>& args,
+                                const Redirect& err, std::string& why) {
+  std::vector<std::string> argv{lab_path(lab).string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  // A signal arriving between the spawn and track would miss the child: held until then;
+  // the lab starts with the mask rigidlab had.
   sigset_t block, old;
   sigemptyset(&block);
   sigaddset(&block, SIGINT);
   sigaddset(&block, SIGTERM);
   ::sigprocmask(SIG_BLOCK, &block, &old);
-  const pid_t pid = ::fork();
-  if (pid > 0) track(pid, true);
-  if (pid != 0) {
-    ::sigprocmask(SIG_SETMASK, &old, nullptr);
-    if (g_signal != 0 && pid > 0) ::kill(pid, g_signal);  // already asked to stop
+  std::optional<Subprocess> child;
+  try {
+    child.emplace(argv.front(), argv, Subprocess::Options{Redirect::null(), err, &old});
+    track(child->pid(), true);
+    if (g_signal != 0) ::kill(child->pid(), g_signal);  // already asked to stop
+  } catch (const std::system_error& e) {
+    why = "rigidlab: error: " + argv.front() + ": cannot run (" + e.code().message() + ")\n";
   }
-  if (pid == 0) {
-    // the lab's own handlers, and the mask it was started with
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-    ::sigprocmask(SIG_SETMASK, &old, nullptr);
-    if (err_fd >= 0) ::dup2(err_fd, STDERR_FILENO);
-    std::vector<char*> argv;
-    const std::string path = lab_path(lab).string();
-    argv.push_back(const_cast<char*>(path.c_str()));
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    std::FILE* null = std::freopen("/dev/null", "w", stdout);
-    (void)null;
-    ::execv(path.c_str(), argv.data());
-    std::fprintf(stderr, "rigidlab: error: %s: cannot run (%s)\n", path.c_str(),
-                 std::strerror(errno));
-    ::_exit(127);
-  }
-  return pid;
+  ::sigprocmask(SIG_SETMASK, &old, nullptr);
+  return child;
 }
 
 // Runs a lab with `args` to its end, its stderr captured; returns its exit status
-// (-1 if it did not exit) and its stderr in `err`.
+// (-1 if it did not exit, 127 if it could not be run) and its stderr in `err`.
 int run_captured(const std::string& lab, const std::vector<std::string>& args, std::string& err) {
-  int fds[2];
-  if (::pipe(fds) != 0) return -1;
-  const pid_t pid = start(lab, args, fds[1]);
-  ::close(fds[1]);
-  std::array<char, 4096> buffer{};
-  for (;;) {
-    const ssize_t n = ::read(fds[0], buffer.data(), buffer.size());
-    if (n > 0) {
-      err.append(buffer.data(), n);
-    } else if (n == 0 || errno != EINTR) {
-      break;
-    }
-  }
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  track(pid, false);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::optional<Subprocess> child = start(lab, args, Redirect::pipe(), err);
+  if (!child) return 127;
+  err += child->read_to_end();
+  const int status = child->wait();
+  track(child->pid(), false);
+  return status;
 }
 
 // The entries of a folder; `ec` says why a listing failed or stopped (increment(ec):
@@ -298,6 +258,76 @@ void say_left_stages(const std::string& out, const std::string& ours) {
   }
 }
 
+// The staged figures renamed into `out`, once every lab has drawn its own; the exit status.
+int land(const Staging& stage, const std::string& out, std::size_t labs) {
+  // a directory where a figure goes is the --out given: refused whole, as a lab refuses it
+  if (const std::string why = stage.blocked(); !why.empty()) {
+    stage.discard();
+    std::cerr << "rigidlab: error: figures: --out: " << rigid::support::terminal_safe(why) << "\n";
+    return 2;
+  }
+  if (const std::string why = stage.land(); !why.empty()) {
+    std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(why) << "\n";
+    return 1;
+  }
+  std::cout << "figures of " << labs << " labs in "
+            << rigid::support::terminal_safe(fs::absolute(out).string()) << "\n";
+  return 0;
+}
+
+// The labs after the first, as many at once as there are processors, each drawing into
+// the staging folder; how many failed. Each lab's stderr goes into a file of its own,
+// shown when it ends with the staging folder's name said as `out` (its lines name the
+// paths it wrote to).
+int other_labs(const Staging& stage, const std::vector<std::string>& labs,
+               const std::vector<std::string>& args) {
+  struct Lab {
+    std::string name;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> err{nullptr, std::fclose};
+  };
+  std::vector<Subprocess> children;
+  std::vector<Lab> running;  // beside children, one for one
+  int failed = 0;
+  const auto said = [&](const std::string& lab, bool ok, const std::string& err) {
+    std::cerr << stage.said_of_out(err) << "rigidlab: " << lab
+              << (ok ? ": figures drawn" : ": FAILED") << "\n";
+    failed += ok ? 0 : 1;
+  };
+  const auto wait_one = [&] {
+    const std::size_t k = Subprocess::wait_any(children);
+    track(children[k].pid(), false);
+    std::string text;
+    if (std::FILE* err = running[k].err.get()) {
+      std::rewind(err);
+      std::array<char, 4096> buffer{};
+      for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), err)) > 0;) {
+        text.append(buffer.data(), n);
+      }
+    }
+    said(running[k].name, children[k].exit_status() == 0, text);
+    children.erase(children.begin() + static_cast<std::ptrdiff_t>(k));
+    running.erase(running.begin() + static_cast<std::ptrdiff_t>(k));
+  };
+  const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
+  for (std::size_t k = 1; k < labs.size() && g_signal == 0; ++k) {
+    if (static_cast<long>(children.size()) >= cpus) wait_one();
+    if (g_signal != 0) break;
+    Lab lab{labs[k]};
+    lab.err.reset(std::tmpfile());  // null: the lab's stderr is rigidlab's own
+    std::string why;
+    std::optional<Subprocess> child =
+        start(lab.name, args, lab.err ? Redirect::file(::fileno(lab.err.get())) : Redirect(), why);
+    if (!child) {
+      said(lab.name, false, why);
+      continue;
+    }
+    children.push_back(std::move(*child));
+    running.push_back(std::move(lab));
+  }
+  while (!children.empty()) wait_one();
+  return failed;
+}
+
 // Every lab's figures into `out`, as many labs at once as there are processors.
 int figures(const std::string& out, const std::string& size, const std::string& prefix,
             const std::string& format) {
@@ -334,52 +364,9 @@ int figures(const std::string& out, const std::string& size, const std::string& 
   }
   say_left_stages(out, stage.dir());
   std::cerr << err;
-  int failed = first == 0 ? 0 : 1;
   std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED")
             << "\n";
-  const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
-  // Each lab's stderr into a file of its own, shown when it ends with the staging
-  // folder's name said as `out` (its lines name the paths it wrote to).
-  struct Running {
-    pid_t pid;
-    std::string lab;
-    std::FILE* err;
-  };
-  std::vector<Running> running;
-  const auto wait_one = [&] {
-    int status = 0;
-    pid_t pid = 0;
-    while ((pid = ::wait(&status)) < 0 && errno == EINTR) {
-    }
-    track(pid, false);
-    for (auto it = running.begin(); it != running.end(); ++it) {
-      if (it->pid != pid) continue;
-      if (it->err != nullptr) {
-        std::string text;
-        std::rewind(it->err);
-        std::array<char, 4096> buffer{};
-        for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), it->err)) > 0;) {
-          text.append(buffer.data(), n);
-        }
-        std::fclose(it->err);
-        std::cerr << stage.said_of_out(text);
-      }
-      const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-      std::cerr << "rigidlab: " << it->lab << (ok ? ": figures drawn" : ": FAILED") << "\n";
-      failed += ok ? 0 : 1;
-      running.erase(it);
-      return;
-    }
-  };
-  for (std::size_t k = 1; k < labs.size() && g_signal == 0; ++k) {
-    const std::string& lab = labs[k];
-    if (static_cast<long>(running.size()) >= cpus) wait_one();
-    if (g_signal != 0) break;
-    std::FILE* err = std::tmpfile();  // null: the lab's stderr is rigidlab's own
-    const pid_t pid = start(lab, args, err != nullptr ? ::fileno(err) : -1);
-    running.push_back({pid, lab, err});
-  }
-  while (!running.empty()) wait_one();
+  const int failed = (first == 0 ? 0 : 1) + other_labs(stage, labs, args);
   end_if_signalled();
   if (failed > 0) {
     stage.discard();
@@ -387,19 +374,7 @@ int figures(const std::string& out, const std::string& size, const std::string& 
               << " lab(s) failed (their lines above); no figure landed\n";
     return 1;
   }
-  // a directory where a figure goes is the --out given: refused whole, as a lab refuses it
-  if (const std::string why = stage.blocked(); !why.empty()) {
-    stage.discard();
-    std::cerr << "rigidlab: error: figures: --out: " << rigid::support::terminal_safe(why) << "\n";
-    return 2;
-  }
-  if (const std::string why = stage.land(); !why.empty()) {
-    std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(why) << "\n";
-    return 1;
-  }
-  std::cout << "figures of " << labs.size() << " labs in "
-            << rigid::support::terminal_safe(fs::absolute(out).string()) << "\n";
-  return 0;
+  return land(stage, out, labs.size());
 }
 
 void usage(std::ostream& os) {
@@ -411,6 +386,54 @@ void usage(std::ostream& os) {
      << "                                 every lab's figures into DIR\n"
      << "  rigidlab explore [LAB] [options]  a lab live in a window (rigidlab-explore --help)\n"
      << "  rigidlab --version             the version\n";
+}
+
+// `rigidlab figures ...`: its options read, then every lab's figures drawn.
+int figures_command(const std::vector<std::string>& args) {
+  CLI::App app("every lab's figures into one folder", "rigidlab figures");
+  std::string out, size = "1600x1200", prefix, format = "png";
+  app.add_option("--out", out, "the folder for the figures (made if missing)")->required();
+  app.add_option("--figure-size", size, "figure size in pixels, 800x600 to 8192x8192")
+      ->capture_default_str();
+  app.add_option("--figure-prefix", prefix, "prefix of the figure files' names");
+  app.add_option("--figure-format", format, "png, svg or pdf (vectors for slides and papers)")
+      ->capture_default_str();
+  if (const std::string twice = rigid::support::repeated_option(app, args); !twice.empty()) {
+    std::cerr << "rigidlab: error: figures: " << twice << ": given twice: give it once\n";
+    return 2;
+  }
+  try {
+    app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(e.what()) << "\n";
+    return 2;
+  }
+  return figures(out, size, prefix, format);
+}
+
+// `rigidlab explore ...` and `rigidlab LAB ...`: the program run in rigidlab's place.
+int run_program(const std::string& command, const std::vector<std::string>& args) {
+  if (command == "explore") {
+    const fs::path path = rigid::support::explorer_path();
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+      std::cerr << "rigidlab: error: explore: this build has no explorer (it is built where "
+                   "libglfw3-dev and libimgui-dev are installed)\n";
+      return 2;
+    }
+    std::vector<std::string> explore_args{"rigidlab-explore"};
+    explore_args.insert(explore_args.end(), args.begin() + 1, args.end());
+    const std::string why = rigid::support::exec(path, explore_args);
+    std::cerr << "rigidlab: error: explore: cannot run "
+              << rigid::support::terminal_safe(path.string()) << " (" << why << ")\n";
+    return 1;
+  }
+  const std::string path = lab_path(command).string();
+  const std::string why = rigid::support::exec(path, args);
+  std::cerr << "rigidlab: error: " << command << ": cannot run "
+            << rigid::support::terminal_safe(path) << " (" << why << ")\n";
+  return 1;
 }
 
 int run(int argc, char** argv) {
@@ -443,53 +466,8 @@ int run(int argc, char** argv) {
     }
     return list(names);
   }
-  if (command == "figures") {
-    CLI::App app("every lab's figures into one folder", "rigidlab figures");
-    std::string out, size = "1600x1200", prefix, format = "png";
-    app.add_option("--out", out, "the folder for the figures (made if missing)")->required();
-    app.add_option("--figure-size", size, "figure size in pixels, 800x600 to 8192x8192")
-        ->capture_default_str();
-    app.add_option("--figure-prefix", prefix, "prefix of the figure files' names");
-    app.add_option("--figure-format", format, "png, svg or pdf (vectors for slides and papers)")
-        ->capture_default_str();
-    if (const std::string twice = rigid::support::repeated_option(app, args); !twice.empty()) {
-      std::cerr << "rigidlab: error: figures: " << twice << ": given twice: give it once\n";
-      return 2;
-    }
-    try {
-      app.parse(std::vector<std::string>(args.rbegin(), args.rend() - 1));
-    } catch (const CLI::ParseError& e) {
-      if (e.get_exit_code() == 0) return app.exit(e);
-      std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(e.what()) << "\n";
-      return 2;
-    }
-    return figures(out, size, prefix, format);
-  }
-  if (command == "explore") {
-    const fs::path path = rigid::support::explorer_path();
-    std::error_code ec;
-    if (!fs::exists(path, ec)) {
-      std::cerr << "rigidlab: error: explore: this build has no explorer (it is built where "
-                   "libglfw3-dev and libimgui-dev are installed)\n";
-      return 2;
-    }
-    std::vector<std::string> explore_args{"rigidlab-explore"};
-    explore_args.insert(explore_args.end(), args.begin() + 1, args.end());
-    const std::string why = rigid::support::exec(path, explore_args);
-    std::cerr << "rigidlab: error: explore: cannot run "
-              << rigid::support::terminal_safe(path.string()) << " (" << why << ")\n";
-    return 1;
-  }
-  if (is_lab(command)) {
-    const std::string path = lab_path(command).string();
-    std::vector<char*> lab_argv{const_cast<char*>(command.c_str())};
-    for (int i = 2; i < argc; ++i) lab_argv.push_back(argv[i]);
-    lab_argv.push_back(nullptr);
-    ::execv(path.c_str(), lab_argv.data());
-    std::cerr << "rigidlab: error: " << command << ": cannot run "
-              << rigid::support::terminal_safe(path) << " (" << std::strerror(errno) << ")\n";
-    return 1;
-  }
+  if (command == "figures") return figures_command(args);
+  if (command == "explore" || is_lab(command)) return run_program(command, args);
   std::cerr << "rigidlab: error: " << rigid::support::terminal_safe(command)
             << ": no such lab or command (rigidlab list shows the labs)\n";
   return 2;

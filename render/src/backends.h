@@ -23,6 +23,14 @@ bool bind_symbol(void* lib, const char* name, F& fn) {
   return fn != nullptr;
 }
 
+/// A library's entry points as a table, its list written once as X(library, function)
+/// lines: RIGID_ENTRY_POINT declares the member `function`, typed by the function's own
+/// declaration in its header; RIGID_BIND_ENTRY_POINT, chained after `true`, looks it up
+/// by name in `library` (open_library's handle) into the table `api`, false if missing.
+#define RIGID_ENTRY_POINT(library, function) decltype(&::function) function = nullptr;
+#define RIGID_BIND_ENTRY_POINT(library, function) \
+  &&::rigid::render::detail::bind_symbol(library, #function, api.function)
+
 /// Makes an OSMesa GL 3.3+ core context current (tiny dummy buffer; drawing goes to FBOs).
 GlProcLoader make_osmesa_context(std::string& error);
 /// Makes an EGL surfaceless GL 3.3+ core context current (no surface at all), or with

@@ -6,6 +6,17 @@
 
 namespace rigid::render {
 
+namespace {
+
+// Where panel (row, col) of a rows x cols grid sits in the row-major list.
+std::size_t panel_index(int row, int col, int rows, int cols) {
+  if (row < 0 || row >= rows || col < 0 || col >= cols)
+    throw std::out_of_range("Plot2D::panel: no such panel");
+  return static_cast<std::size_t>(row) * cols + col;
+}
+
+}  // namespace
+
 // ---- Panel builders --------------------------------------------------------
 
 Series& Panel::add_line(std::vector<double> xs, std::vector<double> ys, std::string label) {
@@ -71,13 +82,11 @@ Plot2D::Plot2D(int rows, int cols) : rows_(rows), cols_(cols) {
 }
 
 Panel& Plot2D::panel(int row, int col) {
-  if (row < 0 || row >= rows_ || col < 0 || col >= cols_)
-    throw std::out_of_range("Plot2D::panel: no such panel");
-  return panels_[static_cast<std::size_t>(row) * cols_ + col];
+  return panels_[panel_index(row, col, rows_, cols_)];
 }
 
 const Panel& Plot2D::panel(int row, int col) const {
-  return const_cast<Plot2D*>(this)->panel(row, col);
+  return panels_[panel_index(row, col, rows_, cols_)];
 }
 
 }  // namespace rigid::render

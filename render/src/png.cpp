@@ -55,7 +55,8 @@ const char* encode(std::FILE* f, const Image& img, const std::uint8_t* const* ro
                8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
                PNG_FILTER_TYPE_BASE);
   png_write_info(png, info);
-  png_write_image(png, const_cast<png_bytepp>(rows));
+  // png_write_image is this loop for an image not interlaced, but it takes rows it may write
+  for (int y = 0; y < img.height; ++y) png_write_row(png, rows[y]);
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   return nullptr;

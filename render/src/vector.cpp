@@ -3,9 +3,15 @@
 // DejaVu Sans with every glyph placed where the layout put it), a 3D scene as its
 // raster image inside a page of the same size; and as pixels, cairo's antialiased
 // rasteriser on the CPU (no multisampled buffers to clear, resolve and read back: a
-// plot's fixed cost in the GL path was about 30 ms). libcairo (with the FreeType
-// it uses) is opened on the first plot drawn or vector figure written, as OSMesa, EGL
-// and the video encoders are, so a process that draws neither never loads it.
+// plot's fixed cost in the GL path was about 30 ms).
+//
+// Why libcairo is opened here and not linked: linked, it and the twenty-odd shared
+// objects it needs (pixman, fontconfig, the X client libraries, ...) would load at the
+// start of every process that links the renderer, drawing or not: 1.2 to 1.4 ms more,
+// where the fastest lab's whole run without figures takes 2 to 3 ms
+// (bench/results.md, "Start-up: what a linked library costs"). So libcairo (with the
+// FreeType it uses) is opened on the first plot drawn or vector figure written, as OSMesa,
+// EGL and the video encoders are, and a process that draws neither never loads it.
 #include <cairo-ft.h>
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
@@ -34,7 +40,6 @@ namespace rigid::render {
 
 namespace {
 
-using detail::bind_symbol;
 using detail::DashPattern;
 using detail::P3;
 
@@ -42,137 +47,94 @@ using detail::P3;
 // shows the SVG (whose unit is the pixel).
 constexpr double kPointsPerPixel = 0.75;
 
+// libcairo's entry points, X(library, function).
+#define RIGID_CAIRO_FUNCTIONS(X)                  \
+  X(cairo, cairo_svg_surface_create_for_stream)   \
+  X(cairo, cairo_svg_surface_set_document_unit)   \
+  X(cairo, cairo_pdf_surface_create_for_stream)   \
+  X(cairo, cairo_pdf_surface_set_metadata)        \
+  X(cairo, cairo_surface_finish)                  \
+  X(cairo, cairo_surface_status)                  \
+  X(cairo, cairo_surface_destroy)                 \
+  X(cairo, cairo_surface_flush)                   \
+  X(cairo, cairo_surface_mark_dirty)              \
+  X(cairo, cairo_image_surface_create)            \
+  X(cairo, cairo_image_surface_get_data)          \
+  X(cairo, cairo_image_surface_get_stride)        \
+  X(cairo, cairo_create)                          \
+  X(cairo, cairo_destroy)                         \
+  X(cairo, cairo_status)                          \
+  X(cairo, cairo_status_to_string)                \
+  X(cairo, cairo_save)                            \
+  X(cairo, cairo_restore)                         \
+  X(cairo, cairo_scale)                           \
+  X(cairo, cairo_translate)                       \
+  X(cairo, cairo_rotate)                          \
+  X(cairo, cairo_set_source_rgba)                 \
+  X(cairo, cairo_set_source_surface)              \
+  X(cairo, cairo_paint)                           \
+  X(cairo, cairo_new_path)                        \
+  X(cairo, cairo_move_to)                         \
+  X(cairo, cairo_line_to)                         \
+  X(cairo, cairo_close_path)                      \
+  X(cairo, cairo_new_sub_path)                    \
+  X(cairo, cairo_arc)                             \
+  X(cairo, cairo_rectangle)                       \
+  X(cairo, cairo_fill)                            \
+  X(cairo, cairo_stroke)                          \
+  X(cairo, cairo_clip)                            \
+  X(cairo, cairo_reset_clip)                      \
+  X(cairo, cairo_set_fill_rule)                   \
+  X(cairo, cairo_set_line_width)                  \
+  X(cairo, cairo_set_line_join)                   \
+  X(cairo, cairo_set_line_cap)                    \
+  X(cairo, cairo_set_dash)                        \
+  X(cairo, cairo_ft_font_face_create_for_ft_face) \
+  X(cairo, cairo_font_face_status)                \
+  X(cairo, cairo_set_font_face)                   \
+  X(cairo, cairo_set_font_size)                   \
+  X(cairo, cairo_font_options_create)             \
+  X(cairo, cairo_font_options_destroy)            \
+  X(cairo, cairo_font_options_set_hint_style)     \
+  X(cairo, cairo_font_options_set_hint_metrics)   \
+  X(cairo, cairo_font_options_set_antialias)      \
+  X(cairo, cairo_set_font_options)                \
+  X(cairo, cairo_show_glyphs)                     \
+  X(freetype, FT_Init_FreeType)                   \
+  X(freetype, FT_New_Face)
+
 struct CairoApi {
-  decltype(&cairo_svg_surface_create_for_stream) svg_create = nullptr;
-  decltype(&cairo_svg_surface_set_document_unit) svg_unit = nullptr;
-  decltype(&cairo_pdf_surface_create_for_stream) pdf_create = nullptr;
-  decltype(&cairo_pdf_surface_set_metadata) pdf_metadata = nullptr;
-  decltype(&cairo_surface_finish) surface_finish = nullptr;
-  decltype(&cairo_surface_status) surface_status = nullptr;
-  decltype(&cairo_surface_destroy) surface_destroy = nullptr;
-  decltype(&cairo_surface_flush) surface_flush = nullptr;
-  decltype(&cairo_surface_mark_dirty) surface_mark_dirty = nullptr;
-  decltype(&cairo_image_surface_create) image_create = nullptr;
-  decltype(&cairo_image_surface_get_data) image_data = nullptr;
-  decltype(&cairo_image_surface_get_stride) image_stride = nullptr;
-  decltype(&cairo_create) create = nullptr;
-  decltype(&cairo_destroy) destroy = nullptr;
-  decltype(&cairo_status) status = nullptr;
-  decltype(&cairo_status_to_string) status_string = nullptr;
-  decltype(&cairo_save) save = nullptr;
-  decltype(&cairo_restore) restore = nullptr;
-  decltype(&cairo_scale) scale = nullptr;
-  decltype(&cairo_translate) translate = nullptr;
-  decltype(&cairo_rotate) rotate = nullptr;
-  decltype(&cairo_set_source_rgba) set_rgba = nullptr;
-  decltype(&cairo_set_source_surface) set_surface = nullptr;
-  decltype(&cairo_paint) paint = nullptr;
-  decltype(&cairo_new_path) new_path = nullptr;
-  decltype(&cairo_move_to) move_to = nullptr;
-  decltype(&cairo_line_to) line_to = nullptr;
-  decltype(&cairo_close_path) close_path = nullptr;
-  decltype(&cairo_new_sub_path) new_sub_path = nullptr;
-  decltype(&cairo_arc) arc = nullptr;
-  decltype(&cairo_rectangle) rectangle = nullptr;
-  decltype(&cairo_fill) fill = nullptr;
-  decltype(&cairo_stroke) stroke = nullptr;
-  decltype(&cairo_clip) clip = nullptr;
-  decltype(&cairo_reset_clip) reset_clip = nullptr;
-  decltype(&cairo_set_fill_rule) set_fill_rule = nullptr;
-  decltype(&cairo_set_line_width) set_line_width = nullptr;
-  decltype(&cairo_set_line_join) set_line_join = nullptr;
-  decltype(&cairo_set_line_cap) set_line_cap = nullptr;
-  decltype(&cairo_set_dash) set_dash = nullptr;
-  decltype(&cairo_ft_font_face_create_for_ft_face) ft_face_create = nullptr;
-  decltype(&cairo_font_face_status) font_face_status = nullptr;
-  decltype(&cairo_set_font_face) set_font_face = nullptr;
-  decltype(&cairo_set_font_size) set_font_size = nullptr;
-  decltype(&cairo_font_options_create) options_create = nullptr;
-  decltype(&cairo_font_options_destroy) options_destroy = nullptr;
-  decltype(&cairo_font_options_set_hint_style) options_hint_style = nullptr;
-  decltype(&cairo_font_options_set_hint_metrics) options_hint_metrics = nullptr;
-  decltype(&cairo_set_font_options) set_font_options = nullptr;
-  decltype(&cairo_show_glyphs) show_glyphs = nullptr;
-  decltype(&cairo_font_options_set_antialias) options_antialias = nullptr;
+  RIGID_CAIRO_FUNCTIONS(RIGID_ENTRY_POINT)
   // The figure's font as a face of the FreeType libcairo itself links (a face of the
   // renderer's own FreeType would be another library's object to it).
   cairo_font_face_t* font = nullptr;
 };
 
 const CairoApi& cairo_api() {
-  static const CairoApi api = [] {
+  static const CairoApi table = [] {
     std::string error;
-    void* lib =
+    void* cairo =
         detail::open_library({"libcairo.so.2"}, "libcairo (Debian package libcairo2)", error);
-    void* ft = lib ? detail::open_library({"libfreetype.so.6"},
-                                          "libfreetype (Debian package libfreetype6)", error)
-                   : nullptr;
-    if (ft == nullptr) throw std::runtime_error(error);
-    CairoApi a;
-    decltype(&FT_Init_FreeType) ft_init = nullptr;
-    decltype(&FT_New_Face) ft_new_face = nullptr;
-    const bool ok =
-        bind_symbol(lib, "cairo_svg_surface_create_for_stream", a.svg_create) &&
-        bind_symbol(lib, "cairo_svg_surface_set_document_unit", a.svg_unit) &&
-        bind_symbol(lib, "cairo_pdf_surface_create_for_stream", a.pdf_create) &&
-        bind_symbol(lib, "cairo_pdf_surface_set_metadata", a.pdf_metadata) &&
-        bind_symbol(lib, "cairo_surface_finish", a.surface_finish) &&
-        bind_symbol(lib, "cairo_surface_status", a.surface_status) &&
-        bind_symbol(lib, "cairo_surface_destroy", a.surface_destroy) &&
-        bind_symbol(lib, "cairo_surface_flush", a.surface_flush) &&
-        bind_symbol(lib, "cairo_surface_mark_dirty", a.surface_mark_dirty) &&
-        bind_symbol(lib, "cairo_image_surface_create", a.image_create) &&
-        bind_symbol(lib, "cairo_image_surface_get_data", a.image_data) &&
-        bind_symbol(lib, "cairo_image_surface_get_stride", a.image_stride) &&
-        bind_symbol(lib, "cairo_create", a.create) &&
-        bind_symbol(lib, "cairo_destroy", a.destroy) &&
-        bind_symbol(lib, "cairo_status", a.status) &&
-        bind_symbol(lib, "cairo_status_to_string", a.status_string) &&
-        bind_symbol(lib, "cairo_save", a.save) && bind_symbol(lib, "cairo_restore", a.restore) &&
-        bind_symbol(lib, "cairo_scale", a.scale) &&
-        bind_symbol(lib, "cairo_translate", a.translate) &&
-        bind_symbol(lib, "cairo_rotate", a.rotate) &&
-        bind_symbol(lib, "cairo_set_source_rgba", a.set_rgba) &&
-        bind_symbol(lib, "cairo_set_source_surface", a.set_surface) &&
-        bind_symbol(lib, "cairo_paint", a.paint) &&
-        bind_symbol(lib, "cairo_new_path", a.new_path) &&
-        bind_symbol(lib, "cairo_move_to", a.move_to) &&
-        bind_symbol(lib, "cairo_line_to", a.line_to) &&
-        bind_symbol(lib, "cairo_close_path", a.close_path) &&
-        bind_symbol(lib, "cairo_new_sub_path", a.new_sub_path) &&
-        bind_symbol(lib, "cairo_arc", a.arc) && bind_symbol(lib, "cairo_rectangle", a.rectangle) &&
-        bind_symbol(lib, "cairo_fill", a.fill) && bind_symbol(lib, "cairo_stroke", a.stroke) &&
-        bind_symbol(lib, "cairo_clip", a.clip) &&
-        bind_symbol(lib, "cairo_reset_clip", a.reset_clip) &&
-        bind_symbol(lib, "cairo_set_fill_rule", a.set_fill_rule) &&
-        bind_symbol(lib, "cairo_set_line_width", a.set_line_width) &&
-        bind_symbol(lib, "cairo_set_line_join", a.set_line_join) &&
-        bind_symbol(lib, "cairo_set_line_cap", a.set_line_cap) &&
-        bind_symbol(lib, "cairo_set_dash", a.set_dash) &&
-        bind_symbol(lib, "cairo_ft_font_face_create_for_ft_face", a.ft_face_create) &&
-        bind_symbol(lib, "cairo_font_face_status", a.font_face_status) &&
-        bind_symbol(lib, "cairo_set_font_face", a.set_font_face) &&
-        bind_symbol(lib, "cairo_set_font_size", a.set_font_size) &&
-        bind_symbol(lib, "cairo_font_options_create", a.options_create) &&
-        bind_symbol(lib, "cairo_font_options_destroy", a.options_destroy) &&
-        bind_symbol(lib, "cairo_font_options_set_hint_style", a.options_hint_style) &&
-        bind_symbol(lib, "cairo_font_options_set_hint_metrics", a.options_hint_metrics) &&
-        bind_symbol(lib, "cairo_set_font_options", a.set_font_options) &&
-        bind_symbol(lib, "cairo_show_glyphs", a.show_glyphs) &&
-        bind_symbol(lib, "cairo_font_options_set_antialias", a.options_antialias) &&
-        bind_symbol(ft, "FT_Init_FreeType", ft_init) && bind_symbol(ft, "FT_New_Face", ft_new_face);
-    if (!ok) throw std::runtime_error("libcairo is too old: it lacks an SVG, PDF or FreeType call");
+    void* freetype = cairo
+                         ? detail::open_library({"libfreetype.so.6"},
+                                                "libfreetype (Debian package libfreetype6)", error)
+                         : nullptr;
+    if (freetype == nullptr) throw std::runtime_error(error);
+    CairoApi api;
+    if (!(true RIGID_CAIRO_FUNCTIONS(RIGID_BIND_ENTRY_POINT)))
+      throw std::runtime_error("libcairo is too old: it lacks an SVG, PDF or FreeType call");
     // The face lives as long as the process: every vector figure's text uses it.
     FT_Library library = nullptr;
     FT_Face face = nullptr;
-    if (ft_init(&library) != 0 || ft_new_face(library, RIGID_FONT_PATH, 0, &face) != 0)
+    if (api.FT_Init_FreeType(&library) != 0 ||
+        api.FT_New_Face(library, RIGID_FONT_PATH, 0, &face) != 0)
       throw std::runtime_error("cannot load the font " RIGID_FONT_PATH " for a vector figure");
-    a.font = a.ft_face_create(face, 0);
-    if (a.font_face_status(a.font) != CAIRO_STATUS_SUCCESS)
+    api.font = api.cairo_ft_font_face_create_for_ft_face(face, 0);
+    if (api.cairo_font_face_status(api.font) != CAIRO_STATUS_SUCCESS)
       throw std::runtime_error("libcairo cannot use the font " RIGID_FONT_PATH);
-    return a;
+    return api;
   }();
-  return api;
+  return table;
 }
 
 // "#rrggbb" of a colour.
@@ -220,16 +182,16 @@ std::mutex& cairo_mutex() {
 class CairoCanvas final : public detail::Canvas {
  public:
   CairoCanvas(cairo_t* cr, bool svg_text) : api_(cairo_api()), cr_(cr), svg_text_(svg_text) {
-    api_.set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-    api_.set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
-    cairo_font_options_t* options = api_.options_create();
+    api_.cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+    api_.cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+    cairo_font_options_t* options = api_.cairo_font_options_create();
     // Outlines as designed, advances unrounded: the layout's own metrics (text.cpp).
-    api_.options_hint_style(options, CAIRO_HINT_STYLE_NONE);
-    api_.options_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
-    api_.options_antialias(options, CAIRO_ANTIALIAS_GRAY);
-    api_.set_font_options(cr_, options);
-    api_.options_destroy(options);
-    api_.set_font_face(cr_, api_.font);
+    api_.cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+    api_.cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+    api_.cairo_font_options_set_antialias(options, CAIRO_ANTIALIAS_GRAY);
+    api_.cairo_set_font_options(cr_, options);
+    api_.cairo_font_options_destroy(options);
+    api_.cairo_set_font_face(cr_, api_.font);
   }
   CairoCanvas(const CairoCanvas&) = delete;
   CairoCanvas& operator=(const CairoCanvas&) = delete;
@@ -242,14 +204,14 @@ class CairoCanvas final : public detail::Canvas {
 
   void clip(double x0, double y0, double x1, double y1) override {
     fill_pending();
-    api_.reset_clip(cr_);
-    api_.rectangle(cr_, std::floor(x0), std::floor(y0), std::ceil(x1) - std::floor(x0),
-                   std::ceil(y1) - std::floor(y0));
-    api_.clip(cr_);
+    api_.cairo_reset_clip(cr_);
+    api_.cairo_rectangle(cr_, std::floor(x0), std::floor(y0), std::ceil(x1) - std::floor(x0),
+                         std::ceil(y1) - std::floor(y0));
+    api_.cairo_clip(cr_);
   }
   void no_clip() override {
     fill_pending();
-    api_.reset_clip(cr_);
+    api_.cairo_reset_clip(cr_);
   }
   void depth_test(bool) override {}
 
@@ -258,7 +220,7 @@ class CairoCanvas final : public detail::Canvas {
   }
   void rect(double x0, double y0, double x1, double y1, Color color) override {
     pending(color);
-    api_.rectangle(cr_, x0, y0, x1 - x0, y1 - y0);
+    api_.cairo_rectangle(cr_, x0, y0, x1 - x0, y1 - y0);
   }
   void rect_outline(double x0, double y0, double x1, double y1, double w, Color color) override {
     rect(x0, y0, x1, y0 + w, color);
@@ -269,29 +231,29 @@ class CairoCanvas final : public detail::Canvas {
   void convex(const std::vector<P3>& pts, Color color) override {
     if (pts.size() < 3) return;
     pending(color);
-    api_.move_to(cr_, pts[0].x(), pts[0].y());
-    for (std::size_t i = 1; i < pts.size(); ++i) api_.line_to(cr_, pts[i].x(), pts[i].y());
-    api_.close_path(cr_);
+    api_.cairo_move_to(cr_, pts[0].x(), pts[0].y());
+    for (std::size_t i = 1; i < pts.size(); ++i) api_.cairo_line_to(cr_, pts[i].x(), pts[i].y());
+    api_.cairo_close_path(cr_);
   }
   void disc(const P3& c, double radius, Color color) override {
     pending(color);
-    api_.new_sub_path(cr_);
-    api_.arc(cr_, c.x(), c.y(), radius, 0, 2 * EIGEN_PI);
-    api_.close_path(cr_);
+    api_.cairo_new_sub_path(cr_);
+    api_.cairo_arc(cr_, c.x(), c.y(), radius, 0, 2 * EIGEN_PI);
+    api_.cairo_close_path(cr_);
   }
   void polyline(const std::vector<P3>& pts, double width, Color color, const DashPattern& dash,
                 bool round_caps) override {
     if (pts.empty()) return;
     fill_pending();
     source(color);
-    api_.set_line_width(cr_, width);
-    api_.set_line_cap(cr_, round_caps ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
-    api_.set_dash(cr_, dash.data(), static_cast<int>(dash.size()), 0);
-    api_.move_to(cr_, pts[0].x(), pts[0].y());
-    for (std::size_t i = 1; i < pts.size(); ++i) api_.line_to(cr_, pts[i].x(), pts[i].y());
+    api_.cairo_set_line_width(cr_, width);
+    api_.cairo_set_line_cap(cr_, round_caps ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
+    api_.cairo_set_dash(cr_, dash.data(), static_cast<int>(dash.size()), 0);
+    api_.cairo_move_to(cr_, pts[0].x(), pts[0].y());
+    for (std::size_t i = 1; i < pts.size(); ++i) api_.cairo_line_to(cr_, pts[i].x(), pts[i].y());
     // A single point with round caps is a dot, as on the raster canvas.
-    if (pts.size() == 1) api_.line_to(cr_, pts[0].x(), pts[0].y());
-    api_.stroke(cr_);
+    if (pts.size() == 1) api_.cairo_line_to(cr_, pts[0].x(), pts[0].y());
+    api_.cairo_stroke(cr_);
   }
   TextExtent text(std::string_view markup, double x, double y, double size, Color color, HAlign h,
                   VAlign v, bool vertical, double) override {
@@ -302,23 +264,23 @@ class CairoCanvas final : public detail::Canvas {
       add_svg_text(lay, origin, vertical, color);
       return lay.extent;
     }
-    api_.save(cr_);
-    api_.translate(cr_, origin.x(), origin.y());
-    if (vertical) api_.rotate(cr_, -0.5 * EIGEN_PI);
+    api_.cairo_save(cr_);
+    api_.cairo_translate(cr_, origin.x(), origin.y());
+    if (vertical) api_.cairo_rotate(cr_, -0.5 * EIGEN_PI);
     source(color);
     // The layout's glyphs by size (scripts are smaller), each run at its size; y up there.
     std::map<int, std::vector<cairo_glyph_t>> runs;
     for (const detail::PlacedGlyph& g : lay.glyphs) runs[g.size_px].push_back({g.glyph, g.x, -g.y});
     for (const auto& [px, glyphs] : runs) {
-      api_.set_font_size(cr_, px);
-      api_.show_glyphs(cr_, glyphs.data(), static_cast<int>(glyphs.size()));
+      api_.cairo_set_font_size(cr_, px);
+      api_.cairo_show_glyphs(cr_, glyphs.data(), static_cast<int>(glyphs.size()));
     }
-    api_.restore(cr_);
+    api_.cairo_restore(cr_);
     return lay.extent;
   }
 
  private:
-  void source(Color c) { api_.set_rgba(cr_, c.r, c.g, c.b, c.a); }
+  void source(Color c) { api_.cairo_set_source_rgba(cr_, c.r, c.g, c.b, c.a); }
 
   // One <text> a call, a <tspan> a glyph at its place (SVG readers differ on lists of
   // positions in one tspan: librsvg 2.54 takes only the first).
@@ -353,7 +315,7 @@ class CairoCanvas final : public detail::Canvas {
   void fill_pending() {
     if (!has_pending_) return;
     source(pending_);
-    api_.fill(cr_);
+    api_.cairo_fill(cr_);
     has_pending_ = false;
   }
 
@@ -403,35 +365,38 @@ void write_vector(const std::string& path, FigureFormat format, int width, int h
   cairo_surface_t* surface = nullptr;
   double scale = 1;
   if (format == FigureFormat::kSvg) {
-    surface = api.svg_create(append_to_string, &bytes, width, height);
-    api.svg_unit(surface, CAIRO_SVG_UNIT_PX);
+    surface = api.cairo_svg_surface_create_for_stream(append_to_string, &bytes, width, height);
+    api.cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
   } else {
     scale = kPointsPerPixel;
-    surface = api.pdf_create(append_to_string, &bytes, width * scale, height * scale);
-    api.pdf_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rigidlab");
+    surface = api.cairo_pdf_surface_create_for_stream(append_to_string, &bytes, width * scale,
+                                                      height * scale);
+    api.cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "rigidlab");
     // cairo dates the file now; a reproducible build's SOURCE_DATE_EPOCH dates it then,
     // so that the same figure is the same bytes
     if (const std::string date = source_date(); !date.empty())
-      api.pdf_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
-    if (!title.empty()) api.pdf_metadata(surface, CAIRO_PDF_METADATA_TITLE, title.c_str());
+      api.cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
+    if (!title.empty())
+      api.cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, title.c_str());
   }
-  cairo_t* cr = api.create(surface);
-  api.scale(cr, scale, scale);
+  cairo_t* cr = api.cairo_create(surface);
+  api.cairo_scale(cr, scale, scale);
   try {
     layer = draw(cr);
   } catch (...) {
-    api.destroy(cr);
-    api.surface_destroy(surface);
+    api.cairo_destroy(cr);
+    api.cairo_surface_destroy(surface);
     throw;
   }
-  const cairo_status_t drawn = api.status(cr);
-  api.destroy(cr);
-  api.surface_finish(surface);
-  const cairo_status_t written = api.surface_status(surface);
-  api.surface_destroy(surface);
+  const cairo_status_t drawn = api.cairo_status(cr);
+  api.cairo_destroy(cr);
+  api.cairo_surface_finish(surface);
+  const cairo_status_t written = api.cairo_surface_status(surface);
+  api.cairo_surface_destroy(surface);
   if (drawn != CAIRO_STATUS_SUCCESS || written != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error("cannot write '" + path + "': cairo: " +
-                             api.status_string(drawn != CAIRO_STATUS_SUCCESS ? drawn : written));
+    throw std::runtime_error(
+        "cannot write '" + path +
+        "': cairo: " + api.cairo_status_to_string(drawn != CAIRO_STATUS_SUCCESS ? drawn : written));
   if (format == FigureFormat::kSvg) bytes = with_text_layer(std::move(bytes), layer);
   write_file_atomically(path, [&](std::FILE* file) {
     if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size())
@@ -445,29 +410,29 @@ Image detail::draw_plot_on_cpu(const Plot2D& plot, int width, int height, Figure
   PhaseClock clock(timing);
   const CairoApi& api = cairo_api();
   const std::lock_guard<std::mutex> lock(cairo_mutex());
-  cairo_surface_t* surface = api.image_create(CAIRO_FORMAT_RGB24, width, height);
-  cairo_t* cr = api.create(surface);
+  cairo_surface_t* surface = api.cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+  cairo_t* cr = api.cairo_create(surface);
   clock.lap(&FigureTiming::setup);
   {
     CairoCanvas canvas(cr, false);
-    api.set_rgba(cr, 1, 1, 1, 1);
-    api.paint(cr);
+    api.cairo_set_source_rgba(cr, 1, 1, 1, 1);
+    api.cairo_paint(cr);
     detail::draw_plot(plot, width, height, canvas, &clock);
     canvas.finish();
   }
-  const cairo_status_t status = api.status(cr);
-  api.destroy(cr);
-  api.surface_flush(surface);
+  const cairo_status_t status = api.cairo_status(cr);
+  api.cairo_destroy(cr);
+  api.cairo_surface_flush(surface);
   clock.lap(&FigureTiming::draw);
   Image img;
   img.width = width;
   img.height = height;
   img.rgb.resize(static_cast<std::size_t>(width) * height * 3);
-  const unsigned char* data = api.image_data(surface);
-  const int stride = api.image_stride(surface);
+  const unsigned char* data = api.cairo_image_surface_get_data(surface);
+  const int stride = api.cairo_image_surface_get_stride(surface);
   if (status != CAIRO_STATUS_SUCCESS || data == nullptr) {
-    api.surface_destroy(surface);
-    throw std::runtime_error(std::string("cairo: ") + api.status_string(status));
+    api.cairo_surface_destroy(surface);
+    throw std::runtime_error(std::string("cairo: ") + api.cairo_status_to_string(status));
   }
   for (int y = 0; y < height; ++y) {
     const auto* row =
@@ -480,7 +445,7 @@ Image detail::draw_plot_on_cpu(const Plot2D& plot, int width, int height, Figure
       out[2] = static_cast<std::uint8_t>(p);
     }
   }
-  api.surface_destroy(surface);
+  api.cairo_surface_destroy(surface);
   clock.lap(&FigureTiming::resolve);
   return img;
 }
@@ -491,8 +456,8 @@ void save_figure(const Plot2D& plot, const std::string& path, FigureFormat forma
   detail::PhaseClock clock(timing);
   write_vector(path, format, width, height, plain_text(plot.title), [&](cairo_t* cr) {
     CairoCanvas canvas(cr, format == FigureFormat::kSvg);
-    cairo_api().set_rgba(cr, 1, 1, 1, 1);
-    cairo_api().paint(cr);
+    cairo_api().cairo_set_source_rgba(cr, 1, 1, 1, 1);
+    cairo_api().cairo_paint(cr);
     detail::draw_plot(plot, width, height, canvas);
     canvas.finish();
     return canvas.svg_text();
@@ -507,12 +472,12 @@ void save_figure(const Scene3D& scene, const std::string& path, FigureFormat for
   detail::PhaseClock clock(timing);
   write_vector(path, format, width, height, plain_text(scene.title), [&](cairo_t* cr) {
     const CairoApi& api = cairo_api();
-    cairo_surface_t* pixels = api.image_create(CAIRO_FORMAT_RGB24, width, height);
-    api.surface_flush(pixels);
-    unsigned char* data = api.image_data(pixels);
-    const int stride = api.image_stride(pixels);
+    cairo_surface_t* pixels = api.cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+    api.cairo_surface_flush(pixels);
+    unsigned char* data = api.cairo_image_surface_get_data(pixels);
+    const int stride = api.cairo_image_surface_get_stride(pixels);
     if (data == nullptr) {
-      api.surface_destroy(pixels);
+      api.cairo_surface_destroy(pixels);
       throw std::runtime_error("cairo: cannot hold a " + std::to_string(width) + "x" +
                                std::to_string(height) + " image");
     }
@@ -523,10 +488,10 @@ void save_figure(const Scene3D& scene, const std::string& path, FigureFormat for
         row[x] = (std::uint32_t{p[0]} << 16) | (std::uint32_t{p[1]} << 8) | p[2];
       }
     }
-    api.surface_mark_dirty(pixels);
-    api.set_surface(cr, pixels, 0, 0);
-    api.paint(cr);
-    api.surface_destroy(pixels);
+    api.cairo_surface_mark_dirty(pixels);
+    api.cairo_set_source_surface(cr, pixels, 0, 0);
+    api.cairo_paint(cr);
+    api.cairo_surface_destroy(pixels);
     return std::string();
   });
   clock.lap(&FigureTiming::encode);

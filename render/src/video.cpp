@@ -46,8 +46,6 @@ std::optional<VideoFormat> video_format_for(const std::string& path) {
 
 namespace {
 
-using detail::bind_symbol;
-
 // One encoding, fed frames in order on the worker thread, writing into the file
 // it is given before the first frame.
 class Encoder {
@@ -61,58 +59,52 @@ class Encoder {
 
 // ---- animated WebP ------------------------------------------------------------
 
+// libwebp's entry points, X(library, function): the animation encoder is libwebpmux's.
+#define RIGID_WEBP_FUNCTIONS(X)              \
+  X(mux, WebPAnimEncoderOptionsInitInternal) \
+  X(mux, WebPAnimEncoderNewInternal)         \
+  X(mux, WebPAnimEncoderAdd)                 \
+  X(mux, WebPAnimEncoderAssemble)            \
+  X(mux, WebPAnimEncoderGetError)            \
+  X(mux, WebPAnimEncoderDelete)              \
+  X(webp, WebPConfigInitInternal)            \
+  X(webp, WebPPictureInitInternal)           \
+  X(webp, WebPPictureImportRGB)              \
+  X(webp, WebPPictureFree)                   \
+  X(webp, WebPFree)
+
 struct WebpApi {
-  decltype(&WebPAnimEncoderOptionsInitInternal) options_init = nullptr;
-  decltype(&WebPAnimEncoderNewInternal) encoder_new = nullptr;
-  decltype(&WebPAnimEncoderAdd) add = nullptr;
-  decltype(&WebPAnimEncoderAssemble) assemble = nullptr;
-  decltype(&WebPAnimEncoderGetError) get_error = nullptr;
-  decltype(&WebPAnimEncoderDelete) encoder_delete = nullptr;
-  decltype(&WebPConfigInitInternal) config_init = nullptr;
-  decltype(&WebPPictureInitInternal) picture_init = nullptr;
-  decltype(&WebPPictureImportRGB) import_rgb = nullptr;
-  decltype(&WebPPictureFree) picture_free = nullptr;
-  decltype(&WebPFree) free = nullptr;
+  RIGID_WEBP_FUNCTIONS(RIGID_ENTRY_POINT)
 };
 
 const WebpApi& webp_api() {
-  static const WebpApi api = [] {
+  static const WebpApi table = [] {
     std::string error;
     void* webp = detail::open_library({"libwebp.so.7"}, "libwebp (Debian package libwebp7)", error);
     void* mux = webp ? detail::open_library({"libwebpmux.so.3"},
                                             "libwebpmux (Debian package libwebpmux3)", error)
                      : nullptr;
     if (!mux) throw std::runtime_error(error);
-    WebpApi a;
-    const bool ok = bind_symbol(mux, "WebPAnimEncoderOptionsInitInternal", a.options_init) &&
-                    bind_symbol(mux, "WebPAnimEncoderNewInternal", a.encoder_new) &&
-                    bind_symbol(mux, "WebPAnimEncoderAdd", a.add) &&
-                    bind_symbol(mux, "WebPAnimEncoderAssemble", a.assemble) &&
-                    bind_symbol(mux, "WebPAnimEncoderGetError", a.get_error) &&
-                    bind_symbol(mux, "WebPAnimEncoderDelete", a.encoder_delete) &&
-                    bind_symbol(webp, "WebPConfigInitInternal", a.config_init) &&
-                    bind_symbol(webp, "WebPPictureInitInternal", a.picture_init) &&
-                    bind_symbol(webp, "WebPPictureImportRGB", a.import_rgb) &&
-                    bind_symbol(webp, "WebPPictureFree", a.picture_free) &&
-                    bind_symbol(webp, "WebPFree", a.free);
-    if (!ok)
+    WebpApi api;
+    if (!(true RIGID_WEBP_FUNCTIONS(RIGID_BIND_ENTRY_POINT)))
       throw std::runtime_error("libwebp is too old: an entry point of WebPAnimEncoder is missing");
-    return a;
+    return api;
   }();
-  return api;
+  return table;
 }
 
 class WebpEncoder final : public Encoder {
  public:
   explicit WebpEncoder(const VideoSettings& s) : api_(webp_api()), settings_(s) {
     WebPAnimEncoderOptions options;
-    if (!api_.options_init(&options, WEBP_MUX_ABI_VERSION))
+    if (!api_.WebPAnimEncoderOptionsInitInternal(&options, WEBP_MUX_ABI_VERSION))
       throw std::runtime_error("libwebpmux: version mismatch");
     options.anim_params.loop_count = 0;  // loop forever, as a README animation should
     options.kmax = 0;                    // no forced key frames: the next frame is coded as a delta
-    encoder_ = api_.encoder_new(s.width, s.height, &options, WEBP_MUX_ABI_VERSION);
+    encoder_ = api_.WebPAnimEncoderNewInternal(s.width, s.height, &options, WEBP_MUX_ABI_VERSION);
     if (!encoder_) throw std::runtime_error("libwebpmux: cannot make an animation encoder");
-    if (!api_.config_init(&config_, WEBP_PRESET_DRAWING, kQuality, WEBP_ENCODER_ABI_VERSION))
+    if (!api_.WebPConfigInitInternal(&config_, WEBP_PRESET_DRAWING, kQuality,
+                                     WEBP_ENCODER_ABI_VERSION))
       throw std::runtime_error("libwebp: version mismatch");
     config_.method = kMethod;
     // A lit surface's smooth shading is where lossy VP8 shows its blocks: spatial noise
@@ -120,18 +112,21 @@ class WebpEncoder final : public Encoder {
     // then break into 16-pixel blotches. Off, with the filter kept, they stay smooth.
     config_.sns_strength = kNoiseShaping;
   }
-  ~WebpEncoder() override { api_.encoder_delete(encoder_); }
+  ~WebpEncoder() override { api_.WebPAnimEncoderDelete(encoder_); }
 
   void encode(const Image& frame, int index) override {
     WebPPicture picture;
-    api_.picture_init(&picture, WEBP_ENCODER_ABI_VERSION);
+    api_.WebPPictureInitInternal(&picture, WEBP_ENCODER_ABI_VERSION);
     picture.width = frame.width;
     picture.height = frame.height;
     picture.use_argb = 0;
-    const bool imported = api_.import_rgb(&picture, frame.rgb.data(), 3 * frame.width) != 0;
-    const bool added = imported && api_.add(encoder_, &picture, timestamp_ms(index), &config_);
-    api_.picture_free(&picture);
-    if (!added) throw std::runtime_error(std::string("libwebp: ") + api_.get_error(encoder_));
+    const bool imported =
+        api_.WebPPictureImportRGB(&picture, frame.rgb.data(), 3 * frame.width) != 0;
+    const bool added =
+        imported && api_.WebPAnimEncoderAdd(encoder_, &picture, timestamp_ms(index), &config_);
+    api_.WebPPictureFree(&picture);
+    if (!added)
+      throw std::runtime_error(std::string("libwebp: ") + api_.WebPAnimEncoderGetError(encoder_));
   }
 
   void begin(std::FILE* file) override { file_ = file; }
@@ -140,11 +135,14 @@ class WebpEncoder final : public Encoder {
   // animation's bytes, not its pixels): the file is written here in one piece.
   void finish(int frames) override {
     WebPData data{nullptr, 0};
-    if (!api_.add(encoder_, nullptr, timestamp_ms(frames), nullptr) ||
-        !api_.assemble(encoder_, &data))
-      throw std::runtime_error(std::string("libwebp: ") + api_.get_error(encoder_));
+    if (!api_.WebPAnimEncoderAdd(encoder_, nullptr, timestamp_ms(frames), nullptr) ||
+        !api_.WebPAnimEncoderAssemble(encoder_, &data))
+      throw std::runtime_error(std::string("libwebp: ") + api_.WebPAnimEncoderGetError(encoder_));
     const bool written = std::fwrite(data.bytes, 1, data.size, file_) == data.size;
-    api_.free(const_cast<std::uint8_t*>(data.bytes));
+    // WebPData holds the buffer it hands over as const and WebPFree takes it as not
+    // (libwebp's own WebPDataClear casts the same way; inline, it would call a WebPFree
+    // linked, not this one)
+    api_.WebPFree(const_cast<std::uint8_t*>(data.bytes));
     if (!written) throw std::runtime_error("short write");
   }
 
@@ -171,95 +169,78 @@ class WebpEncoder final : public Encoder {
 
 // ---- H.264 in MP4 ---------------------------------------------------------------
 
+// Why FFmpeg is opened here and not linked: linked, its four libraries bring about 130
+// shared objects (every codec Debian builds in), which would load at the start of every
+// process that links the renderer, animating or not: 24 to 26 ms more, where the fastest
+// lab's whole run without figures takes 2 to 3 ms (bench/results.md, "Start-up:
+// what a linked library costs"). Opened on the first MP4, only an animation pays. The
+// libraries opened are those of the headers built against (the major version is the
+// soname's), and each entry point is typed by its header's declaration.
+
+// FFmpeg's library lib<name> of the given major version (the number its soname
+// carries), or nullptr with `error` set, naming the Debian package that has it.
+void* open_ffmpeg(const std::string& name, int major, std::string& error) {
+  const std::string soname = "lib" + name + ".so." + std::to_string(major);
+  const std::string what =
+      "lib" + name + " (Debian package lib" + name + std::to_string(major) + ")";
+  return detail::open_library({soname.c_str()}, what.c_str(), error);
+}
+
+// FFmpeg's entry points, X(library, function).
+#define RIGID_FFMPEG_FUNCTIONS(X)           \
+  X(codec, avcodec_find_encoder_by_name)    \
+  X(codec, avcodec_alloc_context3)          \
+  X(codec, avcodec_open2)                   \
+  X(codec, avcodec_send_frame)              \
+  X(codec, avcodec_receive_packet)          \
+  X(codec, avcodec_free_context)            \
+  X(codec, avcodec_parameters_from_context) \
+  X(codec, av_packet_alloc)                 \
+  X(codec, av_packet_free)                  \
+  X(codec, av_packet_rescale_ts)            \
+  X(format, avformat_alloc_output_context2) \
+  X(format, avformat_new_stream)            \
+  X(format, avformat_write_header)          \
+  X(format, av_interleaved_write_frame)     \
+  X(format, av_write_trailer)               \
+  X(format, avformat_free_context)          \
+  X(format, avio_alloc_context)             \
+  X(format, avio_context_free)              \
+  X(format, avio_flush)                     \
+  X(util, av_frame_alloc)                   \
+  X(util, av_frame_get_buffer)              \
+  X(util, av_frame_make_writable)           \
+  X(util, av_frame_free)                    \
+  X(util, av_malloc)                        \
+  X(util, av_freep)                         \
+  X(util, av_opt_set)                       \
+  X(util, av_strerror)                      \
+  X(util, av_log_set_level)                 \
+  X(scale, sws_getContext)                  \
+  X(scale, sws_scale)                       \
+  X(scale, sws_freeContext)
+
 struct AvApi {
-  decltype(&avcodec_find_encoder_by_name) find_encoder = nullptr;
-  decltype(&avcodec_alloc_context3) alloc_context = nullptr;
-  decltype(&avcodec_open2) open = nullptr;
-  decltype(&avcodec_send_frame) send_frame = nullptr;
-  decltype(&avcodec_receive_packet) receive_packet = nullptr;
-  decltype(&avcodec_free_context) free_context = nullptr;
-  decltype(&avcodec_parameters_from_context) parameters_from_context = nullptr;
-  decltype(&av_packet_alloc) packet_alloc = nullptr;
-  decltype(&av_packet_free) packet_free = nullptr;
-  decltype(&av_packet_rescale_ts) packet_rescale_ts = nullptr;
-  decltype(&avformat_alloc_output_context2) alloc_output = nullptr;
-  decltype(&avformat_new_stream) new_stream = nullptr;
-  decltype(&avformat_write_header) write_header = nullptr;
-  decltype(&av_interleaved_write_frame) write_frame = nullptr;
-  decltype(&av_write_trailer) write_trailer = nullptr;
-  decltype(&avformat_free_context) free_format = nullptr;
-  decltype(&avio_alloc_context) avio_alloc = nullptr;
-  decltype(&avio_context_free) avio_free = nullptr;
-  decltype(&::avio_flush) flush_io = nullptr;
-  decltype(&av_frame_alloc) frame_alloc = nullptr;
-  decltype(&av_frame_get_buffer) frame_get_buffer = nullptr;
-  decltype(&av_frame_make_writable) frame_make_writable = nullptr;
-  decltype(&av_frame_free) frame_free = nullptr;
-  decltype(&::av_malloc) malloc = nullptr;
-  decltype(&av_freep) freep = nullptr;
-  decltype(&av_opt_set) opt_set = nullptr;
-  decltype(&::av_strerror) strerror = nullptr;
-  decltype(&av_log_set_level) log_set_level = nullptr;
-  decltype(&sws_getContext) sws_get = nullptr;
-  decltype(&::sws_scale) scale = nullptr;
-  decltype(&sws_freeContext) sws_free = nullptr;
+  RIGID_FFMPEG_FUNCTIONS(RIGID_ENTRY_POINT)
 };
 
 const AvApi& av_api() {
-  static const AvApi api = [] {
+  static const AvApi table = [] {
     std::string error;
-    void* util =
-        detail::open_library({"libavutil.so.57"}, "libavutil (Debian package libavutil57)", error);
-    void* codec = util ? detail::open_library({"libavcodec.so.59"},
-                                              "libavcodec (Debian package libavcodec59)", error)
-                       : nullptr;
-    void* format = codec ? detail::open_library({"libavformat.so.59"},
-                                                "libavformat (Debian package libavformat59)", error)
-                         : nullptr;
-    void* scale = format ? detail::open_library({"libswscale.so.6"},
-                                                "libswscale (Debian package libswscale6)", error)
-                         : nullptr;
+    void* util = open_ffmpeg("avutil", LIBAVUTIL_VERSION_MAJOR, error);
+    void* codec = util ? open_ffmpeg("avcodec", LIBAVCODEC_VERSION_MAJOR, error) : nullptr;
+    void* format = codec ? open_ffmpeg("avformat", LIBAVFORMAT_VERSION_MAJOR, error) : nullptr;
+    void* scale = format ? open_ffmpeg("swscale", LIBSWSCALE_VERSION_MAJOR, error) : nullptr;
     if (!scale) throw std::runtime_error(error);
-    AvApi a;
-    const bool ok =
-        bind_symbol(codec, "avcodec_find_encoder_by_name", a.find_encoder) &&
-        bind_symbol(codec, "avcodec_alloc_context3", a.alloc_context) &&
-        bind_symbol(codec, "avcodec_open2", a.open) &&
-        bind_symbol(codec, "avcodec_send_frame", a.send_frame) &&
-        bind_symbol(codec, "avcodec_receive_packet", a.receive_packet) &&
-        bind_symbol(codec, "avcodec_free_context", a.free_context) &&
-        bind_symbol(codec, "avcodec_parameters_from_context", a.parameters_from_context) &&
-        bind_symbol(codec, "av_packet_alloc", a.packet_alloc) &&
-        bind_symbol(codec, "av_packet_free", a.packet_free) &&
-        bind_symbol(codec, "av_packet_rescale_ts", a.packet_rescale_ts) &&
-        bind_symbol(format, "avformat_alloc_output_context2", a.alloc_output) &&
-        bind_symbol(format, "avformat_new_stream", a.new_stream) &&
-        bind_symbol(format, "avformat_write_header", a.write_header) &&
-        bind_symbol(format, "av_interleaved_write_frame", a.write_frame) &&
-        bind_symbol(format, "av_write_trailer", a.write_trailer) &&
-        bind_symbol(format, "avformat_free_context", a.free_format) &&
-        bind_symbol(format, "avio_alloc_context", a.avio_alloc) &&
-        bind_symbol(format, "avio_context_free", a.avio_free) &&
-        bind_symbol(format, "avio_flush", a.flush_io) &&
-        bind_symbol(util, "av_frame_alloc", a.frame_alloc) &&
-        bind_symbol(util, "av_frame_get_buffer", a.frame_get_buffer) &&
-        bind_symbol(util, "av_frame_make_writable", a.frame_make_writable) &&
-        bind_symbol(util, "av_frame_free", a.frame_free) &&
-        bind_symbol(util, "av_malloc", a.malloc) && bind_symbol(util, "av_freep", a.freep) &&
-        bind_symbol(util, "av_opt_set", a.opt_set) &&
-        bind_symbol(util, "av_strerror", a.strerror) &&
-        bind_symbol(util, "av_log_set_level", a.log_set_level) &&
-        bind_symbol(scale, "sws_getContext", a.sws_get) &&
-        bind_symbol(scale, "sws_scale", a.scale) &&
-        bind_symbol(scale, "sws_freeContext", a.sws_free);
-    if (!ok)
-      throw std::runtime_error("FFmpeg's libraries are not the 5.1 series this was built for");
+    AvApi api;
+    if (!(true RIGID_FFMPEG_FUNCTIONS(RIGID_BIND_ENTRY_POINT)))
+      throw std::runtime_error("FFmpeg's libraries lack an entry point of the version built for");
     // libx264's statistics and FFmpeg's notices would spill over the lab's output;
     // failures come back as return codes, said here in one line
-    a.log_set_level(AV_LOG_QUIET);
-    return a;
+    api.av_log_set_level(AV_LOG_QUIET);
+    return api;
   }();
-  return api;
+  return table;
 }
 
 // The MP4 streams into the file as it is encoded: libavformat writes through these
@@ -296,9 +277,9 @@ class Mp4Encoder final : public Encoder {
   explicit Mp4Encoder(const VideoSettings& s) : api_(av_api()), settings_(s) {
     if (s.width % 2 != 0 || s.height % 2 != 0)
       throw std::invalid_argument("an MP4 (H.264, 4:2:0) needs an even width and height");
-    const AVCodec* codec = api_.find_encoder("libx264");
+    const AVCodec* codec = api_.avcodec_find_encoder_by_name("libx264");
     if (!codec) throw std::runtime_error("libavcodec has no libx264 encoder");
-    codec_ = api_.alloc_context(codec);
+    codec_ = api_.avcodec_alloc_context3(codec);
     // the rate as a fraction: 30 fps is 1/30 s a frame, 29.97 is 1001/30000
     const int rate = static_cast<int>(std::lround(s.fps * 1000.0));
     codec_->time_base = AVRational{1000, rate};
@@ -313,69 +294,69 @@ class Mp4Encoder final : public Encoder {
     codec_->color_trc = AVCOL_TRC_IEC61966_2_1;
     codec_->color_range = AVCOL_RANGE_MPEG;
     codec_->thread_count = 1;  // the renderer uses the other core
-    api_.opt_set(codec_->priv_data, "preset", kPreset, 0);
-    api_.opt_set(codec_->priv_data, "crf", kCrf, 0);
-    api_.opt_set(codec_->priv_data, "tune", "animation", 0);
+    api_.av_opt_set(codec_->priv_data, "preset", kPreset, 0);
+    api_.av_opt_set(codec_->priv_data, "crf", kCrf, 0);
+    api_.av_opt_set(codec_->priv_data, "tune", "animation", 0);
 
-    if (api_.alloc_output(&format_, nullptr, "mp4", nullptr) < 0 || !format_)
+    if (api_.avformat_alloc_output_context2(&format_, nullptr, "mp4", nullptr) < 0 || !format_)
       throw std::runtime_error("libavformat cannot make an MP4");
     if (format_->oformat->flags & AVFMT_GLOBALHEADER) codec_->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    check(api_.open(codec_, codec, nullptr), "cannot open libx264");
-    stream_ = api_.new_stream(format_, nullptr);
+    check(api_.avcodec_open2(codec_, codec, nullptr), "cannot open libx264");
+    stream_ = api_.avformat_new_stream(format_, nullptr);
     if (!stream_) throw std::runtime_error("libavformat cannot add a stream");
     stream_->time_base = codec_->time_base;
-    check(api_.parameters_from_context(stream_->codecpar, codec_), "stream parameters");
+    check(api_.avcodec_parameters_from_context(stream_->codecpar, codec_), "stream parameters");
 
-    frame_ = api_.frame_alloc();
+    frame_ = api_.av_frame_alloc();
     frame_->format = AV_PIX_FMT_YUV420P;
     frame_->width = s.width;
     frame_->height = s.height;
-    check(api_.frame_get_buffer(frame_, 0), "frame buffer");
-    sws_ = api_.sws_get(s.width, s.height, AV_PIX_FMT_RGB24, s.width, s.height, AV_PIX_FMT_YUV420P,
-                        SWS_BILINEAR, nullptr, nullptr, nullptr);
-    packet_ = api_.packet_alloc();
+    check(api_.av_frame_get_buffer(frame_, 0), "frame buffer");
+    sws_ = api_.sws_getContext(s.width, s.height, AV_PIX_FMT_RGB24, s.width, s.height,
+                               AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr);
+    packet_ = api_.av_packet_alloc();
     if (!sws_ || !packet_) throw std::runtime_error("libswscale or libavcodec: out of memory");
   }
 
   ~Mp4Encoder() override {
-    api_.sws_free(sws_);
-    api_.frame_free(&frame_);
-    api_.packet_free(&packet_);
-    api_.free_context(&codec_);
+    api_.sws_freeContext(sws_);
+    api_.av_frame_free(&frame_);
+    api_.av_packet_free(&packet_);
+    api_.avcodec_free_context(&codec_);
     if (io_) {
-      api_.freep(&io_->buffer);  // the buffer is the caller's (libavformat may have replaced it)
-      api_.avio_free(&io_);
+      api_.av_freep(&io_->buffer);  // the buffer is the caller's (libavformat may have replaced it)
+      api_.avio_context_free(&io_);
     }
-    if (format_) api_.free_format(format_);
+    if (format_) api_.avformat_free_context(format_);
   }
 
   void begin(std::FILE* file) override {
     file_.file = file;
     constexpr int kBuffer = 1 << 16;
-    auto* buffer = static_cast<unsigned char*>(api_.malloc(kBuffer));
-    io_ =
-        api_.avio_alloc(buffer, kBuffer, 1, &file_, nullptr, &StreamFile::write, &StreamFile::seek);
+    auto* buffer = static_cast<unsigned char*>(api_.av_malloc(kBuffer));
+    io_ = api_.avio_alloc_context(buffer, kBuffer, 1, &file_, nullptr, &StreamFile::write,
+                                  &StreamFile::seek);
     if (!io_) throw std::runtime_error("libavformat: out of memory");
     format_->pb = io_;
     format_->flags |= AVFMT_FLAG_CUSTOM_IO;
-    check(api_.write_header(format_, nullptr), "cannot write the MP4 header");
+    check(api_.avformat_write_header(format_, nullptr), "cannot write the MP4 header");
   }
 
   void encode(const Image& image, int index) override {
-    check(api_.frame_make_writable(frame_), "frame buffer");
+    check(api_.av_frame_make_writable(frame_), "frame buffer");
     const std::uint8_t* src[] = {image.rgb.data()};
     const int stride[] = {3 * image.width};
-    api_.scale(sws_, src, stride, 0, image.height, frame_->data, frame_->linesize);
+    api_.sws_scale(sws_, src, stride, 0, image.height, frame_->data, frame_->linesize);
     frame_->pts = index;
-    check(api_.send_frame(codec_, frame_), "libx264 refused a frame");
+    check(api_.avcodec_send_frame(codec_, frame_), "libx264 refused a frame");
     drain();
   }
 
   void finish(int /*frames*/) override {
-    check(api_.send_frame(codec_, nullptr), "libx264 could not flush");
+    check(api_.avcodec_send_frame(codec_, nullptr), "libx264 could not flush");
     drain();
-    check(api_.write_trailer(format_), "cannot finish the MP4");
-    api_.flush_io(io_);
+    check(api_.av_write_trailer(format_), "cannot finish the MP4");
+    api_.avio_flush(io_);
     if (file_.error != 0) throw std::runtime_error(std::strerror(file_.error));
   }
 
@@ -387,14 +368,14 @@ class Mp4Encoder final : public Encoder {
 
   void drain() {
     for (;;) {
-      const int r = api_.receive_packet(codec_, packet_);
+      const int r = api_.avcodec_receive_packet(codec_, packet_);
       if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
       check(r, "libx264 failed");
       // each frame lasts one frame time: the MP4's duration then counts the last one too
       if (packet_->duration == 0) packet_->duration = 1;
-      api_.packet_rescale_ts(packet_, codec_->time_base, stream_->time_base);
+      api_.av_packet_rescale_ts(packet_, codec_->time_base, stream_->time_base);
       packet_->stream_index = stream_->index;
-      check(api_.write_frame(format_, packet_), "cannot write a frame to the MP4");
+      check(api_.av_interleaved_write_frame(format_, packet_), "cannot write a frame to the MP4");
     }
   }
 
@@ -402,7 +383,7 @@ class Mp4Encoder final : public Encoder {
     if (r >= 0) return;
     if (file_.error != 0) throw std::runtime_error(std::strerror(file_.error));
     char text[128] = {};
-    api_.strerror(r, text, sizeof text);
+    api_.av_strerror(r, text, sizeof text);
     throw std::runtime_error(std::string(what) + ": " + text);
   }
 

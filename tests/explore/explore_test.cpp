@@ -4,6 +4,7 @@
 // reproduces them; a value that breaks a rule shows the rule and the view stays the
 // last valid one; real mouse input (xdotool) moves a slider and turns the view; bad
 // options are one line and exit 2, before any window opens.
+#include <imgui.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,15 +12,19 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <random>
 #include <sstream>
 #include <thread>
 
 #include "common/registry.h"
+#include "explorer.h"
 #include "lab_common.h"
+#include "rigid/render/context.h"
 #include "rigid/render/image_match.h"
 #include "rigid/render/png.h"
 
@@ -231,33 +236,58 @@ TEST_CASE("explore: a typed value that breaks a rule shows the rule and the view
   CHECK(drawn_pixels(shot, kSceneX0, 0, kSceneX1, kSceneY1) > 2000);
 }
 
+// Whether `file` has come, looked for at most `looks` times (a tenth of a second apart).
+bool comes(const fs::path& file, int looks) {
+  for (int k = 0; k < looks && !fs::exists(file); ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return fs::exists(file);
+}
+
 TEST_CASE("explore: real mouse input moves a slider and turns the view (xdotool)") {
   const fs::path dir = fresh_dir("mouse");
   const fs::path before = dir / "before.png", after = dir / "after.png";
-  std::ofstream(dir / "session.txt")
-      << "frames 3\nscreenshot " << before.string() << "\nwait 6\nframes 2\nscreenshot "
-      << after.string() << "\nprint-command\nquit\n";
+  // The mass slider (the first, at y = 144) dragged right, then the scene dragged: one
+  // mouse event a step. After each, the test makes go-K and the script, which waits for
+  // it, draws two frames (the event is taken in) and answers with ack-K: no step counts
+  // on how long the other side takes.
+  const std::vector<std::string> steps{"mousemove --sync --window $W 60 144",
+                                       "mousedown 1",
+                                       "mousemove --sync --window $W 120 144",
+                                       "mousemove --sync --window $W 150 144",
+                                       "mouseup 1",
+                                       "mousemove --sync --window $W 600 250",
+                                       "mousedown 1",
+                                       "mousemove --sync --window $W 650 260",
+                                       "mousemove --sync --window $W 700 270",
+                                       "mouseup 1"};
+  const auto go = [&](std::size_t k) { return dir / ("go-" + std::to_string(k)); };
+  const auto ack = [&](std::size_t k) { return dir / ("ack-" + std::to_string(k) + ".png"); };
+  {
+    std::ofstream script(dir / "session.txt");
+    script << "frames 3\nscreenshot " << before.string() << "\n";
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      script << "wait-for " << go(k).string() << "\nframes 2\nscreenshot " << ack(k).string()
+             << "\n";
+    }
+    script << "frames 2\nscreenshot " << after.string() << "\nprint-command\nquit\n";
+  }
   const std::string command = std::string(RIGID_EXPLORER) + " top_nutation --script " +
                               (dir / "session.txt").string() + " >" + (dir / "out.txt").string() +
                               " 2>&1";
   pid_t pid = 0;
-  const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
-  REQUIRE(::posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) == 0);
+  std::string shell = "/bin/sh", dash_c = "-c", line = command;
+  char* argv[] = {shell.data(), dash_c.data(), line.data(), nullptr};
+  REQUIRE(::posix_spawn(&pid, "/bin/sh", nullptr, nullptr, argv, environ) == 0);
   // the first screenshot says the window is up
-  for (int k = 0; k < 300 && !fs::exists(before); ++k) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  REQUIRE(comes(before, 300));
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    INFO(steps[k]);
+    const std::string act = "W=$(xdotool search --sync --name 'rigidlab explore') && xdotool " +
+                            steps[k] + " && touch " + go(k).string();
+    CHECK(std::system(act.c_str()) == 0);
+    CHECK(comes(ack(k), 300));
   }
-  REQUIRE(fs::exists(before));
-  // the mass slider (the first, at y = 144) dragged right, then the scene dragged
-  const std::string xdotool =
-      "W=$(xdotool search --sync --name 'rigidlab explore') && "
-      "xdotool mousemove --window $W 60 144 sleep 0.3 mousedown 1 sleep 0.3 "
-      "mousemove --window $W 120 144 sleep 0.3 mousemove --window $W 150 144 sleep 0.3 "
-      "mouseup 1 sleep 0.3 "
-      "mousemove --window $W 600 250 sleep 0.3 mousedown 1 sleep 0.3 "
-      "mousemove --window $W 650 260 sleep 0.3 mousemove --window $W 700 270 sleep 0.3 "
-      "mouseup 1";
-  CHECK(std::system(xdotool.c_str()) == 0);
   int status = 0;
   REQUIRE(::waitpid(pid, &status, 0) == pid);
   const std::string out = read_file(dir / "out.txt");
@@ -366,4 +396,110 @@ TEST_CASE("explore: bad options are one line and exit 2 before any window opens"
   CHECK(run.status == 2);
   CHECK(run.one_error_line());
   CHECK(run.err.find("session.txt:2: unknown command 'fly'") != std::string::npos);
+}
+
+namespace {
+
+// Dear ImGui without a window: frames built and their draw lists made, the figures drawn
+// into an off-screen GL context (render_gl's own).
+struct Headless {
+  Headless() {
+    rigid::render::context();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(1280, 720);
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  }
+  ~Headless() { ImGui::DestroyContext(); }
+  // One frame of the explorer; whether it drew anything.
+  bool frame(rigid::explore::Explorer& e) {
+    ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+    ImGui::NewFrame();
+    e.frame(1.0 / 60.0);
+    ImGui::Render();
+    return ImGui::GetDrawData()->CmdListsCount > 0;
+  }
+};
+
+// A lab that opens only when the test lets it: its opening has begun, and it may end.
+struct Gate {
+  std::mutex m;
+  std::condition_variable cv;
+  bool began = false, open = false, made = false;
+  void wait_for(bool Gate::*flag) {
+    std::unique_lock<std::mutex> lock(m);
+    cv.wait(lock, [&] { return this->*flag; });
+  }
+  void set(bool Gate::*flag) {
+    {
+      std::lock_guard<std::mutex> lock(m);
+      this->*flag = true;
+    }
+    cv.notify_all();
+  }
+};
+
+}  // namespace
+
+TEST_CASE("explore: another lab opens off the frame's thread while the frames go on") {
+  Headless imgui;
+  Gate gate;
+  std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs();
+  const auto poinsot =
+      std::find_if(labs.begin(), labs.end(), [](const auto& l) { return l.name == "poinsot"; });
+  REQUIRE(poinsot != labs.end());
+  labs.push_back({"held", [&gate, make = poinsot->make] {
+                    gate.set(&Gate::began);
+                    gate.wait_for(&Gate::open);
+                    auto session = make();
+                    gate.set(&Gate::made);
+                    return session;
+                  }});
+  rigid::explore::Explorer e(labs, "lamina_tensor", {});
+  CHECK(imgui.frame(e));
+  e.queue(rigid::explore::action::OpenLab{"held"});
+  CHECK(e.animating());  // an action queued: the loop does not wait for an event
+  CHECK(imgui.frame(e));
+  // while the lab opens (held until the test lets it), frames are drawn of the lab before
+  gate.wait_for(&Gate::began);
+  for (int k = 0; k < 3; ++k) {
+    CHECK(imgui.frame(e));
+    CHECK(e.opening());
+    CHECK(e.animating());
+    CHECK(e.session().name() == "lamina_tensor");
+  }
+  gate.set(&Gate::open);
+  gate.wait_for(&Gate::made);
+  // it is shown at a frame after it has come (the few instructions between its making and
+  // its future's readiness are bounded by tries, not by time)
+  for (int tries = 0; tries < 1000000 && e.opening(); ++tries) {
+    imgui.frame(e);
+    std::this_thread::yield();
+  }
+  REQUIRE(!e.opening());
+  CHECK(imgui.frame(e));
+  CHECK(e.session().name() == "poinsot");
+  CHECK(e.view().fields.size() == e.session().input_count());
+  // a value typed into the new lab's field is taken at the next frame
+  e.queue(rigid::explore::action::SetText{"--mass", "2.5"});
+  CHECK(imgui.frame(e));
+  CHECK(e.command_line() == "poinsot --mass=2.5");
+}
+
+TEST_CASE("explore: a recording that cannot be written says why and the script exits 1") {
+  const fs::path dir = fresh_dir("record");
+  const Run run = run_explorer("euler_angles",
+                               "record " + (dir / "no" / "such" / "motion.webp").string() +
+                                   "\nframes 2\nprint-command\nquit\n",
+                               dir);
+  INFO(run.out << run.err);
+  // the lab's own command refuses the folder, in its own words; the script waited for it
+  CHECK(run.status == 1);
+  CHECK(run.err.find("recording failed: euler_angles: error: --animate: cannot write into "
+                     "directory") != std::string::npos);
+  CHECK(lines_of(run.out).back() == "euler_angles");
+  CHECK_FALSE(fs::exists(dir / "no"));
 }

@@ -1,6 +1,7 @@
 // One reader of user text: the same text given to an input on the command line (the lab
-// run as a process) and typed into a live session (what the explorer's fields and its
-// --script call) gets the same verdict, and where refused the same message. Texts: numbers
+// run as a process), typed into a live session (what the explorer's fields call) and set
+// by an explorer script (`set --flag "text"`, where the explorer is built) gets the same
+// verdict, and where refused the same message. Texts: numbers
 // as people and programs spell them, spaces, overflow and underflow, infinities, vectors
 // and pairs with too few or many parts, words, and bytes that are not UTF-8.
 #include <fcntl.h>
@@ -8,11 +9,16 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "common/registry.h"
 #include "rigid/support/text.h"
+#ifdef RIGID_HAVE_EXPLORER
+#include "explorer.h"
+#include "script.h"
+#endif
 
 namespace {
 
@@ -71,6 +77,26 @@ Verdict live(const std::string& lab, const std::string& flag, const std::string&
   FAIL("no lab " << lab);
   return {};
 }
+
+#ifdef RIGID_HAVE_EXPLORER
+// The text set by a one-line explorer script, the explorer held in-process (no window: a
+// script's step applies its action between frames); its verdict and its "refused:" line.
+Verdict scripted(const std::string& lab, const std::string& flag, const std::string& text) {
+  // a script's word in double quotes may hold any byte but a quote, a # or a line's end
+  REQUIRE(text.find_first_of("\"#\n") == std::string::npos);
+  rigid::explore::Explorer explorer(rigid::lab::all_labs(), lab, {});
+  rigid::explore::Script script =
+      rigid::explore::Script::parse("set " + flag + " \"" + text + "\"\n", "doors.txt");
+  std::ostringstream out;
+  script.report_to(out);
+  for (int steps = 0; script.step(explorer); ++steps) REQUIRE(steps < 10);
+  const std::string said = out.str();
+  if (said.empty()) return {true, {}};
+  const std::string prefix = "doors.txt:1: refused: ";
+  if (said.rfind(prefix, 0) != 0 || said.back() != '\n') return {false, "(not one line) " + said};
+  return {false, said.substr(prefix.size(), said.size() - prefix.size() - 1)};
+}
+#endif
 
 // The texts tried on a number input, a vector, a pair and a bounded angle.
 std::vector<std::string> number_texts() {
@@ -153,19 +179,29 @@ void same_everywhere(const std::string& lab, const std::string& flag,
   for (const std::string& text : texts) {
     const Verdict cli = command_line(lab, {flag, text, "--json", "--quiet"});
     const Verdict session = live(lab, flag, text);
-    INFO(lab << " " << flag << " '" << text << "': command line "
-             << (cli.accepted ? "accepts" : "refuses: " + cli.message) << "; live "
-             << (session.accepted ? "accepts" : "refuses: " + session.message));
+    const auto said = [](const Verdict& v) {
+      return v.accepted ? std::string("accepts") : "refuses: " + v.message;
+    };
+    INFO(lab << " " << flag << " '" << text << "': command line " << said(cli) << "; live "
+             << said(session));
     CHECK(cli.accepted == session.accepted);
     if (!cli.accepted && !session.accepted) CHECK(cli.message == session.message);
     disagreements +=
         cli.accepted != session.accepted || (!cli.accepted && cli.message != session.message);
+#ifdef RIGID_HAVE_EXPLORER
+    const Verdict script = scripted(lab, flag, text);
+    INFO("explorer script " << said(script));
+    CHECK(script.accepted == cli.accepted);
+    if (!cli.accepted && !script.accepted) CHECK(script.message == cli.message);
+    disagreements +=
+        script.accepted != cli.accepted || (!cli.accepted && script.message != cli.message);
+#endif
   }
 }
 
 }  // namespace
 
-TEST_CASE("one reader: the command line and a live session read the same text the same way") {
+TEST_CASE("one reader: the command line, a live session and a script read text the same way") {
   int disagreements = 0;
   same_everywhere("poinsot", "--mass", number_texts(), disagreements);
   same_everywhere("top_nutation", "--theta0-deg", number_texts(), disagreements);

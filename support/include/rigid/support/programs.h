@@ -38,8 +38,10 @@ inline std::filesystem::path explorer_path() {
 /// Replaces this process with `path` run with `args` (args[0] is the name it sees);
 /// returns only if that failed, with errno's text.
 inline std::string exec(const std::filesystem::path& path, const std::vector<std::string>& args) {
+  // execv's argv is of char*: the strings' own buffers, copied here, are writable
+  std::vector<std::string> words = args;
   std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
   ::execv(path.c_str(), argv.data());
   return std::strerror(errno);

@@ -1,0 +1,106 @@
+// The explorer's exports (exports.h).
+#include "exports.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include "common/writers.h"
+#include "rigid/render/atomic_file.h"
+#include "rigid/render/draw.h"
+#include "rigid/render/png.h"
+#include "rigid/support/programs.h"
+#include "scene_cache.h"
+
+namespace rigid::explore {
+
+namespace {
+
+// A word a shell would read as itself, else single-quoted.
+std::string shell_word(const std::string& word) {
+  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_./=,:+-@%") == std::string::npos) {
+    return word;
+  }
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::string write_text(const std::string& path, const std::string& text) {
+  try {
+    render::write_file_atomically(
+        path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string save_figure(lab::Session& s, const std::string& name, const std::string& path,
+                        render::FigureFormat format, int width, int height) {
+  s.wait();  // the figure the command line draws, from the whole report
+  const lab::NamedFigure* f = figure_named(s, name);
+  if (f == nullptr) return "save-figure: " + s.name() + " has no figure named " + name;
+  try {
+    std::visit(
+        [&](const auto& figure) { render::save_figure(figure, path, format, width, height); },
+        f->figure);
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+  return "";
+}
+
+std::string save_view(const render::Scene3D& scene, const std::string& path, int width,
+                      int height) {
+  try {
+    render::save_png(scene, path, width, height);
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+  return "";
+}
+
+std::string json_text(lab::Session& s) {
+  s.wait();  // the numbers the command line prints, the whole report's
+  // the command line that reproduces it, as the command's own JSON names its argv
+  lab::RunOutputs outputs;
+  outputs.command.push_back(s.name());
+  for (const std::string& a : s.arguments()) outputs.command.push_back(a);
+  std::ostringstream text;
+  lab::write_json(text, s.report(), outputs, RIGID_VERSION);
+  return text.str();
+}
+
+std::string export_json(lab::Session& s, const std::string& path) {
+  return write_text(path, json_text(s));
+}
+
+std::string export_csv(lab::Session& s, const std::string& path) {
+  s.wait();
+  const lab::TimeSeries& series = s.report().time_series();
+  if (series.columns.empty()) return "this run has no time series";
+  return write_text(path, lab::csv_text(series));
+}
+
+std::string command_line(const lab::Session& s) {
+  std::string line = s.name();
+  for (const std::string& a : s.arguments()) line += " " + shell_word(a);
+  return line;
+}
+
+// The lab's own command writes the animation, so the file is the command line's, byte
+// for byte, and the window goes on meanwhile.
+support::Subprocess start_recording(const lab::Session& s, const std::string& path) {
+  const std::string program = support::program_path(s.name(), "labs").string();
+  std::vector<std::string> args{program};
+  for (const std::string& a : s.arguments()) args.push_back(a);
+  for (const std::string& a : {std::string("--animate"), path, std::string("--quiet")})
+    args.push_back(a);
+  return support::Subprocess(program, args,
+                             {support::Redirect::null(), support::Redirect::pipe(), nullptr});
+}
+
+}  // namespace rigid::explore

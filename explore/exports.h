@@ -1,0 +1,31 @@
+// What the explorer writes, each through the lab's own writers so that a file is the
+// command line's, byte for byte: a figure, the view as shown, the JSON, the CSV, the
+// command line that reproduces the view, and an animation written by the lab's own
+// command in a child process. Each waits for the session's whole report (the explorer
+// asks for an export only once it has come). "" or the one line saying what failed.
+#pragma once
+
+#include <string>
+
+#include "common/session.h"
+#include "rigid/render/figure_format.h"
+#include "rigid/render/scene3d.h"
+#include "rigid/support/subprocess.h"
+
+namespace rigid::explore {
+
+std::string save_figure(lab::Session& s, const std::string& name, const std::string& path,
+                        render::FigureFormat format, int width, int height);
+/// `scene`: the view as shown, at the size asked for.
+std::string save_view(const render::Scene3D& scene, const std::string& path, int width, int height);
+std::string export_json(lab::Session& s, const std::string& path);
+std::string export_csv(lab::Session& s, const std::string& path);
+/// The JSON the command line prints (`LAB ARGS --json`), naming that command.
+std::string json_text(lab::Session& s);
+/// The command line that reproduces the session's inputs, each word a shell reads as itself.
+std::string command_line(const lab::Session& s);
+/// `LAB ARGS --animate PATH --quiet` started, its stderr into a pipe this process reads;
+/// throws std::system_error if it cannot be started.
+support::Subprocess start_recording(const lab::Session& s, const std::string& path);
+
+}  // namespace rigid::explore

@@ -1,0 +1,152 @@
+// The scene and plot views (views.h).
+#include "views.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+
+#include "rigid/render/draw.h"
+#include "rigid/support/text.h"
+#include "style.h"
+
+namespace rigid::explore {
+
+namespace {
+
+// A window for a figure's image at `at`, without padding or decoration; the image's
+// size in pixels of the framebuffer.
+std::pair<int, int> begin_view(const char* name, ViewRect at) {
+  ImGui::SetNextWindowPos(ImVec2(at.x, at.y));
+  ImGui::SetNextWindowSize(ImVec2(at.w, at.h));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::Begin(name, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PopStyleVar();
+  const ImGuiIO& io = ImGui::GetIO();
+  return {std::max(16, static_cast<int>(at.w * io.DisplayFramebufferScale.x)),
+          std::max(16, static_cast<int>(at.h * io.DisplayFramebufferScale.y))};
+}
+
+// GL's rows run bottom-up: the texture is shown flipped.
+void show_texture(unsigned texture, ImVec2 origin, ViewRect at) {
+  ImGui::GetWindowDrawList()->AddImage(
+      reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), origin,
+      ImVec2(origin.x + at.w, origin.y + at.h), ImVec2(0, 1), ImVec2(1, 0));
+}
+
+}  // namespace
+
+bool Views::Drawn::operator==(const Drawn& o) const {
+  return generation == o.generation && choice == o.choice && width == o.width &&
+         height == o.height && time == o.time && orbit.yaw_deg == o.orbit.yaw_deg &&
+         orbit.pitch_deg == o.orbit.pitch_deg && orbit.zoom == o.orbit.zoom && hidden == o.hidden;
+}
+
+void Views::reset() {
+  scene_drawn_ = plot_drawn_ = Drawn{};
+  cursors_.clear();
+  draw_error_.clear();
+}
+
+void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, ViewRect at,
+                  std::vector<Action>& queue) {
+  const auto [pw, ph] = begin_view("Scene", at);
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool any = cache.shown(s, v) != nullptr;
+  if (any) {
+    const Drawn want{s.generation(), v.scene_choice,   pw,  ph, v.time,
+                     v.orbit,        v.hidden_version, true};
+    if (!(scene_drawn_.valid && scene_drawn_ == want)) {
+      try {
+        scene_image_.draw(cache.view_scene(s, v, pw, ph), pw, ph);
+        draw_error_.clear();
+      } catch (const std::exception& e) {
+        draw_error_ = e.what();
+      }
+      scene_drawn_ = want;
+    }
+  }
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("view", ImVec2(at.w, at.h));
+  if (any && scene_image_.texture() != 0) show_texture(scene_image_.texture(), origin, at);
+  // the mouse turns the view, the wheel zooms, a double click resets it
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+    queue.emplace_back(action::MouseTurn{io.MouseDelta.x, io.MouseDelta.y, at.h});
+  }
+  if (ImGui::IsItemHovered()) {
+    if (io.MouseWheel != 0.0f) queue.emplace_back(action::Wheel{io.MouseWheel});
+    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) queue.emplace_back(action::ResetView{});
+  }
+  if (!draw_error_.empty()) {
+    ImGui::SetCursorScreenPos(
+        ImVec2(origin.x + 8, origin.y + at.h - 2 * ImGui::GetTextLineHeight()));
+    ImGui::TextColored(kRuleColor, "%s", support::terminal_safe(draw_error_).c_str());
+  }
+  if (!any) {
+    ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
+    ImGui::TextColored(kDimColor, "this lab draws no 3D scene");
+  }
+  ImGui::End();
+}
+
+void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int height,
+                      bool strip) {
+  const std::optional<render::Plot2D> plot = shown_plot(s, v);
+  cursors_.clear();
+  plot_drawn_.valid = plot.has_value();
+  if (!plot) return;
+  try {
+    plot_image_.draw(*plot, width, height);
+    // where the panels against the motion's time are, for the cursor
+    if (s.animation() == nullptr || strip) return;
+    const render::Plot2D::Layout layout = render::layout(*plot, width, height);
+    for (int r = 0, k = 0; r < plot->rows(); ++r) {
+      for (int c = 0; c < plot->cols(); ++c, ++k) {
+        const render::Axis& x = plot->panel(r, c).x;
+        if (x.motion_time && x.scale == render::Scale::kLinear) {
+          const auto& p = layout.panels[k];
+          cursors_.push_back({p.frame, p.x_lo, p.x_hi});
+        }
+      }
+    }
+  } catch (const std::exception& e) {
+    draw_error_ = e.what();
+  }
+}
+
+void Views::plot(const lab::Session& s, const ViewState& v, ViewRect at) {
+  const auto [pw, ph] = begin_view("Plot", at);
+  const lab::Animation* motion = s.animation();
+  // the motion's strip is drawn again as it plays; another plot once, its time cursor
+  // laid over it
+  const bool strip = motion != nullptr && motion->strip && v.plot_choice == 0;
+  const Drawn want{s.generation(), v.plot_choice, pw, ph, strip ? v.time : 0.0, {}, 0, true};
+  if (!(plot_drawn_.valid && plot_drawn_ == want)) {
+    draw_plot(s, v, pw, ph, strip);
+    const bool valid = plot_drawn_.valid;
+    plot_drawn_ = want;
+    plot_drawn_.valid = valid;
+  }
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  if (plot_drawn_.valid && plot_image_.texture() != 0) {
+    show_texture(plot_image_.texture(), origin, at);
+    const float sx = at.w / static_cast<float>(pw), sy = at.h / static_cast<float>(ph);
+    for (const Cursor& c : cursors_) {
+      if (!(v.time >= c.x_lo && v.time <= c.x_hi) || !(c.x_hi > c.x_lo)) continue;
+      const double px = c.frame.x0 + (v.time - c.x_lo) / (c.x_hi - c.x_lo) * c.frame.width();
+      const float X = origin.x + static_cast<float>(px) * sx;
+      ImGui::GetWindowDrawList()->AddLine(ImVec2(X, origin.y + static_cast<float>(c.frame.y0) * sy),
+                                          ImVec2(X, origin.y + static_cast<float>(c.frame.y1) * sy),
+                                          IM_COL32(0, 0, 0, 255), 2.0f);
+    }
+  } else {
+    ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
+    ImGui::TextColored(kDimColor, "this lab draws no plot");
+  }
+  ImGui::End();
+}
+
+}  // namespace rigid::explore

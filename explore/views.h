@@ -1,0 +1,57 @@
+// The explorer's two views, between the panels: the scene (the motion or a 3D figure,
+// turned by the mouse) over the time bar, and the plot (the motion's strip or a 2D
+// figure, with the time cursor) under it. Each is drawn by render_gl into a texture of
+// the window's context, again only when what it shows has changed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "actions.h"
+#include "common/session.h"
+#include "rigid/render/live.h"
+#include "rigid/render/rect.h"
+#include "scene_cache.h"
+#include "view_state.h"
+
+namespace rigid::explore {
+
+/// Where a view is in the window, in its points.
+struct ViewRect {
+  float x = 0, y = 0, w = 0, h = 0;
+};
+
+class Views {
+ public:
+  /// Forgets what was drawn (another lab is shown).
+  void reset();
+  /// The scene view; the mouse's turns and zooms are queued.
+  void scene(const lab::Session& s, const ViewState& v, SceneCache& cache, ViewRect at,
+             std::vector<Action>& queue);
+  /// The plot view.
+  void plot(const lab::Session& s, const ViewState& v, ViewRect at);
+
+ private:
+  // What a view's texture was drawn from: it is drawn again when this changes.
+  struct Drawn {
+    long generation = -1;
+    int choice = -1, width = 0, height = 0;
+    double time = -1.0;
+    Orbit orbit;
+    long hidden = 0;
+    bool valid = false;
+    bool operator==(const Drawn& o) const;
+  };
+  // The plot's panels against the motion's time: where the time cursor goes.
+  struct Cursor {
+    render::ScreenRect frame;
+    double x_lo = 0, x_hi = 1;
+  };
+  void draw_plot(const lab::Session& s, const ViewState& v, int width, int height, bool strip);
+  render::LiveImage scene_image_, plot_image_;
+  Drawn scene_drawn_, plot_drawn_;
+  std::vector<Cursor> cursors_;
+  std::string draw_error_;
+};
+
+}  // namespace rigid::explore
