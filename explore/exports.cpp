@@ -28,8 +28,7 @@ std::string shell_word(const std::string& word) {
 
 std::string write_text(const std::string& path, const std::string& text) {
   try {
-    render::write_file_atomically(
-        path, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+    render::write_text_atomically(path, text);
   } catch (const std::exception& e) {
     return e.what();
   }

@@ -345,9 +345,7 @@ void write_frame_log(const Options& o, const nlohmann::json& frames) {
                               {"gl_renderer", info.gl_renderer},
                               {"samples", info.samples},
                               {"frames", frames}};
-  const std::string text = log.dump();
-  rigid::render::write_file_atomically(
-      o.frame_log, [&](std::FILE* file) { std::fwrite(text.data(), 1, text.size(), file); });
+  rigid::render::write_text_atomically(o.frame_log, log.dump());
 }
 
 // The explorer in the window, to its end; the exit status.

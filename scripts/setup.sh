@@ -15,7 +15,7 @@ RIGID_PACKAGES=(
   libwebp-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libglfw3-dev libimgui-dev xvfb xauth xdotool
   libcairo2-dev librsvg2-bin poppler-utils
-  clang-format emscripten file
+  clang-format pmccabe emscripten file
 )
 
 stamp=build/.packages-installed

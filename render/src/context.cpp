@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <chrono>
 #include <cstdlib>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <string_view>
 
 #include "backends.h"
 #include "gl.h"
@@ -36,8 +38,14 @@ ContextInfo describe(Backend used, detail::GlProcLoader loader, const ContextOpt
   GLint max_samples = 0;
   gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
   int samples = options.samples;
-  if (const char* env = std::getenv("RIGID_GL_SAMPLES"); env != nullptr && *env != '\0')
-    samples = std::atoi(env);
+  // RIGID_GL_SAMPLES, a developer's switch (the bench's 2x2 supersampling against MSAA):
+  // a whole number, else ignored.
+  if (const char* env = std::getenv("RIGID_GL_SAMPLES"); env != nullptr) {
+    const std::string_view text(env);
+    int n = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (error == std::errc() && end == text.data() + text.size() && !text.empty()) samples = n;
+  }
   samples = std::min(samples, static_cast<int>(max_samples));
   // Fewer than 2 samples is no antialiasing: use 2×2 supersampling instead.
   info.samples = samples >= 2 ? samples : 0;

@@ -21,7 +21,7 @@ def main():
     binary_dir, source_dir = sys.argv[1], sys.argv[2]
     commands = [[os.path.join(binary_dir, p)] for p in PROGRAMS
                 if os.path.exists(os.path.join(binary_dir, p))]
-    commands += [["/usr/bin/python3", os.path.join(source_dir, s)] for s in SCRIPTS]
+    commands += [[sys.executable, os.path.join(source_dir, s)] for s in SCRIPTS]
     failures = 0
     for command in commands:
         name = os.path.basename(command[-1])

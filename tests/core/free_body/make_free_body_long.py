@@ -16,7 +16,7 @@ The times n T + s are rounded to doubles and the reference is taken at those
 doubles (s recomputed as t - n T at 30 digits), so the test asks the C++ for
 exactly the instants the reference holds. Writes reference_free_body_long.inc.
 
-Run: /usr/bin/python3 tests/core/free_body/make_free_body_long.py   (about a minute)
+Run: python3 tests/core/free_body/make_free_body_long.py   (about a minute)
 """
 import math
 import os

@@ -5,7 +5,7 @@ first period 4K (including the quarter points), negative ones, and far out to
 1e3 periods, where the argument itself carries its own rounding. The arguments
 and k'^2 are the exact binary values of doubles. Writes reference_jacobi_dense.inc.
 
-Run: /usr/bin/python3 tests/core/free_body/make_jacobi_dense.py   (a few seconds)
+Run: python3 tests/core/free_body/make_jacobi_dense.py   (a few seconds)
 """
 import os
 

@@ -15,7 +15,7 @@ States given by omega: a generic one, theta within 1e-3 to 1e-12 rad of either p
 (the rates as 1/sin theta), moments spread over decades, with and without a torque. By
 the rates: theta at either pole exactly, 1e-60 deg from one, and generic.
 
-Run: /usr/bin/python3 tests/core/free_body/make_lagrange_exact.py
+Run: python3 tests/core/free_body/make_lagrange_exact.py
 """
 import os
 

@@ -9,7 +9,7 @@ evaluated with mpmath at 50 digits from the exact binary values of the double
 inputs: the separatrix distance L^2 - 2 T I2 is then exact, however small.
 Writes reference_near_separatrix.inc beside this script.
 
-Run: /usr/bin/python3 tests/core/free_body/make_near_separatrix.py
+Run: python3 tests/core/free_body/make_near_separatrix.py
 """
 import os
 

@@ -8,7 +8,7 @@ reference is independent of the C++ closed form (Jacobi elliptic functions,
 Carlson R_J) it checks. Writes reference_free_body.inc beside this script, and
 reference_jacobi.inc: sn, cn, dn from mpmath.ellipfun for moduli up to k'^2 = 1e-30.
 
-Run: /usr/bin/python3 tests/core/free_body/make_reference.py   (about a minute)
+Run: python3 tests/core/free_body/make_reference.py   (about a minute)
 """
 import math
 import os

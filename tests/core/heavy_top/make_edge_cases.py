@@ -18,7 +18,7 @@ general root finder lost half its digits on the cluster u0, u3 within 1e-20 of 1
   ~mgl/(Is S) is a tiny difference of the partial fractions' two terms: mean phi_dot =
   (1/2K) int_0^2K a (u0 - u)/(1 - u^2) dv, u = u1 + (u0 - u1) sn^2(v | k^2), by quad.
 
-Run: /usr/bin/python3 tests/core/heavy_top/make_edge_cases.py
+Run: python3 tests/core/heavy_top/make_edge_cases.py
 """
 import math
 import os

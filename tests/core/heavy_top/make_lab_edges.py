@@ -13,7 +13,7 @@ phi by pi, as 'base'; the lab's two limits are base -+ pi / period.
 - started upright with theta_dot0 = 1 (through the pole), and no spin at 150 deg (planar).
 Each with the period's condition number, max |d ln T / d ln x| over theta0 and the rates.
 
-Run: /usr/bin/python3 tests/core/heavy_top/make_lab_edges.py
+Run: python3 tests/core/heavy_top/make_lab_edges.py
 """
 import os
 

@@ -10,7 +10,7 @@ sin + mgl sin (eq. 184), phi_dot = (p_phi - p_psi cos theta)/(I sin^2 theta)
 the double inputs. It knows nothing of the cubic, its roots or the elliptic
 functions of the C++ closed form it checks. Writes reference_heavy_top.inc.
 
-Run: /usr/bin/python3 tests/core/heavy_top/make_reference.py   (a few minutes)
+Run: python3 tests/core/heavy_top/make_reference.py   (a few minutes)
 """
 import os
 

@@ -13,7 +13,7 @@ into radians in mpmath (as the lab keeps sin(theta) from degrees):
 - L in space, T = 1/2 sum I_i omega_i^2, dT/dpsi_dot = I3 omega_3 and dT/dpsi = (I1 - I2)
   omega_1 omega_2 (eqs. 154-157).
 
-Run: /usr/bin/python3 tests/labs/references/euler_angles/make_edge_cases.py
+Run: python3 tests/labs/references/euler_angles/make_edge_cases.py
 """
 import math
 import os

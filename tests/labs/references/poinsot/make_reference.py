@@ -10,7 +10,7 @@ axes (omega_dot from Euler's equations, eq. 73 with N = 0), a rate of omega_body
 Euler's equations with that rate as a fourth component, integrated by mpmath's Taylor
 method over the period 4 K(k) / lambda (Landau and Lifshitz, section 37).
 
-Run: /usr/bin/python3 tests/labs/references/poinsot/make_reference.py   (about a minute)
+Run: python3 tests/labs/references/poinsot/make_reference.py   (about a minute)
 """
 import math
 import os

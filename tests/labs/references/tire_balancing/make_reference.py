@@ -22,7 +22,7 @@ another (12 kg, 0.3 m, 0.08 m) and one whose masses sit farther out than the rim
 (2 kg, 0.1 m, 0.25 m: no limit below 45 deg); by each limit atan(b/a), the largest
 double below it, a few ulps below, and 1e-10 and 1e-4 of it below.
 
-Run: /usr/bin/python3 tests/labs/references/tire_balancing/make_reference.py
+Run: python3 tests/labs/references/tire_balancing/make_reference.py
 """
 import math
 import os
