@@ -373,13 +373,10 @@ const InputTable<Inputs>& input_table() {
   return table;
 }
 
-Report compute(const Inputs& in) {
-  Report report(kName, kTitle);
-  report.start(input_table(), in);
-  if (!(in.theta0_deg >= 0.0 && in.theta0_deg < 180.0)) {
-    throw InputError("--theta0-deg", fmt::format("must lie in [0, 180) (got {:g})", in.theta0_deg));
-  }
-  // The top: a thin disk at the arm's height (parallel-axis theorem), or given moments.
+namespace {
+
+// The top: a thin disk at the arm's height (parallel-axis theorem), or given moments.
+void make_top(Report& report, const Inputs& in) {
   double I = 0.0, Is = 0.0;
   if (!in.inertia) {
     const Body disk = thin_disk(in.mass, in.disk_radius);
@@ -394,21 +391,12 @@ Report compute(const Inputs& in) {
   report.top = HeavyTop{I, Is, in.mass * in.g * in.arm};
   report.arm = in.arm;
   report.disk_radius = in.disk_radius;
-  const double S = in.spin ? *in.spin : in.spin_rpm * kRpm;
-  if (in.spin) report.drop_input("spin_rpm");
-  const double theta0 = deg_to_rad(in.theta0_deg);
+}
 
-  report_section_8_1(report, in, S, theta0);
-
-  report.section("9 the motion: E' = I theta_dot^2 / 2 + V(theta) (eqs. 191-195)");
-  TopStart start{theta0, in.thetadot0, in.phidot0, S};
-  start.theta_deg = in.theta0_deg;
-  report.motion.emplace(
-      for_input("--theta0-deg", [&] { return HeavyTopExact(report.top, start); }));
+// The run to t_end by --method, sampled 200 a nutation period (or a turn of the spin for
+// a sleeping top), and with --compare every method against the closed form.
+void report_run(Report& report, const Inputs& in, double S) {
   const HeavyTopExact& motion = *report.motion;
-  report_section_9(report, start);
-
-  // Sampling: 200 a nutation period (or a turn of the spin for a sleeping top).
   const bool sleeping = motion.regime() == TopRegime::kSleeping;
   report.scale = sleeping || !std::isfinite(motion.nutation_period())
                      ? 2 * kPi / std::max(std::abs(S), 1e-300)
@@ -440,9 +428,11 @@ Report compute(const Inputs& in) {
     report.comparisons =
         compare_every_method(report, problem, motion, plan, report.scale, at_cost, top_words());
   }
-  report_errata(report, S, theta0);
-  report_table(report, in);
+}
 
+// --csv: the run at its sample times beside the closed form, with the Euler angles.
+void add_series(Report& report) {
+  const HeavyTopExact& motion = *report.motion;
   TimeSeries series{
       {"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
        "energy_error_rel", "phi_rad", "psi_rad", "theta_dot_rad_s", "phi_dot_rad_s",
@@ -466,7 +456,11 @@ Report compute(const Inputs& in) {
                            a.theta_dot, a.phi_dot, a.psi_dot});
   }
   report.series(std::move(series));
-  // In short: the axis's path and the numbers that decide it.
+}
+
+// In short: the axis's path and the numbers that decide it.
+void report_answer(Report& report, double S) {
+  const HeavyTopExact& motion = *report.motion;
   const double S_min = sleeping_min_spin(report.top);
   const std::string sleep =
       S == 0.0     ? fmt::format("with no spin (S_min = {:.4g} rpm) it is a pendulum", S_min / kRpm)
@@ -528,6 +522,35 @@ Report compute(const Inputs& in) {
           to_string(motion.regime()), lo, hi, every, mean, motion.phi_dot_at_u1(),
           motion.phi_dot_at_u2(), sleep));
   }
+}
+
+}  // namespace
+
+Report compute(const Inputs& in) {
+  Report report(kName, kTitle);
+  report.start(input_table(), in);
+  if (!(in.theta0_deg >= 0.0 && in.theta0_deg < 180.0)) {
+    throw InputError("--theta0-deg", fmt::format("must lie in [0, 180) (got {:g})", in.theta0_deg));
+  }
+  make_top(report, in);
+  const double S = in.spin ? *in.spin : in.spin_rpm * kRpm;
+  if (in.spin) report.drop_input("spin_rpm");
+  const double theta0 = deg_to_rad(in.theta0_deg);
+
+  report_section_8_1(report, in, S, theta0);
+
+  report.section("9 the motion: E' = I theta_dot^2 / 2 + V(theta) (eqs. 191-195)");
+  TopStart start{theta0, in.thetadot0, in.phidot0, S};
+  start.theta_deg = in.theta0_deg;
+  report.motion.emplace(
+      for_input("--theta0-deg", [&] { return HeavyTopExact(report.top, start); }));
+  report_section_9(report, start);
+
+  report_run(report, in, S);
+  report_errata(report, S, theta0);
+  report_table(report, in);
+  add_series(report);
+  report_answer(report, S);
   return report;
 }
 
