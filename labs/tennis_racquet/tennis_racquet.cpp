@@ -70,9 +70,11 @@ const InputTable<Inputs>& input_table() {
   return table;
 }
 
-Report compute(const Inputs& in) {
-  Report report(kName, kTitle);
-  report.start(input_table(), in);
+namespace {
+
+// The body: the ring-and-rod model of Figure 5, or any body's moments (--inertia), drawn
+// as the box with those moments.
+void make_body(Report& report, const Inputs& in) {
   DrawnBody& body = report.body;
   if (in.inertia) {
     // Any body: its moments replace the model's, axis 2 the intermediate as the lab's is.
@@ -104,9 +106,13 @@ Report compute(const Inputs& in) {
       return make_racquet({in.head_mass, in.head_radius, in.handle_mass, in.handle_length});
     });
   }
-  const Racquet& racquet = body.racquet;
-  const PrincipalMoments& I = racquet.moments;
+}
 
+// Section 4.1: the model's centre of mass and principal moments (eqs. 83-85), or the
+// moments given.
+void report_body(Report& report, const Inputs& in) {
+  const Racquet& racquet = report.body.racquet;
+  const PrincipalMoments& I = racquet.moments;
   if (in.inertia) {
     report.section("the body: its principal moments, given (in place of Figure 5's model)");
     report.result("principal_moments", "I1, I2 (the intermediate), I3", Vector3d(I.vector()),
@@ -122,7 +128,12 @@ Report compute(const Inputs& in) {
   }
   report.result("perpendicular_axis_ratio", "I3 / (I1 + I2), a lamina's 1", I.I3 / (I.I1 + I.I2),
                 "");
+}
 
+// Sections 4.1.1-4.1.2: each axis's rate to first order (eqs. 86-103), in full and as
+// eq. 92 has it; returns eq. 92's, which the erratum sets beside the full ones.
+std::array<SpinStability, 3> report_linear_theory(Report& report, const Inputs& in) {
+  const PrincipalMoments& I = report.body.racquet.moments;
   report.section(
       fmt::format("4.1.1-4.1.2 a spin omega = {:g} rad/s about each axis, "
                   "to first order (eqs. 86-103)",
@@ -164,12 +175,20 @@ Report compute(const Inputs& in) {
     report.result_none("ellipse_axis_ratios", ratios_label, "",
                        "two moments equal to double precision: no wobble to shape");
   }
+  return simplified;
+}
 
-  // The fit runs from launch until the disturbance reaches a tenth of omega (or
-  // twice its start, if that is larger): its deviation from the linear rate is
-  // of the order of the share squared (racquet.h).
-  const double share_limit =
-      std::min(std::max(0.1, 2.0 * in.perturbation), 0.5 * (1.0 + in.perturbation));
+// The fit runs from launch until the disturbance reaches a tenth of omega (or
+// twice its start, if that is larger): its deviation from the linear rate is
+// of the order of the share squared (racquet.h).
+double fit_share_limit(double perturbation) {
+  return std::min(std::max(0.1, 2.0 * perturbation), 0.5 * (1.0 + perturbation));
+}
+
+// The growth about axis 2 fitted to the exact motion, and each wobble's frequency.
+void report_measured(Report& report, const Inputs& in) {
+  const std::vector<FreeBodyExact>& launches = report.launches;
+  const double share_limit = fit_share_limit(in.perturbation);
   // A racquet whose moments coincide to double precision (a ring with a handle of
   // 1e-60 kg, say) does not flip: there is then no growth to measure.
   if (std::isfinite(first_sign_change(launches[1], 1))) {
@@ -195,7 +214,22 @@ Report compute(const Inputs& in) {
   }
   report.result("wobble_frequencies_measured_rad_s", "axes 1, 3: 2 pi / polhode period",
                 Vector2d(2 * kPi / launches[0].period(), 2 * kPi / launches[2].period()), "rad/s");
+}
 
+// What the answer says of the spin about the chosen axis.
+struct ChosenSpin {
+  std::string name;         ///< the axis: the racquet's by what it is, a given body's by number
+  std::string axis1;        ///< axis 1 by what it is
+  double first_flip = 0.0;  ///< s; infinite where it does not flip
+  double excursion = 0.0;   ///< rad: axis 1's largest angle from L, or out of the plane across L
+  double scale = 0.0;       ///< the motion's time scale, s
+};
+
+// The spin about the chosen axis: its stability, motion, flips and how far the handle
+// strays.
+ChosenSpin report_chosen_spin(Report& report, const Inputs& in) {
+  const std::vector<FreeBodyExact>& launches = report.launches;
+  const std::array<SpinStability, 3>& predicted = report.predicted;
   const int axis = in.spin_axis[0] - '1';
   report.spin_axis = axis;
   const FreeBodyExact& motion = launches[axis];
@@ -239,8 +273,14 @@ Report compute(const Inputs& in) {
                 axis == 0 ? "largest angle of " + axis1 + " from L"
                           : "largest angle of " + axis1 + " out of the plane across L",
                 rad_to_deg(excursion), "deg");
+  return {axis_name, axis1, first_flip, excursion, scale};
+}
 
-  // Two flips: one polhode period of the spin about 2 (its time scale, if it does not flip).
+// Two flips: one polhode period of the spin about 2 (its time scale, if it does not flip).
+void report_cross_check(Report& report, const Inputs& in, double scale) {
+  const FreeBodyExact& motion = report.launches[report.spin_axis];
+  const PrincipalMoments& I = report.body.racquet.moments;
+  const double t_end = report.t_end;
   const RunPlan plan = plan_run(report, in.integration, false, t_end, scale);
   report.section(fmt::format("cross-check: {} to t_end = {:g} s", in.integration.method, t_end));
   report_plan(report, plan);
@@ -254,7 +294,14 @@ Report compute(const Inputs& in) {
   if (method != "exact" && method != Inputs{}.integration.method) {
     report.drawn_integrator = plan.options;
   }
+}
 
+// Eq. 92's simplification where it changes the rates, and what the run leaves out.
+void report_erratum_and_notes(Report& report, const Inputs& in,
+                              const std::array<SpinStability, 3>& simplified) {
+  const PrincipalMoments& I = report.body.racquet.moments;
+  const std::array<SpinStability, 3>& predicted = report.predicted;
+  const double share_limit = fit_share_limit(in.perturbation);
   if (predicted[1].rate != simplified[1].rate) {
     report.erratum(
         {"section 4.1, eq. 92",
@@ -283,7 +330,11 @@ Report compute(const Inputs& in) {
   report.note(
       "Section 4.1's ratios of the ellipsoids for I1 : I2 : I3 = 5 : 4 : 3 are the poinsot "
       "lab's (results ratios_*); they are not repeated here.");
+}
 
+// --csv: the spin about the chosen axis, exact and integrated, at the run's times.
+void add_series(Report& report) {
+  const FreeBodyExact& motion = report.launches[report.spin_axis];
   TimeSeries series{{"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
                      "omega1_integrated", "omega2_integrated", "omega3_integrated"},
                     {},
@@ -293,12 +344,21 @@ Report compute(const Inputs& in) {
                      kQuaternionConvention,
                      "omega1_integrated, omega2_integrated, omega3_integrated: --method's omega "
                      "at the same times, rad/s"}};
-  for (const FreeBodyRun::Sample& s : run.samples) {
+  for (const FreeBodyRun::Sample& s : report.run) {
     const RotationState x = motion.state(s.t);
     series.rows.push_back({s.t, x[0], x[1], x[2], x[3], x[4], x[5], x[6], s.x[0], s.x[1], s.x[2]});
   }
   report.series(std::move(series));
-  // In short: which spin flips, and how soon.
+}
+
+// In short: which spin flips, and how soon.
+void report_answer(Report& report, const Inputs& in, const ChosenSpin& spin) {
+  const int axis = report.spin_axis;
+  const FreeBodyExact& motion = report.launches[axis];
+  const std::array<SpinStability, 3>& predicted = report.predicted;
+  const std::string& axis_name = spin.name;
+  const std::string& axis1 = spin.axis1;
+  const double first_flip = spin.first_flip, excursion = spin.excursion;
   if (std::isfinite(first_flip)) {
     report.answer(fmt::format(
         "a spin about axis {} flips: launched {:g} off it, the {} turns over first at {:.4g} "
@@ -314,6 +374,22 @@ Report compute(const Inputs& in) {
         predicted[axis].rate, axis1, rad_to_deg(excursion),
         axis == 0 ? "L" : "the plane across L"));
   }
+}
+
+}  // namespace
+
+Report compute(const Inputs& in) {
+  Report report(kName, kTitle);
+  report.start(input_table(), in);
+  make_body(report, in);
+  report_body(report, in);
+  const std::array<SpinStability, 3> simplified = report_linear_theory(report, in);
+  report_measured(report, in);
+  const ChosenSpin spin = report_chosen_spin(report, in);
+  report_cross_check(report, in, spin.scale);
+  report_erratum_and_notes(report, in, simplified);
+  add_series(report);
+  report_answer(report, in, spin);
   return report;
 }
 
