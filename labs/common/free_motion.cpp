@@ -44,6 +44,37 @@ std::pair<std::string, std::string> steady_in_words(const FreeBodyExact& motion)
           "stable"};
 }
 
+// The intermediate axis: the one whose moment lies strictly between the others; -1
+// where two moments are equal.
+int intermediate_axis(const Eigen::Vector3d& I) {
+  int m = -1;
+  for (int i = 0; i < 3; ++i) {
+    if ((I.array() < I(i)).count() == 1 && (I.array() > I(i)).count() == 1) m = i;
+  }
+  return m;
+}
+
+// The rate fitted from launch until the disturbance is a tenth of omega (or twice
+// its start): its deviation from the linear rate is of the order of that share
+// squared (racquet.h). Where the start is already past it, there is no first growth.
+void report_measured_growth(Report& report, const FreeBodyExact& motion, int m, double share,
+                            const std::string& label) {
+  const double share_limit = std::min(std::max(0.1, 2.0 * share), 0.5 * (1.0 + share));
+  try {
+    const GrowthFit fit = measure_growth_rate(motion, m, share_limit);
+    report.result("growth_rate_measured_per_s", label, fit.rate, "1/s");
+    report.remark(
+        fmt::format("(t from {:.4g} to {:.4g} s, omega's share off the axis from "
+                    "{:.2g} to {:.2g})",
+                    fit.t_begin, fit.t_end, fit.share_begin, fit.share_end));
+  } catch (const std::invalid_argument&) {
+    report.result_none("growth_rate_measured_per_s", label, "1/s",
+                       fmt::format("omega starts {:.2g} off the axis: too far for a first "
+                                   "growth to fit",
+                                   share));
+  }
+}
+
 }  // namespace
 
 void report_motion(Report& report, const FreeBodyExact& motion) {
@@ -84,11 +115,7 @@ void report_motion(Report& report, const FreeBodyExact& motion) {
 
 void report_flips(Report& report, const FreeBodyExact& motion) {
   const Eigen::Vector3d I = motion.moments().vector(), w0 = motion.omega_body(0.0);
-  // The intermediate axis: the one whose moment lies strictly between the others.
-  int m = -1;
-  for (int i = 0; i < 3; ++i) {
-    if ((I.array() < I(i)).count() == 1 && (I.array() > I(i)).count() == 1) m = i;
-  }
+  const int m = intermediate_axis(I);
   const std::string axis = fmt::format("axis {}", m + 1);
   const std::string growth_label =
       m < 0 ? "growth rate of a nudge" : "growth rate of a nudge about " + axis + ", eqs. 86-88";
@@ -143,23 +170,7 @@ void report_flips(Report& report, const FreeBodyExact& motion) {
     none(why);
     return;
   }
-  // The rate fitted from launch until the disturbance is a tenth of omega (or twice
-  // its start): its deviation from the linear rate is of the order of that share
-  // squared (racquet.h). Where the start is already past it, there is no first growth.
-  const double share_limit = std::min(std::max(0.1, 2.0 * share), 0.5 * (1.0 + share));
-  try {
-    const GrowthFit fit = measure_growth_rate(motion, m, share_limit);
-    report.result("growth_rate_measured_per_s", measured_label, fit.rate, "1/s");
-    report.remark(
-        fmt::format("(t from {:.4g} to {:.4g} s, omega's share off the axis from "
-                    "{:.2g} to {:.2g})",
-                    fit.t_begin, fit.t_end, fit.share_begin, fit.share_end));
-  } catch (const std::invalid_argument&) {
-    report.result_none("growth_rate_measured_per_s", measured_label, "1/s",
-                       fmt::format("omega starts {:.2g} off the axis: too far for a first "
-                                   "growth to fit",
-                                   share));
-  }
+  report_measured_growth(report, motion, m, share, measured_label);
   report.result("first_flip_s", first_label, first_sign_change(motion, m), "s");
   report.result("flip_interval_s", interval_label, 0.5 * motion.period(), "s");
 }

@@ -70,6 +70,41 @@ LineStyle line_style(Method m) {
   return {render::kGray, Dash::kSolid};
 }
 
+// The first sample (t = 0) has no error to show on a log axis; an error below the
+// floor (a zero's included) is drawn at it.
+std::vector<double> running_max(const std::vector<double>& v, double floor) {
+  std::vector<double> out;
+  double most = floor;
+  for (auto it = v.begin() + 1; it != v.end(); ++it) out.push_back(most = std::max(most, *it));
+  return out;
+}
+
+// The legend lists the best first: by the largest error, floored, so methods at
+// roundoff tie and keep the methods' own order instead of one their last bits choose.
+std::vector<std::size_t> best_first(const std::vector<MethodCurve>& methods, double error_floor) {
+  std::vector<std::size_t> order(methods.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  const auto floored_max = [&](const MethodCurve& m) {
+    double most = error_floor;
+    for (const double e : m.error) most = std::max(most, e);
+    return most;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double ea = floored_max(methods[a]), eb = floored_max(methods[b]);
+    if (ea != eb) return ea < eb;
+    return methods[a].method < methods[b].method;
+  });
+  return order;
+}
+
+// The largest value a panel draws, its axis's start at least.
+double largest(const render::Panel& panel) {
+  double top = panel.y.min;
+  for (const auto& series : panel.series)
+    for (const double v : series.y) top = std::max(top, v);
+  return top;
+}
+
 }  // namespace
 
 render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
@@ -95,29 +130,7 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
   energy.x.label = t_label;
   energy.y = {energy_label, render::Scale::kLog10};
   energy.y.min = kRoundoffFloor / 3;
-  // The first sample (t = 0) has no error to show on a log axis; an error below the
-  // floor (a zero's included) is drawn at it.
-  const auto running_max = [](const std::vector<double>& v, double floor) {
-    std::vector<double> out;
-    double most = floor;
-    for (auto it = v.begin() + 1; it != v.end(); ++it) out.push_back(most = std::max(most, *it));
-    return out;
-  };
-  // The legend lists the best first: by the largest error, floored, so methods at
-  // roundoff tie and keep the methods' own order instead of one their last bits choose.
-  std::vector<std::size_t> order(methods.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  const auto floored_max = [&](const MethodCurve& m) {
-    double most = error_floor;
-    for (const double e : m.error) most = std::max(most, e);
-    return most;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const double ea = floored_max(methods[a]), eb = floored_max(methods[b]);
-    if (ea != eb) return ea < eb;
-    return methods[a].method < methods[b].method;
-  });
-  for (const std::size_t k : order) {
+  for (const std::size_t k : best_first(methods, error_floor)) {
     // A method that did not run, or blew up, has no curve to show.
     if (!methods[k].drawn || methods[k].t.size() < 2) continue;
     std::vector<double> t(methods[k].t.begin() + 1, methods[k].t.end());
@@ -135,13 +148,6 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
   plot.shared_legend = true;
   // the most accurate on top: where several meet at the floor, the best shows
   error.first_on_top = energy.first_on_top = true;
-  // the largest value a panel draws, its axis's start at least
-  const auto largest = [](const render::Panel& panel) {
-    double top = panel.y.min;
-    for (const auto& series : panel.series)
-      for (const double v : series.y) top = std::max(top, v);
-    return top;
-  };
   const double worst = largest(error);
   if (ceiling.value > 0.0 && worst >= 0.1 * ceiling.value) {
     error.add_ref_line(ceiling.value, false, ceiling.label).color = render::kBlack;

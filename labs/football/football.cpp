@@ -189,9 +189,12 @@ const InputTable<Inputs>& input_table() {
   return table;
 }
 
-Report compute(const Inputs& in) {
-  Report report(kName, kTitle);
-  report.start(input_table(), in);
+namespace {
+
+// The body and its spin as the run uses them: the preset's, but for what is given.
+// A body of one's own moments is no preset: the inputs, the table and the figures'
+// titles say "custom", with the preset's omega and alpha recorded where it lent them.
+Preset body_of(Report& report, const Inputs& in) {
   // The preset always has a value here, so "--preset given" reads as a preset other
   // than the default: its moments and the ones given would contradict each other.
   if (in.inertia && in.preset != Inputs{}.preset) throw InputError("--inertia", kInertiaWithPreset);
@@ -202,27 +205,27 @@ Report compute(const Inputs& in) {
                                       : preset.Is;
   const double omega = in.day ? 2 * kPi / *in.day : in.omega.value_or(preset.omega);
   const double alpha_deg = in.alpha_deg.value_or(preset.alpha_deg);
-  // A body of one's own moments is no preset: the inputs, the table and the figures'
-  // titles say "custom", with the preset's omega and alpha recorded where it lent them.
   if (in.inertia) {
     report.set_input("preset", "custom");
     if (!in.omega && !in.day) report.set_input("omega", omega);
     if (!in.alpha_deg) report.set_input("alpha_deg", alpha_deg);
   }
-  const double alpha = deg_to_rad(alpha_deg);
-  report.I = I, report.Is = Is, report.omega = omega, report.alpha_deg = alpha_deg;
-  const SymmetricPrecession p =
-      for_input("--inertia", [&] { return free_symmetric_precession(I, Is, omega, alpha); });
-  report.precession = p;
-  report.series(rate_sweep(I, Is, alpha_deg));
-  // The text's printed values of a preset's fixed example: only for that preset
-  // with nothing else changed.
-  const bool example = !in.inertia && !in.moment_ratio && !in.omega && !in.day && !in.alpha_deg;
-  const auto text = [&](const char* name, const std::string& value) {
-    return example && in.preset == name ? printed(value) : std::nullopt;
-  };
-  const double theta_deg = rad_to_deg(p.theta);
+  return {I, Is, omega, alpha_deg};
+}
 
+// The text's printed values of a preset's fixed example: only for that preset with
+// nothing else changed.
+struct ExampleText {
+  bool example;
+  const std::string& preset;
+  std::optional<std::string> operator()(const char* name, const std::string& value) const {
+    return example && preset == name ? printed(value) : std::nullopt;
+  }
+};
+
+// Eqs. 104-105: the two moments and their ratio, which sets every rate.
+void report_body(Report& report, const Inputs& in, const ExampleText& text, double alpha) {
+  const double I = report.I, Is = report.Is;
   report.section("the body: Is = I3, I = I1 = I2 (eqs. 104-105)");
   report.result("moment_transverse_kg_m2", "I, transverse moment", I, "kg m^2");
   report.result("moment_symmetry_kg_m2", "Is, moment about the symmetry axis", Is, "kg m^2");
@@ -234,7 +237,12 @@ Report compute(const Inputs& in) {
   if (in.preset == "earth" && !in.alpha_deg) {
     report.result("alpha_rad", "alpha", alpha, "rad", text("earth", "0.97e-6"));
   }
+}
 
+// Eqs. 109 and 145-149: Omega in the body, phi_dot in space, and their periods.
+void report_rates(Report& report, const Inputs& in, const ExampleText& text, double alpha) {
+  const SymmetricPrecession& p = report.precession;
+  const double I = report.I, Is = report.Is, omega = report.omega;
   report.section("rates (eqs. 109, 145-149): Omega in the body, phi_dot in space");
   report.result("body_precession_rate_rad_s",
                 "Omega = omega cos(alpha) (Is - I)/I, omega about 3 in the body (+: along omega_3)",
@@ -270,7 +278,11 @@ Report compute(const Inputs& in) {
     report.result("space_precession_period_days", "2 pi / phi_dot, in days of 86400 s",
                   p.space_period / kSolarDay, "d", text("earth", "0.997"));
   }
+}
 
+// phi_dot again, from Euler's equations integrated rather than the closed form.
+void report_cross_check(Report& report, double alpha) {
+  const SymmetricPrecession& p = report.precession;
   report.section(
       "cross-check: Euler's equations integrated (dopri5, tolerance 1e-12) for 2 pi / phi_dot");
   // Within a step budget (a body whose precession is many orders slower than its
@@ -278,7 +290,7 @@ Report compute(const Inputs& in) {
   constexpr std::size_t kCheckSteps = 2'000'000;
   std::optional<PrecessionCheck> check;
   try {
-    check = integrated_precession(I, Is, omega, alpha, 1e-12, kCheckSteps);
+    check = integrated_precession(report.I, report.Is, report.omega, alpha, 1e-12, kCheckSteps);
   } catch (const std::runtime_error&) {
   }
   const std::string skipped = fmt::format("not run: needs more than {} steps", kCheckSteps);
@@ -297,20 +309,26 @@ Report compute(const Inputs& in) {
     report.result_none("integrated_axis_return_rad", labels[2], "rad", skipped);
     report.result_none("integrated_L_drift_rel", labels[3], "", skipped);
   }
+}
 
+// Eq. 144 and section 6.1: theta, the two cones and how they touch.
+void report_cones(Report& report) {
+  const SymmetricPrecession& p = report.precession;
   report.section("angles and cones (eq. 144, section 6.1)");
-  report.result("theta_deg", "theta, L to 3: tan theta = (I/Is) tan alpha", theta_deg, "deg",
-                report.textbook("> alpha for a prolate body"));
+  report.result("theta_deg", "theta, L to 3: tan theta = (I/Is) tan alpha", rad_to_deg(p.theta),
+                "deg", report.textbook("> alpha for a prolate body"));
   report.result("body_cone_half_angle_deg", "body cone about 3: alpha", rad_to_deg(p.body_cone),
                 "deg");
   report.result("space_cone_half_angle_deg", "space cone about L: |theta - alpha| (omega to L)",
                 rad_to_deg(p.space_cone), "deg");
   report.result_text("cones_touch", "the body cone rolls on the space cone's",
                      to_string(p.contact));
+}
 
-  report_errata(report, in, example);
-
-  // In short: which cone rolls on which, and how fast.
+// In short: which cone rolls on which, and how fast.
+void report_answer(Report& report) {
+  const SymmetricPrecession& p = report.precession;
+  const double I = report.I, Is = report.Is;
   const std::string kind = Is < I ? "prolate" : Is > I ? "oblate" : "a sphere";
   if (p.contact == ConeContact::kNone) {
     report.answer(fmt::format("{}: omega, L and 3 stay together; nothing precesses", kind));
@@ -322,16 +340,40 @@ Report compute(const Inputs& in) {
         p.contact == ConeContact::kInside ? "round, enclosing" : "on the outside of",
         rad_to_deg(p.space_cone), readable_period(p.space_period), readable_period(p.body_period)));
   }
+}
 
-  // Beside the run, the other kind of body at the same omega and alpha: the frisbee's
-  // thin disk (oblate) for a prolate run, the football's spheroid for an oblate one.
-  const bool prolate = p.contact == ConeContact::kOutside;
+// Beside the run, the other kind of body at the same omega and alpha: the frisbee's
+// thin disk (oblate) for a prolate run, the football's spheroid for an oblate one.
+Contrast contrast_of(const Report& report, double alpha) {
+  const bool prolate = report.precession.contact == ConeContact::kOutside;
   const Preset other = preset_of(prolate ? "frisbee" : "football");
-  report.contrast = {
-      other.Is / other.I, free_symmetric_precession(other.I, other.Is, omega, alpha),
-      prolate ? "for contrast, an oblate thin disk" : "for contrast, a prolate football",
-      prolate ? "for contrast, an oblate body: its body cone surrounds the space cone"
-              : "for contrast, a prolate body: its body cone rolls outside the space cone"};
+  return {other.Is / other.I, free_symmetric_precession(other.I, other.Is, report.omega, alpha),
+          prolate ? "for contrast, an oblate thin disk" : "for contrast, a prolate football",
+          prolate ? "for contrast, an oblate body: its body cone surrounds the space cone"
+                  : "for contrast, a prolate body: its body cone rolls outside the space cone"};
+}
+
+}  // namespace
+
+Report compute(const Inputs& in) {
+  Report report(kName, kTitle);
+  report.start(input_table(), in);
+  const Preset body = body_of(report, in);
+  const double I = body.I, Is = body.Is, omega = body.omega, alpha_deg = body.alpha_deg;
+  const double alpha = deg_to_rad(alpha_deg);
+  report.I = I, report.Is = Is, report.omega = omega, report.alpha_deg = alpha_deg;
+  report.precession =
+      for_input("--inertia", [&] { return free_symmetric_precession(I, Is, omega, alpha); });
+  report.series(rate_sweep(I, Is, alpha_deg));
+  const bool example = !in.inertia && !in.moment_ratio && !in.omega && !in.day && !in.alpha_deg;
+  const ExampleText text{example, in.preset};
+  report_body(report, in, text, alpha);
+  report_rates(report, in, text, alpha);
+  report_cross_check(report, alpha);
+  report_cones(report);
+  report_errata(report, in, example);
+  report_answer(report);
+  report.contrast = contrast_of(report, alpha);
   return report;
 }
 

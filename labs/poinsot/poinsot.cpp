@@ -78,6 +78,50 @@ void report_text_example(Report& report) {
                    touch1(0), touch1(1), touch1(2), touch2(0), touch2(1), touch2(2))});
 }
 
+// The body's principal moments: given, or those of a solid ellipsoid (the text's) or a
+// solid box of the given mass.
+Vector3d moments_of(Report& report, const Inputs& in) {
+  const bool moments_given = in.inertia.has_value(), box = in.box.has_value();
+  if (moments_given || box) report.drop_input("ellipsoid");
+  if (moments_given) report.drop_input("mass");
+  return moments_given ? *in.inertia
+         : box
+             ? Vector3d(
+                   solid_box(in.mass, (*in.box)(0), (*in.box)(1), (*in.box)(2)).I_com.diagonal())
+             : Vector3d(solid_ellipsoid(in.mass, in.ellipsoid(0), in.ellipsoid(1), in.ellipsoid(2))
+                            .I_com.diagonal());
+}
+
+// The body as drawn: as given, or, from its moments alone, the solid ellipsoid with
+// those moments (semi-axes^2 in proportion to I_j + I_k - I_i, eq. 40).
+Vector3d extents_of(const Inputs& in, const Vector3d& moments) {
+  const double floor = 1e-3 * moments.sum();
+  const double I1 = moments(0), I2 = moments(1), I3 = moments(2);
+  return in.box       ? Vector3d(0.5 * *in.box)
+         : in.inertia ? Vector3d(std::sqrt(std::max(I2 + I3 - I1, floor)),
+                                 std::sqrt(std::max(I1 + I3 - I2, floor)),
+                                 std::sqrt(std::max(I1 + I2 - I3, floor)))
+                      : in.ellipsoid;
+}
+
+// In short: stable or flips, and how soon, from what the motion's sections said.
+void report_answer(Report& report) {
+  const Json& said = report.results();
+  const double period = report.exact.period();
+  if (said.at("first_flip_s").is_number()) {
+    report.answer(fmt::format(
+        "it flips: spun near its intermediate axis, the body turns over first at {:.4g} s, then "
+        "every {:.4g} s (a nudge grows at {:.4g}/s)",
+        said.at("first_flip_s").get<double>(), said.at("flip_interval_s").get<double>(),
+        said.at("growth_rate_per_s").get<double>()));
+  } else if (std::isfinite(period)) {
+    report.answer(fmt::format("{}; omega goes round its polhode every {:.4g} s",
+                              said.at("motion").get<std::string>(), period));
+  } else {
+    report.answer(said.at("motion").get<std::string>());
+  }
+}
+
 // The run as --csv writes it: t, omega, the attitude, T and |L| at each sample.
 TimeSeries run_series(const FreeBodyRun& run, const PrincipalMoments& I) {
   TimeSeries series{
@@ -143,16 +187,8 @@ const InputTable<Inputs>& input_table() {
 Report compute(const Inputs& in) {
   Report report(kName, kTitle);
   report.start(input_table(), in);
-  // The body: its moments, a solid ellipsoid (the text's) or a solid box.
   const bool moments_given = in.inertia.has_value(), box = in.box.has_value();
-  if (moments_given || box) report.drop_input("ellipsoid");
-  if (moments_given) report.drop_input("mass");
-  const Vector3d moments =
-      moments_given ? *in.inertia
-      : box
-          ? Vector3d(solid_box(in.mass, (*in.box)(0), (*in.box)(1), (*in.box)(2)).I_com.diagonal())
-          : Vector3d(solid_ellipsoid(in.mass, in.ellipsoid(0), in.ellipsoid(1), in.ellipsoid(2))
-                         .I_com.diagonal());
+  const Vector3d moments = moments_of(report, in);
   const PrincipalMoments I{moments(0), moments(1), moments(2)};
   for_input(moments_given ? "--inertia" : box ? "--box" : "--ellipsoid", [&] { validate(I); });
 
@@ -174,20 +210,7 @@ Report compute(const Inputs& in) {
   }
   report_motion(report, exact);
   report_flips(report, exact);
-  // In short: stable or flips, and how soon.
-  const Json& said = report.results();
-  if (said.at("first_flip_s").is_number()) {
-    report.answer(fmt::format(
-        "it flips: spun near its intermediate axis, the body turns over first at {:.4g} s, then "
-        "every {:.4g} s (a nudge grows at {:.4g}/s)",
-        said.at("first_flip_s").get<double>(), said.at("flip_interval_s").get<double>(),
-        said.at("growth_rate_per_s").get<double>()));
-  } else if (std::isfinite(exact.period())) {
-    report.answer(fmt::format("{}; omega goes round its polhode every {:.4g} s",
-                              said.at("motion").get<std::string>(), exact.period()));
-  } else {
-    report.answer(said.at("motion").get<std::string>());
-  }
+  report_answer(report);
 
   report.scale = time_scale(exact);
   const double scale = report.scale;
@@ -222,15 +245,8 @@ Report compute(const Inputs& in) {
   report_text_example(report);
   report.series(run_series(report.run, I));
 
-  // The body as drawn: as given, or, from its moments alone, the solid ellipsoid with
-  // those moments (semi-axes^2 in proportion to I_j + I_k - I_i, eq. 40).
   report.box = box;
-  const double floor = 1e-3 * moments.sum();
-  report.extents = box             ? Vector3d(0.5 * *in.box)
-                   : moments_given ? Vector3d(std::sqrt(std::max(I.I2 + I.I3 - I.I1, floor)),
-                                              std::sqrt(std::max(I.I1 + I.I3 - I.I2, floor)),
-                                              std::sqrt(std::max(I.I1 + I.I2 - I.I3, floor)))
-                                   : in.ellipsoid;
+  report.extents = extents_of(in, moments);
   return report;
 }
 
