@@ -58,64 +58,67 @@ std::vector<Vector3d> thin_path(const std::vector<Vector3d>& path, const View& v
   return out;
 }
 
-// Draws the surfaces and lines of a framed scene into the bound target. Tessellation
-// follows each object's on-screen size.
-void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
-  auto& gl = detail::gl;
-  const View& view = fr.view;
-  const Style& st = fr.st;
-  const int width = view.width, height = view.height;
-  MeshProgram& prog = mesh_program();
-  gl.UseProgram(prog.program);
-  gl.Uniform1i(prog.ortho, view.ortho ? 1 : 0);
-  gl.Enable(GL_DEPTH_TEST);
-  gl.DepthFunc(GL_LESS);
-
-  // Tubes and custom meshes are uploaded for this render only.
+// The mesh program's pass over a render's objects: tubes and custom meshes are
+// uploaded for this render only, and released when it is done.
+struct MeshPass {
+  const View& view;
+  MeshProgram& prog;
   std::vector<GpuMesh> temporary;
-  auto draw = [&](const Scene3D::Object& o) {
-    const Affine3d& t = o.transform;
-    const auto [c, r] = bounds(o);
-    const GpuMesh* g = nullptr;
-    if (o.shape == Scene3D::Shape::kTube || o.shape == Scene3D::Shape::kCustom) {
-      if (o.shape == Scene3D::Shape::kTube)
-        temporary.push_back(
-            upload(make_tube(thin_path(o.path, view), o.tube_radius,
-                             std::min(48, segments_for_radius(view.pixels(o.tube_radius, c))))));
-      else
-        temporary.push_back(upload(o.mesh));
-      g = &temporary.back();
-    } else {
-      // Segments from the on-screen radius of the object's round cross-section.
-      const Matrix3d l = t.linear();
-      const double round_r = o.shape == Scene3D::Shape::kSphere
-                                 ? std::max({l.col(0).norm(), l.col(1).norm(), l.col(2).norm()})
-                                 : std::max(l.col(0).norm(), l.col(1).norm());
-      g = &unit_mesh(o.shape, segments_for_radius(view.pixels(round_r, c)), o.torus_minor);
-    }
-    const Eigen::Matrix4d mv = view.view * t.matrix();
-    // A mirroring transform turns counter-clockwise (outward) faces clockwise.
-    gl.FrontFace(t.linear().determinant() < 0 ? GL_CW : GL_CCW);
-    const Eigen::Matrix4f mvp = (view.proj * mv).cast<float>();
-    const Eigen::Matrix4f mvf = mv.cast<float>();
-    const Eigen::Matrix3f nmat = mv.block<3, 3>(0, 0).inverse().transpose().cast<float>();
-    gl.UniformMatrix4fv(prog.mvp, 1, GL_FALSE, mvp.data());
-    gl.UniformMatrix4fv(prog.mv, 1, GL_FALSE, mvf.data());
-    gl.UniformMatrix3fv(prog.nmat, 1, GL_FALSE, nmat.data());
-    const Material& m = o.material;
-    gl.Uniform4f(prog.color, m.color.r, m.color.g, m.color.b, m.opacity);
-    gl.Uniform1f(prog.spec, m.specular);
-    gl.Uniform1i(prog.lit, m.lit ? 1 : 0);
-    gl.Uniform1f(prog.shininess, m.shininess);
-    gl.BindVertexArray(g->vao);
-    gl.DrawElements(GL_TRIANGLES, g->count, GL_UNSIGNED_INT, nullptr);
-  };
+};
 
-  // 1. Opaque surfaces, depth written. The back faces of a closed surface are
-  //    always hidden behind its front faces, so they are culled: half the
-  //    triangles never reach the rasteriser. Open ones (disk, plane) and
-  //    custom meshes show both sides.
-  auto is_open = [](const Scene3D::Object* o) { return detail::is_open(o->shape); };
+// The mesh of an object, tessellated for its on-screen size.
+const GpuMesh& object_mesh(MeshPass& pass, const Scene3D::Object& o) {
+  const View& view = pass.view;
+  const Affine3d& t = o.transform;
+  const auto [c, r] = bounds(o);
+  if (o.shape == Scene3D::Shape::kTube || o.shape == Scene3D::Shape::kCustom) {
+    if (o.shape == Scene3D::Shape::kTube)
+      pass.temporary.push_back(
+          upload(make_tube(thin_path(o.path, view), o.tube_radius,
+                           std::min(48, segments_for_radius(view.pixels(o.tube_radius, c))))));
+    else
+      pass.temporary.push_back(upload(o.mesh));
+    return pass.temporary.back();
+  }
+  // Segments from the on-screen radius of the object's round cross-section.
+  const Matrix3d l = t.linear();
+  const double round_r = o.shape == Scene3D::Shape::kSphere
+                             ? std::max({l.col(0).norm(), l.col(1).norm(), l.col(2).norm()})
+                             : std::max(l.col(0).norm(), l.col(1).norm());
+  return unit_mesh(o.shape, segments_for_radius(view.pixels(round_r, c)), o.torus_minor);
+}
+
+// One object: its mesh, placed by its transform, shaded by its material.
+void draw_object(MeshPass& pass, const Scene3D::Object& o) {
+  auto& gl = detail::gl;
+  const MeshProgram& prog = pass.prog;
+  const Affine3d& t = o.transform;
+  const GpuMesh* g = &object_mesh(pass, o);
+  const Eigen::Matrix4d mv = pass.view.view * t.matrix();
+  // A mirroring transform turns counter-clockwise (outward) faces clockwise.
+  gl.FrontFace(t.linear().determinant() < 0 ? GL_CW : GL_CCW);
+  const Eigen::Matrix4f mvp = (pass.view.proj * mv).cast<float>();
+  const Eigen::Matrix4f mvf = mv.cast<float>();
+  const Eigen::Matrix3f nmat = mv.block<3, 3>(0, 0).inverse().transpose().cast<float>();
+  gl.UniformMatrix4fv(prog.mvp, 1, GL_FALSE, mvp.data());
+  gl.UniformMatrix4fv(prog.mv, 1, GL_FALSE, mvf.data());
+  gl.UniformMatrix3fv(prog.nmat, 1, GL_FALSE, nmat.data());
+  const Material& m = o.material;
+  gl.Uniform4f(prog.color, m.color.r, m.color.g, m.color.b, m.opacity);
+  gl.Uniform1f(prog.spec, m.specular);
+  gl.Uniform1i(prog.lit, m.lit ? 1 : 0);
+  gl.Uniform1f(prog.shininess, m.shininess);
+  gl.BindVertexArray(g->vao);
+  gl.DrawElements(GL_TRIANGLES, g->count, GL_UNSIGNED_INT, nullptr);
+}
+
+// 1. Opaque surfaces, depth written. The back faces of a closed surface are
+//    always hidden behind its front faces, so they are culled: half the
+//    triangles never reach the rasteriser. Open ones (disk, plane) and
+//    custom meshes show both sides. Returns the translucent objects, in the
+//    scene's order, for the last pass.
+std::vector<const Scene3D::Object*> draw_opaque(const Scene3D& scene, MeshPass& pass) {
+  auto& gl = detail::gl;
   gl.Disable(GL_BLEND);
   gl.CullFace(GL_BACK);
   gl.DepthMask(GL_TRUE);
@@ -125,24 +128,28 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
       translucent.push_back(&o);
       continue;
     }
-    if (is_open(&o) || o.shape == Scene3D::Shape::kCustom)
+    if (is_open(o.shape) || o.shape == Scene3D::Shape::kCustom)
       gl.Disable(GL_CULL_FACE);
     else
       gl.Enable(GL_CULL_FACE);
-    draw(o);
+    draw_object(pass, o);
   }
   gl.Disable(GL_CULL_FACE);
   gl.FrontFace(GL_CCW);
+  return translucent;
+}
 
-  // 2. Screen-space polylines, hidden by nearer opaque surfaces (nudged forward to avoid
-  // z-fighting).
+// 2. Screen-space polylines, hidden by nearer opaque surfaces (nudged forward to avoid
+// z-fighting).
+void draw_polylines(const Scene3D& scene, const SceneFrame& fr) {
+  const View& view = fr.view;
   Painter& p = painter();
-  p.begin(width, height);
+  p.begin(view.width, view.height);
   p.depth_test(true);
   for (const Scene3D::Polyline& pl : scene.polylines()) {
     std::vector<P3> pts;
     auto emit = [&] {
-      if (pts.size() >= 2) p.polyline(pts, std::max(2.0, pl.width * st.s), pl.color);
+      if (pts.size() >= 2) p.polyline(pts, std::max(2.0, pl.width * fr.st.s), pl.color);
       pts.clear();
     };
     for (const Vector3d& q : pl.points) {
@@ -156,13 +163,17 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
     emit();
   }
   p.flush();
+}
 
-  // 3. Translucent surfaces without depth writes: all back faces far to near,
-  //    then all front faces far to near. For nested convex shells this gives
-  //    outer-back, inner-back, inner-front, outer-front: the exact order. Depth-tested
-  //    against what is drawn (the painter's flush leaves the test off): a surface
-  //    behind a body or a line does not cover it.
-  gl.UseProgram(prog.program);
+// 3. Translucent surfaces without depth writes: all back faces far to near,
+//    then all front faces far to near. For nested convex shells this gives
+//    outer-back, inner-back, inner-front, outer-front: the exact order. Depth-tested
+//    against what is drawn (the painter's flush leaves the test off): a surface
+//    behind a body or a line does not cover it.
+void draw_translucent(std::vector<const Scene3D::Object*> order, MeshPass& pass) {
+  auto& gl = detail::gl;
+  const View& view = pass.view;
+  gl.UseProgram(pass.prog.program);
   gl.Enable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LESS);
   gl.Enable(GL_BLEND);
@@ -177,29 +188,42 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
     const auto [c, r] = bounds(*o);
     return view.depth(c) - r;
   };
-  std::vector<const Scene3D::Object*> order = translucent;
   std::stable_sort(order.begin(), order.end(),
                    [&](auto a, auto b) { return far_key(a) > far_key(b); });
   gl.CullFace(GL_FRONT);
   for (const Scene3D::Object* o : order)
-    if (!is_open(o)) draw(*o);
+    if (!is_open(o->shape)) draw_object(pass, *o);
   std::stable_sort(order.begin(), order.end(),
                    [&](auto a, auto b) { return near_key(a) > near_key(b); });
   for (const Scene3D::Object* o : order) {
     // Open surfaces have no back to draw first: both sides go in this pass.
-    if (is_open(o))
+    if (is_open(o->shape))
       gl.Disable(GL_CULL_FACE);
     else
       gl.CullFace(GL_BACK);
-    draw(*o);
+    draw_object(pass, *o);
     gl.Enable(GL_CULL_FACE);
   }
   gl.Disable(GL_CULL_FACE);
   gl.FrontFace(GL_CCW);
+}
+
+// Draws the surfaces and lines of a framed scene into the bound target. Tessellation
+// follows each object's on-screen size.
+void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
+  auto& gl = detail::gl;
+  MeshPass pass{fr.view, mesh_program(), {}};
+  gl.UseProgram(pass.prog.program);
+  gl.Uniform1i(pass.prog.ortho, fr.view.ortho ? 1 : 0);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
+  const std::vector<const Scene3D::Object*> translucent = draw_opaque(scene, pass);
+  draw_polylines(scene, fr);
+  draw_translucent(translucent, pass);
   gl.DepthMask(GL_TRUE);
   gl.Disable(GL_DEPTH_TEST);
   gl.BindVertexArray(0);
-  for (GpuMesh& g : temporary) release(g);
+  for (GpuMesh& g : pass.temporary) release(g);
 }
 
 // The text overlay: labels where they were placed, the title and the legend.

@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "scene_shapes.h"
 
@@ -109,6 +110,169 @@ struct Bound {
   double at(double d) const { return c + m * d; }
 };
 
+// The camera's axes about its target (s right, u up, f forward), and the image's centre
+// and focal length in pixels.
+struct Axes {
+  Vector3d target, f, s, u;
+  bool ortho;
+  double focal, cx, cy;
+};
+
+// What the points ask of the shift (a, b) at a distance d: a_min <= a <= a_max and
+// b_min <= b <= b_max keep them in the region; a < a_legend and b < b_legend put one under
+// the legend. With the least distance that keeps them in front of the eye, and their extent.
+struct FitBounds {
+  std::vector<Bound> a_min, a_max, b_min, b_max, a_legend, b_legend;
+  double d_min = 0, extent = 0;
+};
+
+// Each point's bounds, one of each kind a point, in the points' order.
+FitBounds point_bounds(const std::vector<FitPoint>& points, const Axes& ax,
+                       const ScreenRect& region, const ScreenRect& legend, double margin) {
+  const bool ortho = ax.ortho, has_legend = !legend.empty();
+  const double focal = ax.focal, cx = ax.cx, cy = ax.cy;
+  // Point left of (below) an edge at slope k: a >= ...; right of (above) it: a <= ... .
+  auto left_of = [&](double x, double z, double r, double k) {
+    return Bound{x + r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+  };
+  auto right_of = [&](double x, double z, double r, double k) {
+    return Bound{x - r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+  };
+  const std::size_t n = points.size();
+  FitBounds out;
+  out.a_min.resize(n), out.a_max.resize(n), out.b_min.resize(n), out.b_max.resize(n);
+  if (has_legend) {
+    out.a_legend.resize(n);
+    out.b_legend.resize(n);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    FitPoint p = points[i];
+    // A text box wider than the region cannot fit whole: fit what can be.
+    const double wx = p.left + p.right, wy = p.up + p.down;
+    const double max_w = 0.9 * (region.x1 - region.x0), max_h = 0.9 * (region.y1 - region.y0);
+    if (wx > max_w) p.left *= max_w / wx, p.right *= max_w / wx;
+    if (wy > max_h) p.up *= max_h / wy, p.down *= max_h / wy;
+    const Vector3d q = p.p - ax.target;
+    const double x = q.dot(ax.s), y = q.dot(ax.u), z = ortho ? 0.0 : q.dot(ax.f), r = p.radius;
+    out.a_min[i] = left_of(x, z, r, (region.x1 - cx - p.right) / focal);
+    out.a_max[i] = right_of(x, z, r, (region.x0 - cx + p.left) / focal);
+    out.b_min[i] = left_of(y, z, r, (cy - region.y0 - p.up) / focal);
+    out.b_max[i] = right_of(y, z, r, (cy - region.y1 + p.down) / focal);
+    if (has_legend) {
+      out.a_legend[i] = left_of(x, z, r, (legend.x0 - margin - cx - p.right) / focal);
+      out.b_legend[i] = left_of(y, z, r, (cy - legend.y1 - margin - p.up) / focal);
+    }
+    if (!ortho) out.d_min = std::max(out.d_min, r - z);
+    out.extent = std::max(out.extent, q.norm() + r);
+  }
+  return out;
+}
+
+// The tightest bound of each slope (the greatest of lower bounds, the least of upper).
+void keep_tightest(std::vector<Bound>& bounds, bool keep_max) {
+  std::map<double, double> by_slope;
+  for (const Bound& bd : bounds) {
+    auto [it, fresh] = by_slope.emplace(bd.m, bd.c);
+    if (!fresh) it->second = keep_max ? std::max(it->second, bd.c) : std::min(it->second, bd.c);
+  }
+  bounds.clear();
+  for (const auto& [m, c] : by_slope) bounds.push_back({c, m});
+}
+
+// Most points share their bounds' slopes (all but those carrying text boxes): of such
+// bounds only the tightest constrains, at every d, and rounding keeps that order
+// (c + m d rounds monotonically in c). So each kind keeps one bound a slope, and the
+// legend's corners those no other corner of the same slopes contains: the fit is the
+// same, bit for bit, at a cost in distinct slopes rather than points (a live view
+// fits a motion's many frames at once).
+void keep_constraining(FitBounds& fb) {
+  keep_tightest(fb.a_min, true);
+  keep_tightest(fb.b_min, true);
+  keep_tightest(fb.a_max, false);
+  keep_tightest(fb.b_max, false);
+  std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> corners;
+  for (std::size_t i = 0; i < fb.a_legend.size(); ++i) {
+    corners[{fb.a_legend[i].m, fb.b_legend[i].m}].push_back({fb.a_legend[i].c, fb.b_legend[i].c});
+  }
+  fb.a_legend.clear();
+  fb.b_legend.clear();
+  for (auto& [slopes, cs] : corners) {
+    // by alpha descending: a corner is kept only if its beta beats every wider one's
+    std::sort(cs.begin(), cs.end(), std::greater<>());
+    double best_beta = -std::numeric_limits<double>::infinity();
+    for (const auto& [ca, cb] : cs) {
+      if (cb <= best_beta) continue;
+      best_beta = cb;
+      fb.a_legend.push_back({ca, slopes.first});
+      fb.b_legend.push_back({cb, slopes.second});
+    }
+  }
+}
+
+// The shifts that keep every point in the region at a distance d.
+struct Window {
+  double a_lo, a_hi, b_lo, b_hi;
+};
+
+Window window(const FitBounds& fb, double d) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Window w{-kInf, kInf, -kInf, kInf};
+  for (const Bound& bd : fb.a_min) w.a_lo = std::max(w.a_lo, bd.at(d));
+  for (const Bound& bd : fb.a_max) w.a_hi = std::min(w.a_hi, bd.at(d));
+  for (const Bound& bd : fb.b_min) w.b_lo = std::max(w.b_lo, bd.at(d));
+  for (const Bound& bd : fb.b_max) w.b_hi = std::min(w.b_hi, bd.at(d));
+  return w;
+}
+
+bool clear_of_legend(const FitBounds& fb, double d, double a, double b) {
+  for (std::size_t i = 0; i < fb.a_legend.size(); ++i)
+    if (a < fb.a_legend[i].at(d) && b < fb.b_legend[i].at(d)) return false;
+  return true;
+}
+
+bool fits(const FitBounds& fb, double d) {
+  const Window w = window(fb, d);
+  return w.a_lo <= w.a_hi && w.b_lo <= w.b_hi && clear_of_legend(fb, d, w.a_hi, w.b_hi);
+}
+
+// The least distance that fits: bracketed, then bisected (fits(hi) holds throughout);
+// none if no distance within the bracket's reach fits.
+std::optional<double> least_distance(const FitBounds& fb) {
+  double lo = fb.d_min, hi = fb.d_min + std::max(fb.extent, 1e-12);
+  for (int k = 0; k < 200 && !fits(fb, hi); ++k) hi = lo + 2 * (hi - lo);
+  if (!fits(fb, hi)) return std::nullopt;
+  for (int k = 0; k < 100 && hi - lo > 1e-12 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (fits(fb, mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+// The shift nearest the window's centre that clears the legend: the centre itself, or
+// the centre moved right-of-legend only, below-legend only, or towards (a_hi, b_hi).
+std::pair<double, double> centred_shift(const FitBounds& fb, double d) {
+  const Window w = window(fb, d);
+  const double a_c = 0.5 * (w.a_lo + w.a_hi), b_c = 0.5 * (w.b_lo + w.b_hi);
+  double a = a_c, b = b_c;
+  if (clear_of_legend(fb, d, a_c, b_c)) return {a, b};
+  double a_only = a_c, b_only = b_c, t = 0;
+  for (std::size_t i = 0; i < fb.a_legend.size(); ++i) {
+    const double alpha = fb.a_legend[i].at(d), beta = fb.b_legend[i].at(d);
+    if (b_c < beta) a_only = std::max(a_only, alpha);
+    if (a_c < alpha) b_only = std::max(b_only, beta);
+    const double ta = w.a_hi > a_c ? (alpha - a_c) / (w.a_hi - a_c) : (alpha <= a_c ? 0.0 : 1.0);
+    const double tb = w.b_hi > b_c ? (beta - b_c) / (w.b_hi - b_c) : (beta <= b_c ? 0.0 : 1.0);
+    t = std::max(t, std::min(ta, tb));
+  }
+  t = std::min(t, 1.0);
+  a = a_c + t * (w.a_hi - a_c);
+  b = b_c + t * (w.b_hi - b_c);
+  double best = std::hypot(a - a_c, b - b_c);
+  if (a_only <= w.a_hi && a_only - a_c < best) a = a_only, b = b_c, best = a_only - a_c;
+  if (b_only <= w.b_hi && b_only - b_c < best) a = a_c, b = b_only;
+  return {a, b};
+}
+
 }  // namespace
 
 // The camera framed on the points: its viewing direction and up kept, the eye moved along
@@ -139,142 +303,20 @@ Camera fitted(Camera cam, std::vector<FitPoint> points, const ScreenRect& region
   const Vector3d s = f.cross(up).normalized(), u = s.cross(f);
   const bool ortho = cam.orthographic;
   const double tan_half = std::tan(0.5 * cam.fov_y_deg * EIGEN_PI / 180.0);
-  const double focal = 0.5 * height / tan_half;
-  const double cx = 0.5 * width, cy = 0.5 * height;
-  const bool has_legend = !legend.empty();
   if (region.empty()) return cam;
+  const Axes ax{cam.target, f, s, u, ortho, 0.5 * height / tan_half, 0.5 * width, 0.5 * height};
 
-  // Point left of (below) an edge at slope k: a >= ...; right of (above) it: a <= ... .
-  auto left_of = [&](double x, double z, double r, double k) {
-    return Bound{x + r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
-  };
-  auto right_of = [&](double x, double z, double r, double k) {
-    return Bound{x - r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
-  };
-  const std::size_t n = points.size();
-  std::vector<Bound> a_min(n), a_max(n), b_min(n), b_max(n), a_legend, b_legend;
-  if (has_legend) {
-    a_legend.resize(n);
-    b_legend.resize(n);
-  }
-  double d_min = 0, extent = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    FitPoint& p = points[i];
-    // A text box wider than the region cannot fit whole: fit what can be.
-    const double wx = p.left + p.right, wy = p.up + p.down;
-    const double max_w = 0.9 * (region.x1 - region.x0), max_h = 0.9 * (region.y1 - region.y0);
-    if (wx > max_w) p.left *= max_w / wx, p.right *= max_w / wx;
-    if (wy > max_h) p.up *= max_h / wy, p.down *= max_h / wy;
-    const Vector3d q = p.p - cam.target;
-    const double x = q.dot(s), y = q.dot(u), z = ortho ? 0.0 : q.dot(f), r = p.radius;
-    a_min[i] = left_of(x, z, r, (region.x1 - cx - p.right) / focal);
-    a_max[i] = right_of(x, z, r, (region.x0 - cx + p.left) / focal);
-    b_min[i] = left_of(y, z, r, (cy - region.y0 - p.up) / focal);
-    b_max[i] = right_of(y, z, r, (cy - region.y1 + p.down) / focal);
-    if (has_legend) {
-      a_legend[i] = left_of(x, z, r, (legend.x0 - margin - cx - p.right) / focal);
-      b_legend[i] = left_of(y, z, r, (cy - legend.y1 - margin - p.up) / focal);
-    }
-    if (!ortho) d_min = std::max(d_min, r - z);
-    extent = std::max(extent, q.norm() + r);
-  }
-  // Most points share their bounds' slopes (all but those carrying text boxes): of such
-  // bounds only the tightest constrains, at every d, and rounding keeps that order
-  // (c + m d rounds monotonically in c). So each kind keeps one bound a slope, and the
-  // legend's corners those no other corner of the same slopes contains: the fit is the
-  // same, bit for bit, at a cost in distinct slopes rather than points (a live view
-  // fits a motion's many frames at once).
-  const auto tightest = [](std::vector<Bound>& bounds, bool keep_max) {
-    std::map<double, double> by_slope;
-    for (const Bound& bd : bounds) {
-      auto [it, fresh] = by_slope.emplace(bd.m, bd.c);
-      if (!fresh) it->second = keep_max ? std::max(it->second, bd.c) : std::min(it->second, bd.c);
-    }
-    bounds.clear();
-    for (const auto& [m, c] : by_slope) bounds.push_back({c, m});
-  };
-  tightest(a_min, true);
-  tightest(b_min, true);
-  tightest(a_max, false);
-  tightest(b_max, false);
-  if (has_legend) {
-    std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> corners;
-    for (std::size_t i = 0; i < n; ++i) {
-      corners[{a_legend[i].m, b_legend[i].m}].push_back({a_legend[i].c, b_legend[i].c});
-    }
-    a_legend.clear();
-    b_legend.clear();
-    for (auto& [slopes, cs] : corners) {
-      // by alpha descending: a corner is kept only if its beta beats every wider one's
-      std::sort(cs.begin(), cs.end(), std::greater<>());
-      double best_beta = -std::numeric_limits<double>::infinity();
-      for (const auto& [ca, cb] : cs) {
-        if (cb <= best_beta) continue;
-        best_beta = cb;
-        a_legend.push_back({ca, slopes.first});
-        b_legend.push_back({cb, slopes.second});
-      }
-    }
-  }
-  struct Window {
-    double a_lo, a_hi, b_lo, b_hi;
-  };
-  auto window = [&](double d) {
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    Window w{-kInf, kInf, -kInf, kInf};
-    for (const Bound& bd : a_min) w.a_lo = std::max(w.a_lo, bd.at(d));
-    for (const Bound& bd : a_max) w.a_hi = std::min(w.a_hi, bd.at(d));
-    for (const Bound& bd : b_min) w.b_lo = std::max(w.b_lo, bd.at(d));
-    for (const Bound& bd : b_max) w.b_hi = std::min(w.b_hi, bd.at(d));
-    return w;
-  };
-  auto clear_of_legend = [&](double d, double a, double b) {
-    for (std::size_t i = 0; i < a_legend.size(); ++i)
-      if (a < a_legend[i].at(d) && b < b_legend[i].at(d)) return false;
-    return true;
-  };
-  auto fits = [&](double d) {
-    const Window w = window(d);
-    return w.a_lo <= w.a_hi && w.b_lo <= w.b_hi && clear_of_legend(d, w.a_hi, w.b_hi);
-  };
-  // Bracket the least distance that fits, then bisect (fits(hi) holds throughout).
-  double lo = d_min, hi = d_min + std::max(extent, 1e-12);
-  for (int k = 0; k < 200 && !fits(hi); ++k) hi = lo + 2 * (hi - lo);
-  if (!fits(hi)) return cam;
-  for (int k = 0; k < 100 && hi - lo > 1e-12 * hi; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (fits(mid) ? hi : lo) = mid;
-  }
-  const double d = hi;
-
-  // The shift nearest the window's centre that clears the legend: the centre itself, or
-  // the centre moved right-of-legend only, below-legend only, or towards (a_hi, b_hi).
-  const Window w = window(d);
-  const double a_c = 0.5 * (w.a_lo + w.a_hi), b_c = 0.5 * (w.b_lo + w.b_hi);
-  double a = a_c, b = b_c;
-  if (!clear_of_legend(d, a_c, b_c)) {
-    double a_only = a_c, b_only = b_c, t = 0;
-    for (std::size_t i = 0; i < a_legend.size(); ++i) {
-      const double alpha = a_legend[i].at(d), beta = b_legend[i].at(d);
-      if (b_c < beta) a_only = std::max(a_only, alpha);
-      if (a_c < alpha) b_only = std::max(b_only, beta);
-      const double ta = w.a_hi > a_c ? (alpha - a_c) / (w.a_hi - a_c) : (alpha <= a_c ? 0.0 : 1.0);
-      const double tb = w.b_hi > b_c ? (beta - b_c) / (w.b_hi - b_c) : (beta <= b_c ? 0.0 : 1.0);
-      t = std::max(t, std::min(ta, tb));
-    }
-    t = std::min(t, 1.0);
-    a = a_c + t * (w.a_hi - a_c);
-    b = b_c + t * (w.b_hi - b_c);
-    double best = std::hypot(a - a_c, b - b_c);
-    if (a_only <= w.a_hi && a_only - a_c < best) a = a_only, b = b_c, best = a_only - a_c;
-    if (b_only <= w.b_hi && b_only - b_c < best) a = a_c, b = b_only;
-  }
+  FitBounds fb = point_bounds(points, ax, region, legend, margin);
+  keep_constraining(fb);
+  const std::optional<double> d = least_distance(fb);
+  if (!d) return cam;
+  const auto [a, b] = centred_shift(fb, *d);
   cam.target += a * s + b * u;
   if (ortho) {
     cam.eye = cam.target - eye_distance * f;
-    cam.ortho_height = 2 * d * tan_half;
+    cam.ortho_height = 2 * *d * tan_half;
   } else {
-    cam.eye = cam.target - d * f;
+    cam.eye = cam.target - *d * f;
   }
   return cam;
 }

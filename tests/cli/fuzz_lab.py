@@ -281,6 +281,174 @@ def can_mount():
         return ok
 
 
+class Fuzz:
+    """One lab under attack: its options, the seeded random sequence every class draws
+    from in turn (so a class's cases depend on those of the classes before it), and
+    the cases tried and held, per class."""
+
+    def __init__(self, args):
+        self.args, self.lab = args, args.lab
+        self.lab_name = os.path.basename(args.lab)
+        self.rng = random.Random(f"{args.seed}:{self.lab_name}")
+        options = options_of(args.lab)
+        help_text = subprocess.run([args.lab, "--help"], capture_output=True, text=True).stdout
+        self.has_csv, self.has_figures = "--csv" in help_text, "--figures" in help_text
+        self.writes = self.has_csv or self.has_figures
+        self.physical = [o for o in options if o[0] not in ("--json", "--quiet", "--csv")]
+        self.words = [o for o in self.physical if o[3]]
+        self.start = time.monotonic()
+        self.tried, self.held = {}, {}
+
+    def report(self, cls, argv, problems):
+        self.tried[cls] = self.tried.get(cls, 0) + 1
+        self.held[cls] = self.held.get(cls, 0) + (not problems)
+        if problems:
+            shown = [a if isinstance(a, str) else repr(a) for a in argv[1:]]
+            print(f"FAIL {self.lab_name} [{cls}]: {shown!r}"[:600]
+                  + f": {'; '.join(problems)}"[:600])
+
+    def attempt(self, cls, argv, workdir, **kw):
+        """(process, problems) of a run, or None when it hung (reported here)."""
+        limit = self.args.cpu_seconds
+        try:
+            proc, cpu = run(argv, workdir, limit)
+        except subprocess.TimeoutExpired:
+            self.report(cls, argv, [f"hung (alive after {20 * limit:.0f} s on the clock)"])
+            return None
+        problems = check(self.lab_name, proc, cpu, limit, workdir, **kw)
+        return proc, problems
+
+    def numbers(self, cases):
+        for _ in range(cases):
+            with tempfile.TemporaryDirectory() as workdir:
+                argv = random_argv(self.rng, self.lab, self.physical)
+                if self.has_csv and self.rng.random() < 0.3:
+                    target = self.rng.choice(["out.csv", "sub/out.csv", ".", "x" * 300 + ".csv"])
+                    argv += ["--csv", os.path.join(workdir, target)]
+                result = self.attempt("numbers", argv, workdir)
+                if result:
+                    self.report("numbers", argv, result[1])
+
+    def byte_strings(self, cases):
+        rng = self.rng
+        for _ in range(cases):
+            with tempfile.TemporaryDirectory() as workdir:
+                argv = [os.fsencode(self.lab), b"--json"]
+                if self.words and (not self.has_csv or rng.random() < 0.5):
+                    argv += [os.fsencode(rng.choice(self.words)[0]), random_bytes(rng)]
+                elif self.has_csv:
+                    argv += [b"--csv", random_bytes(rng, True)]
+                result = self.attempt("bytes", argv, workdir)
+                if result:
+                    self.report("bytes", argv, result[1])
+
+    def file_names(self, cases):
+        for _ in range(cases if self.has_csv else 0):
+            with tempfile.TemporaryDirectory() as workdir:
+                name = file_name(self.rng)
+                made = decoys_for(workdir, name)
+                argv = [os.fsencode(self.lab), b"--json", b"--csv", name]
+                target = os.path.join(os.fsencode(workdir), name)
+                result = self.attempt("file names", argv, workdir, ours=set(made) | {target})
+                if result:
+                    proc, problems = result
+                    problems += decoys_intact(made)
+                    if proc.returncode != 0:
+                        problems.append("a name the filesystem accepts was refused")
+                    elif not os.path.isfile(os.path.join(os.fsencode(workdir), name)):
+                        problems.append("exit 0 but the file is not there")
+                    self.report("file names", argv, problems)
+
+    def figures(self, cases):
+        for _ in range(cases if self.has_figures else 0):
+            with tempfile.TemporaryDirectory() as workdir:
+                figures = os.path.join(workdir, "figs")
+                argv = random_argv(self.rng, self.lab, self.physical) + ["--figures", figures]
+                result = self.attempt("figures", argv, workdir)
+                if result:
+                    proc, problems = result
+                    drawn = os.path.isdir(figures) and any(n.endswith(".png")
+                                                           for n in os.listdir(figures))
+                    if proc.returncode == 0 and not drawn:
+                        problems.append("exit 0 without its figures")
+                    if proc.returncode != 0 and os.path.exists(figures):
+                        problems.append("refused, yet made the figures folder")
+                    self.report("figures", argv, problems)
+
+    def signals(self, cases):
+        for _ in range(cases if self.writes else 0):
+            with tempfile.TemporaryDirectory() as workdir:
+                self.signal_case(workdir)
+
+    def signal_case(self, workdir):
+        """SIGINT or SIGTERM at a random moment: the run ends by it, or finishes, with
+        all its outputs or none."""
+        csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
+        argv = [self.lab, "--quiet"] + output_argv(self.has_csv, self.has_figures, csv, figures)
+        sig = self.rng.choice([signal.SIGINT, signal.SIGTERM])
+        proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
+                                stderr=subprocess.PIPE)
+        time.sleep(self.rng.uniform(0.0, 0.4))
+        proc.send_signal(sig)
+        try:
+            _, err = proc.communicate(timeout=20 * self.args.cpu_seconds)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            self.report("signals", argv, ["did not end after the signal"])
+            return
+        problems = leftovers(workdir)
+        landed = outputs_landed(csv, figures)
+        whole, every = all_or_none(landed, self.has_csv, self.has_figures)
+        if proc.returncode == 0:
+            if not every:
+                problems.append(f"finished (exit 0) but landed {landed}")
+        elif proc.returncode == -sig:
+            if not whole:
+                problems.append(f"killed by the signal with half its outputs: {landed}")
+        else:
+            problems.append(f"exit status {proc.returncode} after {sig.name}: {err[-200:]!r}")
+        self.report("signals", argv + [sig.name], problems)
+
+    def full_disk(self, cases):
+        """--csv and --figures into a small tmpfs; whether it could be tried."""
+        mountable = self.writes and can_mount()
+        for _ in range(cases if mountable else 0):
+            with tempfile.TemporaryDirectory() as workdir:
+                size = self.rng.choice(["8k", "32k", "128k", "512k"])
+                subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", workdir],
+                               check=True, capture_output=True)
+                try:
+                    self.full_disk_case(workdir, size)
+                finally:
+                    subprocess.run(["umount", workdir], capture_output=True)
+        return mountable
+
+    def full_disk_case(self, workdir, size):
+        csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
+        argv = [self.lab, "--json"] + output_argv(self.has_csv, self.has_figures, csv, figures)
+        result = self.attempt("full disk", argv, workdir, allow_write_failure=True)
+        if result:
+            proc, problems = result
+            landed = outputs_landed(csv, figures)
+            if proc.returncode == 0 and not all_or_none(landed, self.has_csv, self.has_figures)[1]:
+                problems.append(f"exit 0 but landed {landed}")
+            if proc.returncode != 0 and os.listdir(workdir):
+                problems.append(f"failed, yet left {os.listdir(workdir)}")
+            self.report("full disk", argv + [size], problems)
+
+    def summary(self, mountable):
+        """The counts per class and in all; 1 when a case broke the contract."""
+        tried, held = self.tried, self.held
+        failures = sum(tried.values()) - sum(held.values())
+        for cls in tried:
+            print(f"{self.lab_name} [{cls}]: {tried[cls]} tried, {held[cls]} held")
+        if self.writes and not mountable:
+            print(f"{self.lab_name} [full disk]: not tried (this user cannot mount a tmpfs)")
+        print(f"{self.lab_name}: {sum(tried.values())} cases, {failures} failures, "
+              f"{time.monotonic() - self.start:.1f} s")
+        return 1 if failures else 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("lab")
@@ -291,143 +459,14 @@ def main():
                     help="the CPU time a run may spend")
     args = ap.parse_args()
     args.lab = os.path.abspath(args.lab)
-    lab_name = os.path.basename(args.lab)
-    rng = random.Random(f"{args.seed}:{lab_name}")
-    options = options_of(args.lab)
-    help_text = subprocess.run([args.lab, "--help"], capture_output=True, text=True).stdout
-    has_csv, has_figures = "--csv" in help_text, "--figures" in help_text
-    physical = [o for o in options if o[0] not in ("--json", "--quiet", "--csv")]
-    words = [o for o in physical if o[3]]
-    start = time.monotonic()
-    tried, held = {}, {}
-
-    def report(cls, argv, problems):
-        tried[cls] = tried.get(cls, 0) + 1
-        held[cls] = held.get(cls, 0) + (not problems)
-        if problems:
-            shown = [a if isinstance(a, str) else repr(a) for a in argv[1:]]
-            print(f"FAIL {lab_name} [{cls}]: {shown!r}"[:600] + f": {'; '.join(problems)}"[:600])
-
-    def attempt(cls, argv, workdir, **kw):
-        try:
-            proc, cpu = run(argv, workdir, args.cpu_seconds)
-        except subprocess.TimeoutExpired:
-            report(cls, argv, [f"hung (alive after {20 * args.cpu_seconds:.0f} s on the clock)"])
-            return None
-        problems = check(lab_name, proc, cpu, args.cpu_seconds, workdir, **kw)
-        return proc, problems
-
-    for _ in range(args.cases):  # numbers
-        with tempfile.TemporaryDirectory() as workdir:
-            argv = random_argv(rng, args.lab, physical)
-            if has_csv and rng.random() < 0.3:
-                target = rng.choice(["out.csv", "sub/out.csv", ".", "x" * 300 + ".csv"])
-                argv += ["--csv", os.path.join(workdir, target)]
-            result = attempt("numbers", argv, workdir)
-            if result:
-                report("numbers", argv, result[1])
-
-    for _ in range(args.class_cases):  # bytes
-        with tempfile.TemporaryDirectory() as workdir:
-            argv = [os.fsencode(args.lab), b"--json"]
-            if words and (not has_csv or rng.random() < 0.5):
-                argv += [os.fsencode(rng.choice(words)[0]), random_bytes(rng)]
-            elif has_csv:
-                argv += [b"--csv", random_bytes(rng, True)]
-            result = attempt("bytes", argv, workdir)
-            if result:
-                report("bytes", argv, result[1])
-
-    for _ in range(args.class_cases if has_csv else 0):  # file names
-        with tempfile.TemporaryDirectory() as workdir:
-            name = file_name(rng)
-            made = decoys_for(workdir, name)
-            argv = [os.fsencode(args.lab), b"--json", b"--csv", name]
-            target = os.path.join(os.fsencode(workdir), name)
-            result = attempt("file names", argv, workdir, ours=set(made) | {target})
-            if result:
-                proc, problems = result
-                problems += decoys_intact(made)
-                if proc.returncode != 0:
-                    problems.append("a name the filesystem accepts was refused")
-                elif not os.path.isfile(os.path.join(os.fsencode(workdir), name)):
-                    problems.append("exit 0 but the file is not there")
-                report("file names", argv, problems)
-
-    for _ in range(args.class_cases if has_figures else 0):  # figures
-        with tempfile.TemporaryDirectory() as workdir:
-            figures = os.path.join(workdir, "figs")
-            argv = random_argv(rng, args.lab, physical) + ["--figures", figures]
-            result = attempt("figures", argv, workdir)
-            if result:
-                proc, problems = result
-                drawn = os.path.isdir(figures) and any(n.endswith(".png")
-                                                       for n in os.listdir(figures))
-                if proc.returncode == 0 and not drawn:
-                    problems.append("exit 0 without its figures")
-                if proc.returncode != 0 and os.path.exists(figures):
-                    problems.append("refused, yet made the figures folder")
-                report("figures", argv, problems)
-
-    writes = has_csv or has_figures
-    for _ in range(args.class_cases if writes else 0):  # signals
-        with tempfile.TemporaryDirectory() as workdir:
-            csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
-            argv = [args.lab, "--quiet"] + output_argv(has_csv, has_figures, csv, figures)
-            sig = rng.choice([signal.SIGINT, signal.SIGTERM])
-            proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
-                                    stderr=subprocess.PIPE)
-            time.sleep(rng.uniform(0.0, 0.4))
-            proc.send_signal(sig)
-            try:
-                _, err = proc.communicate(timeout=20 * args.cpu_seconds)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                report("signals", argv, ["did not end after the signal"])
-                continue
-            problems = leftovers(workdir)
-            landed = outputs_landed(csv, figures)
-            whole, every = all_or_none(landed, has_csv, has_figures)
-            if proc.returncode == 0:
-                if not every:
-                    problems.append(f"finished (exit 0) but landed {landed}")
-            elif proc.returncode == -sig:
-                if not whole:
-                    problems.append(f"killed by the signal with half its outputs: {landed}")
-            else:
-                problems.append(f"exit status {proc.returncode} after {sig.name}: {err[-200:]!r}")
-            report("signals", argv + [sig.name], problems)
-
-    mountable = writes and can_mount()
-    for _ in range(args.class_cases if mountable else 0):  # full disk
-        with tempfile.TemporaryDirectory() as workdir:
-            size = rng.choice(["8k", "32k", "128k", "512k"])
-            subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", workdir],
-                           check=True, capture_output=True)
-            try:
-                csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
-                argv = [args.lab, "--json"] + output_argv(has_csv, has_figures, csv, figures)
-                result = attempt("full disk", argv, workdir, allow_write_failure=True)
-                if result:
-                    proc, problems = result
-                    landed = outputs_landed(csv, figures)
-                    if proc.returncode == 0 and not all_or_none(landed, has_csv, has_figures)[1]:
-                        problems.append(f"exit 0 but landed {landed}")
-                    if proc.returncode != 0 and os.listdir(workdir):
-                        problems.append(f"failed, yet left {os.listdir(workdir)}")
-                    report("full disk", argv + [size], problems)
-            finally:
-                subprocess.run(["umount", workdir], capture_output=True)
-
-    failures = sum(tried.values()) - sum(held.values())
-    for cls in tried:
-        print(f"{lab_name} [{cls}]: {tried[cls]} tried, {held[cls]} held")
-    if writes and not mountable:
-        print(f"{lab_name} [full disk]: not tried (this user cannot mount a tmpfs)")
-    print(f"{lab_name}: {sum(tried.values())} cases, {failures} failures, "
-          f"{time.monotonic() - start:.1f} s")
-    return 1 if failures else 0
-
+    fuzz = Fuzz(args)
+    fuzz.numbers(args.cases)
+    fuzz.byte_strings(args.class_cases)
+    fuzz.file_names(args.class_cases)
+    fuzz.figures(args.class_cases)
+    fuzz.signals(args.class_cases)
+    mountable = fuzz.full_disk(args.class_cases)
+    return fuzz.summary(mountable)
 
 if __name__ == "__main__":
     sys.exit(main())
