@@ -4,9 +4,6 @@
 // verdict, and where refused the same message. Texts: numbers
 // as people and programs spell them, spaces, overflow and underflow, infinities, vectors
 // and pairs with too few or many parts, words, and bytes that are not UTF-8.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <sstream>
@@ -14,6 +11,7 @@
 #include <vector>
 
 #include "common/registry.h"
+#include "rigid/support/subprocess.h"
 #include "rigid/support/text.h"
 #ifdef RIGID_HAVE_EXPLORER
 #include "explorer.h"
@@ -30,31 +28,15 @@ struct Verdict {
 // The lab as a process with exactly these arguments: its verdict and its one error line
 // less the "LAB: error: " in front.
 Verdict command_line(const std::string& lab, const std::vector<std::string>& args) {
-  int err[2];
-  REQUIRE(::pipe(err) == 0);
-  const std::string path = std::string(RIGID_LAB_DIR) + "/" + lab;
-  const pid_t pid = ::fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    ::dup2(err[1], 2);
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::close(err[0]);
-    std::vector<char*> argv{const_cast<char*>(path.c_str())};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(path.c_str(), argv.data());
-    ::_exit(127);
-  }
-  ::close(err[1]);
-  std::string text;
-  char buffer[4096];
-  for (ssize_t n; (n = ::read(err[0], buffer, sizeof buffer)) > 0;) text.append(buffer, n);
-  ::close(err[0]);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  std::vector<std::string> argv{lab};
+  argv.insert(argv.end(), args.begin(), args.end());
+  rigid::support::Subprocess run(
+      std::string(RIGID_LAB_DIR) + "/" + lab, argv,
+      {rigid::support::Redirect::null(), rigid::support::Redirect::pipe()});
+  const std::string text = run.read_to_end();
+  const int status = run.wait();
   Verdict v;
-  v.accepted = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  v.accepted = status == 0;
   const std::string prefix = lab + ": error: ";
   if (!v.accepted && text.rfind(prefix, 0) == 0) {
     v.message = text.substr(prefix.size());
