@@ -46,8 +46,10 @@ int run_command(const std::string& name, const std::string& title,
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--explore") == 0) return explore(name, argc, argv, k);
   }
-  // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
+  // A closed pipe, or a file past the size limit (ulimit -f), is a failed write to
+  // report, not a silent death by SIGPIPE or SIGXFSZ.
   std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
   CommandLine line(name, title, inputs, csv, animation);
   try {
     if (const auto answered = line.parse(argc, argv)) return stdout_written(name, *answered);

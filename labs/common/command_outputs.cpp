@@ -77,11 +77,11 @@ class OutputRun {
  private:
   void animate(const Computed& computed);
   void draw(const Computed& computed);
-  void write_csv(const Report& report) const;
+  void write_csv(const Report& report);
   std::string report_text(const Report& report);
   void warn(const Report& report) const;
   int land(render::FileTransaction& files) const;
-  /// A drawing's error, said once: nothing lands, and the exit status is 1.
+  /// An output's failed write, said once: nothing lands, and the exit status is 1.
   void failed(const char* option, const std::exception& e) {
     failed_ = true;
     std::cerr << options_.lab << ": error: " << option << ": " << support::terminal_safe(e.what())
@@ -106,6 +106,7 @@ int OutputRun::write(const std::function<Computed()>& compute) {
   // and the CSV is not written to fail a second time (a full disk) with a second line.
   if (failed_) return 1;
   write_csv(report);
+  if (failed_) return 1;
   const std::string text = report_text(report);
   // Printed before the files land: a report that cannot be written (a full disk,
   // a closed pipe) leaves no file behind (the transaction removes them).
@@ -148,12 +149,14 @@ void OutputRun::draw(const Computed& computed) {
   }
 }
 
-void OutputRun::write_csv(const Report& report) const {
+// A CSV that cannot be written (a full disk, EFBIG past ulimit -f) is a failed write,
+// exit 1 as for a figure: its path passed the checks made before any work.
+void OutputRun::write_csv(const Report& report) {
   if (options_.csv_path.empty() || report.time_series().columns.empty()) return;
   try {
     render::write_text_atomically(options_.csv_path, csv_text(report.time_series()));
   } catch (const std::runtime_error& e) {
-    throw InputError("--csv", e.what());
+    failed("--csv", e);
   }
 }
 

@@ -42,7 +42,8 @@ std::string one_line(std::string s) {
 }
 
 // The temporaries this process holds, in fixed storage a signal handler may read:
-// SIGINT and SIGTERM unlink them (unlink is async-signal-safe) and die as asked.
+// every signal that ends a process and can be caught unlinks them (unlink is
+// async-signal-safe), and the process then dies by that signal as it would have.
 constexpr int kMaxHeld = 64;
 char g_held[kMaxHeld][PATH_MAX];
 volatile std::sig_atomic_t g_used[kMaxHeld] = {};
@@ -51,7 +52,7 @@ volatile std::sig_atomic_t g_used[kMaxHeld] = {};
 // while the handler runs: the handler says the process is dying, then waits for every
 // creation under way to be held, so that none lands after its unlinks; a creation that
 // sees the process dying makes nothing. No thread can be interrupted by the handler
-// while it holds what a creation waits for: SIGINT and SIGTERM are blocked while a
+// while it holds what a creation waits for: those signals are blocked while a
 // thread creates a temporary or holds g_mutex (the signal then goes to another thread,
 // or waits until it is let go). The wait is bounded (an open() on a stalled network
 // file system), after which the handler unlinks what is held. Lock-free atomics and
@@ -78,14 +79,26 @@ extern "C" void remove_held_and_die(int sig) {
   std::raise(sig);
 }
 
-// SIGINT and SIGTERM blocked in this thread for a scope.
+// The signals whose default is to end the process, asynchronous ones (a fault such
+// as SIGSEGV is a bug's, and SIGABRT the runtime's own), and the real-time ones.
+// SIGXFSZ is not among them: a file past the size limit (ulimit -f) is a failed
+// write, EFBIG, reported as any other.
+sigset_t terminating_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (const int sig : {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGALRM, SIGUSR1, SIGUSR2, SIGPIPE,
+                        SIGVTALRM, SIGPROF, SIGXCPU, SIGPOLL, SIGPWR}) {
+    sigaddset(&set, sig);
+  }
+  for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) sigaddset(&set, sig);
+  return set;
+}
+
+// The terminating signals blocked in this thread for a scope.
 class SignalsBlocked {
  public:
   SignalsBlocked() {
-    sigset_t block;
-    sigemptyset(&block);
-    sigaddset(&block, SIGINT);
-    sigaddset(&block, SIGTERM);
+    static const sigset_t block = terminating_signals();
     ::pthread_sigmask(SIG_BLOCK, &block, &old_);
   }
   ~SignalsBlocked() { ::pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
@@ -115,16 +128,22 @@ class Creating {
   SignalsBlocked blocked_;  // made before the count goes up, let go after it comes down
 };
 
+// A signal the process was told to ignore (nohup, a shell's background job) stays
+// ignored, and one a program handles itself keeps its handler: only a default death
+// becomes a clean one.
 void install_handlers_once() {
   static const bool installed = [] {
-    for (const int sig : {SIGINT, SIGTERM}) {
-      struct sigaction action {};
-      action.sa_handler = remove_held_and_die;
-      sigemptyset(&action.sa_mask);
-      // the other one waits while this handler runs
-      sigaddset(&action.sa_mask, SIGINT);
-      sigaddset(&action.sa_mask, SIGTERM);
-      ::sigaction(sig, &action, nullptr);
+    struct sigaction action {};
+    action.sa_handler = remove_held_and_die;
+    action.sa_mask = terminating_signals();  // the others wait while this handler runs
+    for (int sig = 1; sig < NSIG; ++sig) {
+      struct sigaction old {};
+      if (sigismember(&action.sa_mask, sig) != 1 || ::sigaction(sig, nullptr, &old) != 0) continue;
+      if (old.sa_handler == SIG_DFL) ::sigaction(sig, &action, nullptr);
+    }
+    struct sigaction old {};
+    if (::sigaction(SIGXFSZ, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) {
+      std::signal(SIGXFSZ, SIG_IGN);
     }
     return true;
   }();

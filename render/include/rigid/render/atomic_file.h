@@ -7,10 +7,13 @@
 //
 // A FileTransaction makes a run's files land together or not at all: while one
 // lives, each file stays at its temporary name until commit() renames them all;
-// without a commit they are removed. SIGINT and SIGTERM remove every temporary
-// the process holds before it dies, and a writer removes the temporaries that
-// dead processes left beside its target: names of exactly that pattern, regular
-// files of this user, whose process is gone. Nothing else is touched.
+// without a commit they are removed. A signal that ends the process (SIGINT, SIGTERM,
+// SIGHUP, SIGQUIT, SIGALRM and the others whose default is death, but not a fault's)
+// removes every temporary the process holds before it dies by that signal; SIGXFSZ is
+// ignored, so that a file past the size limit (ulimit -f) is a failed write (EFBIG)
+// like a full disk. A writer removes the temporaries that dead processes left beside
+// its target: names of exactly that pattern, regular files of this user, whose process
+// is gone. Nothing else is touched.
 #pragma once
 
 #include <cstddef>
