@@ -3,6 +3,7 @@
 // temporary when it fails or is killed, and says when its output never arrives; and
 // `rigidlab figures` lands every lab's figures or none.
 #include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -128,17 +129,20 @@ TEST_CASE("contract: an interrupted run leaves no file, and stale temporaries ar
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_sig_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  // Killed by SIGTERM (or SIGINT) mid-figure, once its first figure is held as a
-  // temporary (the figures are, until the run ends): the handler removes it, nothing
-  // lands, and the run ends by the signal. Poinsot draws five figures; the signal goes
-  // as soon as the first temporary shows, while the others are still to draw.
+  // Killed by any signal that ends a process (SIGTERM, SIGINT, SIGHUP, SIGQUIT, SIGALRM)
+  // mid-figure, once its first figure is held as a temporary (the figures are, until the
+  // run ends): the handler removes it, nothing lands, and the run ends by the signal.
+  // Poinsot draws five figures; the signal goes as soon as the first temporary shows,
+  // while the others are still to draw.
   const auto has_temporary = [&] {
     for (const auto& entry : fs::directory_iterator(dir)) {
       if (entry.path().filename().string().find(".rigidlab-tmp-") != std::string::npos) return true;
     }
     return false;
   };
-  for (const int sig : {SIGTERM, SIGINT}) {
+  const rlimit no_core{0, 0};  // SIGQUIT's default dumps core: none in the test's folder
+  ::setrlimit(RLIMIT_CORE, &no_core);
+  for (const int sig : {SIGTERM, SIGINT, SIGHUP, SIGQUIT, SIGALRM}) {
     INFO("signal " << sig);
     rigid::test::Background lab({std::string(RIGID_LAB_DIR) + "/poinsot", "--json", "--figure-size",
                                  "2048x2048", "--figures", dir.string()});
@@ -179,13 +183,43 @@ TEST_CASE("contract: a --csv that fails after the figures were drawn leaves no f
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("rigid_txn_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  // /proc passes the up-front check (a directory; root may write anywhere) but takes
-  // no new file: the CSV fails at the end, after both figures were drawn.
-  const auto run = run_lab("tire_balancing",
-                           "--quiet --figures '" + dir.string() + "' --csv /proc/rigid_test.csv");
-  CHECK(run.status == 2);
-  CHECK(run.err.rfind("tire_balancing: error: --csv: ", 0) == 0);
+  const std::string d = dir.string();
+  // A file size limit (ulimit -f 1000: 500 KiB at least, 1000 KiB at most) that each
+  // figure (under 150 kB at 800x600) keeps and the CSV of 200 periods (some 4 MB) does
+  // not: the CSV fails at the end, after the figures were drawn. A failed write, not
+  // bad input (the path passed the checks): exit 1, and nothing lands.
+  const auto run = run_lab(
+      "poinsot",
+      "--quiet --figures '" + d + "/F' --figure-size 800x600 --csv '" + d + "/c.csv' --periods 200",
+      "ulimit -f 1000 &&");
+  CHECK(run.status == 1);
+  CHECK(run.one_error_line());
+  CHECK(run.err.rfind("poinsot: error: --csv: cannot write '" + d + "/c.csv': ", 0) == 0);
   CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("contract: a file past the size limit (ulimit -f) is a failed write, exit 1", "[draws]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_fsize_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string d = dir.string();
+  // Each output larger than 100 KiB, alone in its run: not a death by SIGXFSZ (exit 153)
+  // with a temporary left, but EFBIG from the write, one line naming the output, and
+  // nothing landed. The limit is set in the shell that runs the lab.
+  for (const auto& [lab, outputs, option] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"poinsot", "--csv '" + d + "/c.csv' --periods 200", "--csv"},
+           {"poinsot", "--figures '" + d + "/F' --figure-size 2048x2048", "--figures"},
+           {"euler_angles", "--animate '" + d + "/a.webp'", "--animate"}}) {
+    INFO(lab << " " << outputs);
+    const auto run = run_lab(lab, "--quiet " + outputs, "ulimit -f 100 &&");
+    CHECK(run.status == 1);
+    CHECK(run.one_error_line());
+    CHECK(run.err.rfind(lab + ": error: " + option + ": cannot write '" + d + "/", 0) == 0);
+    CHECK(run.err.find("File too large") != std::string::npos);
+    CHECK(fs::is_empty(dir));
+  }
   fs::remove_all(dir);
 }
 

@@ -1,7 +1,12 @@
 // Tests of the atomic file writer: complete files or none, never a temporary left.
 #include "rigid/render/atomic_file.h"
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -43,6 +48,20 @@ std::string message_of(const std::string& path, const std::function<void(std::FI
     return e.what();
   }
   return "";
+}
+
+// The wait status of a child process that runs `body` (its exit status the body's
+// return value): for what would change or end the test process itself.
+int in_child(const std::function<int()>& body) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const rlimit no_core{0, 0};  // a signal whose default dumps core (SIGQUIT) leaves none
+    ::setrlimit(RLIMIT_CORE, &no_core);
+    ::_exit(body());
+  }
+  int status = -1;
+  ::waitpid(pid, &status, 0);
+  return status;
 }
 
 }  // namespace
@@ -93,4 +112,47 @@ TEST_CASE("atomic file: an unwritable place throws one line, even for a name wit
   CHECK(msg == "cannot write '/nonexistent-rigid-dir/a b.csv': No such file or directory");
   CHECK(msg.find('\n') == std::string::npos);
   CHECK_FALSE(fs::exists("/nonexistent-rigid-dir"));
+}
+
+TEST_CASE("atomic file: a file past the size limit is a failed write, not a death by SIGXFSZ",
+          "[render][atomic]") {
+  const fs::path dir = fresh_dir("fsize");
+  const fs::path file = dir / "big.csv";
+  // ulimit -f 4 (4 KiB) in a child, which writes 64 KiB: EFBIG, one line, no temporary.
+  const int status = in_child([&] {
+    const rlimit small{4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    const std::string msg = message_of(file.string(), [](std::FILE* f) {
+      const std::string block(1024, 'x');
+      for (int k = 0; k < 64; ++k) std::fwrite(block.data(), 1, block.size(), f);
+    });
+    const bool said = msg == "cannot write '" + file.string() + "': File too large";
+    return said && entries(dir) == 0 ? 0 : 1;
+  });
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(entries(dir) == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("atomic file: a terminating signal mid-write removes the temporary and kills by it",
+          "[render][atomic]") {
+  const fs::path dir = fresh_dir("signal");
+  // The writer itself raises the signal while its temporary is held: no timing involved.
+  // (SIGINT and SIGTERM are the test runner's own to handle; the labs' tests send them.)
+  for (const int sig : {SIGHUP, SIGQUIT, SIGALRM, SIGUSR1}) {
+    INFO("signal " << sig);
+    const int status = in_child([&] {
+      write_file_atomically((dir / "f.csv").string(), [&](std::FILE* f) {
+        std::fputs("half a fi", f);
+        std::fflush(f);
+        std::raise(sig);
+      });
+      return 0;
+    });
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == sig);
+    CHECK(entries(dir) == 0);
+  }
+  fs::remove_all(dir);
 }
