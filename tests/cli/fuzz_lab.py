@@ -12,14 +12,15 @@ code) and runs it many times. Classes (each case's class is in its report line):
   file names  any name the filesystem accepts (up to 255 bytes, any byte but '/'
               and NUL) as --csv, beside decoys a careless cleanup would delete;
   figures     the numbers class's inputs with --figures: every valid run draws;
-  signals     SIGINT or SIGTERM at a random moment of a run writing --csv and
-              --figures;
+  signals     SIGINT, SIGTERM, SIGHUP, SIGQUIT or SIGALRM at a random moment of a
+              run writing --csv and --figures;
   full disk   --csv and --figures into a small tmpfs (where this user may mount).
 Every run must keep the lab contract:
   - exit 0 with strict JSON on stdout (no NaN, no Infinity, valid UTF-8), or exit 2
     with one line on stderr of the form "LAB: error: --option: rule", escaped (no raw
     control character, no invalid UTF-8, no bidi override); a failure to write
-    (full disk) exits 1 with one line; a signal ends the run by that signal;
+    (full disk) exits 1 with one line, never 2 (its paths are good ones); a signal
+    ends the run by that signal;
   - finish within its work bound: the CPU seconds it may spend (a busy machine
     does not stretch them, as it does wall time); a run still alive after many
     times that on the clock is a hang (it waits without working);
@@ -270,6 +271,10 @@ def all_or_none(landed, has_csv, has_figures):
     return all(asked) or not any(asked), all(asked)
 
 
+def no_core_dump():
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+
+
 def can_mount():
     if os.geteuid() != 0 or not shutil.which("mount"):
         return False
@@ -381,13 +386,15 @@ class Fuzz:
                 self.signal_case(workdir)
 
     def signal_case(self, workdir):
-        """SIGINT or SIGTERM at a random moment: the run ends by it, or finishes, with
-        all its outputs or none."""
+        """A signal that ends a process, at a random moment: the run ends by it, or
+        finishes, with all its outputs or none."""
         csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
         argv = [self.lab, "--quiet"] + output_argv(self.has_csv, self.has_figures, csv, figures)
-        sig = self.rng.choice([signal.SIGINT, signal.SIGTERM])
+        sig = self.rng.choice([signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT,
+                               signal.SIGALRM])
+        # no core file (SIGQUIT's default) among the run's outputs
         proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
-                                stderr=subprocess.PIPE)
+                                stderr=subprocess.PIPE, preexec_fn=no_core_dump)
         time.sleep(self.rng.uniform(0.0, 0.4))
         proc.send_signal(sig)
         try:
@@ -432,6 +439,8 @@ class Fuzz:
             landed = outputs_landed(csv, figures)
             if proc.returncode == 0 and not all_or_none(landed, self.has_csv, self.has_figures)[1]:
                 problems.append(f"exit 0 but landed {landed}")
+            if proc.returncode == 2:
+                problems.append("a failed write exits 2 (bad input) instead of 1")
             if proc.returncode != 0 and os.listdir(workdir):
                 problems.append(f"failed, yet left {os.listdir(workdir)}")
             self.report("full disk", argv + [size], problems)
