@@ -206,10 +206,10 @@ std::vector<fs::path> entries_of(const fs::path& dir, std::error_code& ec) {
 // and the folders this run made for `out` if they are left empty.
 //
 // The staging folder is made here, not by a lab: a lab that fails removes the folders
-// it made, and would take the staging folder from under the others. It is made by mkdtemp, under a
-// name no folder had: one already there (a killed run's, whose PID this run may have been given) is
-// never this run's to fill or remove. If it cannot be made, the first lab is given its name and
-// says why, by its own rules for --figures.
+// it made, and would take the staging folder from under the others. It is made by
+// mkdtemp, under a name no folder had: one already there (a killed run's, whose PID
+// this run may have been given) is never this run's to fill or remove. If it cannot
+// be made, the first lab is given its name and says why, by its own rules for --figures.
 class Staging {
  public:
   explicit Staging(const std::string& out) : out_(out) {
