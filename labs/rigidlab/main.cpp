@@ -542,8 +542,10 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
+  // A closed pipe, or a file past the size limit (EFBIG), is a failed write to report,
+  // not a silent death by SIGPIPE or SIGXFSZ.
   std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
   hold_closed_stdout();
   const int status = run(argc, argv);
   // What went to stdout (the usage, the version, the list) must have arrived.

@@ -82,6 +82,14 @@ TEST_CASE("contract: output that never arrives is an error, not a silent exit 0"
     CHECK(run.one_error_line());
     CHECK(run.err.rfind("rigidlab: error: stdout: ", 0) == 0);
   }
+  // A file past the size limit: EFBIG reported, not a death by SIGXFSZ.
+  const std::string file = "/tmp/rigid_xfsz_" + std::to_string(::getpid());
+  // (the limit holds for every file written, so stderr comes through the pipe)
+  const auto run =
+      run_lab("rigidlab", "list", "sh -c 'ulimit -f 0; exec \"$0\" \"$@\" 2>&1 >\"" + file + "\"'");
+  CHECK(run.status == 1);
+  CHECK(run.out == "rigidlab: error: stdout: the output could not be written (File too large)\n");
+  std::remove(file.c_str());
 }
 
 TEST_CASE("contract: --csv writes regular files only and never follows or replaces a link") {
