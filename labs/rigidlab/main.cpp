@@ -8,6 +8,7 @@
 //
 // The labs are the executables beside this one (bin/ when installed, build/labs/
 // in a build tree); rigidlab holds no physics and no drawing of its own.
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -36,6 +37,31 @@ using rigid::support::Redirect;
 using rigid::support::Subprocess;
 
 namespace {
+
+// A stdout closed when rigidlab starts: /dev/null holds descriptor 1, so that no file
+// or pipe rigidlab opens takes its place, and std::cout is failed from the start: what
+// is written there is a failed write, as on a full disk.
+bool g_stdout_closed = false;
+void hold_closed_stdout() {
+  if (::fcntl(STDOUT_FILENO, F_GETFD) >= 0 || errno != EBADF) return;
+  g_stdout_closed = true;
+  std::cout.setstate(std::ios::badbit);
+  const int fd = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  if (fd >= 0 && fd != STDOUT_FILENO) {
+    ::dup3(fd, STDOUT_FILENO, O_CLOEXEC);
+    ::close(fd);
+  }
+}
+
+// Why the last write to stdout failed, read right after it.
+int stdout_errno() {
+  return g_stdout_closed ? EBADF : errno;
+}
+
+void say_stdout_failed(int why) {
+  std::cerr << "rigidlab: error: stdout: the output could not be written (" << std::strerror(why)
+            << ")\n";
+}
 
 // The one list of labs (labs/CMakeLists.txt), in section order.
 std::vector<std::string> lab_names() {
@@ -86,10 +112,15 @@ int list(bool names_only) {
   return 0;
 }
 
-// The labs `figures` runs, in fixed storage a signal handler may read: SIGINT and
-// SIGTERM to rigidlab are passed on to each (kill is async-signal-safe), which then
+// The labs `figures` runs, in fixed storage a signal handler may read: a signal that
+// would end rigidlab is passed on to each (kill is async-signal-safe), which then
 // removes its temporaries and dies; rigidlab waits for them all and dies as asked.
 constexpr int kMaxChildren = 256;
+// Every signal whose default is to end the process and that a handler can catch, but
+// SIGPIPE (ignored: a failed write is reported) and SIGXFSZ (a file too large is a
+// failed write, seen as EFBIG).
+constexpr std::array<int, 10> kEnding = {SIGINT,  SIGTERM, SIGHUP,    SIGQUIT, SIGALRM,
+                                         SIGUSR1, SIGUSR2, SIGVTALRM, SIGPROF, SIGXCPU};
 volatile std::sig_atomic_t g_child[kMaxChildren] = {};
 volatile std::sig_atomic_t g_signal = 0;
 
@@ -101,7 +132,7 @@ extern "C" void forward_signal(int sig) {
 }
 
 void forward_signals() {
-  for (const int sig : {SIGINT, SIGTERM}) {
+  for (const int sig : kEnding) {
     struct sigaction action {};
     action.sa_handler = forward_signal;
     sigemptyset(&action.sa_mask);
@@ -135,8 +166,7 @@ std::optional<Subprocess> start(const std::string& lab, const std::vector<std::s
   // the lab starts with the mask rigidlab had.
   sigset_t block, old;
   sigemptyset(&block);
-  sigaddset(&block, SIGINT);
-  sigaddset(&block, SIGTERM);
+  for (const int sig : kEnding) sigaddset(&block, sig);
   ::sigprocmask(SIG_BLOCK, &block, &old);
   std::optional<Subprocess> child;
   try {
@@ -171,17 +201,32 @@ std::vector<fs::path> entries_of(const fs::path& dir, std::error_code& ec) {
 }
 
 // Every lab's figures land in `out` together or not at all: the labs draw into a
-// staging folder, OUT/.rigidlab-stage-PID, whose files are renamed into `out` only once
-// every lab has succeeded. A failure or a signal removes the staging folder, and `out`
-// too if this run made it and it is left empty.
+// staging folder, OUT/.rigidlab-stage-PID-XXXXXX, whose files are renamed into `out`
+// only once every lab has succeeded. A failure or a signal removes the staging folder,
+// and the folders this run made for `out` if they are left empty.
+//
+// The staging folder is made here, not by a lab: a lab that fails removes the folders
+// it made, and would take the staging folder from under the others. It is made by
+// mkdtemp, under a name no folder had: one already there (a killed run's, whose PID
+// this run may have been given) is never this run's to fill or remove. If it cannot
+// be made, the first lab is given its name and says why, by its own rules for --figures.
 class Staging {
  public:
-  explicit Staging(const std::string& out)
-      : out_(out),
-        dir_((fs::path(out) / (".rigidlab-stage-" + std::to_string(::getpid()))).string()) {
+  explicit Staging(const std::string& out) : out_(out) {
     std::error_code ec;
-    // a dangling link at `out` is there: not this run's to remove
-    made_out_ = fs::symlink_status(out, ec).type() == fs::file_type::not_found;
+    // the outermost folder of `out` missing now is the first this run makes (a dangling
+    // link is there: not this run's to remove)
+    for (fs::path p = top();
+         !p.empty() && fs::symlink_status(p, ec).type() == fs::file_type::not_found;
+         p = p.parent_path()) {
+      made_from_ = p;
+      if (p == p.parent_path()) break;
+    }
+    fs::create_directories(out, ec);
+    std::string name =
+        (fs::path(out) / (".rigidlab-stage-" + std::to_string(::getpid()) + "-XXXXXX")).string();
+    ::mkdtemp(name.data());
+    dir_ = name;
   }
   const std::string& dir() const { return dir_; }
   // A lab's message about the staging folder, said of `out`, in both forms a lab's
@@ -205,7 +250,10 @@ class Staging {
   void discard() const {
     std::error_code ec;
     fs::remove_all(dir_, ec);
-    if (made_out_) fs::remove(out_, ec);  // only if left empty
+    if (made_from_.empty()) return;
+    // each folder this run made, innermost first, only if left empty
+    for (fs::path p = top(); fs::remove(p, ec) && p != made_from_; p = p.parent_path()) {
+    }
   }
   // A staged figure whose place in `out` a directory takes (no rename can replace it):
   // found before any file moves, so that all land or none; "" if there is none.
@@ -239,8 +287,13 @@ class Staging {
   }
 
  private:
+  // `out` without a trailing '/', whose parent is the folder it is in
+  fs::path top() const {
+    const fs::path path(out_);
+    return path.has_filename() ? path : path.parent_path();
+  }
   std::string out_, dir_;
-  bool made_out_ = false;
+  fs::path made_from_;  // the outermost folder of `out` this run made; empty if none
 };
 
 // Staging folders in `out` of runs killed outright (SIGKILL, a power cut: nothing could
@@ -251,8 +304,11 @@ void say_left_stages(const std::string& out, const std::string& ours) {
   for (const fs::path& entry : entries_of(out, ec)) {
     const std::string name = entry.filename().string();
     if (name.rfind(stem, 0) != 0 || entry == fs::path(ours)) continue;
+    // named by the PID of the run that made it: one with this run's PID is a killed
+    // run's whose PID came round again
     const long pid = std::strtol(name.c_str() + stem.size(), nullptr, 10);
-    if (pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM)) continue;
+    const bool alive = pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+    if (alive && pid != ::getpid()) continue;
     std::cerr << "rigidlab: warning: figures: " << rigid::support::terminal_safe(entry)
               << " was left by a run that was killed before it could remove it: remove it\n";
   }
@@ -266,12 +322,21 @@ int land(const Staging& stage, const std::string& out, std::size_t labs) {
     std::cerr << "rigidlab: error: figures: --out: " << rigid::support::terminal_safe(why) << "\n";
     return 2;
   }
+  // Said before any figure lands: a run whose line cannot be written lands nothing, as a
+  // lab whose stdout fails lands nothing.
+  std::cout << "figures of " << labs << " labs in "
+            << rigid::support::terminal_safe(fs::absolute(out).string()) << "\n"
+            << std::flush;
+  if (!std::cout) {
+    const int why = stdout_errno();
+    stage.discard();
+    say_stdout_failed(why);
+    return 1;
+  }
   if (const std::string why = stage.land(); !why.empty()) {
     std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(why) << "\n";
     return 1;
   }
-  std::cout << "figures of " << labs << " labs in "
-            << rigid::support::terminal_safe(fs::absolute(out).string()) << "\n";
   return 0;
 }
 
@@ -328,9 +393,9 @@ int other_labs(const Staging& stage, const std::vector<std::string>& labs,
   return failed;
 }
 
-// Every lab's figures into `out`, as many labs at once as there are processors.
-int figures(const std::string& out, const std::string& size, const std::string& prefix,
-            const std::string& format) {
+// Every lab's figures into `out`, drawn with `options` (the labs' own figure options), as
+// many labs at once as there are processors.
+int figures(const std::string& out, const std::vector<std::string>& options) {
   forward_signals();
   const Staging stage(out);
   const auto end_if_signalled = [&] {
@@ -338,14 +403,8 @@ int figures(const std::string& out, const std::string& size, const std::string& 
     stage.discard();
     die_if_signalled();
   };
-  // Made here, not by a lab: a lab that fails removes the folders it made, and would
-  // take the staging folder from under the others. If it cannot be made, the first
-  // lab says why, by its own rules.
-  std::error_code ignored;
-  fs::create_directories(stage.dir(), ignored);
-  std::vector<std::string> args{"--quiet", "--figures",       stage.dir(), "--figure-size",
-                                size,      "--figure-format", format};
-  if (!prefix.empty()) args.insert(args.end(), {"--figure-prefix", prefix});
+  std::vector<std::string> args{"--quiet", "--figures", stage.dir()};
+  args.insert(args.end(), options.begin(), options.end());
   // The first lab alone: it checks the options by the labs' own rules, so bad ones are
   // one line and exit status 2 here, not one failure per lab.
   const std::vector<std::string> labs = lab_names();
@@ -409,7 +468,15 @@ int figures_command(const std::vector<std::string>& args) {
     std::cerr << "rigidlab: error: figures: " << rigid::support::terminal_safe(e.what()) << "\n";
     return 2;
   }
-  return figures(out, size, prefix, format);
+  // the labs' rule, in their words: rigidlab's --out is their --figures
+  if (out.empty()) {
+    std::cerr << "rigidlab: error: figures: --out: needs a directory name\n";
+    return 2;
+  }
+  std::vector<std::string> options{"--figure-size", size, "--figure-format", format};
+  // given, even empty: the labs judge it
+  if (app.count("--figure-prefix") > 0) options.insert(options.end(), {"--figure-prefix", prefix});
+  return figures(out, options);
 }
 
 // `rigidlab explore ...` and `rigidlab LAB ...`: the program run in rigidlab's place.
@@ -475,14 +542,16 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // A closed pipe is a failed write to report, not a silent death by SIGPIPE.
+  // A closed pipe, or a file past the size limit (EFBIG), is a failed write to report,
+  // not a silent death by SIGPIPE or SIGXFSZ.
   std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
+  hold_closed_stdout();
   const int status = run(argc, argv);
   // What went to stdout (the usage, the version, the list) must have arrived.
   std::cout.flush();
   if (!std::cout && status == 0) {
-    std::cerr << "rigidlab: error: stdout: the output could not be written ("
-              << std::strerror(errno) << ")\n";
+    say_stdout_failed(stdout_errno());
     return 1;
   }
   return status;

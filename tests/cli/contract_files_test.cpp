@@ -1,7 +1,7 @@
 // The lab contract's files (README, "The labs"): a run lands all its outputs or none,
 // writes regular files only, never follows or replaces a link of the user's, leaves no
-// temporary when it fails or is killed, and says when its output never arrives; and
-// `rigidlab figures` lands every lab's figures or none.
+// temporary when it fails or is killed, and says when its output never arrives.
+// (`rigidlab figures` as one transaction: rigidlab_figures_test.cpp.)
 #include <signal.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -83,6 +83,14 @@ TEST_CASE("contract: output that never arrives is an error, not a silent exit 0"
     CHECK(run.one_error_line());
     CHECK(run.err.rfind("rigidlab: error: stdout: ", 0) == 0);
   }
+  // A file past the size limit: EFBIG reported, not a death by SIGXFSZ.
+  const std::string file = "/tmp/rigid_xfsz_" + std::to_string(::getpid());
+  // (the limit holds for every file written, so stderr comes through the pipe)
+  const auto run =
+      run_lab("rigidlab", "list", "sh -c 'ulimit -f 0; exec \"$0\" \"$@\" 2>&1 >\"" + file + "\"'");
+  CHECK(run.status == 1);
+  CHECK(run.out == "rigidlab: error: stdout: the output could not be written (File too large)\n");
+  std::remove(file.c_str());
 }
 
 TEST_CASE("contract: --csv writes regular files only and never follows or replaces a link") {
@@ -305,121 +313,6 @@ TEST_CASE("contract: a figure or animation that fails lands nothing, not even th
     CHECK(fs::is_empty(dir));
   }
   fs::remove_all(dir);
-}
-
-TEST_CASE("contract: SIGTERM to rigidlab figures reaches its labs, which leave no temporaries",
-          "[draws]") {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("rigid_term_" + std::to_string(::getpid()));
-  const std::vector<std::string> labs = rigid::test::all_labs();
-  // What the staging folder holds: the names of its files (the labs draw there first).
-  const auto staged = [&] {
-    std::vector<std::string> names;
-    std::error_code ec;
-    for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-      names.push_back(it->path().filename().string());
-    return names;
-  };
-  const auto drawn_by = [&](auto is_lab) {
-    return [&, is_lab] {
-      for (const std::string& name : staged()) {
-        for (const std::string& lab : labs) {
-          if (is_lab(lab) && name.rfind(lab + "_", 0) == 0) return true;
-        }
-      }
-      return false;
-    };
-  };
-  // During the first lab alone (once a figure of it shows), and during the others
-  // (once a figure of another lab shows).
-  const auto first = [&](const std::string& lab) { return lab == labs.front(); };
-  const auto others = [&](const std::string& lab) { return lab != labs.front(); };
-  for (const bool during_others : {false, true}) {
-    INFO((during_others ? "during the other labs" : "during the first lab alone"));
-    // To rigidlab alone (not its process group, as a terminal's Ctrl-C or timeout would).
-    rigid::test::Background rigidlab({std::string(RIGID_LAB_DIR) + "/rigidlab", "figures",
-                                      "--figure-size", "2048x2048", "--out", dir.string()});
-    const bool ready = during_others ? rigidlab.wait_until(drawn_by(others))
-                                     : rigidlab.wait_until(drawn_by(first));
-    REQUIRE(ready);
-    ::kill(rigidlab.pid(), SIGTERM);
-    const int status = rigidlab.wait();
-    // rigidlab died of the signal, after its labs
-    CHECK((WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM));
-    // Every lab it ran has stopped (none still writes into the folder) and left no temporary.
-    const std::string still = "pgrep -f -- '[-]-figures " + dir.string() + "' > /dev/null 2>&1";
-    CHECK(std::system(still.c_str()) != 0);  // (the bracket keeps pgrep's own shell out)
-    // Nothing landed (the labs drew into a staging folder), and the folder it made is gone.
-    CHECK(!fs::exists(dir));
-    fs::remove_all(dir);
-  }
-}
-
-TEST_CASE("contract: rigidlab figures says a killed run's staging folder is left and keeps it",
-          "[draws]") {
-  // kill -9 leaves OUT/.rigidlab-stage-PID (no handler runs); the next run names it for
-  // the user to remove, and leaves it: it did not make it
-  namespace fs = std::filesystem;
-  const fs::path out = fs::temp_directory_path() / ("rigid_left_" + std::to_string(::getpid()));
-  const fs::path left = out / ".rigidlab-stage-2147483646";  // a pid no process has
-  fs::create_directories(left);
-  const std::string err = (out.string() + ".err");
-  const std::string command = std::string(RIGID_LAB_DIR) +
-                              "/rigidlab figures --figure-size 800x600 --out '" + out.string() +
-                              "' 2> '" + err + "'";
-  CHECK(std::system(command.c_str()) == 0);
-  std::ifstream in(err);
-  const std::string said((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  CHECK(said.find("rigidlab: warning: figures: " + left.string() +
-                  " was left by a run that was killed") != std::string::npos);
-  CHECK(fs::is_directory(left));
-  fs::remove_all(out);
-  fs::remove(err);
-}
-
-TEST_CASE("contract: rigidlab figures lands every lab's figures or none", "[draws]") {
-  namespace fs = std::filesystem;
-  const fs::path base = fs::temp_directory_path() / ("rigid_all_" + std::to_string(::getpid()));
-  fs::create_directories(base);
-  const fs::path out = base / "figs";
-  const std::string rigidlab = std::string(RIGID_LAB_DIR) + "/rigidlab figures --out '";
-  REQUIRE(std::system((rigidlab + out.string() + "' >/dev/null 2>&1").c_str()) == 0);
-  std::size_t pngs = 0;
-  for (const auto& entry : fs::directory_iterator(out)) {
-    CHECK(entry.path().extension() == ".png");  // no staging folder or temporary left
-    ++pngs;
-  }
-  CHECK(pngs >= all_labs().size());
-  fs::remove_all(out);
-  // A full disk (a 200 kB tmpfs, where this user may mount one): every lab fails, none
-  // of their figures lands, the folder rigidlab made goes, a file of the user's stays.
-  const fs::path disk = base / "disk";
-  fs::create_directories(disk);
-  const std::string mount = "mount -t tmpfs -o size=200k tmpfs '" + disk.string() + "' 2>/dev/null";
-  if (std::system(mount.c_str()) == 0) {
-    std::ofstream(disk / "mine.txt") << "keep\n";
-    const int status =
-        std::system((rigidlab + (disk / "figs").string() + "' >/dev/null 2>&1").c_str());
-    CHECK(WEXITSTATUS(status) == 1);
-    std::vector<std::string> left;
-    for (const auto& entry : fs::directory_iterator(disk)) left.push_back(entry.path().filename());
-    CHECK(left == std::vector<std::string>{"mine.txt"});
-    CHECK(std::system(("umount '" + disk.string() + "'").c_str()) == 0);
-  } else {
-    WARN("cannot mount a tmpfs here: the full-disk half is not run");
-  }
-  // A directory where one figure goes: refused whole (exit 2, one line), nothing lands,
-  // the user's files stay as they were.
-  const fs::path taken = base / "taken";
-  fs::create_directories(taken / "poinsot_omega.png");
-  std::ofstream(taken / "tire_balancing_mass.png") << "mine\n";
-  const int blocked = std::system((rigidlab + taken.string() + "' >/dev/null 2>&1").c_str());
-  CHECK(WEXITSTATUS(blocked) == 2);
-  std::vector<std::string> kept;
-  for (const auto& entry : fs::directory_iterator(taken)) kept.push_back(entry.path().filename());
-  std::sort(kept.begin(), kept.end());
-  CHECK(kept == std::vector<std::string>{"poinsot_omega.png", "tire_balancing_mass.png"});
-  fs::remove_all(base);
 }
 
 TEST_CASE("contract: a failed run removes no link of the user's, dangling or not") {
