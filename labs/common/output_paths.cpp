@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -46,11 +48,18 @@ void check_name_length(const std::string& option, const std::string& name,
 bool can_create_in(const std::string& dir) {
   const std::string probe =
       (fs::path(dir) / fmt::format(".rigidlab-probe-{}", ::getpid())).string();
+  // A signal that ends the run between the probe's creation and its removal would leave
+  // it behind (the handler removes only the run's temporaries): held until it is gone.
+  sigset_t all, before;
+  sigfillset(&all);
+  ::pthread_sigmask(SIG_BLOCK, &all, &before);
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0) return false;
-  ::close(fd);
-  ::unlink(probe.c_str());
-  return true;
+  if (fd >= 0) {
+    ::close(fd);
+    ::unlink(probe.c_str());
+  }
+  ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
+  return fd >= 0;
 }
 
 void check_output_dir(const std::string& option, const std::string& dir_name,
