@@ -1,5 +1,5 @@
 // bench_report's work-precision sections: per problem, the time each solver needs to
-// reach an error level, fastest rigidlab against fastest peer, with issue 12's finer
+// reach an error level, fastest rigidlab against fastest peer, with the finer
 // levels and a diagram; and the PI step-size controller against odeint's default.
 //
 // "Time to reach an error level": for each solver its measurements are
@@ -103,12 +103,12 @@ long long evaluations_at(const SolverCurve& c, double level) {
   return 0;
 }
 
-// Issue 12's target: at every level from 1e-4 down to ten times the best error any
+// The finer levels' target: at every level from 1e-4 down to ten times the best error any
 // solver reaches on the problem, by half decades (and that floor itself), the fastest
-// rigidlab solver takes at most kIssue12Ratio of the fastest peer's time; beside each
+// rigidlab solver takes at most kFinerLevelsRatio of the fastest peer's time; beside each
 // time, the evaluations of the measurement that reached the level, to say where a gain
 // or a miss comes from.
-constexpr double kIssue12Ratio = 0.75;
+constexpr double kFinerLevelsRatio = 0.75;
 std::string count_text(const SolverCurve* c, double level) {
   const long long n = c ? evaluations_at(*c, level) : 0;
   return n > 0 ? fmt::format("{}", n) : "—";  // SciPy's runs are not counted
@@ -125,7 +125,7 @@ void issue12_levels(std::ostream& md, const std::string& problem,
     levels.push_back(std::pow(10.0, -0.5 * k));
   if (floor < 1e-4) levels.push_back(floor);
   md << fmt::format(
-      "\nIssue 12: every level from 1e-4 down to ten times the best error any "
+      "\nThe finer levels: every level from 1e-4 down to ten times the best error any "
       "solver reached ({:.1e}, so {:.1e}), by half decades; evaluations of the "
       "loosest measured run that reached the level.\n\n",
       best, floor);
@@ -149,7 +149,7 @@ void issue12_levels(std::ostream& md, const std::string& problem,
                       both ? fmt::format(ratio < 0.01 ? "{:.1e}" : "{:.2f}", ratio)
                            : (ours ? "peers do not reach it" : "not reached by rigidlab"));
     if (both) worst = std::max(worst, ratio);
-    if (!ours || (both && ratio > kIssue12Ratio))
+    if (!ours || (both && ratio > kFinerLevelsRatio))
       misses.push_back(
           fmt::format("{:.1e} ({})", level, both ? fmt::format("{:.2f}", ratio) : "not reached"));
   }
@@ -157,7 +157,7 @@ void issue12_levels(std::ostream& md, const std::string& problem,
       misses.empty(),
       fmt::format("{}: fastest rigidlab at most {:.2f}× the fastest peer at "
                   "every level 1e-4..{:.1e} (worst ratio {:.2f}{}{})",
-                  problem, kIssue12Ratio, floor, worst, misses.empty() ? "" : "; missed at ",
+                  problem, kFinerLevelsRatio, floor, worst, misses.empty() ? "" : "; missed at ",
                   fmt::format("{}", fmt::join(misses, ", "))));
 }
 

@@ -344,7 +344,7 @@ TEST_CASE("labs: extreme but legal inputs end with finite numbers or one line, n
   }
 }
 
-// Issue 13, item 3: every lab at inputs none of its defaults share, against the
+// Every lab at inputs none of its defaults share, against the
 // chapter's formulas typed here (or a quadrature / another library's elliptic
 // integral), never against the lab's own output. Tolerances: the formulas are a
 // few operations each, so a few ulps; 1e-13 relative leaves room for libm.
