@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/command_render.h"
+#include "common/output_paths.h"
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/support/text.h"
@@ -30,8 +31,10 @@ class MadeFolders {
     std::error_code ignored;
     for (const fs::path& dir : dirs_) fs::remove(dir, ignored);
   }
-  /// Makes `dir` and its missing parents, noting them; throws InputError for --figures.
-  void make(const std::string& dir) {
+  /// Makes `dir` (at its place: output_paths.h) and its missing parents, noting them;
+  /// throws InputError for --figures.
+  void make(const std::string& name) {
+    const fs::path dir = output_place(name);
     std::error_code error;
     // A name that is there as anything, a dangling link included (symlink_status), is
     // not this run's to remove.
@@ -39,13 +42,13 @@ class MadeFolders {
       std::error_code ec;
       return fs::symlink_status(p, ec).type() == fs::file_type::not_found;
     };
-    for (fs::path d = fs::absolute(dir, error).lexically_normal();
-         !error && !d.empty() && missing(d) && d != d.parent_path(); d = d.parent_path()) {
+    for (fs::path d = dir; !d.empty() && missing(d) && d != d.parent_path(); d = d.parent_path()) {
       dirs_.push_back(d);
     }
     fs::create_directories(dir, error);
     if (error) {
-      throw InputError("--figures", "cannot create directory '" + dir + "': " + error.message());
+      throw InputError("--figures",
+                       "cannot create directory '" + quoted_text(name) + "': " + error.message());
     }
   }
   void keep() { kept_ = true; }

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 
+#include "common/output_paths.h"
 #include "rigid/render/context.h"
 #include "rigid/render/draw.h"
 #include "rigid/render/png.h"
@@ -87,7 +88,7 @@ template <class Figure>
 void FigureFiles::save(const std::string& name, const std::string& caption, const Figure& figure) {
   const CommandOptions& o = options_;
   const std::string file = o.figure_file(name);
-  const fs::path path = fs::path(o.figures_dir) / file;
+  const fs::path path = output_place(o.figures_dir) / file;
   if (fs::is_directory(path)) {
     throw InputError("--figures", "'" + path.string() + "' is a directory, not a figure");
   }
@@ -207,8 +208,7 @@ struct Film {
 // What the report says of a film written.
 Json film_record(const Film& film, std::size_t bytes, double seconds, const FilmTiming& timing) {
   const CommandOptions& o = film.options;
-  std::error_code ec;
-  Json record = {{"path", fs::absolute(o.animation_path, ec).lexically_normal().string()},
+  Json record = {{"path", output_place(o.animation_path).string()},
                  {"caption", film.motion.caption},
                  {"frames", film.frames},
                  {"fps", o.animation_fps},

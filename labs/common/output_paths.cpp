@@ -118,14 +118,16 @@ void check_animation_file(const std::string& option, const std::string& name) {
   }
 }
 
-namespace {
-// Where a name points, as one spelling: absolute, with the links and dots of the part
-// that exists resolved (two names of one file compare equal).
-fs::path place(const std::string& name) {
+fs::path output_place(const std::string& name) {
   std::error_code ec;
   fs::path p = fs::weakly_canonical(fs::absolute(name, ec), ec);
-  return ec ? fs::absolute(name).lexically_normal() : p;
+  if (ec) p = fs::absolute(name, ec).lexically_normal();
+  // "d/x/.." is "/abs/d/" once normal: the folder, named without its trailing separator
+  if (!p.has_filename() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();
+  return p;
 }
+
+namespace {
 // `inner` is `outer` or lies below it.
 bool within(const fs::path& inner, const fs::path& outer) {
   const auto [end, _] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
@@ -136,15 +138,15 @@ bool within(const fs::path& inner, const fs::path& outer) {
 void check_distinct_outputs(const std::string& csv, const std::string& animation,
                             const std::string& figures_dir, const std::string& figure_stem,
                             const std::string& figure_extension) {
-  if (!csv.empty() && !animation.empty() && place(csv) == place(animation)) {
+  if (!csv.empty() && !animation.empty() && output_place(csv) == output_place(animation)) {
     throw InputError("--animate", "'" + quoted_text(animation) +
                                       "' is the file --csv writes; give each its own");
   }
   if (figures_dir.empty()) return;
-  const fs::path figures = place(figures_dir);
+  const fs::path figures = output_place(figures_dir);
   for (const auto& [option, name] : {std::pair{"--csv", csv}, std::pair{"--animate", animation}}) {
     if (name.empty()) continue;
-    const fs::path file = place(name);
+    const fs::path file = output_place(name);
     if (within(figures, file)) {
       throw InputError("--figures", "'" + quoted_text(figures_dir) +
                                         "' would lie inside the file " + option + " writes ('" +

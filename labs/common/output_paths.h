@@ -2,6 +2,7 @@
 // InputError naming the option, never a failure after the results are computed.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace rigid::lab {
@@ -19,6 +20,12 @@ void check_output_file(const std::string& option, const std::string& path);
 /// `path` (--animate) is not something other than a regular file, and its directory
 /// can be written.
 void check_animation_file(const std::string& option, const std::string& path);
+
+/// Where an output name points, as one spelling: absolute, the links and dots of its
+/// existing part resolved, the rest's dots removed, no trailing separator. Two names of
+/// one file (d/x/../f, d/./f, a link to d) have one place; a folder a run makes for
+/// --figures is made here, so `d/x/..` does not make `d/x`.
+std::filesystem::path output_place(const std::string& name);
 
 /// The run's outputs are different places (each "" if not asked for): --csv and
 /// --animate not the same file, neither where --figures writes a figure (a name

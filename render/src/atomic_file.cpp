@@ -173,12 +173,41 @@ void release(int slot) {
   if (slot >= 0) g_used[slot] = 0;
 }
 
-// The pending renames of the live transaction (temporary, target, slot).
+// The file a target names, whatever its spelling: its folder (device and inode) and
+// its name in it. Two of a transaction's outputs with one file would replace each other.
+struct FileKey {
+  dev_t dev = 0;
+  ino_t ino = 0;
+  std::string leaf;
+  bool operator==(const FileKey& o) const { return dev == o.dev && ino == o.ino && leaf == o.leaf; }
+};
+FileKey file_key(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "."
+                          : slash == 0               ? "/"
+                                                     : path.substr(0, slash);
+  struct stat st {};
+  if (::stat(dir.c_str(), &st) != 0) return {};
+  return {st.st_dev, st.st_ino, slash == std::string::npos ? path : path.substr(slash + 1)};
+}
+
+// The pending renames of the live transaction (temporary, target, slot, target's file).
 struct Pending {
   std::string tmp, path;
   int slot;
+  FileKey key;
 };
 std::vector<Pending>* g_transaction = nullptr;
+
+// True if the live transaction already writes the file `key` names.
+bool pending_in_transaction(const FileKey& key) {
+  const SignalsBlocked blocked;
+  const std::lock_guard<std::mutex> lock(g_mutex);
+  if (g_transaction == nullptr || key.leaf.empty()) return false;
+  for (const Pending& p : *g_transaction)
+    if (p.key == key) return true;
+  return false;
+}
 
 // Temporaries are named TARGET.rigidlab-tmp-PID-RANDOM: the marker, the writer's
 // process id and 16 hex digits of randomness, so that no user's file has that name by
@@ -250,6 +279,8 @@ void remove_stale(const std::string& path) {
 
 void write_file_atomically(const std::string& path, const std::function<void(std::FILE*)>& write) {
   if (path.empty()) fail(path, "empty file name");
+  const FileKey key = file_key(path);
+  if (pending_in_transaction(key)) fail(path, "another output of this run is the same file");
   remove_stale(path);
   const std::string tmp = temporary_name(path);
   // O_EXCL: never write through a file (or link) that is already there; 0666
@@ -298,7 +329,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     const SignalsBlocked blocked;
     const std::lock_guard<std::mutex> lock(g_mutex);
     if (g_transaction != nullptr) {
-      g_transaction->push_back({tmp, path, slot});  // renamed at commit()
+      g_transaction->push_back({tmp, path, slot, key});  // renamed at commit()
       return;
     }
   }

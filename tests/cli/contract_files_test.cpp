@@ -248,6 +248,10 @@ TEST_CASE("contract: two outputs in one place are refused up front, and nothing 
       // the CSV where --figures writes a figure, directly or through a link to the folder
       {"--figures '" + d + "/F' --csv '" + d + "/F/poinsot_omega.png'", "--csv"},
       {"--figures '" + d + "/F' --csv '" + d + "/G/poinsot_polhodes.png'", "--csv"},
+      // ... or through a folder not there yet and its "..", or a trailing separator
+      {"--figures '" + d + "/F/x/..' --csv '" + d + "/F/poinsot_omega.png'", "--csv"},
+      {"--figures '" + d + "/F/x/../' --csv '" + d + "/F/poinsot_omega.png'", "--csv"},
+      {"--figures '" + d + "/F/' --csv '" + d + "/G/./poinsot_omega.png'", "--csv"},
       // the figures' folder inside the CSV's file
       {"--figures '" + d + "/out.csv/F' --csv '" + d + "/out.csv'", "--figures"},
   };
@@ -266,6 +270,11 @@ TEST_CASE("contract: two outputs in one place are refused up front, and nothing 
         0);
   CHECK(fs::is_regular_file(figures / "run.csv"));
   CHECK(fs::is_regular_file(figures / "poinsot_omega.png"));
+  // A folder named through one not there yet ("x/..") is the folder itself: "x" is not made.
+  fs::remove_all(figures);
+  CHECK(run_lab("poinsot", "--quiet --figures '" + d + "/F/x/..'").status == 0);
+  CHECK(fs::is_regular_file(figures / "poinsot_omega.png"));
+  CHECK_FALSE(fs::exists(figures / "x"));
   fs::remove_all(dir);
 }
 

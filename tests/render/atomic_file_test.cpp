@@ -105,6 +105,34 @@ TEST_CASE("atomic file: a failed rename removes the temporary", "[render][atomic
   fs::remove_all(dir);
 }
 
+TEST_CASE("atomic file: one transaction never writes one file twice, whatever the spelling",
+          "[render][atomic]") {
+  // Three spellings of one file (a dot, a folder and its "..", a link to the folder):
+  // the second and third writes are refused before they touch anything, and only the
+  // first lands.
+  const fs::path dir = fresh_dir("twice");
+  fs::create_directories(dir / "x");
+  fs::create_directory_symlink(dir, dir / "link");
+  const auto text = [](const char* t) { return [t](std::FILE* f) { std::fputs(t, f); }; };
+  {
+    rigid::render::FileTransaction files;
+    write_file_atomically((dir / "f.csv").string(), text("first"));
+    for (const fs::path& again :
+         {dir / "." / "f.csv", dir / "x" / ".." / "f.csv", dir / "link" / "f.csv"}) {
+      const std::string msg = message_of(again.string(), text("again"));
+      CHECK(msg ==
+            "cannot write '" + again.string() + "': another output of this run is the same file");
+    }
+    // a file beside it is another file
+    write_file_atomically((dir / "g.csv").string(), text("second"));
+    files.commit();
+  }
+  CHECK(read(dir / "f.csv") == "first");
+  CHECK(read(dir / "g.csv") == "second");
+  CHECK(entries(dir) == 4);  // f.csv, g.csv, x, link: no temporary left
+  fs::remove_all(dir);
+}
+
 TEST_CASE("atomic file: an unwritable place throws one line, even for a name with a line break",
           "[render][atomic]") {
   const std::string path = "/nonexistent-rigid-dir/a\nb.csv";
