@@ -1,5 +1,7 @@
 #include "common/command_outputs.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -13,6 +15,8 @@
 #include "common/output_paths.h"
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
+#include "rigid/render/memory.h"
+#include "rigid/support/memory.h"
 #include "rigid/support/text.h"
 
 namespace rigid::lab {
@@ -70,6 +74,34 @@ std::vector<double> film_times(const CommandOptions& options, double motion_seco
   return times;
 }
 
+// A drawing the run could not have the memory for is refused before any work, naming
+// its size, rather than killed by the system midway (render/memory.h: the model of
+// the peak; support/memory.h: what the run may use).
+void check_memory(const CommandOptions& options) {
+  std::optional<support::MemoryBudget> budget;
+  try {
+    budget = support::memory_budget();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(support::kMemoryBudgetVariable, e.what());
+  }
+  if (!budget) return;
+  const auto check = [&](const char* option, int width, int height, std::uint64_t need) {
+    if (need <= budget->bytes) return;
+    throw InputError(option, fmt::format("{}x{} takes about {} to draw, more than the {} this run "
+                                         "may use ({}); give a smaller size",
+                                         width, height, support::bytes_text(need),
+                                         support::bytes_text(budget->bytes), budget->source));
+  };
+  if (!options.figures_dir.empty()) {
+    check("--figure-size", options.figure_width, options.figure_height,
+          render::figure_peak_bytes(options.figure_width, options.figure_height));
+  }
+  if (!options.animation_path.empty()) {
+    check("--animation-size", options.animation_width, options.animation_height,
+          render::film_peak_bytes(options.animation_width, options.animation_height));
+  }
+}
+
 class OutputRun {
  public:
   explicit OutputRun(const CommandOptions& options) : options_(options) {
@@ -99,6 +131,7 @@ class OutputRun {
 };
 
 int OutputRun::write(const std::function<Computed()>& compute) {
+  check_memory(options_);
   // The run's files (figures, CSV, animation) land together or not at all.
   render::FileTransaction files;
   const Computed computed = compute();

@@ -12,9 +12,11 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -23,11 +25,13 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "rigid/support/cli.h"
+#include "rigid/support/memory.h"
 #include "rigid/support/programs.h"
 #include "rigid/support/subprocess.h"
 #include "rigid/support/text.h"
@@ -181,14 +185,40 @@ std::optional<Subprocess> start(const std::string& lab, const std::vector<std::s
 }
 
 // Runs a lab with `args` to its end, its stderr captured; returns its exit status
-// (-1 if it did not exit, 127 if it could not be run) and its stderr in `err`.
-int run_captured(const std::string& lab, const std::vector<std::string>& args, std::string& err) {
+// (-1 if it did not exit, 127 if it could not be run), its stderr in `err` and the
+// most memory it held in `peak_bytes`.
+int run_captured(const std::string& lab, const std::vector<std::string>& args, std::string& err,
+                 std::uint64_t& peak_bytes) {
   std::optional<Subprocess> child = start(lab, args, Redirect::pipe(), err);
   if (!child) return 127;
   err += child->read_to_end();
   const int status = child->wait();
   track(child->pid(), false);
+  peak_bytes = child->peak_bytes();
   return status;
+}
+
+// How many labs draw at once: one a processor, as many as the memory budget holds
+// (support/memory.h) at what the first lab took, with a quarter to spare (the labs'
+// peaks at one figure size lie within a tenth of each other). Said on stderr when the
+// memory is what limits it.
+long labs_at_once(std::uint64_t first_peak) {
+  const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
+  std::optional<rigid::support::MemoryBudget> budget;
+  try {
+    budget = rigid::support::memory_budget();
+  } catch (const std::invalid_argument&) {
+    // the first lab has refused a bad setting already
+  }
+  if (!budget || first_peak == 0) return cpus;
+  const std::uint64_t a_lab = first_peak + first_peak / 4;
+  const long fit = static_cast<long>(std::min<std::uint64_t>(budget->bytes / a_lab, cpus));
+  if (fit >= cpus) return cpus;
+  const long n = std::max(1L, fit);
+  std::cerr << "rigidlab: figures: " << n << (n == 1 ? " lab" : " labs")
+            << " at a time, as memory allows (a lab took " << rigid::support::bytes_text(first_peak)
+            << "; " << budget->source << ": " << rigid::support::bytes_text(budget->bytes) << ")\n";
+  return n;
 }
 
 // The entries of a folder; `ec` says why a listing failed or stopped (increment(ec):
@@ -340,12 +370,12 @@ int land(const Staging& stage, const std::string& out, std::size_t labs) {
   return 0;
 }
 
-// The labs after the first, as many at once as there are processors, each drawing into
+// The labs after the first, `at_once` at a time (labs_at_once), each drawing into
 // the staging folder; how many failed. Each lab's stderr goes into a file of its own,
 // shown when it ends with the staging folder's name said as `out` (its lines name the
 // paths it wrote to).
 int other_labs(const Staging& stage, const std::vector<std::string>& labs,
-               const std::vector<std::string>& args) {
+               const std::vector<std::string>& args, long at_once) {
   struct Lab {
     std::string name;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> err{nullptr, std::fclose};
@@ -373,9 +403,8 @@ int other_labs(const Staging& stage, const std::vector<std::string>& labs,
     children.erase(children.begin() + static_cast<std::ptrdiff_t>(k));
     running.erase(running.begin() + static_cast<std::ptrdiff_t>(k));
   };
-  const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
   for (std::size_t k = 1; k < labs.size() && g_signal == 0; ++k) {
-    if (static_cast<long>(children.size()) >= cpus) wait_one();
+    if (static_cast<long>(children.size()) >= at_once) wait_one();
     if (g_signal != 0) break;
     Lab lab{labs[k]};
     lab.err.reset(std::tmpfile());  // null: the lab's stderr is rigidlab's own
@@ -394,7 +423,7 @@ int other_labs(const Staging& stage, const std::vector<std::string>& labs,
 }
 
 // Every lab's figures into `out`, drawn with `options` (the labs' own figure options), as
-// many labs at once as there are processors.
+// many labs at once as the processors and the memory allow.
 int figures(const std::string& out, const std::vector<std::string>& options) {
   forward_signals();
   const Staging stage(out);
@@ -409,7 +438,8 @@ int figures(const std::string& out, const std::vector<std::string>& options) {
   // one line and exit status 2 here, not one failure per lab.
   const std::vector<std::string> labs = lab_names();
   std::string err;
-  const int first = run_captured(labs.front(), args, err);
+  std::uint64_t first_peak = 0;
+  const int first = run_captured(labs.front(), args, err, first_peak);
   end_if_signalled();
   err = stage.said_of_out(err);
   if (first == 2) {
@@ -425,7 +455,7 @@ int figures(const std::string& out, const std::vector<std::string>& options) {
   std::cerr << err;
   std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED")
             << "\n";
-  const int failed = (first == 0 ? 0 : 1) + other_labs(stage, labs, args);
+  const int failed = (first == 0 ? 0 : 1) + other_labs(stage, labs, args, labs_at_once(first_peak));
   end_if_signalled();
   if (failed > 0) {
     stage.discard();

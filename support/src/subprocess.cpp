@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -94,7 +95,8 @@ Subprocess::~Subprocess() {
 Subprocess::Subprocess(Subprocess&& other) noexcept
     : pid_(std::exchange(other.pid_, -1)),
       pipe_(std::exchange(other.pipe_, -1)),
-      status_(std::exchange(other.status_, std::nullopt)) {}
+      status_(std::exchange(other.status_, std::nullopt)),
+      peak_bytes_(std::exchange(other.peak_bytes_, 0)) {}
 
 Subprocess& Subprocess::operator=(Subprocess&& other) noexcept {
   if (this != &other) {
@@ -103,6 +105,7 @@ Subprocess& Subprocess::operator=(Subprocess&& other) noexcept {
     pid_ = std::exchange(other.pid_, -1);
     pipe_ = std::exchange(other.pipe_, -1);
     status_ = std::exchange(other.status_, std::nullopt);
+    peak_bytes_ = std::exchange(other.peak_bytes_, 0);
   }
   return *this;
 }
@@ -139,26 +142,29 @@ std::string Subprocess::read_to_end() {
   return text;
 }
 
-void Subprocess::ended(int wait_status) {
+void Subprocess::ended(int wait_status, const rusage& usage) {
   status_ = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
+  peak_bytes_ = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;  // Linux counts kB
 }
 
 bool Subprocess::poll() {
   if (status_ || pid_ <= 0) return true;
   int wait_status = 0;
-  if (::waitpid(pid_, &wait_status, WNOHANG) != pid_) return false;
-  ended(wait_status);
+  struct rusage usage {};
+  if (::wait4(pid_, &wait_status, WNOHANG, &usage) != pid_) return false;
+  ended(wait_status, usage);
   return true;
 }
 
 int Subprocess::wait() {
   if (!status_ && pid_ > 0) {
     int wait_status = 0;
+    struct rusage usage {};
     pid_t got = 0;
-    while ((got = ::waitpid(pid_, &wait_status, 0)) < 0 && errno == EINTR) {
+    while ((got = ::wait4(pid_, &wait_status, 0, &usage)) < 0 && errno == EINTR) {
     }
     if (got == pid_) {
-      ended(wait_status);
+      ended(wait_status, usage);
     } else {
       status_ = -1;  // not this process's child to wait for: nothing more to learn
     }
@@ -174,11 +180,12 @@ int Subprocess::terminate() {
 std::size_t Subprocess::wait_any(std::vector<Subprocess>& children) {
   for (;;) {
     int wait_status = 0;
-    const pid_t pid = ::waitpid(-1, &wait_status, 0);
+    struct rusage usage {};
+    const pid_t pid = ::wait4(-1, &wait_status, 0, &usage);
     if (pid < 0 && errno == EINTR) continue;
     for (std::size_t k = 0; k < children.size(); ++k) {
       if (pid > 0 && children[k].pid_ == pid) {
-        children[k].ended(wait_status);
+        children[k].ended(wait_status, usage);
         return k;
       }
     }

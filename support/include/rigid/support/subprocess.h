@@ -13,9 +13,11 @@
 #pragma once
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/types.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -71,16 +73,20 @@ class Subprocess {
   int terminate();
   /// The exit status once it has ended: its exit code, or -1 if a signal ended it.
   std::optional<int> exit_status() const { return status_; }
+  /// Once it has ended, the most memory it held at once (its peak resident set, in
+  /// bytes, as the kernel counted it); 0 before, or if not known.
+  std::uint64_t peak_bytes() const { return peak_bytes_; }
 
   /// Waits for whichever of `children` (not empty, each still running) ends first; its index.
   static std::size_t wait_any(std::vector<Subprocess>& children);
 
  private:
-  void ended(int wait_status);
+  void ended(int wait_status, const rusage& usage);
   void close_pipe();
   pid_t pid_ = -1;
   int pipe_ = -1;  // the read end of the child's piped stream, if any
   std::optional<int> status_;
+  std::uint64_t peak_bytes_ = 0;
 };
 
 }  // namespace rigid::support

@@ -1,0 +1,35 @@
+// How much memory a run may use: what the system says it can have, within the limits
+// set on it, or what the user states. A run that draws large images checks its need
+// against this before any work, and `rigidlab figures` runs as many labs at once as
+// fit in it: a machine with many processors and little memory is not an
+// out-of-memory kill midway.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace rigid::support {
+
+/// The environment variable that states the budget, in MiB (a whole number, 1 or more).
+inline constexpr char kMemoryBudgetVariable[] = "RIGIDLAB_MEMORY_MB";
+
+/// What a run may use: its bytes, and where the number comes from, as a person reads it
+/// ("RIGIDLAB_MEMORY_MB=500", "the memory available", "the control group's limit").
+struct MemoryBudget {
+  std::uint64_t bytes = 0;
+  std::string source;
+};
+
+/// The budget: RIGIDLAB_MEMORY_MB if set; else the memory available
+/// (MemAvailable in /proc/meminfo: free memory and what the kernel can reclaim without
+/// swapping), no more than what the run's control group has left below its limit
+/// (cgroup v2 memory.max, or v1 memory.limit_in_bytes). nullopt where none of them can
+/// be read. Throws std::invalid_argument naming the variable and its rule for a setting
+/// that is not a whole number of MiB from 1 to 2^40.
+std::optional<MemoryBudget> memory_budget();
+
+/// A number of bytes as a person reads it: "940 MB", "3.4 GB" (decimal units, 2 or 3 digits).
+std::string bytes_text(std::uint64_t bytes);
+
+}  // namespace rigid::support
