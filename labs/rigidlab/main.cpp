@@ -33,6 +33,7 @@
 #include "rigid/support/cli.h"
 #include "rigid/support/memory.h"
 #include "rigid/support/programs.h"
+#include "rigid/support/signals.h"
 #include "rigid/support/subprocess.h"
 #include "rigid/support/text.h"
 
@@ -120,11 +121,13 @@ int list(bool names_only) {
 // would end rigidlab is passed on to each (kill is async-signal-safe), which then
 // removes its temporaries and dies; rigidlab waits for them all and dies as asked.
 constexpr int kMaxChildren = 256;
-// Every signal whose default is to end the process and that a handler can catch, but
-// SIGPIPE (ignored: a failed write is reported) and SIGXFSZ (a file too large is a
-// failed write, seen as EFBIG).
-constexpr std::array<int, 10> kEnding = {SIGINT,  SIGTERM, SIGHUP,    SIGQUIT, SIGALRM,
-                                         SIGUSR1, SIGUSR2, SIGVTALRM, SIGPROF, SIGXCPU};
+// Every signal whose default is to end the process and that a handler can catch
+// (support/signals.h), but SIGPIPE, which rigidlab ignores (a failed write is reported).
+std::vector<int> ending_signals() {
+  std::vector<int> signals = rigid::support::ending_signals();
+  signals.erase(std::remove(signals.begin(), signals.end(), SIGPIPE), signals.end());
+  return signals;
+}
 volatile std::sig_atomic_t g_child[kMaxChildren] = {};
 volatile std::sig_atomic_t g_signal = 0;
 
@@ -136,7 +139,7 @@ extern "C" void forward_signal(int sig) {
 }
 
 void forward_signals() {
-  for (const int sig : kEnding) {
+  for (const int sig : ending_signals()) {
     struct sigaction action {};
     action.sa_handler = forward_signal;
     sigemptyset(&action.sa_mask);
@@ -170,7 +173,7 @@ std::optional<Subprocess> start(const std::string& lab, const std::vector<std::s
   // the lab starts with the mask rigidlab had.
   sigset_t block, old;
   sigemptyset(&block);
-  for (const int sig : kEnding) sigaddset(&block, sig);
+  for (const int sig : ending_signals()) sigaddset(&block, sig);
   ::sigprocmask(SIG_BLOCK, &block, &old);
   std::optional<Subprocess> child;
   try {

@@ -25,6 +25,8 @@
 #include <utility>
 #include <vector>
 
+#include "rigid/support/signals.h"
+
 namespace rigid::render {
 
 namespace {
@@ -79,18 +81,12 @@ extern "C" void remove_held_and_die(int sig) {
   std::raise(sig);
 }
 
-// The signals whose default is to end the process, asynchronous ones (a fault such
-// as SIGSEGV is a bug's, and SIGABRT the runtime's own), and the real-time ones.
-// SIGXFSZ is not among them: a file past the size limit (ulimit -f) is a failed
-// write, EFBIG, reported as any other.
+// The signals whose default is to end the process and that can be caught, but the
+// faults' and SIGXFSZ (support/signals.h).
 sigset_t terminating_signals() {
   sigset_t set;
   sigemptyset(&set);
-  for (const int sig : {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGALRM, SIGUSR1, SIGUSR2, SIGPIPE,
-                        SIGVTALRM, SIGPROF, SIGXCPU, SIGPOLL, SIGPWR}) {
-    sigaddset(&set, sig);
-  }
-  for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) sigaddset(&set, sig);
+  for (const int sig : support::ending_signals()) sigaddset(&set, sig);
   return set;
 }
 

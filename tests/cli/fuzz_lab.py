@@ -12,9 +12,12 @@ code) and runs it many times. Classes (each case's class is in its report line):
   file names  any name the filesystem accepts (up to 255 bytes, any byte but '/'
               and NUL) as --csv, beside decoys a careless cleanup would delete;
   figures     the numbers class's inputs with --figures: every valid run draws;
-  signals     SIGINT, SIGTERM, SIGHUP, SIGQUIT or SIGALRM at a random moment of a
-              run writing --csv and --figures;
-  full disk   --csv and --figures into a small tmpfs (where this user may mount).
+  signals     any signal that ends a process and can be caught (ENDING: the
+              real-time ones among them) at a random moment of a run writing --csv
+              and --figures;
+  full disk   --csv and --figures into a small tmpfs (where this user may mount);
+  same file   two outputs that name one file by different spellings (fuzz_outputs.py);
+  size limit  --csv and --figures under a random file-size limit (fuzz_outputs.py).
 Every run must keep the lab contract:
   - exit 0 with strict JSON on stdout (no NaN, no Infinity, valid UTF-8), or exit 2
     with one line on stderr of the form "LAB: error: --option: rule", escaped (no raw
@@ -108,6 +111,22 @@ def value_for(rng, kind, count, choices, defaults):
     if kind == "":
         return ""  # a flag
     return number(rng, defaults[0] if defaults else None)
+
+
+# Every signal whose default ends a process and that a handler can catch; not the
+# faults', not SIGXFSZ, which the labs ignore (support/signals.h).
+ENDING = [signal.SIGHUP, signal.SIGINT, signal.SIGQUIT, signal.SIGTERM, signal.SIGALRM,
+          signal.SIGUSR1, signal.SIGUSR2, signal.SIGPIPE, signal.SIGVTALRM, signal.SIGPROF,
+          signal.SIGXCPU, signal.SIGPOLL, signal.SIGPWR, signal.SIGSTKFLT] + list(
+              range(signal.SIGRTMIN, signal.SIGRTMAX + 1))
+
+
+
+def signal_name(sig):
+    """SIGHUP, or SIGRTMIN+3 for a real-time signal (which has no name of its own)."""
+    if signal.SIGRTMIN < sig < signal.SIGRTMAX:
+        return f"SIGRTMIN+{sig - signal.SIGRTMIN}"
+    return signal.Signals(sig).name
 
 
 BIDI = {chr(c) for c in list(range(0x202A, 0x202F)) + list(range(0x2066, 0x206A))}
@@ -230,19 +249,25 @@ def children_cpu():
     return usage.ru_utime + usage.ru_stime
 
 
-def cpu_bound(seconds):
-    """A child's limit of CPU time: the kernel stops it with SIGXCPU just past it."""
+def cpu_bound(seconds, limits=()):
+    """A child's limit of CPU time: the kernel stops it with SIGXCPU just past it; and
+    the other (resource, value) limits asked for."""
     limit = int(seconds) + 1
-    return lambda: resource.setrlimit(resource.RLIMIT_CPU, (limit, limit + 1))
+
+    def bound():
+        resource.setrlimit(resource.RLIMIT_CPU, (limit, limit + 1))
+        for which, value in limits:
+            resource.setrlimit(which, (value, value))
+    return bound
 
 
-def run(argv, cwd, cpu_seconds):
+def run(argv, cwd, cpu_seconds, limits=()):
     """One run and the CPU seconds it spent; runs are one at a time, so the children's
     total grows by this run's alone. The clock only stops a run that has stopped
     working (a hang), at twenty times its work bound."""
     before = children_cpu()
     proc = subprocess.run(argv, capture_output=True, timeout=20 * cpu_seconds, cwd=cwd,
-                          preexec_fn=cpu_bound(cpu_seconds))
+                          preexec_fn=cpu_bound(cpu_seconds, limits))
     return proc, children_cpu() - before
 
 
@@ -298,6 +323,7 @@ class Fuzz:
         options = options_of(args.lab)
         help_text = subprocess.run([args.lab, "--help"], capture_output=True, text=True).stdout
         self.has_csv, self.has_figures = "--csv" in help_text, "--figures" in help_text
+        self.has_animate = "--animate" in help_text
         self.writes = self.has_csv or self.has_figures
         self.physical = [o for o in options if o[0] not in ("--json", "--quiet", "--csv")]
         self.words = [o for o in self.physical if o[3]]
@@ -312,11 +338,11 @@ class Fuzz:
             print(f"FAIL {self.lab_name} [{cls}]: {shown!r}"[:600]
                   + f": {'; '.join(problems)}"[:600])
 
-    def attempt(self, cls, argv, workdir, **kw):
+    def attempt(self, cls, argv, workdir, limits=(), **kw):
         """(process, problems) of a run, or None when it hung (reported here)."""
         limit = self.args.cpu_seconds
         try:
-            proc, cpu = run(argv, workdir, limit)
+            proc, cpu = run(argv, workdir, limit, limits)
         except subprocess.TimeoutExpired:
             self.report(cls, argv, [f"hung (alive after {20 * limit:.0f} s on the clock)"])
             return None
@@ -390,8 +416,7 @@ class Fuzz:
         finishes, with all its outputs or none."""
         csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
         argv = [self.lab, "--quiet"] + output_argv(self.has_csv, self.has_figures, csv, figures)
-        sig = self.rng.choice([signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT,
-                               signal.SIGALRM])
+        sig = self.rng.choice(ENDING)
         # no core file (SIGQUIT's default) among the run's outputs
         proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
                                 stderr=subprocess.PIPE, preexec_fn=no_core_dump)
@@ -413,8 +438,9 @@ class Fuzz:
             if not whole:
                 problems.append(f"killed by the signal with half its outputs: {landed}")
         else:
-            problems.append(f"exit status {proc.returncode} after {sig.name}: {err[-200:]!r}")
-        self.report("signals", argv + [sig.name], problems)
+            problems.append(f"exit status {proc.returncode} after {signal_name(sig)}: "
+                            f"{err[-200:]!r}")
+        self.report("signals", argv + [signal_name(sig)], problems)
 
     def full_disk(self, cases):
         """--csv and --figures into a small tmpfs; whether it could be tried."""
@@ -459,6 +485,7 @@ class Fuzz:
 
 
 def main():
+    import fuzz_outputs  # its classes use this module's
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("lab")
     ap.add_argument("--cases", type=int, default=60, help="cases of the numbers class")
@@ -475,6 +502,8 @@ def main():
     fuzz.figures(args.class_cases)
     fuzz.signals(args.class_cases)
     mountable = fuzz.full_disk(args.class_cases)
+    fuzz_outputs.same_file(fuzz, args.class_cases)
+    fuzz_outputs.size_limit(fuzz, args.class_cases)
     return fuzz.summary(mountable)
 
 if __name__ == "__main__":
