@@ -13,7 +13,14 @@ namespace {
 // Every result is a product of at most five inputs (m a^2 omega^2, say); inside
 // this range of magnitudes no such product overflows or underflows a double.
 constexpr double kSmallest = 1e-60, kLargest = 1e60;
+// A number inside an input's own range that strtod rounds to zero.
+constexpr char kBelowDouble[] = "is below the smallest double, 4.9e-324, in magnitude";
 }  // namespace
+
+const char kNumberRule[] =
+    "Numbers: finite; an input with a range of its own (its help states it) is held to that "
+    "range alone, any other is 0 or between 1e-60 and 1e60 in magnitude (a positive one, "
+    "between 1e-60 and 1e60), so that no result overflows or underflows a double.";
 
 std::string json_key(const std::string& name) {
   std::string key = name.substr(name.find_first_not_of('-'));
@@ -79,18 +86,45 @@ InputRule& InputRule::choices(const std::vector<std::string>& names) {
   return *this;
 }
 InputRule& InputRule::excludes(const std::string& other, const std::string& rule) {
-  excludes_.push_back({other, rule});
+  pairings_.push_back({Pairing::Kind::kExcludes, {other}, rule});
   return *this;
 }
 InputRule& InputRule::requires_input(const std::string& other, const std::string& rule) {
-  requires_.push_back({other, rule});
+  return requires_any({other}, rule);
+}
+InputRule& InputRule::requires_any(const std::vector<std::string>& others,
+                                   const std::string& rule) {
+  pairings_.push_back({Pairing::Kind::kRequires, others, rule});
   return *this;
+}
+
+std::string Pairing::stated() const {
+  std::string names;
+  for (std::size_t i = 0; i < others.size(); ++i) {
+    names += (i == 0 ? "" : i + 1 == others.size() ? " or " : ", ") + others[i];
+  }
+  return (kind == Kind::kExcludes ? "not with " : "only with ") + names;
+}
+
+void check_pairings(const std::vector<const InputRule*>& rules,
+                    const std::function<bool(const std::string&)>& given) {
+  for (const InputRule* rule : rules) {
+    if (!given(rule->flag())) continue;
+    for (const Pairing& p : rule->pairings()) {
+      const bool any = std::any_of(p.others.begin(), p.others.end(), given);
+      if (any == (p.kind == Pairing::Kind::kExcludes)) throw InputError(rule->flag(), p.rule);
+    }
+  }
 }
 
 std::string InputRule::description() const {
   std::string text = help_;
   if (!unit_.empty()) text += " [" + unit_ + "]";
-  if (!lab_default_.empty()) text += " (default: " + lab_default_ + ")";
+  std::string notes = range_text();
+  if (!lab_default_.empty())
+    notes += std::string(notes.empty() ? "" : "; ") + "default: " + lab_default_;
+  for (const Pairing& p : pairings_) notes += (notes.empty() ? "" : "; ") + p.stated();
+  if (!notes.empty()) text += " (" + notes + ")";
   return text;
 }
 
@@ -140,17 +174,31 @@ bool beyond_double(double value, const std::string& text) {
 
 }  // namespace
 
+bool InputRule::own_range() const {
+  return bound_ == Bound::kOpenRange || bound_ == Bound::kRangeFrom;
+}
+
+std::string InputRule::range_text() const {
+  const std::string unit = unit_.empty() ? "" : " " + unit_;
+  if (bound_ == Bound::kOpenRange)
+    return fmt::format("between {} and {}{}, exclusive", lo_, hi_, unit);
+  if (bound_ == Bound::kRangeFrom) return fmt::format("at least {} and below {}{}", lo_, hi_, unit);
+  return "";
+}
+
 std::string InputRule::broken(double value, const std::string& text) const {
   const auto fail = [&](const std::string& rule) {
     return rule + " (got " + quoted_text(text) + ")";
   };
+  const std::string range_rule = "must be " + range_text();
   const std::string magnitude_rule = bound_ == Bound::kPositive
                                          ? "must be between 1e-60 and 1e60"
                                          : "must be 0 or between 1e-60 and 1e60 in magnitude";
-  const std::string open_range_rule = fmt::format("must be between {} and {}{}, exclusive", lo_,
-                                                  hi_, unit_.empty() ? "" : " " + unit_);
   if (beyond_double(value, text)) {
-    return fail(bound_ == Bound::kOpenRange ? open_range_rule : magnitude_rule);
+    // An input with a range of its own is held to that range alone; a value inside it
+    // that no double holds (1e-400) is refused as such, not by the general magnitudes.
+    if (!own_range()) return fail(magnitude_rule);
+    return fail(std::isinf(value) ? range_rule : kBelowDouble);
   }
   if (!std::isfinite(value)) return fail("must be finite");
   switch (bound_) {
@@ -161,20 +209,16 @@ std::string InputRule::broken(double value, const std::string& text) const {
       if (value < 0.0) return fail("must not be negative");
       break;
     case Bound::kOpenRange:
-      if (!(value > lo_ && value < hi_)) return fail(open_range_rule);
+      if (!(value > lo_ && value < hi_)) return fail(range_rule);
       break;
     case Bound::kRangeFrom:
-      if (!(value >= lo_ && value < hi_)) {
-        return fail(fmt::format("must be at least {} and below {}{}", lo_, hi_,
-                                unit_.empty() ? "" : " " + unit_));
-      }
+      if (!(value >= lo_ && value < hi_)) return fail(range_rule);
       break;
     case Bound::kFinite:
       break;
   }
   const double magnitude = std::abs(value);
-  if (bound_ != Bound::kOpenRange && magnitude != 0.0 &&
-      (magnitude < kSmallest || magnitude > kLargest)) {
+  if (!own_range() && magnitude != 0.0 && (magnitude < kSmallest || magnitude > kLargest)) {
     return fail(magnitude_rule);
   }
   return "";
