@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "rigid/support/text.h"
+
 namespace rigid::lab {
 
 namespace {
@@ -141,9 +143,17 @@ std::string InputRule::word_list() const {
 std::string quoted_text(const std::string& text) {
   constexpr std::size_t kWhole = 40, kHead = 32;
   if (text.size() <= kWhole) return text;
+  // Never inside a character: back off over the continuation bytes of the one the cut
+  // falls in (at most 3; a longer run is invalid bytes, each shown escaped on the way out).
   std::size_t cut = kHead;
-  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
-  return fmt::format("{}... ({} characters)", text.substr(0, cut), text.size());
+  for (int k = 0; k < 3 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80; ++k) --cut;
+  // Its length in characters, an invalid byte one, as a terminal line shows it.
+  std::size_t characters = 0;
+  for (std::size_t i = 0; i < text.size(); ++characters) {
+    char32_t code = 0;
+    i += std::max(1, support::detail::utf8_sequence(text, i, code));
+  }
+  return fmt::format("{}... ({} characters)", text.substr(0, cut), characters);
 }
 
 namespace {

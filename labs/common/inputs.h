@@ -50,8 +50,9 @@ struct InputError : std::runtime_error {
   }
 };
 
-/// A user's text as an error message quotes it: whole up to 40 characters, else its
-/// first 32 and its length, so that a 100,000-digit number still makes a one-line error.
+/// A user's text as an error message quotes it: whole up to 40 bytes, else its first 32
+/// (less the part of a character the cut would split) and its length in characters, so
+/// that a 100,000-digit number still makes a one-line error.
 std::string quoted_text(const std::string& text);
 
 /// Runs `compute`; an std::invalid_argument from core (a physics rule broken by

@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "common/inputs.h"
 #include "common/report.h"
 #include "common/writers.h"
 #include "rigid/support/text.h"
@@ -88,4 +90,52 @@ TEST_CASE("lab common: user text is shown byte for byte and cannot act on a term
                       "31m") == "\\u{009b}31m");
   CHECK(terminal_safe("abc\xe2\x80\xae"
                       "def\xe2\x81\xa6") == "abc\\u{202e}def\\u{2066}");
+}
+
+TEST_CASE("lab common: a long value is quoted in whole characters wherever the cut falls") {
+  using rigid::lab::quoted_text;
+  using rigid::support::utf8_safe;
+  // A character of 2, 3 and 4 bytes, then bytes that are no character (a stray
+  // continuation, 0xff, a sequence cut short, an overlong '/', a surrogate, beyond
+  // U+10FFFF, a 4-byte one cut short), each after 0 to 40 ASCII bytes: the cut at byte 32
+  // falls on every byte of each.
+  struct Piece {
+    std::string bytes;
+    bool valid;
+  };
+  const std::vector<Piece> pieces{
+      {"\xc3\xa9", true},     {"\xe2\x82\xac", true},  {"\xf0\x9f\x8e\xbe", true},
+      {"\x80", false},        {"\xff", false},         {"\xe2\x82", false},
+      {"\xc0\xaf", false},    {"\xed\xa0\x80", false}, {"\xf4\x90\x80\x80", false},
+      {"\xf0\x9f\x8e", false}};
+  int cuts = 0;
+  for (const Piece& piece : pieces) {
+    for (std::size_t lead = 0; lead <= 40; ++lead) {
+      constexpr std::size_t kRepeats = 45;  // past 40 bytes with no ASCII before
+      std::string text(lead, 'a');
+      for (std::size_t k = 0; k < kRepeats; ++k) text += piece.bytes;
+      const std::string quoted = quoted_text(text);
+      INFO("text " << utf8_safe(text) << ", quoted " << utf8_safe(quoted));
+      const std::size_t dots = quoted.rfind("... (");
+      REQUIRE(dots != std::string::npos);
+      const std::string head = quoted.substr(0, dots);
+      // the first 32 bytes, less at most the 3 of a character the cut would split
+      CHECK(text.compare(0, head.size(), head) == 0);
+      CHECK(head.size() <= 32);
+      CHECK(head.size() >= 29);
+      // whole characters: shown as the tree shows text (an invalid byte as \xNN), the
+      // head is the start of the text shown; a split character would show as escapes
+      const std::string shown = utf8_safe(head);
+      CHECK(utf8_safe(text).compare(0, shown.size(), shown) == 0);
+      if (piece.valid) CHECK(shown == head);
+      // the length in characters, an invalid byte one
+      const std::size_t characters = lead + kRepeats * (piece.valid ? 1 : piece.bytes.size());
+      CHECK(quoted.substr(dots) == "... (" + std::to_string(characters) + " characters)");
+      ++cuts;
+    }
+  }
+  CHECK(cuts == 410);
+  // Short text is quoted whole, whatever its bytes.
+  CHECK(quoted_text(std::string(40, 'x')) == std::string(40, 'x'));
+  CHECK(quoted_text("\xe2\x82\xac\xff") == "\xe2\x82\xac\xff");
 }
