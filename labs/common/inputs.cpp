@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "rigid/support/text.h"
@@ -15,14 +16,18 @@ namespace {
 // Every result is a product of at most five inputs (m a^2 omega^2, say); inside
 // this range of magnitudes no such product overflows or underflows a double.
 constexpr double kSmallest = 1e-60, kLargest = 1e60;
-// A number inside an input's own range that strtod rounds to zero.
-constexpr char kBelowDouble[] = "is below the smallest double, 4.9e-324, in magnitude";
+// A number inside an input's own range that a double holds with fewer digits (a
+// subnormal, which turned 5e-324 deg into a zero angle), or not at all (1e-400).
+constexpr char kBelowNormal[] =
+    "is nonzero and below 2.2e-308 in magnitude, where a double loses "
+    "its digits";
 }  // namespace
 
 const char kNumberRule[] =
     "Numbers: finite; an input with a range of its own (its help states it) is held to that "
-    "range alone, any other is 0 or between 1e-60 and 1e60 in magnitude (a positive one, "
-    "between 1e-60 and 1e60), so that no result overflows or underflows a double.";
+    "range, and if nonzero to at least 2.2e-308 in magnitude (where a double keeps all its "
+    "digits); any other is 0 or between 1e-60 and 1e60 in magnitude (a positive one, between "
+    "1e-60 and 1e60), so that no result overflows or underflows a double.";
 
 std::string json_key(const std::string& name) {
   std::string key = name.substr(name.find_first_not_of('-'));
@@ -208,7 +213,7 @@ std::string InputRule::broken(double value, const std::string& text) const {
     // An input with a range of its own is held to that range alone; a value inside it
     // that no double holds (1e-400) is refused as such, not by the general magnitudes.
     if (!own_range()) return fail(magnitude_rule);
-    return fail(std::isinf(value) ? range_rule : kBelowDouble);
+    return fail(std::isinf(value) ? range_rule : kBelowNormal);
   }
   if (!std::isfinite(value)) return fail("must be finite");
   switch (bound_) {
@@ -228,6 +233,9 @@ std::string InputRule::broken(double value, const std::string& text) const {
       break;
   }
   const double magnitude = std::abs(value);
+  if (own_range() && magnitude != 0.0 && magnitude < std::numeric_limits<double>::min()) {
+    return fail(kBelowNormal);
+  }
   if (!own_range() && magnitude != 0.0 && (magnitude < kSmallest || magnitude > kLargest)) {
     return fail(magnitude_rule);
   }

@@ -171,10 +171,10 @@ class InputRule {
   /// That range in words ("at least 0 and below 45 deg"), "" if none.
   std::string range_text() const;
   /// The rule a number (one component, as `text` was given) breaks, "" if none.
-  /// Every number is finite. One with a range of its own is held to that range
-  /// alone; any other, if nonzero, lies between 1e-60 and 1e60 in magnitude
-  /// (kNumberRule): every result is a product of at most five inputs, which then
-  /// neither overflows nor underflows a double.
+  /// Every number is finite. One with a range of its own is held to that range and,
+  /// if nonzero, to a normal double's magnitude (2.2e-308 up); any other, if nonzero,
+  /// lies between 1e-60 and 1e60 in magnitude (kNumberRule): every result is a product
+  /// of at most five inputs, which then neither overflows nor underflows a double.
   std::string broken(double value, const std::string& text) const;
   /// The rule a whole value breaks (each component, a vector's nonzero rule, a
   /// choice's words), "" if none.
