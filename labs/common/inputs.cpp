@@ -130,7 +130,17 @@ std::string InputRule::description() const {
   std::string notes = range_text();
   if (!lab_default_.empty())
     notes += std::string(notes.empty() ? "" : "; ") + "default: " + lab_default_;
-  for (const Pairing& p : pairings_) notes += (notes.empty() ? "" : "; ") + p.stated();
+  // the alternatives excluded stated as one ("not with --ellipsoid, --mass or --box")
+  Pairing excluded{Pairing::Kind::kExcludes, {}, ""};
+  for (const Pairing& p : pairings_) {
+    if (p.kind == Pairing::Kind::kExcludes) {
+      excluded.others.insert(excluded.others.end(), p.others.begin(), p.others.end());
+    }
+  }
+  if (!excluded.others.empty()) notes += (notes.empty() ? "" : "; ") + excluded.stated();
+  for (const Pairing& p : pairings_) {
+    if (p.kind == Pairing::Kind::kRequires) notes += (notes.empty() ? "" : "; ") + p.stated();
+  }
   if (!notes.empty()) text += " (" + notes + ")";
   return text;
 }

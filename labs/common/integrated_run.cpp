@@ -38,8 +38,8 @@ InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,
   // collapses (tolerances under 1e-150 crashed it). Every method is compared, so both
   // settings act whatever --method is (an unused one is warned of: integration_options).
   t.number("--tolerance", &IntegrationInputs::tolerance,
-           "relative and absolute tolerance of adaptive methods, double precision's reach up "
-           "(with a fixed-step --method only the comparison of every method uses it)")
+           "relative and absolute tolerance of adaptive methods (with a fixed-step --method "
+           "only the comparison of every method uses it)")
       .range_from(1e-16, 1.0)
       .numerical();
   t.number("--step", &IntegrationInputs::step,
