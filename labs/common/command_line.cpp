@@ -51,6 +51,7 @@ CommandLine::CommandLine(const std::string& name, const std::string& title,
                          const std::vector<BoundInput>& inputs, bool csv, bool animation)
     : app_(title, name), csv_enabled_(csv), animation_enabled_(animation) {
   options_.lab = name;
+  app_.footer(kNumberRule);
   add_run_options();
   add_figure_options();
   app_.set_version_flag("--version", name + " (rigidlab) " + std::string(RIGID_VERSION),
@@ -67,22 +68,44 @@ CommandLine::CommandLine(const std::string& name, const std::string& title,
   }
 }
 
+InputRule& CommandLine::own_option(const std::string& flag, const std::string& help) {
+  return own_.emplace_back(InputKind::kFlag, flag, help);
+}
+
 void CommandLine::add_run_options() {
   app_.add_flag("--json", options_.json, "print one JSON object on stdout instead of the table");
-  app_.add_flag("--quiet", options_.quiet, "print no table (files are still written)");
+  // with --json it does nothing, and is taken: a script asks for "the JSON, nothing else"
+  app_.add_flag("--quiet", options_.quiet,
+                "print no table (files are still written; the JSON of --json still prints)");
   // taken before parsing (run_command): the other options are the explorer's to check
   app_.add_flag("--explore",
                 "open this lab live in a window with the inputs given (rigidlab-explore)");
-  app_.add_flag("--timing", options_.timing,
-                "with --json: the wall time of each figure and where it went, for bench/");
+  // it times the drawing of figures and frames, and says so only in the JSON
+  std::vector<std::string> drawn{"--figures"};
+  if (animation_enabled_) drawn.emplace_back("--animate");
+  const InputRule& timing =
+      own_option("--timing",
+                 "the wall time of each figure (and frame) and where it went, in the "
+                 "JSON, for bench/")
+          .requires_input("--json", "its times are in the JSON: give --json too")
+          .requires_any(drawn, "times the drawing: give --figures DIR" +
+                                   std::string(animation_enabled_ ? " or --animate FILE" : "") +
+                                   " too");
+  app_.add_flag("--timing", options_.timing, timing.description());
 }
 
 void CommandLine::add_figure_options() {
   app_.add_option("--figures", options_.figures_dir, "write this lab's figures into DIR")
       ->type_name("DIR");
+  const auto figure_option = [this](const std::string& flag, const std::string& help) {
+    return own_option(flag, help)
+        .requires_input("--figures", "sets the figures: give --figures DIR too")
+        .description();
+  };
   app_.add_option("--figure-format", figure_format_name_,
-                  "png, or svg or pdf for slides and papers (a plot's lines and text as vectors, "
-                  "a 3D scene as its image at --figure-size)")
+                  figure_option("--figure-format",
+                                "png, or svg or pdf for slides and papers (a plot's lines and text "
+                                "as vectors, a 3D scene as its image at --figure-size)"))
       ->type_name("FORMAT")
       ->capture_default_str()
       ->check(CLI::Validator(
@@ -93,14 +116,16 @@ void CommandLine::add_figure_options() {
           },
           ""));
   // The figure style is laid out for 800x600 and up; 8192 bounds memory.
-  app_.add_option("--figure-size", figure_size_, "figure size in pixels, 800x600 to 8192x8192")
+  app_.add_option("--figure-size", figure_size_,
+                  figure_option("--figure-size", "figure size in pixels, 800x600 to 8192x8192"))
       ->type_name("WxH")
       ->capture_default_str()
       ->check(
           size_check({800, 600, 8192, 8192, false}, options_.figure_width, options_.figure_height));
   app_.add_option("--figure-prefix", options_.figure_prefix,
-                  "prefix of the figure files, e.g. 'book-' for book-poinsot_omega.png (letters, "
-                  "digits, '-', '_' and '.')")
+                  figure_option("--figure-prefix",
+                                "prefix of the figure files, e.g. 'book-' for "
+                                "book-poinsot_omega.png (letters, digits, '-', '_' and '.')"))
       ->type_name("TEXT")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
@@ -122,21 +147,29 @@ void CommandLine::add_animation_options(bool has_t_end) {
                   "write the motion as an animation to FILE: .mp4 (H.264, for players and "
                   "slides) or .webp (animated WebP, for browsers and READMEs)")
       ->type_name("FILE");
-  app_.add_option("--fps", options_.animation_fps, "frames a second of the animation, 1 to 120")
+  const auto film_option = [this](const std::string& flag, const std::string& help) {
+    return own_option(flag, help)
+        .requires_input("--animate", "sets the animation: give --animate FILE too")
+        .description();
+  };
+  app_.add_option("--fps", options_.animation_fps,
+                  film_option("--fps", "frames a second of the animation, 1 to 120"))
       ->type_name("NUMBER")
       ->capture_default_str()
       ->transform(in_range(1.0, 120.0, "a number"));
   // The film shows the lab's whole motion: to --t-end where the lab has one.
   app_.add_option("--duration", options_.animation_duration,
-                  std::string("length of the animation in seconds, 0.1 to 600 (") +
-                      (has_t_end ? "the motion to --t-end is shown in it)"
-                                 : "the lab's motion is shown in it)"))
+                  film_option("--duration", std::string("length of the animation in seconds, "
+                                                        "0.1 to 600 (") +
+                                                (has_t_end ? "the motion to --t-end is shown in it)"
+                                                           : "the lab's motion is shown in it)")))
       ->type_name("NUMBER")
       ->capture_default_str()
       ->transform(in_range(0.1, 600.0, "a number of seconds"));
   // H.264's 4:2:0 chroma needs even sizes; the figure style is laid out from 320x240 up
-  app_.add_option("--animation-size", animation_size_,
-                  "animation size in pixels, even, 320x240 to 3840x2160")
+  app_.add_option(
+          "--animation-size", animation_size_,
+          film_option("--animation-size", "animation size in pixels, even, 320x240 to 3840x2160"))
       ->type_name("WxH")
       ->capture_default_str()
       ->check(size_check({320, 240, 3840, 2160, true}, options_.animation_width,
@@ -226,8 +259,9 @@ std::optional<int> CommandLine::parse(int argc, char** argv) {
     return app_.exit(e);
   }
   store();
-  check_output_paths();
+  check_renderer();
   check_pairings();
+  check_output_paths();
   return std::nullopt;
 }
 
@@ -278,7 +312,8 @@ bool CommandLine::given(const std::string& flag) const {
   for (const Slot& slot : slots_) {
     if (slot.input->rule->flag() == flag) return given(slot);
   }
-  return app_.count(flag) > 0;
+  const CLI::Option* option = app_.get_option_no_throw(flag);
+  return option != nullptr && option->count() > 0;
 }
 
 // The value of a given input, as CLI11 stored it.
@@ -325,18 +360,14 @@ void CommandLine::store() {
   }
 }
 
-// Alternatives given together, and inputs given without the one they go with.
+// Alternatives given together, and options given without the one they act with: the
+// command's own options, then the lab's inputs, by the one check a live session's
+// inputs are held to as well.
 void CommandLine::check_pairings() const {
-  for (const Slot& slot : slots_) {
-    if (!given(slot)) continue;
-    const InputRule& rule = *slot.input->rule;
-    for (const auto& pairing : rule.exclusions()) {
-      if (given(pairing.other)) throw InputError(rule.flag(), pairing.rule);
-    }
-    for (const auto& pairing : rule.requirements()) {
-      if (!given(pairing.other)) throw InputError(rule.flag(), pairing.rule);
-    }
-  }
+  std::vector<const InputRule*> rules;
+  for (const InputRule& rule : own_) rules.push_back(&rule);
+  for (const Slot& slot : slots_) rules.push_back(slot.input->rule);
+  lab::check_pairings(rules, [this](const std::string& flag) { return given(flag); });
 }
 
 std::string CommandLine::given_among(const std::vector<std::string>& joint) const {
@@ -379,13 +410,7 @@ void CommandLine::check_renderer() const {
 
 void CommandLine::check_animation_path() const {
   const CommandOptions& o = options_;
-  if (!animation_enabled_ || app_.count("--animate") == 0) {
-    for (const char* flag : {"--fps", "--duration", "--animation-size"}) {
-      if (animation_enabled_ && app_.count(flag) > 0)
-        throw InputError(flag, "sets the animation: give --animate FILE too");
-    }
-    return;
-  }
+  if (!animation_enabled_ || app_.count("--animate") == 0) return;
   if (o.animation_path.empty()) throw InputError("--animate", "needs a file name");
   if (!animation_format_known(o.animation_path)) {
     throw InputError("--animate", "the file name must end in .mp4 or .webp (got '" +
@@ -415,16 +440,9 @@ void CommandLine::check_animation_path() const {
 
 void CommandLine::check_output_paths() const {
   const CommandOptions& o = options_;
-  check_renderer();
   check_animation_path();
   if (app_.count("--figures") > 0 && o.figures_dir.empty()) {
     throw InputError("--figures", "needs a directory name");
-  }
-  // as the animation's options without --animate: a setting for nothing is not ignored
-  if (app_.count("--figures") == 0) {
-    for (const char* flag : {"--figure-format", "--figure-size", "--figure-prefix"}) {
-      if (app_.count(flag) > 0) throw InputError(flag, "sets the figures: give --figures DIR too");
-    }
   }
   if (!o.figures_dir.empty()) {
     // a figure's file: PREFIX + LAB + "_" + its name (a word of at most 32 bytes) + ".png",

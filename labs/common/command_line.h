@@ -52,6 +52,9 @@ class CommandLine {
     std::string text;  // a vector's or pair's text (or word) as given
   };
 
+  /// The command's own option `flag` as a rule: its help and how it goes with the other
+  /// options (a setting for an output not asked for), checked with the lab's inputs'.
+  InputRule& own_option(const std::string& flag, const std::string& help);
   void add_run_options();
   void add_figure_options();
   void add_animation_options(bool has_t_end);
@@ -74,6 +77,7 @@ class CommandLine {
 
   CLI::App app_;
   std::list<Slot> slots_;
+  std::list<InputRule> own_;  // the command's own options' rules (their pairings)
   CommandOptions options_;
   bool csv_enabled_, animation_enabled_;
   // the options' texts as CLI11 stores them (and --help shows the defaults)

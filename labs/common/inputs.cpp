@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
+
+#include "rigid/support/text.h"
 
 namespace rigid::lab {
 
@@ -13,7 +16,18 @@ namespace {
 // Every result is a product of at most five inputs (m a^2 omega^2, say); inside
 // this range of magnitudes no such product overflows or underflows a double.
 constexpr double kSmallest = 1e-60, kLargest = 1e60;
+// A number inside an input's own range that a double holds with fewer digits (a
+// subnormal, which turned 5e-324 deg into a zero angle), or not at all (1e-400).
+constexpr char kBelowNormal[] =
+    "is nonzero and below 2.2e-308 in magnitude, where a double loses "
+    "its digits";
 }  // namespace
+
+const char kNumberRule[] =
+    "Numbers: finite; an input with a range of its own (its help states it) is held to that "
+    "range, and if nonzero to at least 2.2e-308 in magnitude (where a double keeps all its "
+    "digits); any other is 0 or between 1e-60 and 1e60 in magnitude (a positive one, between "
+    "1e-60 and 1e60), so that no result overflows or underflows a double.";
 
 std::string json_key(const std::string& name) {
   std::string key = name.substr(name.find_first_not_of('-'));
@@ -79,18 +93,55 @@ InputRule& InputRule::choices(const std::vector<std::string>& names) {
   return *this;
 }
 InputRule& InputRule::excludes(const std::string& other, const std::string& rule) {
-  excludes_.push_back({other, rule});
+  pairings_.push_back({Pairing::Kind::kExcludes, {other}, rule});
   return *this;
 }
 InputRule& InputRule::requires_input(const std::string& other, const std::string& rule) {
-  requires_.push_back({other, rule});
+  return requires_any({other}, rule);
+}
+InputRule& InputRule::requires_any(const std::vector<std::string>& others,
+                                   const std::string& rule) {
+  pairings_.push_back({Pairing::Kind::kRequires, others, rule});
   return *this;
+}
+
+std::string Pairing::stated() const {
+  std::string names;
+  for (std::size_t i = 0; i < others.size(); ++i) {
+    names += (i == 0 ? "" : i + 1 == others.size() ? " or " : ", ") + others[i];
+  }
+  return (kind == Kind::kExcludes ? "not with " : "only with ") + names;
+}
+
+void check_pairings(const std::vector<const InputRule*>& rules,
+                    const std::function<bool(const std::string&)>& given) {
+  for (const InputRule* rule : rules) {
+    if (!given(rule->flag())) continue;
+    for (const Pairing& p : rule->pairings()) {
+      const bool any = std::any_of(p.others.begin(), p.others.end(), given);
+      if (any == (p.kind == Pairing::Kind::kExcludes)) throw InputError(rule->flag(), p.rule);
+    }
+  }
 }
 
 std::string InputRule::description() const {
   std::string text = help_;
   if (!unit_.empty()) text += " [" + unit_ + "]";
-  if (!lab_default_.empty()) text += " (default: " + lab_default_ + ")";
+  std::string notes = range_text();
+  if (!lab_default_.empty())
+    notes += std::string(notes.empty() ? "" : "; ") + "default: " + lab_default_;
+  // the alternatives excluded stated as one ("not with --ellipsoid, --mass or --box")
+  Pairing excluded{Pairing::Kind::kExcludes, {}, ""};
+  for (const Pairing& p : pairings_) {
+    if (p.kind == Pairing::Kind::kExcludes) {
+      excluded.others.insert(excluded.others.end(), p.others.begin(), p.others.end());
+    }
+  }
+  if (!excluded.others.empty()) notes += (notes.empty() ? "" : "; ") + excluded.stated();
+  for (const Pairing& p : pairings_) {
+    if (p.kind == Pairing::Kind::kRequires) notes += (notes.empty() ? "" : "; ") + p.stated();
+  }
+  if (!notes.empty()) text += " (" + notes + ")";
   return text;
 }
 
@@ -107,9 +158,17 @@ std::string InputRule::word_list() const {
 std::string quoted_text(const std::string& text) {
   constexpr std::size_t kWhole = 40, kHead = 32;
   if (text.size() <= kWhole) return text;
+  // Never inside a character: back off over the continuation bytes of the one the cut
+  // falls in (at most 3; a longer run is invalid bytes, each shown escaped on the way out).
   std::size_t cut = kHead;
-  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
-  return fmt::format("{}... ({} characters)", text.substr(0, cut), text.size());
+  for (int k = 0; k < 3 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80; ++k) --cut;
+  // Its length in characters, an invalid byte one, as a terminal line shows it.
+  std::size_t characters = 0;
+  for (std::size_t i = 0; i < text.size(); ++characters) {
+    char32_t code = 0;
+    i += std::max(1, support::detail::utf8_sequence(text, i, code));
+  }
+  return fmt::format("{}... ({} characters)", text.substr(0, cut), characters);
 }
 
 namespace {
@@ -140,17 +199,31 @@ bool beyond_double(double value, const std::string& text) {
 
 }  // namespace
 
+bool InputRule::own_range() const {
+  return bound_ == Bound::kOpenRange || bound_ == Bound::kRangeFrom;
+}
+
+std::string InputRule::range_text() const {
+  const std::string unit = unit_.empty() ? "" : " " + unit_;
+  if (bound_ == Bound::kOpenRange)
+    return fmt::format("between {} and {}{}, exclusive", lo_, hi_, unit);
+  if (bound_ == Bound::kRangeFrom) return fmt::format("at least {} and below {}{}", lo_, hi_, unit);
+  return "";
+}
+
 std::string InputRule::broken(double value, const std::string& text) const {
   const auto fail = [&](const std::string& rule) {
     return rule + " (got " + quoted_text(text) + ")";
   };
+  const std::string range_rule = "must be " + range_text();
   const std::string magnitude_rule = bound_ == Bound::kPositive
                                          ? "must be between 1e-60 and 1e60"
                                          : "must be 0 or between 1e-60 and 1e60 in magnitude";
-  const std::string open_range_rule = fmt::format("must be between {} and {}{}, exclusive", lo_,
-                                                  hi_, unit_.empty() ? "" : " " + unit_);
   if (beyond_double(value, text)) {
-    return fail(bound_ == Bound::kOpenRange ? open_range_rule : magnitude_rule);
+    // An input with a range of its own is held to that range alone; a value inside it
+    // that no double holds (1e-400) is refused as such, not by the general magnitudes.
+    if (!own_range()) return fail(magnitude_rule);
+    return fail(std::isinf(value) ? range_rule : kBelowNormal);
   }
   if (!std::isfinite(value)) return fail("must be finite");
   switch (bound_) {
@@ -161,20 +234,19 @@ std::string InputRule::broken(double value, const std::string& text) const {
       if (value < 0.0) return fail("must not be negative");
       break;
     case Bound::kOpenRange:
-      if (!(value > lo_ && value < hi_)) return fail(open_range_rule);
+      if (!(value > lo_ && value < hi_)) return fail(range_rule);
       break;
     case Bound::kRangeFrom:
-      if (!(value >= lo_ && value < hi_)) {
-        return fail(fmt::format("must be at least {} and below {}{}", lo_, hi_,
-                                unit_.empty() ? "" : " " + unit_));
-      }
+      if (!(value >= lo_ && value < hi_)) return fail(range_rule);
       break;
     case Bound::kFinite:
       break;
   }
   const double magnitude = std::abs(value);
-  if (bound_ != Bound::kOpenRange && magnitude != 0.0 &&
-      (magnitude < kSmallest || magnitude > kLargest)) {
+  if (own_range() && magnitude != 0.0 && magnitude < std::numeric_limits<double>::min()) {
+    return fail(kBelowNormal);
+  }
+  if (!own_range() && magnitude != 0.0 && (magnitude < kSmallest || magnitude > kLargest)) {
     return fail(magnitude_rule);
   }
   return "";

@@ -50,8 +50,9 @@ struct InputError : std::runtime_error {
   }
 };
 
-/// A user's text as an error message quotes it: whole up to 40 characters, else its
-/// first 32 and its length, so that a 100,000-digit number still makes a one-line error.
+/// A user's text as an error message quotes it: whole up to 40 bytes, else its first 32
+/// (less the part of a character the cut would split) and its length in characters, so
+/// that a 100,000-digit number still makes a one-line error.
 std::string quoted_text(const std::string& text);
 
 /// Runs `compute`; an std::invalid_argument from core (a physics rule broken by
@@ -73,6 +74,10 @@ auto for_inputs(const std::vector<std::string>& inputs, Compute&& compute) -> de
   }
 }
 
+/// The rule every number keeps, stated once (--help's footer): a range of the input's own,
+/// or else the magnitudes of InputRule::broken.
+extern const char kNumberRule[];
+
 /// A name as a JSON key: "--tilt-deg" is "tilt_deg", "bulirsch-stoer" is "bulirsch_stoer".
 std::string json_key(const std::string& name);
 
@@ -89,6 +94,19 @@ enum class InputKind {
 /// a word (a choice, or a vector's word) or a switch.
 using InputValue =
     std::variant<std::monostate, double, Eigen::Vector2d, Eigen::Vector3d, std::string, bool>;
+
+/// How an option goes with others, as data: an alternative it excludes, or the options
+/// it acts only with (any one of them). An option that would do nothing, silently, in some
+/// company says so here; check_pairings enforces it at every front door (the command
+/// line, a live session, and the command's own options alike) and --help states it.
+struct Pairing {
+  enum class Kind { kExcludes, kRequires };
+  Kind kind;
+  std::vector<std::string> others;
+  std::string rule;  ///< what a refusal says: "give --axis or --axis-deg, not both"
+  /// As --help states it: "not with --axis", "only with --figures or --animate".
+  std::string stated() const;
+};
 
 /// One input's rule and description: what --help, the table's inputs line, a
 /// figure's title and a live view's widget show, and what a value must satisfy.
@@ -123,6 +141,8 @@ class InputRule {
   InputRule& excludes(const std::string& other, const std::string& rule);
   /// This input means something only with `other` (an option) given; else `rule` is broken.
   InputRule& requires_input(const std::string& other, const std::string& rule);
+  /// This input means something only with one of `others` given; else `rule` is broken.
+  InputRule& requires_any(const std::vector<std::string>& others, const std::string& rule);
 
   InputKind kind() const { return kind_; }
   const std::string& flag() const { return flag_; }  ///< "--tilt-deg"
@@ -143,16 +163,18 @@ class InputRule {
   /// "a|b|c"
   std::string word_list() const;
   bool takes_word(const std::string& text) const;
-  struct Pairing {
-    std::string other, rule;
-  };
-  const std::vector<Pairing>& exclusions() const { return excludes_; }
-  const std::vector<Pairing>& requirements() const { return requires_; }
+  /// How it goes with the other options, in the order declared.
+  const std::vector<Pairing>& pairings() const { return pairings_; }
 
+  /// Whether values are held to a range of the input's own (open_range, range_from).
+  bool own_range() const;
+  /// That range in words ("at least 0 and below 45 deg"), "" if none.
+  std::string range_text() const;
   /// The rule a number (one component, as `text` was given) breaks, "" if none.
-  /// Every number is finite, and nonzero ones lie between 1e-60 and 1e60 in
-  /// magnitude: every result is a product of at most five inputs, which then
-  /// neither overflows nor underflows a double.
+  /// Every number is finite. One with a range of its own is held to that range and,
+  /// if nonzero, to a normal double's magnitude (2.2e-308 up); any other, if nonzero,
+  /// lies between 1e-60 and 1e60 in magnitude (kNumberRule): every result is a product
+  /// of at most five inputs, which then neither overflows nor underflows a double.
   std::string broken(double value, const std::string& text) const;
   /// The rule a whole value breaks (each component, a vector's nonzero rule, a
   /// choice's words), "" if none.
@@ -181,7 +203,7 @@ class InputRule {
   Bound bound_ = Bound::kFinite;
   double lo_ = -1, hi_ = -1;
   std::vector<std::string> choices_, words_;
-  std::vector<Pairing> excludes_, requires_;
+  std::vector<Pairing> pairings_;
 };
 
 /// An input value as JSON: a number, an array, a word or a switch (null if absent).
@@ -346,28 +368,36 @@ class InputTable {
   std::vector<InputField<In>> fields_;
 };
 
+/// The first pairing (InputRule::pairings) that `rules`, in their order, break among the
+/// options `given` names, thrown as an InputError naming the option that declares it. The
+/// one check of pairings: the command line gives it what was typed, a lab's compute() (and
+/// so a live session) what its inputs set (given_inputs).
+void check_pairings(const std::vector<const InputRule*>& rules,
+                    const std::function<bool(const std::string&)>& given);
+
+/// Whether `in` gives input `flag`: an optional one has a value, any other differs from its
+/// default, as Session::arguments() would write it on a command line.
+template <class In>
+bool given_input(const InputTable<In>& table, const In& in, const std::string& flag) {
+  const InputField<In>* f = table.find(flag);
+  if (f == nullptr) return false;
+  const InputValue value = f->get(in);
+  return !std::holds_alternative<std::monostate>(value) && !(value == f->get(In{}));
+}
+
 /// The first rule `in` breaks, thrown as an InputError naming its input: each
-/// value's own rule, and two optional alternatives both given.
+/// value's own rule, then the pairings of the inputs it gives.
 template <class In>
 void check_inputs(const InputTable<In>& table, const In& in) {
+  std::vector<const InputRule*> rules;
   for (const InputField<In>& f : table.fields()) {
     const InputValue value = f.get(in);
     if (const std::string why = f.rule.broken(value); !why.empty()) {
       throw InputError(f.rule.flag(), why);
     }
+    rules.push_back(&f.rule);
   }
-  for (const InputField<In>& f : table.fields()) {
-    if (std::holds_alternative<std::monostate>(f.get(in)) || f.rule.lab_default_text().empty()) {
-      continue;
-    }
-    for (const InputRule::Pairing& p : f.rule.exclusions()) {
-      const InputField<In>* other = table.find(p.other);
-      if (other != nullptr && !other->rule.lab_default_text().empty() &&
-          !std::holds_alternative<std::monostate>(other->get(in))) {
-        throw InputError(f.rule.flag(), p.rule);
-      }
-    }
-  }
+  check_pairings(rules, [&](const std::string& flag) { return given_input(table, in, flag); });
 }
 
 /// The inputs a run records (JSON "inputs", the table's inputs line): every input

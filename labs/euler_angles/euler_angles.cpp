@@ -37,9 +37,19 @@ const InputTable<Inputs>& input_table() {
     t.number("--psi-deg", &Inputs::psi_deg, "psi: the third, about the body's 3 axis")
         .unit("deg")
         .symbol("\\psi");
-    t.number("--phi-dot", &Inputs::phi_dot, "phi's rate").unit("rad/s").symbol("\\phi-dot");
-    t.number("--theta-dot", &Inputs::theta_dot, "theta's rate").unit("rad/s").symbol("\\theta-dot");
-    t.number("--psi-dot", &Inputs::psi_dot, "psi's rate").unit("rad/s").symbol("\\psi-dot");
+    // --from-omega sets all three rates: a rate given beside it would be dropped
+    const struct {
+      const char *flag, *help, *symbol;
+      double Inputs::*field;
+    } rates[] = {{"--phi-dot", "phi's rate", "\\phi-dot", &Inputs::phi_dot},
+                 {"--theta-dot", "theta's rate", "\\theta-dot", &Inputs::theta_dot},
+                 {"--psi-dot", "psi's rate", "\\psi-dot", &Inputs::psi_dot}};
+    for (const auto& rate : rates) {
+      t.number(rate.flag, rate.field, rate.help)
+          .unit("rad/s")
+          .symbol(rate.symbol)
+          .excludes("--from-omega", "give the rates or --from-omega, not both");
+    }
     t.vector("--moments", &Inputs::moments, "a body's principal moments I1, I2, I3: L and T")
         .unit("kg m^2")
         .positive()

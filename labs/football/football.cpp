@@ -157,14 +157,14 @@ const InputTable<Inputs>& input_table() {
              "omega = 2 pi per sidereal day (86164.0905 s)")
         .symbol("body");
     t.pair("--inertia", &Inputs::inertia,
-           "moments I (transverse) and Is (symmetry axis), 0 < Is <= 2I; not with --preset")
+           "moments I (transverse) and Is (symmetry axis), 0 < Is <= 2I")
         .value_name("I,IS")
         .unit("kg m^2")
         .positive()
         .lab_default("the preset's")
         .excludes("--preset", kInertiaWithPreset);
     t.number("--moment-ratio", &Inputs::moment_ratio,
-             "Is / I with the preset's I (another Earth's flattening, say); not with --inertia")
+             "Is / I with the preset's I (another Earth's flattening, say)")
         .open_range(0.0, 2.0)
         .symbol("I_s/I")
         .lab_default("the preset's")

@@ -18,6 +18,9 @@ const char* const kTitle =
     "the tennis racquet theorem: the flip about the intermediate axis (section 4.1)";
 const char* const kAxisNames[] = {"1 (the handle)", "2 (in the plane, across the handle)",
                                   "3 (normal to the face)"};
+const char* const kInertiaOrModel =
+    "replaces the ring-and-rod model: give --inertia or the head's and handle's options, not "
+    "both";
 
 }  // namespace
 
@@ -45,7 +48,11 @@ const InputTable<Inputs>& input_table() {
              "intermediate), instead of the ring-and-rod model")
         .unit("kg m^2")
         .positive()
-        .lab_default("the ring-and-rod model's");
+        .lab_default("the ring-and-rod model's")
+        .excludes("--head-mass", kInertiaOrModel)
+        .excludes("--head-radius", kInertiaOrModel)
+        .excludes("--handle-mass", kInertiaOrModel)
+        .excludes("--handle-length", kInertiaOrModel);
     t.choice("--spin-axis", &Inputs::spin_axis, {"1", "2", "3"},
              "principal axis of the spin: 1 handle, 2 in the plane, 3 normal to the face")
         .symbol("axis");
@@ -77,14 +84,8 @@ namespace {
 void make_body(Report& report, const Inputs& in) {
   DrawnBody& body = report.body;
   if (in.inertia) {
-    // Any body: its moments replace the model's, axis 2 the intermediate as the lab's is.
-    const Inputs model;
-    if (in.head_mass != model.head_mass || in.head_radius != model.head_radius ||
-        in.handle_mass != model.handle_mass || in.handle_length != model.handle_length) {
-      throw InputError("--inertia",
-                       "replaces the ring-and-rod model: give --inertia or the "
-                       "head's and handle's options, not both");
-    }
+    // Any body: its moments replace the model's (the table refuses the model's options
+    // beside them), axis 2 the intermediate as the lab's is.
     const Vector3d given = *in.inertia;
     if (!(given(0) < given(1) && given(1) < given(2))) {
       throw InputError("--inertia", fmt::format("must be I1 < I2 < I3, axis 2 the intermediate as "

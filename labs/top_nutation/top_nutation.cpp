@@ -334,7 +334,7 @@ const InputTable<Inputs>& input_table() {
         .positive()
         .symbol("r");
     t.pair("--inertia", &Inputs::inertia,
-           "moments about the tip: I (transverse) and Is (symmetry axis); not with --disk-radius")
+           "moments about the tip: I (transverse) and Is (symmetry axis)")
         .value_name("I,IS")
         .unit("kg m^2")
         .positive()
