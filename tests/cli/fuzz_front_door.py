@@ -182,14 +182,9 @@ class FrontDoor:
                 argv = [self.rigidlab, "figures", "--out", out] + SIZE
                 sig = self.rng.choice(fuzz_lab.ENDING)
                 before = snapshot(workdir)
-                proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
-                                        stderr=subprocess.PIPE, preexec_fn=fuzz_lab.no_core_dump)
-                time.sleep(self.rng.uniform(0.0, 2.0))
-                proc.send_signal(sig)
-                try:
-                    _, err = proc.communicate(timeout=20 * self.args.cpu_seconds)
-                except subprocess.TimeoutExpired:
-                    proc.kill()
+                proc, err = fuzz_lab.signalled(argv, workdir, sig, self.rng.uniform(0.0, 2.0),
+                                               20 * self.args.cpu_seconds)
+                if proc is None:
                     self.report("signals", argv, ["did not end after the signal"])
                     continue
                 proc.stderr = err

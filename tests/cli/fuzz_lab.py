@@ -296,6 +296,23 @@ def all_or_none(landed, has_csv, has_figures):
     return all(asked) or not any(asked), all(asked)
 
 
+def signalled(argv, workdir, sig, delay, timeout):
+    """(process, stderr) of a run sent `sig` after `delay` seconds, or (None, None) if it
+    did not end within `timeout` after (then killed)."""
+    # no core file (SIGQUIT's default) among the run's outputs
+    proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, preexec_fn=no_core_dump)
+    time.sleep(delay)
+    proc.send_signal(sig)
+    try:
+        _, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
+        return None, None
+    return proc, err
+
+
 def no_core_dump():
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
 
@@ -417,15 +434,9 @@ class Fuzz:
         csv, figures = os.path.join(workdir, "out.csv"), os.path.join(workdir, "figs")
         argv = [self.lab, "--quiet"] + output_argv(self.has_csv, self.has_figures, csv, figures)
         sig = self.rng.choice(ENDING)
-        # no core file (SIGQUIT's default) among the run's outputs
-        proc = subprocess.Popen(argv, cwd=workdir, stdout=subprocess.DEVNULL,
-                                stderr=subprocess.PIPE, preexec_fn=no_core_dump)
-        time.sleep(self.rng.uniform(0.0, 0.4))
-        proc.send_signal(sig)
-        try:
-            _, err = proc.communicate(timeout=20 * self.args.cpu_seconds)
-        except subprocess.TimeoutExpired:
-            proc.kill()
+        proc, err = signalled(argv, workdir, sig, self.rng.uniform(0.0, 0.4),
+                              20 * self.args.cpu_seconds)
+        if proc is None:
             self.report("signals", argv, ["did not end after the signal"])
             return
         problems = leftovers(workdir)
