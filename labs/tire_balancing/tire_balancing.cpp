@@ -138,7 +138,7 @@ const InputTable<Inputs>& input_table() {
         .excludes("--omega", "give --omega or --road-speed, not both")
         .renamed_from("--road-speed-m-s");
     t.number("--tire-radius", &Inputs::tire_radius,
-             "rolling radius of the tire, with --road-speed (at least --radius)")
+             "rolling radius of the tire (at least --radius)")
         .unit("m")
         .positive()
         .requires_input("--road-speed", "sets the spin only with --road-speed")
