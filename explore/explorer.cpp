@@ -208,30 +208,40 @@ void Explorer::poll_recording() {
   say(ok ? "wrote " + support::terminal_safe(recording_->path)
          : "recording failed: " + support::terminal_safe(err),
       !ok);
-  // a script's failed write is its exit status, as a screenshot's is
-  if (!ok && script_) status_ = 1;
   recording_.reset();
+  // a script's failed write ends it, its exit status 1, as a screenshot's does
+  if (!ok) end_script(1);
 }
 
 void Explorer::after_render() {
   if (screenshot_path_.empty()) return;
   const std::string path = std::move(screenshot_path_);
   screenshot_path_.clear();
-  try {
-    render::write_png(window_.read_frame(), path);
-    say("wrote " + support::terminal_safe(path));
-  } catch (const std::exception& e) {
-    say(std::string("screenshot: ") + e.what(), true);
-    if (script_) status_ = 1;
+  // the path again, as it is written (the file system may have changed since it was given)
+  std::string error = output_refusal(path);
+  if (error.empty()) {
+    try {
+      render::write_png(window_.read_frame(), path);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
   }
+  say(error.empty() ? "wrote " + support::terminal_safe(path)
+                    : "screenshot: " + support::terminal_safe(error),
+      !error.empty());
+  if (!error.empty()) end_script(1);
 }
 
 void Explorer::step_script() {
-  if (script_ && !script_->step(*this)) {
-    if (script_->failed()) status_ = 1;
-    script_.reset();
-    if (window_.close) window_.close();
-  }
+  if (script_ && !script_->step(*this)) end_script(script_->status());
+}
+
+// The script's end: the window closes, and the exit status is the first failure's.
+void Explorer::end_script(int status) {
+  if (!script_) return;
+  if (status_ == 0) status_ = status;
+  script_.reset();
+  if (window_.close) window_.close();
 }
 
 }  // namespace rigid::explore
