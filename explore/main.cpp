@@ -191,8 +191,8 @@ void describe(CLI::App& app, Options& o) {
       "  export-json FILE | export-csv FILE | record FILE.mp4|FILE.webp\n"
       "  print-command | print-json             on stdout\n"
       "  quit\n"
-      "Blank lines and text after # are skipped. A wrong command is found before the window "
-      "opens (exit 2, naming the file and the line). Examples: explore/demos/.");
+      "Blank lines and text after # are skipped. " +
+      rigid::explore::script_rules() + " Examples: explore/demos/.");
   app.allow_extras();
   app.positionals_at_end(false);
 }
@@ -236,6 +236,11 @@ std::optional<int> read_options(int argc, char** argv, Options& o) {
         return refusal ? refusal->message : std::string();
       });
   if (!why.empty()) return fail("", why);
+  // a file's option given an empty name asks for no file: a slip, not a wish
+  for (const auto& [flag, name] :
+       {std::pair{"--script", &o.script_path}, std::pair{"--frame-log", &o.frame_log}}) {
+    if (app.count(flag) > 0 && name->empty()) return fail(flag, "needs a file name");
+  }
   if (!o.frame_log.empty()) {
     if (const std::string why = rigid::explore::output_refusal(o.frame_log); !why.empty())
       return fail("--frame-log", why);

@@ -60,6 +60,9 @@ constexpr std::size_t kScriptMaxBytes = 1 << 20;
 constexpr long kScriptMaxFrames = 18000;
 constexpr double kScriptMaxWaitSeconds = 600;
 
+/// The rules above in words, with their numbers (for --help).
+std::string script_rules();
+
 class Script {
  public:
   /// Reads and checks `path` (a regular file of at most kScriptMaxBytes); throws

@@ -231,6 +231,22 @@ std::string file_text(const std::string& path) {
 
 }  // namespace
 
+std::string script_rules() {
+  return fmt::format(
+      "A script is a regular file of at most {} bytes, read and checked whole before the window "
+      "opens: a wrong command, a number out of its span, a size, a lab's name, or a file it "
+      "would write that --csv would refuse (a link, a folder, a device, a pipe) is one line "
+      "naming the file, the line and the command, exit 2. The spans: play 0 to {:g} s, seek 0 "
+      "to {:g} s, speed {:g} to {:g}, turn -{:g} to {:g} degrees, zoom {:g} to {:g}, frames 0 "
+      "to {}, wait 0 to {:g} s; and in all, play and frames draw at most {} frames (a play "
+      "counted at the slowest speed the script can have then), wait and wait-for hold the "
+      "window at most {:g} s. What only the running lab can refuse (a scene it does not show) "
+      "ends the script with the same line, exit 2; a write that fails then, exit 1.",
+      kScriptMaxBytes, kMaxPlaySeconds, kMaxSeekSeconds, kMinSpeed, kMaxScriptSpeed, kMaxTurnDeg,
+      kMaxTurnDeg, kMinZoomFactor, kMaxZoomFactor, kScriptMaxFrames, kScriptMaxWaitSeconds,
+      kScriptMaxFrames, kScriptMaxWaitSeconds);
+}
+
 Script Script::read(const std::string& path, const std::vector<std::string>& labs) {
   return parse(file_text(path), path, labs);
 }

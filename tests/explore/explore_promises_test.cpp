@@ -206,6 +206,7 @@ TEST_CASE("explore: a script that is not a regular file of at most 1 MiB cannot 
       {"/dev/zero", "--script: /dev/zero: cannot be read (not a regular file)"},
       {(dir / "big.txt").string(), "cannot be read (longer than 1048576 bytes, a script's bound)"},
       {(dir / "none.txt").string(), "cannot be read (No such file or directory)"},
+      {"''", "--script: needs a file name"},
   };
   for (const auto& [path, says] : cases) {
     INFO(path);
