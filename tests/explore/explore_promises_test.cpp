@@ -20,12 +20,8 @@
 #include "rigid/render/png.h"
 #include "script.h"
 
-namespace fs = std::filesystem;
-using rigid::test::fresh_dir;
-using rigid::test::Headless;
-using rigid::test::read_file;
-using rigid::test::Run;
-using rigid::test::run_explorer;
+// a run, a fresh folder, the explorer without a window (explore_common.h)
+using namespace rigid::test;
 
 namespace {
 
