@@ -205,12 +205,22 @@ void Explorer::poll_recording() {
   std::string err = recording_->err;
   while (!err.empty() && err.back() == '\n') err.pop_back();
   if (const auto nl = err.rfind('\n'); nl != std::string::npos) err = err.substr(nl + 1);
-  say(ok ? "wrote " + support::terminal_safe(recording_->path)
-         : "recording failed: " + support::terminal_safe(err),
-      !ok);
+  const std::string path = recording_->path;
   recording_.reset();
-  // a script's failed write ends it, its exit status 1, as a screenshot's does
-  if (!ok) end_script(1);
+  if (ok) {
+    say("wrote " + support::terminal_safe(path));
+  } else {
+    failed_write("recording failed: " + support::terminal_safe(err));
+  }
+}
+
+// A write that failed: the status line's, and a script's end (its one line, exit 1).
+void Explorer::failed_write(const std::string& line) {
+  if (!script_) return say(line, true);
+  view_.message = line;
+  view_.message_error = true;
+  script_->abort(1, line);
+  end_script(1);
 }
 
 void Explorer::after_render() {
@@ -226,10 +236,11 @@ void Explorer::after_render() {
       error = e.what();
     }
   }
-  say(error.empty() ? "wrote " + support::terminal_safe(path)
-                    : "screenshot: " + support::terminal_safe(error),
-      !error.empty());
-  if (!error.empty()) end_script(1);
+  if (error.empty()) {
+    say("wrote " + support::terminal_safe(path));
+  } else {
+    failed_write("screenshot: " + support::terminal_safe(error));
+  }
 }
 
 void Explorer::step_script() {

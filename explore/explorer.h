@@ -110,6 +110,7 @@ class Explorer {
   void poll_recording();
   void step_script();
   void end_script(int status);
+  void failed_write(const std::string& line);
   void say(const std::string& text, bool error = false);
 
   std::vector<LabEntry> labs_;

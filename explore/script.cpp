@@ -27,6 +27,10 @@ bool Script::fail(const Command& c, int status, const std::string& error) {
   return false;
 }
 
+void Script::abort(int status, const std::string& error) {
+  if (status_ == 0 && next_ > 0) fail(commands_[next_ - 1], status, error);
+}
+
 // Whether the explorer can take the command now: not while a lab it asked for opens or a
 // recording is written, nor an export before the whole report has come.
 bool Script::ready(const Command& c, const Explorer& e) const {

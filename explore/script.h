@@ -85,6 +85,9 @@ class Script {
   /// Whether a `wait` is under way, or the explorer's work (its frames unpaced would
   /// only spin).
   bool waiting() const { return wait_until_.has_value() || blocked_; }
+  /// Ends the script at the command last run, its one line `error`, status `status` (a
+  /// failure the explorer met after the command: a recording's, a screenshot's).
+  void abort(int status, const std::string& error);
   /// 0, or the exit status its end asks: 2 for a command refused when it came, 1 for a
   /// failed write or a file awaited that did not come.
   int status() const { return status_; }

@@ -239,7 +239,9 @@ TEST_CASE("explore: a recording that cannot be written says why and the script e
   INFO(run.out << run.err);
   CHECK(run.status == 1);
   CHECK(run.one_error_line());
-  CHECK(run.err.find("recording failed: euler_angles: error: ") != std::string::npos);
+  CHECK(run.err.rfind("rigidlab-explore: error: --script: " + (dir / "session.txt").string() +
+                          ":1: recording failed: euler_angles: error: ",
+                      0) == 0);
   CHECK(run.out.find("euler_angles\n") == std::string::npos);  // the script ended there
   for (const auto& entry : fs::directory_iterator(dir))
     CHECK(entry.path().filename() == "session.txt");
