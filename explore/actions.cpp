@@ -28,4 +28,9 @@ std::string written_path(const Action& a) {
   return "";
 }
 
+bool writes_file(const Action& a) {
+  return !written_path(a).empty() || std::holds_alternative<action::Record>(a) ||
+         std::holds_alternative<action::Screenshot>(a);
+}
+
 }  // namespace rigid::explore

@@ -118,6 +118,9 @@ using Action =
 bool needs_whole_report(const Action& a);
 /// The file an export writes (a figure, the view, the JSON, the CSV); "" for another action.
 std::string written_path(const Action& a);
+/// Whether `a` writes a file (an export, a recording, a screenshot): its failure is a
+/// failed write.
+bool writes_file(const Action& a);
 
 /// The rule of an exported figure's size, and "1600x1200" read by it (false: broken).
 extern const char* const kFigureSizeRule;

@@ -5,6 +5,7 @@
 
 #include "explorer.h"
 #include "exports.h"
+#include "rigid/render/video.h"
 #include "rigid/support/programs.h"
 #include "rigid/support/text.h"
 
@@ -100,7 +101,7 @@ struct Explorer::Apply {
     // a script names the motion's strip by one word
     const lab::Animation* motion = s.animation();
     if (!a.scene && a.name == "strip" && motion != nullptr && motion->strip) at = names.begin();
-    if (at == names.end()) return s.name() + " shows no " + a.name;
+    if (at == names.end()) return s.name() + " shows no '" + a.name + "'";
     (a.scene ? e.view_.scene_choice : e.view_.plot_choice) = static_cast<int>(at - names.begin());
     return "";
   }
@@ -118,16 +119,17 @@ struct Explorer::Apply {
     return "";
   }
 
-  // ---- exports
+  // ---- exports (each checks its path again as it writes: exports.h)
   std::string operator()(const action::SaveFigure& a) const {
     int w = 0, h = 0;
     if (!read_figure_size(a.size, w, h)) return kFigureSizeRule;
+    if (std::string why = e.unavailable(a); !why.empty()) return why;
     return save_figure(*e.session_, a.name, a.path, a.format, w, h);
   }
   std::string operator()(const action::SaveView& a) const {
     int w = 0, h = 0;
     if (!read_figure_size(a.size, w, h)) return kFigureSizeRule;
-    if (e.scenes_.shown(*e.session_, e.view_) == nullptr) return "this lab draws no 3D scene";
+    if (std::string why = e.unavailable(a); !why.empty()) return why;
     try {
       return save_view(e.scenes_.view_scene(*e.session_, e.view_, w, h), a.path, w, h);
     } catch (const std::exception& ex) {
@@ -138,10 +140,17 @@ struct Explorer::Apply {
     return export_json(*e.session_, a.path);
   }
   std::string operator()(const action::ExportCsv& a) const {
+    if (std::string why = e.unavailable(a); !why.empty()) return why;
     return export_csv(*e.session_, a.path);
   }
   std::string operator()(const action::Record& a) const {
     if (e.recording_) return "a recording is under way";
+    if (std::string why = e.unavailable(a); !why.empty()) return why;
+    if (!render::video_format_for(a.path)) {
+      return "the file name must end in .mp4 or .webp (got '" + support::terminal_safe(a.path) +
+             "')";
+    }
+    if (std::string why = output_refusal(a.path); !why.empty()) return why;
     try {
       e.recording_.emplace(Recording{start_recording(*e.session_, a.path), a.path, ""});
     } catch (const std::system_error&) {
@@ -152,6 +161,7 @@ struct Explorer::Apply {
     return "";
   }
   std::string operator()(const action::Screenshot& a) const {
+    if (std::string why = output_refusal(a.path); !why.empty()) return why;
     e.screenshot_path_ = a.path;
     return "";
   }
@@ -165,6 +175,22 @@ struct Explorer::Apply {
 
 std::string Explorer::apply(const Action& action) {
   return std::visit(Apply{*this}, action);
+}
+
+std::string Explorer::unavailable(const Action& a) {
+  const std::string& lab = session_->name();
+  if (const auto* f = std::get_if<action::SaveFigure>(&a);
+      f != nullptr && figure_named(*session_, f->name) == nullptr)
+    return lab + " has no figure named '" + f->name + "'";
+  if (std::holds_alternative<action::SaveView>(a) && scenes_.shown(*session_, view_) == nullptr)
+    return "this lab draws no 3D scene";
+  if (std::holds_alternative<action::ExportCsv>(a)) {
+    session_->wait();  // the series the command line writes, from the whole report
+    if (session_->report().time_series().columns.empty()) return "this run has no time series";
+  }
+  if (std::holds_alternative<action::Record>(a) && session_->animation() == nullptr)
+    return lab + " has no motion to record";
+  return "";
 }
 
 }  // namespace rigid::explore

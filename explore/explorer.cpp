@@ -205,33 +205,54 @@ void Explorer::poll_recording() {
   std::string err = recording_->err;
   while (!err.empty() && err.back() == '\n') err.pop_back();
   if (const auto nl = err.rfind('\n'); nl != std::string::npos) err = err.substr(nl + 1);
-  say(ok ? "wrote " + support::terminal_safe(recording_->path)
-         : "recording failed: " + support::terminal_safe(err),
-      !ok);
-  // a script's failed write is its exit status, as a screenshot's is
-  if (!ok && script_) status_ = 1;
+  const std::string path = recording_->path;
   recording_.reset();
+  if (ok) {
+    say("wrote " + support::terminal_safe(path));
+  } else {
+    failed_write("recording failed: " + support::terminal_safe(err));
+  }
+}
+
+// A write that failed: the status line's, and a script's end (its one line, exit 1).
+void Explorer::failed_write(const std::string& line) {
+  if (!script_) return say(line, true);
+  view_.message = line;
+  view_.message_error = true;
+  script_->abort(1, line);
+  end_script(1);
 }
 
 void Explorer::after_render() {
   if (screenshot_path_.empty()) return;
   const std::string path = std::move(screenshot_path_);
   screenshot_path_.clear();
-  try {
-    render::write_png(window_.read_frame(), path);
+  // the path again, as it is written (the file system may have changed since it was given)
+  std::string error = output_refusal(path);
+  if (error.empty()) {
+    try {
+      render::write_png(window_.read_frame(), path);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  if (error.empty()) {
     say("wrote " + support::terminal_safe(path));
-  } catch (const std::exception& e) {
-    say(std::string("screenshot: ") + e.what(), true);
-    if (script_) status_ = 1;
+  } else {
+    failed_write("screenshot: " + support::terminal_safe(error));
   }
 }
 
 void Explorer::step_script() {
-  if (script_ && !script_->step(*this)) {
-    if (script_->failed()) status_ = 1;
-    script_.reset();
-    if (window_.close) window_.close();
-  }
+  if (script_ && !script_->step(*this)) end_script(script_->status());
+}
+
+// The script's end: the window closes, and the exit status is the first failure's.
+void Explorer::end_script(int status) {
+  if (!script_) return;
+  if (status_ == 0) status_ = status;
+  script_.reset();
+  if (window_.close) window_.close();
 }
 
 }  // namespace rigid::explore

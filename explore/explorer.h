@@ -61,6 +61,10 @@ class Explorer {
   std::string apply(const Action& action);
   /// Runs `script` (script.h) from the next frame, a step a frame.
   void run(std::unique_ptr<Script> script);
+  /// What an export or a recording names that the lab shown does not have (a figure, a
+  /// 3D scene, a time series, a motion): "" if it has it all. Waits for the whole report
+  /// where the answer is in it.
+  std::string unavailable(const Action& action);
 
   /// Applies what was queued, then builds this frame's UI (between ImGui::NewFrame and
   /// ImGui::Render) and draws the figures it shows into their textures; `seconds` is the
@@ -105,6 +109,8 @@ class Explorer {
   void toggle(const std::string& part);
   void poll_recording();
   void step_script();
+  void end_script(int status);
+  void failed_write(const std::string& line);
   void say(const std::string& text, bool error = false);
 
   std::vector<LabEntry> labs_;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/output_paths.h"
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/draw.h"
@@ -27,6 +28,7 @@ std::string shell_word(const std::string& word) {
 }
 
 std::string write_text(const std::string& path, const std::string& text) {
+  if (std::string why = output_refusal(path); !why.empty()) return why;
   try {
     render::write_text_atomically(path, text);
   } catch (const std::exception& e) {
@@ -37,11 +39,21 @@ std::string write_text(const std::string& path, const std::string& text) {
 
 }  // namespace
 
+std::string output_refusal(const std::string& path) {
+  try {
+    lab::check_output_file("", path);
+  } catch (const lab::InputError& e) {
+    return e.rule;
+  }
+  return "";
+}
+
 std::string save_figure(lab::Session& s, const std::string& name, const std::string& path,
                         render::FigureFormat format, int width, int height) {
   s.wait();  // the figure the command line draws, from the whole report
   const lab::NamedFigure* f = figure_named(s, name);
-  if (f == nullptr) return "save-figure: " + s.name() + " has no figure named " + name;
+  if (f == nullptr) return s.name() + " has no figure named '" + name + "'";
+  if (std::string why = output_refusal(path); !why.empty()) return why;
   try {
     std::visit(
         [&](const auto& figure) { render::save_figure(figure, path, format, width, height); },
@@ -54,6 +66,7 @@ std::string save_figure(lab::Session& s, const std::string& name, const std::str
 
 std::string save_view(const render::Scene3D& scene, const std::string& path, int width,
                       int height) {
+  if (std::string why = output_refusal(path); !why.empty()) return why;
   try {
     render::save_png(scene, path, width, height);
   } catch (const std::exception& e) {
@@ -98,8 +111,9 @@ support::Subprocess start_recording(const lab::Session& s, const std::string& pa
   for (const std::string& a : s.arguments()) args.push_back(a);
   for (const std::string& a : {std::string("--animate"), path, std::string("--quiet")})
     args.push_back(a);
-  return support::Subprocess(program, args,
-                             {support::Redirect::null(), support::Redirect::pipe(), nullptr});
+  support::Subprocess::Options options{support::Redirect::null(), support::Redirect::pipe()};
+  options.end_with_parent = true;
+  return support::Subprocess(program, args, options);
 }
 
 }  // namespace rigid::explore

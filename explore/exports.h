@@ -3,6 +3,13 @@
 // command line that reproduces the view, and an animation written by the lab's own
 // command in a child process. Each waits for the session's whole report (the explorer
 // asks for an export only once it has come). "" or the one line saying what failed.
+//
+// Every file the explorer writes is held to the command line's rules for an output
+// (output_paths.h, as `--csv` is): a regular file or none, never a link, a folder, a
+// device or a pipe, in a folder it can write, under a name the system takes; checked
+// when the path is given (a script is read, --frame-log) and again when it is written,
+// since the file system can change between. The file lands whole by one rename
+// (atomic_file.h), or not at all.
 #pragma once
 
 #include <string>
@@ -14,6 +21,10 @@
 
 namespace rigid::explore {
 
+/// "" if `path` may be written as an output, else the rule it breaks ("'PATH' is a
+/// symbolic link; give the file itself"), its user text escaped.
+std::string output_refusal(const std::string& path);
+
 std::string save_figure(lab::Session& s, const std::string& name, const std::string& path,
                         render::FigureFormat format, int width, int height);
 /// `scene`: the view as shown, at the size asked for.
@@ -24,8 +35,9 @@ std::string export_csv(lab::Session& s, const std::string& path);
 std::string json_text(lab::Session& s);
 /// The command line that reproduces the session's inputs, each word a shell reads as itself.
 std::string command_line(const lab::Session& s);
-/// `LAB ARGS --animate PATH --quiet` started, its stderr into a pipe this process reads;
-/// throws std::system_error if it cannot be started.
+/// `LAB ARGS --animate PATH --quiet` started, its stderr into a pipe this process reads,
+/// ended (SIGTERM, which removes its temporaries) if this process dies first; throws
+/// std::system_error if it cannot be started.
 support::Subprocess start_recording(const lab::Session& s, const std::string& path);
 
 }  // namespace rigid::explore

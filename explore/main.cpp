@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "explorer.h"
+#include "exports.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/context.h"
 #include "rigid/support/cli.h"
@@ -39,6 +40,27 @@ using rigid::support::terminal_safe;
 // The name its messages go by: its own, or the lab's when a lab's --explore ran it.
 std::string g_name = "rigidlab-explore";
 std::string g_glfw_error = "GLFW gave no reason";
+
+// The largest drawable, each side, in pixels: --size's bound, and the window's however
+// it is resized. Mesa's software renderer holds a window's buffers whole and draws them
+// all (16384 square: 3 GB and minutes a frame; 32767 square overflows them), so no
+// window is let grow past it: a window manager is told the limit, and where none keeps
+// it (Xvfb, a resize by xdotool) the window is put back to it before it is drawn.
+constexpr int kMaxDrawable = 8192;
+
+void cap_drawable(GLFWwindow* window) {
+  int fw = 0, fh = 0, ww = 0, wh = 0;
+  glfwGetFramebufferSize(window, &fw, &fh);
+  if (fw <= kMaxDrawable && fh <= kMaxDrawable) return;
+  glfwGetWindowSize(window, &ww, &wh);
+  // a window's size is in screen units, its drawable in pixels (2 a unit on a display
+  // scaled so)
+  const auto capped = [](int units, int pixels) {
+    if (pixels <= kMaxDrawable || units <= 0) return units;
+    return std::max(1, static_cast<int>(static_cast<long long>(units) * kMaxDrawable / pixels));
+  };
+  glfwSetWindowSize(window, capped(ww, fw), capped(wh, fh));
+}
 
 // The few GL calls the loop makes itself, from the window's context.
 struct WindowGl {
@@ -169,8 +191,8 @@ void describe(CLI::App& app, Options& o) {
       "  export-json FILE | export-csv FILE | record FILE.mp4|FILE.webp\n"
       "  print-command | print-json             on stdout\n"
       "  quit\n"
-      "Blank lines and text after # are skipped. A wrong command is found before the window "
-      "opens (exit 2, naming the file and the line). Examples: explore/demos/.");
+      "Blank lines and text after # are skipped. " +
+      rigid::explore::script_rules() + " Examples: explore/demos/.");
   app.allow_extras();
   app.positionals_at_end(false);
 }
@@ -203,7 +225,7 @@ std::optional<int> read_options(int argc, char** argv, Options& o) {
     for (const auto& l : o.labs) names += (names.empty() ? "" : ", ") + l.name;
     return fail("LAB", "'" + o.lab + "' is not a lab (one of " + names + ")");
   }
-  const auto read = rigid::lab::read_size(o.size, {640, 400, 8192, 8192, false});
+  const auto read = rigid::lab::read_size(o.size, {640, 400, kMaxDrawable, kMaxDrawable, false});
   if (const auto* why = std::get_if<std::string>(&read)) return fail("--size", *why);
   o.width = std::get<rigid::lab::Size>(read).width;
   o.height = std::get<rigid::lab::Size>(read).height;
@@ -214,10 +236,22 @@ std::optional<int> read_options(int argc, char** argv, Options& o) {
         return refusal ? refusal->message : std::string();
       });
   if (!why.empty()) return fail("", why);
+  // a file's option given an empty name asks for no file: a slip, not a wish
+  for (const auto& [flag, name] :
+       {std::pair{"--script", &o.script_path}, std::pair{"--frame-log", &o.frame_log}}) {
+    if (app.count(flag) > 0 && name->empty()) return fail(flag, "needs a file name");
+  }
+  if (!o.frame_log.empty()) {
+    if (const std::string why = rigid::explore::output_refusal(o.frame_log); !why.empty())
+      return fail("--frame-log", why);
+  }
   if (!o.script_path.empty()) {
+    std::vector<std::string> names;
+    for (const auto& l : o.labs) names.push_back(l.name);
     try {
-      o.script =
-          std::make_unique<rigid::explore::Script>(rigid::explore::Script::read(o.script_path));
+      o.script = std::make_unique<rigid::explore::Script>(
+          rigid::explore::Script::read(o.script_path, names));
+      o.script->errors_to(std::cerr, g_name + ": error: --script: ");
     } catch (const std::invalid_argument& e) {
       return fail("--script", e.what());
     }
@@ -246,6 +280,8 @@ GLFWwindow* open_window(const Options& o) {
     glfwTerminate();
     return nullptr;
   }
+  glfwSetWindowSizeLimits(window, GLFW_DONT_CARE, GLFW_DONT_CARE, kMaxDrawable, kMaxDrawable);
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { cap_drawable(w); });
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
   return window;
@@ -291,6 +327,7 @@ void draw_frame(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer
   ImGui::NewFrame();
   explorer.frame(seconds);
   ImGui::Render();
+  cap_drawable(window);
   int fw = 0, fh = 0;
   glfwGetFramebufferSize(window, &fw, &fh);
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -337,7 +374,10 @@ void loop(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer& expl
   }
 }
 
-void write_frame_log(const Options& o, const nlohmann::json& frames) {
+// The log written, its path checked again as it is (the file system may have changed
+// since the run began); "" or why it could not be.
+std::string write_frame_log(const Options& o, const nlohmann::json& frames) {
+  if (const std::string why = rigid::explore::output_refusal(o.frame_log); !why.empty()) return why;
   const auto& info = rigid::render::context();
   const nlohmann::json log = {{"lab", o.lab},
                               {"width", o.width},
@@ -345,7 +385,12 @@ void write_frame_log(const Options& o, const nlohmann::json& frames) {
                               {"gl_renderer", info.gl_renderer},
                               {"samples", info.samples},
                               {"frames", frames}};
-  rigid::render::write_text_atomically(o.frame_log, log.dump());
+  try {
+    rigid::render::write_text_atomically(o.frame_log, log.dump());
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
 }
 
 // The explorer in the window, to its end; the exit status.
@@ -369,7 +414,12 @@ int explore(GLFWwindow* window, Options& o) {
       nlohmann::json frames = nlohmann::json::array();
       loop(window, gl, explorer, !o.frame_log.empty(), frames);
       status = explorer.status();
-      if (!o.frame_log.empty()) write_frame_log(o, frames);
+      if (!o.frame_log.empty()) {
+        if (const std::string why = write_frame_log(o, frames); !why.empty()) {
+          std::cerr << g_name << ": error: --frame-log: " << terminal_safe(why) << '\n';
+          status = 1;
+        }
+      }
     }
   }
   ImGui_ImplOpenGL3_Shutdown();

@@ -1,10 +1,13 @@
 // A child program (subprocess.h), over posix_spawn: no fork of a large process, and a
-// failed exec is reported to the caller, not by the child.
+// failed exec is reported to the caller, not by the child. A child that must die with
+// its parent is forked (the request is made between fork and exec), its failed exec
+// told through a close-on-exec pipe.
 #include "rigid/support/subprocess.h"
 
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -60,6 +63,34 @@ Subprocess::Subprocess(const std::filesystem::path& path, const std::vector<std:
   if (piped && ::pipe2(ends, O_CLOEXEC) != 0) {
     throw std::system_error(errno, std::generic_category(), "pipe");
   }
+  // execv's argv is of char*: the strings' own buffers, copied here, are writable
+  std::vector<std::string> words = args;
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  try {
+    if (options.end_with_parent) {
+      fork_exec(path, argv.data(), options, ends);
+    } else {
+      spawn(path, argv.data(), options, ends);
+    }
+  } catch (...) {
+    if (piped) {
+      ::close(ends[0]);
+      ::close(ends[1]);
+    }
+    pid_ = -1;
+    throw;
+  }
+  if (piped) {
+    ::close(ends[1]);
+    pipe_ = ends[0];
+    ::fcntl(pipe_, F_SETFL, ::fcntl(pipe_, F_GETFL) | O_NONBLOCK);
+  }
+}
+
+void Subprocess::spawn(const std::filesystem::path& path, char* const argv[],
+                       const Options& options, const int ends[2]) {
   FileActions actions;
   redirect(actions, STDOUT_FILENO, options.out, ends);
   redirect(actions, STDERR_FILENO, options.err, ends);
@@ -68,22 +99,78 @@ Subprocess::Subprocess(const std::filesystem::path& path, const std::vector<std:
     posix_spawnattr_setsigmask(&attributes.value, options.signal_mask);
     posix_spawnattr_setflags(&attributes.value, POSIX_SPAWN_SETSIGMASK);
   }
-  // execv's argv is of char*: the strings' own buffers, copied here, are writable
-  std::vector<std::string> words = args;
-  std::vector<char*> argv;
-  for (std::string& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
   const int spawned =
-      ::posix_spawn(&pid_, path.c_str(), &actions.value, &attributes.value, argv.data(), environ);
-  if (piped) ::close(ends[1]);
-  if (spawned != 0) {
-    if (piped) ::close(ends[0]);
-    pid_ = -1;
-    throw std::system_error(spawned, std::generic_category(), path.string());
+      ::posix_spawn(&pid_, path.c_str(), &actions.value, &attributes.value, argv, environ);
+  if (spawned != 0) throw std::system_error(spawned, std::generic_category(), path.string());
+}
+
+namespace {
+
+// In the child between fork and exec (this process may have other threads, whose locks
+// the child holds copies of): async-signal-safe calls only. Its stream as `redirect`
+// says; false if it could not be set.
+bool redirect_in_child(int stream, const Redirect& redirect, const int ends[2]) {
+  switch (redirect.to) {
+    case Redirect::To::kInherit:
+      return true;
+    case Redirect::To::kNull: {
+      const int fd = ::open("/dev/null", O_WRONLY);
+      if (fd < 0) return false;
+      const bool ok = fd == stream || ::dup2(fd, stream) == stream;
+      if (fd != stream) ::close(fd);
+      return ok;
+    }
+    case Redirect::To::kPipe:
+      return ::dup2(ends[1], stream) == stream;
+    case Redirect::To::kFile:
+      return redirect.fd == stream || ::dup2(redirect.fd, stream) == stream;
   }
-  if (piped) {
-    pipe_ = ends[0];
-    ::fcntl(pipe_, F_SETFL, ::fcntl(pipe_, F_GETFL) | O_NONBLOCK);
+  return false;
+}
+
+}  // namespace
+
+void Subprocess::fork_exec(const std::filesystem::path& path, char* const argv[],
+                           const Options& options, const int ends[2]) {
+  // the child's errno if it cannot exec, through a pipe that exec closes
+  int failure[2] = {-1, -1};
+  if (::pipe2(failure, O_CLOEXEC) != 0)
+    throw std::system_error(errno, std::generic_category(), "pipe");
+  const pid_t parent = ::getpid();
+  pid_ = ::fork();
+  if (pid_ == 0) {
+    ::close(failure[0]);
+    // asked to end when the parent does; a parent already gone (the child adopted before
+    // the request took) is seen by getppid, and the child ends at once
+    int error = 0;
+    if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(127);
+    if (!redirect_in_child(STDOUT_FILENO, options.out, ends) ||
+        !redirect_in_child(STDERR_FILENO, options.err, ends) ||
+        (options.signal_mask != nullptr &&
+         ::sigprocmask(SIG_SETMASK, options.signal_mask, nullptr) != 0)) {
+      error = errno;
+    } else {
+      ::execv(path.c_str(), argv);
+      error = errno;
+    }
+    [[maybe_unused]] const ssize_t said = ::write(failure[1], &error, sizeof error);
+    ::_exit(127);
+  }
+  const int fork_error = errno;
+  ::close(failure[1]);
+  if (pid_ < 0) {
+    ::close(failure[0]);
+    throw std::system_error(fork_error, std::generic_category(), "fork");
+  }
+  int error = 0;
+  ssize_t n = 0;
+  while ((n = ::read(failure[0], &error, sizeof error)) < 0 && errno == EINTR) {
+  }
+  ::close(failure[0]);
+  if (n == static_cast<ssize_t>(sizeof error)) {
+    while (::waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    throw std::system_error(error, std::generic_category(), path.string());
   }
 }
 

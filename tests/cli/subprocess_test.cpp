@@ -1,7 +1,12 @@
 // support::Subprocess as rigidlab and the explorer use it: a child's output read whole
 // or as it comes, its exit status, a child that cannot start, one asked to end, and the
-// first of several to end.
+// first of several to end, and one that ends with its parent.
 #include "rigid/support/subprocess.h"
+
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <cstdio>
@@ -66,4 +71,39 @@ TEST_CASE("subprocess: a child written into a file, and the first of several to 
   std::fclose(file);
   // the one left is asked to end when it goes
   CHECK_FALSE(children[0].poll());
+}
+
+TEST_CASE("subprocess: a child started to end with its parent ends when the parent is killed") {
+  Subprocess::Options options{Redirect::pipe(), Redirect::null()};
+  options.end_with_parent = true;
+  // started by fork and exec: its output, its exit status and a failed start as before
+  Subprocess echo = shell("echo forked; exit 4", options);
+  CHECK(echo.read_to_end() == "forked\n");
+  CHECK(echo.wait() == 4);
+  CHECK_THROWS_AS(Subprocess("/nonexistent/program", {"program"}, options), std::system_error);
+  // a parent (this test's child) starts one and is killed by SIGKILL, which no handler
+  // sees; this test adopts the orphan (a subreaper) and learns how it ended
+  REQUIRE(::prctl(PR_SET_CHILD_SUBREAPER, 1) == 0);
+  int ends[2] = {-1, -1};
+  REQUIRE(::pipe(ends) == 0);
+  const pid_t parent = ::fork();
+  REQUIRE(parent >= 0);
+  if (parent == 0) {
+    Subprocess child = shell("exec sleep 600", {Redirect::null(), Redirect::null(), nullptr,
+                                                /*end_with_parent=*/true});
+    const pid_t pid = child.pid();
+    if (::write(ends[1], &pid, sizeof pid) != sizeof pid) ::_exit(1);
+    for (;;) ::pause();
+  }
+  ::close(ends[1]);
+  pid_t orphan = 0;
+  REQUIRE(::read(ends[0], &orphan, sizeof orphan) == sizeof orphan);
+  ::close(ends[0]);
+  REQUIRE(::kill(parent, SIGKILL) == 0);
+  REQUIRE(::waitpid(parent, nullptr, 0) == parent);
+  int status = 0;
+  REQUIRE(::waitpid(orphan, &status, 0) == orphan);
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGTERM);
+  ::prctl(PR_SET_CHILD_SUBREAPER, 0);
 }

@@ -22,63 +22,23 @@
 #include <thread>
 
 #include "common/registry.h"
+#include "explore_common.h"
 #include "explorer.h"
-#include "lab_common.h"
-#include "rigid/render/context.h"
 #include "rigid/render/image_match.h"
 #include "rigid/render/png.h"
 
 extern char** environ;
 
 namespace fs = std::filesystem;
+using rigid::test::comes;
+using rigid::test::fresh_dir;
+using rigid::test::Headless;
+using rigid::test::lines_of;
+using rigid::test::read_file;
 using rigid::test::Run;
+using rigid::test::run_explorer;
 
 namespace {
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(RIGID_BINARY_DIR) / "explore-test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// Runs the explorer with `args` (and `script`, if any, as its --script file in `dir`).
-Run run_explorer(const std::string& args, const std::string& script = "",
-                 const fs::path& dir = fs::temp_directory_path()) {
-  std::string command = std::string(RIGID_EXPLORER) + " " + args;
-  if (!script.empty()) {
-    const fs::path file = dir / "session.txt";
-    std::ofstream(file) << script;
-    command += " --script " + file.string();
-  }
-  const fs::path err_file = dir / ("explorer-" + std::to_string(::getpid()) + ".err");
-  command += " 2>" + err_file.string();
-  Run run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = read_file(err_file);
-  fs::remove(err_file);
-  return run;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::stringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 // One change a student might make to a lab: its first number input moved along its
 // slider, else another choice of its first choice input; as the flag and its text.
@@ -234,14 +194,6 @@ TEST_CASE("explore: a typed value that breaks a rule shows the rule and the view
   }
   CHECK(red > 100);
   CHECK(drawn_pixels(shot, kSceneX0, 0, kSceneX1, kSceneY1) > 2000);
-}
-
-// Whether `file` has come, looked for at most `looks` times (a tenth of a second apart).
-bool comes(const fs::path& file, int looks) {
-  for (int k = 0; k < looks && !fs::exists(file); ++k) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  return fs::exists(file);
 }
 
 TEST_CASE("explore: real mouse input moves a slider and turns the view (xdotool)") {
@@ -400,30 +352,6 @@ TEST_CASE("explore: bad options are one line and exit 2 before any window opens"
 
 namespace {
 
-// Dear ImGui without a window: frames built and their draw lists made, the figures drawn
-// into an off-screen GL context (render_gl's own).
-struct Headless {
-  Headless() {
-    rigid::render::context();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(1280, 720);
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-  }
-  ~Headless() { ImGui::DestroyContext(); }
-  // One frame of the explorer; whether it drew anything.
-  bool frame(rigid::explore::Explorer& e) {
-    ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
-    ImGui::NewFrame();
-    e.frame(1.0 / 60.0);
-    ImGui::Render();
-    return ImGui::GetDrawData()->CmdListsCount > 0;
-  }
-};
-
 // A lab that opens only when the test lets it: its opening has begun, and it may end.
 struct Gate {
   std::mutex m;
@@ -487,19 +415,4 @@ TEST_CASE("explore: another lab opens off the frame's thread while the frames go
   e.queue(rigid::explore::action::SetText{"--mass", "2.5"});
   CHECK(imgui.frame(e));
   CHECK(e.command_line() == "poinsot --mass=2.5");
-}
-
-TEST_CASE("explore: a recording that cannot be written says why and the script exits 1") {
-  const fs::path dir = fresh_dir("record");
-  const Run run = run_explorer("euler_angles",
-                               "record " + (dir / "no" / "such" / "motion.webp").string() +
-                                   "\nframes 2\nprint-command\nquit\n",
-                               dir);
-  INFO(run.out << run.err);
-  // the lab's own command refuses the folder, in its own words; the script waited for it
-  CHECK(run.status == 1);
-  CHECK(run.err.find("recording failed: euler_angles: error: --animate: cannot write into "
-                     "directory") != std::string::npos);
-  CHECK(lines_of(run.out).back() == "euler_angles");
-  CHECK_FALSE(fs::exists(dir / "no"));
 }

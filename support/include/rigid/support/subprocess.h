@@ -9,7 +9,9 @@
 //   if (lab.wait() != 0) ...
 //
 // A child still running when its Subprocess goes is asked to end (SIGTERM) and reaped:
-// none is left behind as a zombie or an orphan.
+// none is left behind as a zombie or an orphan. One started with `end_with_parent` is
+// asked so by the kernel too if this process dies first, even by SIGKILL, which no
+// handler sees (Linux's PR_SET_PDEATHSIG).
 #pragma once
 
 #include <signal.h>
@@ -45,6 +47,10 @@ class Subprocess {
   struct Options {
     Redirect out, err;
     const sigset_t* signal_mask = nullptr;
+    /// SIGTERM to the child when the thread that starts it ends (the whole process
+    /// with it, as a rule: start it from the main thread). Started by fork and exec,
+    /// since posix_spawn cannot set it between the two.
+    bool end_with_parent = false;
   };
 
   /// Starts `path` with `args` (args[0] the name it is given). Throws std::system_error
@@ -81,6 +87,10 @@ class Subprocess {
   static std::size_t wait_any(std::vector<Subprocess>& children);
 
  private:
+  void spawn(const std::filesystem::path& path, char* const argv[], const Options& options,
+             const int ends[2]);
+  void fork_exec(const std::filesystem::path& path, char* const argv[], const Options& options,
+                 const int ends[2]);
   void ended(int wait_status, const rusage& usage);
   void close_pipe();
   pid_t pid_ = -1;
