@@ -177,7 +177,7 @@ std::optional<Subprocess> start(const std::string& lab, const std::vector<std::s
   ::sigprocmask(SIG_BLOCK, &block, &old);
   std::optional<Subprocess> child;
   try {
-    child.emplace(argv.front(), argv, Subprocess::Options{Redirect::null(), err, &old});
+    child.emplace(argv.front(), argv, Subprocess::Options{Redirect::null(), err, &old, true});
     track(child->pid(), true);
     if (g_signal != 0) ::kill(child->pid(), g_signal);  // already asked to stop
   } catch (const std::system_error& e) {

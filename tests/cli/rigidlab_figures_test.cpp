@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,44 @@ TEST_CASE("contract: a signal to rigidlab figures reaches its labs, which leave 
     CHECK(!fs::exists(dir));
     fs::remove_all(dir);
   }
+  // SIGKILL, which no handler sees: its labs were started asked to end with it (SIGTERM),
+  // and end without landing a figure more or leaving a temporary. The labs are stopped
+  // first (SIGSTOP), so that none can finish between the look at what they drew and the
+  // kill: continued, a lab that was told to end dies before it draws again.
+  const auto labs_drawn = [&] {
+    std::set<std::string> drawn;
+    for (const std::string& name : staged()) {
+      for (const std::string& lab : labs) {
+        // a figure landed, not one still at its temporary name
+        if (name.rfind(lab + "_", 0) == 0 && name.find(".rigidlab-tmp-") == std::string::npos)
+          drawn.insert(lab);
+      }
+    }
+    return drawn;
+  };
+  const std::string labs_of_run = "-f -- '[-]-figures " + dir.string() + "' > /dev/null 2>&1";
+  rigid::test::Background rigidlab({std::string(RIGID_LAB_DIR) + "/rigidlab", "figures",
+                                    "--figure-size", "2048x2048", "--out", dir.string()});
+  REQUIRE(rigidlab.wait_until(drawn_by(others)));
+  CHECK(std::system(("pkill -STOP " + labs_of_run).c_str()) == 0);
+  const std::set<std::string> before = labs_drawn();
+  ::kill(rigidlab.pid(), SIGKILL);
+  const int status = rigidlab.wait();
+  CHECK((WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL));
+  CHECK(std::system(("pkill -CONT " + labs_of_run).c_str()) == 0);
+  const auto labs_ended = [&] { return std::system(("pgrep " + labs_of_run).c_str()) != 0; };
+  // each lab ends within its own SIGTERM handling: a bounded count of looks, not a clock
+  bool ended = labs_ended();
+  for (int look = 0; look < 6000 && !ended; ++look) {
+    ::usleep(10000);
+    ended = labs_ended();
+  }
+  CHECK(ended);
+  CHECK(labs_drawn() == before);  // no lab drew on after rigidlab died
+  // in --out only the staging folder, and no temporary anywhere
+  for (const std::string& name : names_in(dir)) CHECK(name.rfind(".rigidlab-stage-", 0) == 0);
+  for (const std::string& name : staged()) CHECK(name.find(".rigidlab-tmp-") == std::string::npos);
+  fs::remove_all(dir);
 }
 
 TEST_CASE("contract: rigidlab figures says a killed run's staging folder is left and keeps it",
