@@ -123,12 +123,14 @@ struct Explorer::Apply {
   std::string operator()(const action::SaveFigure& a) const {
     int w = 0, h = 0;
     if (!read_figure_size(a.size, w, h)) return kFigureSizeRule;
+    if (std::string why = drawing_refusal(w, h); !why.empty()) return why;
     if (std::string why = e.unavailable(a); !why.empty()) return why;
     return save_figure(*e.session_, a.name, a.path, a.format, w, h);
   }
   std::string operator()(const action::SaveView& a) const {
     int w = 0, h = 0;
     if (!read_figure_size(a.size, w, h)) return kFigureSizeRule;
+    if (std::string why = drawing_refusal(w, h); !why.empty()) return why;
     if (std::string why = e.unavailable(a); !why.empty()) return why;
     try {
       return save_view(e.scenes_.view_scene(*e.session_, e.view_, w, h), a.path, w, h);

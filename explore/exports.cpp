@@ -8,6 +8,7 @@
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/draw.h"
+#include "rigid/render/memory.h"
 #include "rigid/render/png.h"
 #include "rigid/support/programs.h"
 #include "scene_cache.h"
@@ -44,6 +45,15 @@ std::string output_refusal(const std::string& path) {
     lab::check_output_file("", path);
   } catch (const lab::InputError& e) {
     return e.rule;
+  }
+  return "";
+}
+
+std::string drawing_refusal(int width, int height) {
+  try {
+    lab::check_drawing_memory("", width, height, render::figure_peak_bytes(width, height));
+  } catch (const lab::InputError& e) {
+    return e.what();
   }
   return "";
 }

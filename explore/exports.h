@@ -24,6 +24,10 @@ namespace rigid::explore {
 /// "" if `path` may be written as an output, else the rule it breaks ("'PATH' is a
 /// symbolic link; give the file itself"), its user text escaped.
 std::string output_refusal(const std::string& path);
+/// "" if a figure or view of `width` x `height` can be drawn within the memory the run
+/// may use (render/memory.h, support/memory.h), else the rule it breaks, as the
+/// command line's --figure-size says it.
+std::string drawing_refusal(int width, int height);
 
 std::string save_figure(lab::Session& s, const std::string& name, const std::string& path,
                         render::FigureFormat format, int width, int height);

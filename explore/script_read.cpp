@@ -199,6 +199,10 @@ void check_words(const std::vector<std::string>& w, const std::vector<std::strin
     throw std::invalid_argument(op + ": " + kFigureSizeRule + " (got '" + terminal_safe(w[at]) +
                                 "')");
   }
+  if (width > 0) {
+    if (const std::string why = drawing_refusal(width, height); !why.empty())
+      throw std::invalid_argument(op + ": " + why);
+  }
 }
 
 // The script's file, whole: a regular file (not a folder, a pipe that may never end, or

@@ -1,7 +1,5 @@
 #include "common/command_outputs.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -16,7 +14,6 @@
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/memory.h"
-#include "rigid/support/memory.h"
 #include "rigid/support/text.h"
 
 namespace rigid::lab {
@@ -78,27 +75,14 @@ std::vector<double> film_times(const CommandOptions& options, double motion_seco
 // its size, rather than killed by the system midway (render/memory.h: the model of
 // the peak; support/memory.h: what the run may use).
 void check_memory(const CommandOptions& options) {
-  std::optional<support::MemoryBudget> budget;
-  try {
-    budget = support::memory_budget();
-  } catch (const std::invalid_argument& e) {
-    throw InputError(support::kMemoryBudgetVariable, e.what());
-  }
-  if (!budget) return;
-  const auto check = [&](const char* option, int width, int height, std::uint64_t need) {
-    if (need <= budget->bytes) return;
-    throw InputError(option, fmt::format("{}x{} takes about {} to draw, more than the {} this run "
-                                         "may use ({}); give a smaller size",
-                                         width, height, support::bytes_text(need),
-                                         support::bytes_text(budget->bytes), budget->source));
-  };
   if (!options.figures_dir.empty()) {
-    check("--figure-size", options.figure_width, options.figure_height,
-          render::figure_peak_bytes(options.figure_width, options.figure_height));
+    check_drawing_memory("--figure-size", options.figure_width, options.figure_height,
+                         render::figure_peak_bytes(options.figure_width, options.figure_height));
   }
   if (!options.animation_path.empty()) {
-    check("--animation-size", options.animation_width, options.animation_height,
-          render::film_peak_bytes(options.animation_width, options.animation_height));
+    check_drawing_memory(
+        "--animation-size", options.animation_width, options.animation_height,
+        render::film_peak_bytes(options.animation_width, options.animation_height));
   }
 }
 

@@ -9,9 +9,12 @@
 #include <algorithm>
 #include <climits>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "common/inputs.h"
+#include "rigid/support/memory.h"
 
 namespace rigid::lab {
 namespace fs = std::filesystem;
@@ -116,6 +119,20 @@ void check_animation_file(const std::string& option, const std::string& name) {
   if (!fs::is_directory(parent, ec) || !can_create_in(parent.string())) {
     throw InputError(option, "cannot write into directory '" + quoted_text(parent.string()) + "'");
   }
+}
+
+void check_drawing_memory(const std::string& option, int width, int height, std::uint64_t need) {
+  std::optional<support::MemoryBudget> budget;
+  try {
+    budget = support::memory_budget();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(support::kMemoryBudgetVariable, e.what());
+  }
+  if (!budget || need <= budget->bytes) return;
+  throw InputError(option, fmt::format("{}x{} takes about {} to draw, more than the {} this run "
+                                       "may use ({}); give a smaller size",
+                                       width, height, support::bytes_text(need),
+                                       support::bytes_text(budget->bytes), budget->source));
 }
 
 fs::path output_place(const std::string& name) {

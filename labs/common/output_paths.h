@@ -2,6 +2,7 @@
 // InputError naming the option, never a failure after the results are computed.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -20,6 +21,13 @@ void check_output_file(const std::string& option, const std::string& path);
 /// `path` (--animate) is not something other than a regular file, and its directory
 /// can be written.
 void check_animation_file(const std::string& option, const std::string& path);
+
+/// A drawing of `width` x `height` that takes `need` bytes at its peak (render/memory.h)
+/// fits in what the run may use (support/memory.h); else an InputError naming `option`
+/// ("--figure-size: 8192x8192 takes about 3.4 GB to draw, more than ..."), or naming
+/// RIGIDLAB_MEMORY_MB for a setting of it that breaks its rule. Nothing is checked where
+/// the system does not say what is available.
+void check_drawing_memory(const std::string& option, int width, int height, std::uint64_t need);
 
 /// Where an output name points, as one spelling: absolute, the links and dots of its
 /// existing part resolved, the rest's dots removed, no trailing separator. Two names of

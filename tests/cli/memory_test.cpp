@@ -92,15 +92,20 @@ TEST_CASE("memory: a size past the budget is refused before any work, in one lin
   CHECK(all.status == 2);
   CHECK(all.err.rfind("rigidlab: error: figures: --figure-size: 1024x768 takes about", 0) == 0);
   CHECK(fs::is_empty(dir));
-  // a setting that is not a whole number of MiB is refused, whatever the run draws
+  // a setting that is not a whole number of MiB is refused where it is read (a run that
+  // draws), before any work
   for (const char* bad : {"''", "x", "0", "-5", "1e3", "1.5", "99999999999999999999", "' 5'"}) {
     INFO(bad);
-    const auto run = run_lab("poinsot", "--quiet", std::string("RIGIDLAB_MEMORY_MB=") + bad);
+    const auto run = run_lab("poinsot", "--quiet --figures '" + out + "'",
+                             std::string("RIGIDLAB_MEMORY_MB=") + bad);
     CHECK(run.status == 2);
     CHECK(run.err ==
           "poinsot: error: RIGIDLAB_MEMORY_MB: must be a whole number of MiB from 1 to "
           "1099511627776\n");
+    CHECK(fs::is_empty(dir));
   }
+  // and not read by a run that draws nothing
+  CHECK(run_lab("poinsot", "--quiet", "RIGIDLAB_MEMORY_MB=x").status == 0);
   fs::remove_all(dir);
 }
 

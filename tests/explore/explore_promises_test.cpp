@@ -187,6 +187,18 @@ TEST_CASE("explore: a script's numbers and sizes and labs and work in all are ch
     INFO(text);
     CHECK_NOTHROW(rigid::explore::Script::parse(text + "\n", "s.txt", labs));
   }
+  // a size whose drawing would take more memory than the run may use, as --figure-size
+  ::setenv("RIGIDLAB_MEMORY_MB", "200", 1);
+  try {
+    rigid::explore::Script::parse("save-view v.png 2048x2048\n", "s.txt", labs);
+    FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()) ==
+          "s.txt:1: save-view: 2048x2048 takes about 336 MB to draw, more than the 210 MB this "
+          "run may use (RIGIDLAB_MEMORY_MB=200); give a smaller size");
+  }
+  CHECK_NOTHROW(rigid::explore::Script::parse("save-view v.png 800x600\n", "s.txt", labs));
+  ::unsetenv("RIGIDLAB_MEMORY_MB");
 }
 
 TEST_CASE("explore: a script that is not a regular file of at most 1 MiB cannot be read") {
