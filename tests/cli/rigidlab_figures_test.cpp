@@ -41,34 +41,47 @@ std::string text_of(const fs::path& file) {
   std::ifstream in(file);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
+// The names of the files under `dir` (a run's staging folder among them: the labs draw
+// there first).
+std::vector<std::string> staged(const fs::path& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    names.push_back(it->path().filename().string());
+  return names;
+}
+
+// The labs of `labs` for which `is_lab` holds that have a figure under `dir`: landed, or
+// (`landed` false) still at its temporary name too.
+template <class IsLab>
+std::set<std::string> drawn_by(const fs::path& dir, IsLab is_lab, bool landed = false) {
+  std::set<std::string> drawn;
+  for (const std::string& name : staged(dir)) {
+    for (const std::string& lab : rigid::test::all_labs()) {
+      if (is_lab(lab) && name.rfind(lab + "_", 0) == 0 &&
+          (!landed || name.find(".rigidlab-tmp-") == std::string::npos)) {
+        drawn.insert(lab);
+      }
+    }
+  }
+  return drawn;
+}
+
+rigid::test::Background figures_into(const fs::path& dir) {
+  return rigid::test::Background({std::string(RIGID_LAB_DIR) + "/rigidlab", "figures",
+                                  "--figure-size", "2048x2048", "--out", dir.string()});
+}
+
 }  // namespace
 
 TEST_CASE("contract: a signal to rigidlab figures reaches its labs, which leave no temporaries",
           "[draws]") {
   const fs::path dir = fs::temp_directory_path() / ("rigid_term_" + std::to_string(::getpid()));
-  const std::vector<std::string> labs = rigid::test::all_labs();
-  // What the staging folder holds: the names of its files (the labs draw there first).
-  const auto staged = [&] {
-    std::vector<std::string> names;
-    std::error_code ec;
-    for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-      names.push_back(it->path().filename().string());
-    return names;
-  };
-  const auto drawn_by = [&](auto is_lab) {
-    return [&, is_lab] {
-      for (const std::string& name : staged()) {
-        for (const std::string& lab : labs) {
-          if (is_lab(lab) && name.rfind(lab + "_", 0) == 0) return true;
-        }
-      }
-      return false;
-    };
-  };
+  const std::string first_lab = rigid::test::all_labs().front();
   // During the first lab alone (once a figure of it shows), and during the others
   // (once a figure of another lab shows).
-  const auto first = [&](const std::string& lab) { return lab == labs.front(); };
-  const auto others = [&](const std::string& lab) { return lab != labs.front(); };
+  const auto first = [&](const std::string& lab) { return lab == first_lab; };
+  const auto others = [&](const std::string& lab) { return lab != first_lab; };
   // SIGTERM at both moments; SIGHUP (a closed terminal), as every signal that would end
   // rigidlab, while the labs run side by side.
   for (const auto& [sig, during_others] :
@@ -76,10 +89,10 @@ TEST_CASE("contract: a signal to rigidlab figures reaches its labs, which leave 
     INFO("signal " << sig
                    << (during_others ? " during the other labs" : " during the first lab alone"));
     // To rigidlab alone (not its process group, as a terminal's Ctrl-C or timeout would).
-    rigid::test::Background rigidlab({std::string(RIGID_LAB_DIR) + "/rigidlab", "figures",
-                                      "--figure-size", "2048x2048", "--out", dir.string()});
-    const bool ready = during_others ? rigidlab.wait_until(drawn_by(others))
-                                     : rigidlab.wait_until(drawn_by(first));
+    rigid::test::Background rigidlab = figures_into(dir);
+    const bool ready = during_others
+                           ? rigidlab.wait_until([&] { return !drawn_by(dir, others).empty(); })
+                           : rigidlab.wait_until([&] { return !drawn_by(dir, first).empty(); });
     REQUIRE(ready);
     ::kill(rigidlab.pid(), sig);
     const int status = rigidlab.wait();
@@ -92,27 +105,23 @@ TEST_CASE("contract: a signal to rigidlab figures reaches its labs, which leave 
     CHECK(!fs::exists(dir));
     fs::remove_all(dir);
   }
-  // SIGKILL, which no handler sees: its labs were started asked to end with it (SIGTERM),
-  // and end without landing a figure more or leaving a temporary. The labs are stopped
-  // first (SIGSTOP), so that none can finish between the look at what they drew and the
-  // kill: continued, a lab that was told to end dies before it draws again.
-  const auto labs_drawn = [&] {
-    std::set<std::string> drawn;
-    for (const std::string& name : staged()) {
-      for (const std::string& lab : labs) {
-        // a figure landed, not one still at its temporary name
-        if (name.rfind(lab + "_", 0) == 0 && name.find(".rigidlab-tmp-") == std::string::npos)
-          drawn.insert(lab);
-      }
-    }
-    return drawn;
-  };
+}
+
+TEST_CASE("contract: rigidlab figures killed by SIGKILL ends its labs, which draw no more",
+          "[draws]") {
+  // No handler sees SIGKILL: its labs were started asked to end with it (SIGTERM), and end
+  // without landing a figure more or leaving a temporary. The labs are stopped first
+  // (SIGSTOP), so that none can finish between the look at what they drew and the kill:
+  // continued, a lab that was told to end dies before it draws again.
+  const fs::path dir = fs::temp_directory_path() / ("rigid_kill_" + std::to_string(::getpid()));
+  const std::string first_lab = rigid::test::all_labs().front();
+  const auto any = [](const std::string&) { return true; };
+  const auto others = [&](const std::string& lab) { return lab != first_lab; };
   const std::string labs_of_run = "-f -- '[-]-figures " + dir.string() + "' > /dev/null 2>&1";
-  rigid::test::Background rigidlab({std::string(RIGID_LAB_DIR) + "/rigidlab", "figures",
-                                    "--figure-size", "2048x2048", "--out", dir.string()});
-  REQUIRE(rigidlab.wait_until(drawn_by(others)));
+  rigid::test::Background rigidlab = figures_into(dir);
+  REQUIRE(rigidlab.wait_until([&] { return !drawn_by(dir, others).empty(); }));
   CHECK(std::system(("pkill -STOP " + labs_of_run).c_str()) == 0);
-  const std::set<std::string> before = labs_drawn();
+  const std::set<std::string> before = drawn_by(dir, any, true);
   ::kill(rigidlab.pid(), SIGKILL);
   const int status = rigidlab.wait();
   CHECK((WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL));
@@ -125,10 +134,11 @@ TEST_CASE("contract: a signal to rigidlab figures reaches its labs, which leave 
     ended = labs_ended();
   }
   CHECK(ended);
-  CHECK(labs_drawn() == before);  // no lab drew on after rigidlab died
+  CHECK(drawn_by(dir, any, true) == before);  // no lab drew on after rigidlab died
   // in --out only the staging folder, and no temporary anywhere
   for (const std::string& name : names_in(dir)) CHECK(name.rfind(".rigidlab-stage-", 0) == 0);
-  for (const std::string& name : staged()) CHECK(name.find(".rigidlab-tmp-") == std::string::npos);
+  for (const std::string& name : staged(dir))
+    CHECK(name.find(".rigidlab-tmp-") == std::string::npos);
   fs::remove_all(dir);
 }
 
