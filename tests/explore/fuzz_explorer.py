@@ -507,6 +507,8 @@ def main():
     ap.add_argument("--seed", default="41")
     ap.add_argument("--cpu-seconds", type=float, default=20.0)
     args = ap.parse_args()
+    # the cases run in folders of their own: the programs by their absolute paths
+    args.explorer, args.lab_dir = os.path.abspath(args.explorer), os.path.abspath(args.lab_dir)
     counts = {"commands": 100, "bytes": 40, "paths": 60, "late paths": 8, "script files": 16,
               "sizes": 24, "resizes": 10, "recording": 6}
     n = {k: max(1, round(v * args.scale)) for k, v in counts.items()}
