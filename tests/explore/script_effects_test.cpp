@@ -2,11 +2,11 @@
 // session's inputs after it, the view's state (time, speed, orbit, the scene and plot
 // chosen, the parts hidden), the scene the explorer describes for drawing (its items
 // and camera, not its pixels), and every file written, byte for byte the lab's own
-// writer's. And every command's words counted and typed when the script is read, so
-// that a slip in the script's table or its parser is a refusal that names its rule.
+// writer's. (Each command's words, counted and typed when read: script_words_test.cpp.)
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -70,6 +70,12 @@ bool draws(const Scene3D& scene, const std::string& label) {
   return false;
 }
 
+// An SVG file's text, the id cairo numbers its surfaces by in the process made plain (a
+// drawing's second surface in one process is "surface11", where a lab's first is "surface1").
+std::string svg_file(const std::string& path) {
+  return std::regex_replace(read_file(path), std::regex("id=\"surface[0-9]+\""), "id=\"surface\"");
+}
+
 bool same_camera(const rigid::render::Camera& a, const rigid::render::Camera& b) {
   return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fov_y_deg == b.fov_y_deg &&
          a.orthographic == b.orthographic && a.ortho_height == b.ortho_height;
@@ -122,131 +128,10 @@ struct Bench {
   }
 };
 
-// The one line a script's text is refused with when read ("" if it is not).
-std::string refusal(const std::string& text) {
-  try {
-    ex::Script::parse(text + "\n", "s.txt", all_labs());
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
-// Every command, how many words follow it (at least, at most), and words it takes (as
-// many as it may: a sample that must be read).
-struct Spec {
-  std::string op;
-  int min, max;
-  std::string words;
-};
-std::vector<Spec> specs(const fs::path& dir) {
-  const std::string d = dir.string() + "/";
-  return {{"set", 1, 2, "--mass 2"},
-          {"unset", 1, 1, "--t-end"},
-          {"drag", 2, 2, "--mass 2"},
-          {"textbook", 0, 0, ""},
-          {"lab", 1, 1, "poinsot"},
-          {"play", 1, 1, "1"},
-          {"pause", 0, 0, ""},
-          {"seek", 1, 1, "1"},
-          {"speed", 1, 1, "2"},
-          {"turn", 2, 2, "30 -10"},
-          {"zoom", 1, 1, "1.5"},
-          {"reset-view", 0, 0, ""},
-          {"show-scene", 1, 1, "motion"},
-          {"show-plot", 1, 1, "omega"},
-          {"hide", 1, 1, "herpolhode"},
-          {"show", 1, 1, "herpolhode"},
-          {"frames", 1, 1, "3"},
-          {"wait", 1, 1, "1"},
-          {"wait-for", 1, 1, d + "go"},
-          {"screenshot", 1, 1, d + "s.png"},
-          {"save-figure", 2, 3, "omega " + d + "f.svg 200x150"},
-          {"save-view", 1, 2, d + "v.png 200x150"},
-          {"export-json", 1, 1, d + "r.json"},
-          {"export-csv", 1, 1, d + "r.csv"},
-          {"record", 1, 1, d + "m.webp"},
-          {"print-command", 0, 0, ""},
-          {"print-json", 0, 0, ""},
-          {"quit", 0, 0, ""}};
-}
-
-// The first `n` of `words`, after `op`.
-std::string line_of(const std::string& op, const std::string& words, int n) {
-  std::istringstream in(words);
-  std::string line = op, w;
-  for (int k = 0; k < n && in >> w; ++k) line += " " + w;
-  return line;
-}
-
 }  // namespace
 
-TEST_CASE("explore: every script command's count of words is checked when the script is read") {
-  const fs::path dir = fresh_dir("effects-words");
-  std::string names;
-  std::vector<Spec> all = specs(dir);
-  std::sort(all.begin(), all.end(), [](const Spec& a, const Spec& b) { return a.op < b.op; });
-  for (const Spec& s : all) {
-    INFO(s.op);
-    names += (names.empty() ? "" : ", ") + s.op;
-    CHECK(refusal(line_of(s.op, s.words, s.max)).empty());
-    CHECK(refusal(line_of(s.op, s.words, s.min)).empty());
-    const std::string takes =
-        s.op + " takes " +
-        (s.min == s.max ? std::to_string(s.min)
-                        : std::to_string(s.min) + " to " + std::to_string(s.max)) +
-        " words (got ";
-    // one word too many, after every word it may take
-    CHECK(refusal(line_of(s.op, s.words, s.max) + " extra") ==
-          "s.txt:1: " + takes + std::to_string(s.max + 1) + ")");
-    if (s.min > 0) {
-      CHECK(refusal(line_of(s.op, s.words, s.min - 1)) ==
-            "s.txt:1: " + takes + std::to_string(s.min - 1) + ")");
-    }
-  }
-  // no command the script reads but these (each pinned below by its effect)
-  CHECK(refusal("nope") == "s.txt:1: unknown command 'nope' (one of " + names + ")");
-  // a word in quotes is one word, blanks and all
-  CHECK(refusal("hide \"energy ellipsoid\"").empty());
-  CHECK(refusal("hide energy ellipsoid") == "s.txt:1: hide takes 1 words (got 2)");
-  CHECK(refusal("hide \"energy ellipsoid") == "s.txt:1: a quote is not closed");
-}
-
-TEST_CASE("explore: every script command's words are of their type when the script is read") {
-  const fs::path dir = fresh_dir("effects-types");
-  const std::string folder = (dir / "folder.webp").string();
-  fs::create_directory(folder);
-  const std::vector<std::pair<std::string, std::string>> refused{
-      {"play x", "play must be a number (got 'x')"},
-      {"seek x", "seek must be a number (got 'x')"},
-      {"speed x", "speed must be a number (got 'x')"},
-      {"zoom x", "zoom must be a number (got 'x')"},
-      {"frames x", "frames must be a number (got 'x')"},
-      {"frames 1.5", "frames must be a whole number"},
-      {"wait x", "wait must be a number (got 'x')"},
-      {"turn x 0", "turn's first angle must be a number (got 'x')"},
-      {"turn 0 x", "turn's second angle must be a number (got 'x')"},
-      {"save-figure omega " + (dir / "f.png").string() + " big",
-       "save-figure: size: must be WxH, each 16 to 8192 (got 'big')"},
-      {"save-view " + (dir / "v.png").string() + " 100", "save-view: size: must be WxH"},
-      {"record " + (dir / "m.avi").string(), "record: the file name must end in .mp4 or .webp"},
-      {"lab nope", "lab: 'nope' is not a lab (one of "},
-  };
-  for (const auto& [line, says] : refused) {
-    INFO(line);
-    CHECK(refusal(line).rfind("s.txt:1: " + says, 0) == 0);
-  }
-  // each word that names a file it writes is a file it may write
-  for (const std::string op :
-       {"screenshot", "save-view", "export-json", "export-csv", "record", "save-figure omega"}) {
-    INFO(op);
-    const std::string why = refusal(op + " " + folder);
-    CHECK(why.rfind("s.txt:1: " + op.substr(0, op.find(' ')) + ": '", 0) == 0);
-    CHECK(why.find("' is a directory, not a file") != std::string::npos);
-  }
-}
-
-TEST_CASE("explore: set, drag, unset and textbook change the session's inputs and its fields") {
+TEST_CASE(
+    "explore: set and drag and unset and textbook change the session's inputs and its fields") {
   Bench b("poinsot");
   b.run("set --omega 1,2,0.5\nset --method rk4\nset --t-end 5");
   CHECK(value_of(b.e, "--omega") == InputValue(Eigen::Vector3d(1, 2, 0.5)));
@@ -296,38 +181,7 @@ TEST_CASE("explore: set, drag, unset and textbook change the session's inputs an
   }
 }
 
-TEST_CASE("explore: a field for a vector or a pair takes exactly its count of numbers") {
-  int checked = 0;
-  for (const auto& entry : rigid::lab::all_labs()) {
-    auto s = entry.make();
-    for (std::size_t i = 0; i < s->input_count(); ++i) {
-      const auto kind = s->rule(i).kind();
-      if (kind != rigid::lab::InputKind::kVector && kind != rigid::lab::InputKind::kPair) continue;
-      const std::string flag = s->rule(i).flag();
-      INFO(entry.name << " " << flag);
-      const bool vector = kind == rigid::lab::InputKind::kVector;
-      const InputValue before = s->value(i);
-      // its own numbers, one too many and one too few
-      std::string own = rigid::lab::argument_text(before);
-      if (own.empty() || own.find(',') == std::string::npos) own = vector ? "1,1,1" : "1,1";
-      const std::string more = own + "," + own.substr(own.rfind(',') + 1);
-      const std::string fewer = own.substr(0, own.rfind(','));
-      for (const std::string& text : {more, fewer}) {
-        const auto why = s->set_text(i, text);
-        REQUIRE(why);
-        CHECK(why->message == flag + ": needs " + (vector ? "3" : "2") +
-                                  " numbers separated by commas (got '" + text + "')");
-        CHECK(s->value(i) == before);
-      }
-      ++checked;
-    }
-  }
-  // poinsot's four vectors, euler_angles' three, lamina_tensor's axis, tennis_racquet's
-  // inertia; football's and top_nutation's pairs
-  CHECK(checked == 11);
-}
-
-TEST_CASE("explore: a switch set on is in the command, the JSON and the file exported") {
+TEST_CASE("explore: a switch set on is in the command and the JSON and the file exported") {
   struct Case {
     std::string lab, flag;
     Inputs before;  // what the switch needs set first
@@ -362,7 +216,8 @@ TEST_CASE("explore: a switch set on is in the command, the JSON and the file exp
   }
 }
 
-TEST_CASE("explore: seek, speed, play, pause and frames move the motion's time as they say") {
+TEST_CASE(
+    "explore: seek and speed and play and pause and frames move the motion's time as they say") {
   Bench b("poinsot");
   const double seconds = b.e.session().animation()->seconds;
   REQUIRE(seconds > 30);
@@ -403,7 +258,7 @@ TEST_CASE("explore: seek, speed, play, pause and frames move the motion's time a
   CHECK_FALSE(b.e.view().playing);
 }
 
-TEST_CASE("explore: turn, zoom and reset-view set the orbit the scene is seen through") {
+TEST_CASE("explore: turn and zoom and reset-view set the orbit the scene is seen through") {
   Bench b("poinsot");
   const Scene3D plain = described(b.e);
   b.run("turn 30 -10\nzoom 1.5");
@@ -423,4 +278,183 @@ TEST_CASE("explore: turn, zoom and reset-view set the orbit the scene is seen th
   CHECK(same_camera(described(b.e).camera, plain.camera));
   b.run("turn 200 0\nturn 200 0");
   CHECK(b.e.view().orbit.yaw_deg == 40);
+}
+
+TEST_CASE("explore: show-scene and show-plot choose by name what is drawn") {
+  {
+    Bench b("poinsot");
+    const rigid::lab::Session& s = b.e.session();
+    b.run("show-scene herpolhode\nshow-plot integrators");
+    CHECK(ex::view_choices(s, true).at(b.e.view().scene_choice) == "herpolhode");
+    CHECK(ex::view_choices(s, false).at(b.e.view().plot_choice) == "integrators");
+    const auto& herpolhode = std::get<Scene3D>(ex::figure_named(s, "herpolhode")->figure);
+    const Scene3D shown = described(b.e);
+    CHECK(shown.title == herpolhode.title);
+    CHECK(shown.objects().size() == herpolhode.objects().size());
+    CHECK(ex::shown_plot(s, b.e.view())->title ==
+          std::get<rigid::render::Plot2D>(ex::figure_named(s, "integrators")->figure).title);
+    b.run("show-scene motion\nshow-plot omega");
+    CHECK(b.e.view().scene_choice == 0);
+    CHECK(b.e.view().plot_choice == 0);
+    CHECK(described(b.e).title == s.report().figure_title(s.animation()->scene(0).title));
+    CHECK(ex::shown_plot(s, b.e.view())->title ==
+          std::get<rigid::render::Plot2D>(ex::figure_named(s, "omega")->figure).title);
+  }
+  // the motion's strip by its one word, where the lab has one (one explorer at a time:
+  // Dear ImGui's context is one)
+  Bench racquet("tennis_racquet");
+  const rigid::lab::Session& r = racquet.e.session();
+  racquet.run("show-plot growth");
+  CHECK(ex::view_choices(r, false).at(racquet.e.view().plot_choice) == "growth");
+  racquet.run("seek 1\nshow-plot strip");
+  CHECK(racquet.e.view().plot_choice == 0);
+  CHECK(ex::shown_plot(r, racquet.e.view())->title == r.animation()->strip(1.0).title);
+}
+
+TEST_CASE("explore: hide and show take a part of the scene out of what is drawn and back") {
+  Bench b("poinsot");
+  const std::string part = "energy ellipsoid";
+  REQUIRE(draws(described(b.e), part));
+  b.run("hide \"" + part + "\"");
+  CHECK(b.e.view().hidden == std::vector<std::string>{part});
+  CHECK_FALSE(draws(described(b.e), part));
+  CHECK(draws(described(b.e), "invariable plane"));
+  // hiding a hidden part leaves it hidden, and showing a shown one leaves it shown
+  b.run("hide \"" + part + "\"\nshow \"invariable plane\"");
+  CHECK(b.e.view().hidden == std::vector<std::string>{part});
+  CHECK_FALSE(draws(described(b.e), part));
+  CHECK(draws(described(b.e), "invariable plane"));
+  b.run("hide \"invariable plane\"\nshow \"" + part + "\"");
+  CHECK(b.e.view().hidden == std::vector<std::string>{"invariable plane"});
+  CHECK(draws(described(b.e), part));
+  CHECK_FALSE(draws(described(b.e), "invariable plane"));
+  b.run("show \"invariable plane\"\nshow \"invariable plane\"");
+  CHECK(b.e.view().hidden.empty());
+  CHECK(draws(described(b.e), "invariable plane"));
+}
+
+TEST_CASE("explore: a scene or plot or part the lab does not show ends the script with exit 2") {
+  Bench b("poinsot");
+  const ex::ViewState before = b.e.view();
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"show-scene nope", "show-scene: poinsot shows no 'nope'"},
+      {"show-plot nope", "show-plot: poinsot shows no 'nope'"},
+      {"show-plot strip", "show-plot: poinsot shows no 'strip'"},
+      {"hide nope", "hide: the scene shows no part named 'nope'"},
+      {"show nope", "show: the scene shows no part named 'nope'"},
+  };
+  for (const auto& [line, says] : refused) {
+    INFO(line);
+    const Bench::Ran ran = b.run(line + "\nset --mass 2");
+    CHECK(ran.err == "s.txt:1: " + says + "\n");
+    CHECK(value_of(b.e, "--mass") == InputValue(M_PI));  // the script ended there
+    CHECK(b.e.view().scene_choice == before.scene_choice);
+    CHECK(b.e.view().plot_choice == before.plot_choice);
+    CHECK(b.e.view().hidden.empty());
+  }
+  CHECK(b.e.status() == 2);
+}
+
+TEST_CASE("explore: every export writes the bytes the lab's own writers give") {
+  const fs::path dir = fresh_dir("effects-exports");
+  const auto at = [&](const char* name) { return (dir / name).string(); };
+  Bench b("poinsot");
+  const Bench::Ran ran = b.run(
+      "set --omega 1,2,0.5\nturn 20 10\nhide \"energy ellipsoid\"\n"
+      "save-figure omega " +
+      at("omega.svg") +
+      " 400x300\n"
+      "save-figure omega " +
+      at("omega-1600.svg") +
+      "\n"
+      "save-figure herpolhode " +
+      at("herpolhode.png") +
+      " 200x150\n"
+      "save-view " +
+      at("view.png") +
+      " 200x150\n"
+      "export-json " +
+      at("r.json") + "\nexport-csv " + at("r.csv") +
+      "\n"
+      "screenshot " +
+      at("shot.png") + "\nprint-command\nprint-json");
+  CHECK(ran.err.empty());
+  const auto lab = session_at("poinsot", {{"--omega", "1,2,0.5"}});
+  const std::string json = json_of(*lab, {"poinsot", "--omega=1,2,0.5"});
+  CHECK(ran.out == "poinsot --omega=1,2,0.5\n" + json);
+  CHECK(read_file(at("r.json")) == json);
+  CHECK(read_file(at("r.csv")) == rigid::lab::csv_text(lab->report().time_series()));
+
+  // the figures, as the lab's --figures draws them
+  const auto& omega = std::get<rigid::render::Plot2D>(ex::figure_named(*lab, "omega")->figure);
+  rigid::render::save_figure(omega, at("lab-omega.svg"), rigid::render::FigureFormat::kSvg, 400,
+                             300);
+  rigid::render::save_figure(omega, at("lab-omega-1600.svg"), rigid::render::FigureFormat::kSvg,
+                             1600, 1200);
+  const auto& herpolhode = std::get<Scene3D>(ex::figure_named(*lab, "herpolhode")->figure);
+  rigid::render::write_png(rigid::render::draw(herpolhode, 200, 150), at("lab-herpolhode.png"));
+  CHECK(svg_file(at("omega.svg")) == svg_file(at("lab-omega.svg")));
+  CHECK(svg_file(at("omega-1600.svg")) == svg_file(at("lab-omega-1600.svg")));
+  CHECK(read_file(at("herpolhode.png")) == read_file(at("lab-herpolhode.png")));
+
+  // the view as described: turned, its part hidden, at its size
+  ex::SceneCache cache;
+  const Scene3D view = cache.view_scene(b.e.session(), b.e.view(), 200, 150);
+  CHECK_FALSE(draws(view, "energy ellipsoid"));
+  CHECK(b.e.view().orbit.yaw_deg == 20);
+  rigid::render::save_png(view, at("lab-view.png"), 200, 150);
+  CHECK(read_file(at("view.png")) == read_file(at("lab-view.png")));
+  CHECK(rigid::render::read_png(at("view.png")).width == 200);
+
+  // the window's frame, as it read it
+  rigid::render::write_png(b.frame_image, at("frame.png"));
+  CHECK(read_file(at("shot.png")) == read_file(at("frame.png")));
+}
+
+TEST_CASE("explore: lab opens another lab and quit ends the script and wait and wait-for hold it") {
+  Bench b("poinsot");
+  b.run("hide \"energy ellipsoid\"\nshow-scene herpolhode\nturn 10 0\nlab top_nutation\nframes 0");
+  const rigid::lab::Session& s = b.e.session();
+  CHECK(s.name() == "top_nutation");
+  CHECK(s.at_textbook());
+  REQUIRE(b.e.view().fields.size() == s.input_count());
+  CHECK(field_of(b.e, "--mass").text == "2");
+  CHECK(b.e.view().hidden.empty());
+  CHECK(b.e.view().scene_choice == 0);
+  CHECK(b.e.view().orbit.is_identity());
+  CHECK_FALSE(b.e.view().playing);
+  // a lab without motion: play draws its frames, the time stays 0
+  b.run("lab lamina_tensor\nplay 1\nseek 3\nframes 0");
+  CHECK(b.e.session().name() == "lamina_tensor");
+  CHECK(b.e.view().time == 0);
+  CHECK_FALSE(b.e.view().playing);
+
+  const Bench::Ran quit = b.run("quit\nset --mass 2\nprint-command");
+  CHECK(b.closed);
+  CHECK(quit.out.empty());
+  CHECK(value_of(b.e, "--mass") == InputValue(1.0));
+  CHECK(b.e.status() == 0);
+
+  // `wait` holds the script, the window live, for its wall time
+  ex::Script wait = ex::Script::parse("wait 600\nset --mass 2\n", "s.txt");
+  for (int k = 0; k < 5; ++k) {
+    CHECK(wait.step(b.e));
+    CHECK(wait.waiting());
+    b.imgui.frame(b.e);
+  }
+  CHECK(value_of(b.e, "--mass") == InputValue(1.0));
+  // `wait-for` holds it until the file comes
+  const fs::path go = fresh_dir("effects-wait") / "go";
+  ex::Script wait_for = ex::Script::parse("wait-for " + go.string() + "\nset --mass 2\n", "s.txt");
+  for (int k = 0; k < 5; ++k) {
+    CHECK(wait_for.step(b.e));
+    CHECK(wait_for.waiting());
+  }
+  CHECK(value_of(b.e, "--mass") == InputValue(1.0));
+  std::ofstream(go) << "";
+  CHECK(wait_for.step(b.e));
+  CHECK_FALSE(wait_for.waiting());
+  CHECK(value_of(b.e, "--mass") == InputValue(2.0));
+  CHECK_FALSE(wait_for.step(b.e));
+  CHECK(wait_for.status() == 0);
 }
