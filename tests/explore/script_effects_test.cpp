@@ -458,3 +458,18 @@ TEST_CASE("explore: lab opens another lab and quit ends the script and wait and 
   CHECK_FALSE(wait_for.step(b.e));
   CHECK(wait_for.status() == 0);
 }
+
+TEST_CASE("explore: record writes the motion the lab's own --animate writes") {
+  // the explorer as a program (its recording's lab is beside it), under Xvfb
+  const fs::path dir = fresh_dir("effects-record");
+  const Run run = run_explorer(
+      "poinsot", "set --omega 1,2,0.5\nrecord " + (dir / "explorer.webp").string() + "\n", dir);
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  const Run lab =
+      run_lab("poinsot", "--omega=1,2,0.5 --animate " + (dir / "lab.webp").string() + " --quiet");
+  INFO(lab.err);
+  REQUIRE(lab.status == 0);
+  CHECK(read_file(dir / "explorer.webp").size() > 1000);
+  CHECK(read_file(dir / "explorer.webp") == read_file(dir / "lab.webp"));
+}
