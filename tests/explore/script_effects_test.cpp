@@ -1,0 +1,475 @@
+// Every script command pinned by what it does, in-process and without a window: the
+// session's inputs after it, the view's state (time, speed, orbit, the scene and plot
+// chosen, the parts hidden), the scene the explorer describes for drawing (its items
+// and camera, not its pixels), and every file written, byte for byte the lab's own
+// writer's. (Each command's words, counted and typed when read: script_words_test.cpp.)
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <functional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/registry.h"
+#include "common/writers.h"
+#include "explore_common.h"
+#include "explorer.h"
+#include "rigid/render/draw.h"
+#include "rigid/render/png.h"
+#include "scene_cache.h"
+#include "script.h"
+
+using namespace rigid::test;
+namespace ex = rigid::explore;
+using rigid::lab::InputValue;
+using rigid::render::Scene3D;
+
+namespace {
+
+using Inputs = std::vector<std::pair<std::string, std::string>>;
+
+// What the command line computes for `lab` at `inputs` (each its flag and text): a
+// session of its own, whole.
+std::unique_ptr<rigid::lab::Session> session_at(const std::string& lab, const Inputs& inputs) {
+  for (const auto& entry : rigid::lab::all_labs()) {
+    if (entry.name != lab) continue;
+    auto s = entry.make();
+    for (const auto& [flag, text] : inputs) REQUIRE_FALSE(s->set_text(s->find(flag), text));
+    s->wait();
+    return s;
+  }
+  FAIL("no lab " << lab);
+  return nullptr;
+}
+
+// The JSON the lab's own writer prints for `s`, its command named by hand.
+std::string json_of(const rigid::lab::Session& s, const std::vector<std::string>& command) {
+  rigid::lab::RunOutputs outputs;
+  outputs.command = command;
+  std::ostringstream text;
+  rigid::lab::write_json(text, s.report(), outputs, RIGID_VERSION);
+  return text.str();
+}
+
+InputValue value_of(const ex::Explorer& e, const std::string& flag) {
+  const std::size_t i = e.session().find(flag);
+  REQUIRE(i < e.session().input_count());
+  return e.session().value(i);
+}
+const ex::Field& field_of(const ex::Explorer& e, const std::string& flag) {
+  return e.view().fields.at(e.session().find(flag));
+}
+
+// Whether any surface or line of `scene` is labelled `label`.
+bool draws(const Scene3D& scene, const std::string& label) {
+  for (const auto& o : scene.objects())
+    if (o.label == label) return true;
+  for (const auto& p : scene.polylines())
+    if (p.label == label) return true;
+  return false;
+}
+
+// An SVG file's text, the id cairo numbers its surfaces by in the process made plain (a
+// drawing's second surface in one process is "surface11", where a lab's first is "surface1").
+std::string svg_file(const std::string& path) {
+  return std::regex_replace(read_file(path), std::regex("id=\"surface[0-9]+\""), "id=\"surface\"");
+}
+
+bool same_camera(const rigid::render::Camera& a, const rigid::render::Camera& b) {
+  return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fov_y_deg == b.fov_y_deg &&
+         a.orthographic == b.orthographic && a.ortho_height == b.ortho_height;
+}
+
+// The scene the explorer describes for drawing its view now, at 640x480 (a cache of its
+// own, as a fresh view would make it).
+Scene3D described(const ex::Explorer& e) {
+  ex::SceneCache cache;
+  return cache.view_scene(e.session(), e.view(), 640, 480);
+}
+
+// The explorer held in-process, its window a close flag and a known frame.
+struct Bench {
+  Headless imgui;
+  bool closed = false;
+  rigid::render::Image frame_image{8, 6, std::vector<std::uint8_t>(8 * 6 * 3)};
+  ex::Explorer e;
+
+  explicit Bench(const std::string& lab)
+      : e(rigid::lab::all_labs(), lab,
+          ex::Window{nullptr, [this] { return frame_image; }, [this] { closed = true; }, nullptr}) {
+    for (std::size_t k = 0; k < frame_image.rgb.size(); ++k)
+      frame_image.rgb[k] = static_cast<std::uint8_t>(k * 37);
+  }
+
+  struct Ran {
+    std::string out, err;
+    int frames = 0;
+  };
+  // Runs `text` as a script to its end, as the window does (a step a frame); `each` after
+  // every frame.
+  Ran run(const std::string& text, const std::function<void()>& each = {}) {
+    auto script = std::make_unique<ex::Script>(ex::Script::parse(text + "\n", "s.txt", all_labs()));
+    std::ostringstream out, err;
+    script->report_to(out);
+    script->errors_to(err);
+    closed = false;
+    e.run(std::move(script));
+    Ran ran;
+    for (; !closed; ++ran.frames) {
+      REQUIRE(ran.frames < 100000);
+      imgui.frame(e);
+      e.after_render();
+      if (each) each();
+    }
+    ran.out = out.str();
+    ran.err = err.str();
+    return ran;
+  }
+};
+
+}  // namespace
+
+TEST_CASE(
+    "explore: set and drag and unset and textbook change the session's inputs and its fields") {
+  Bench b("poinsot");
+  b.run("set --omega 1,2,0.5\nset --method rk4\nset --t-end 5");
+  CHECK(value_of(b.e, "--omega") == InputValue(Eigen::Vector3d(1, 2, 0.5)));
+  CHECK(value_of(b.e, "--method") == InputValue(std::string("rk4")));
+  CHECK(value_of(b.e, "--t-end") == InputValue(5.0));
+  CHECK(field_of(b.e, "--omega").text == "1,2,0.5");
+  CHECK(field_of(b.e, "--t-end").text == "5");
+  CHECK(b.e.command_line() == "poinsot --omega=1,2,0.5 --t-end=5 --method=rk4");
+  b.run("unset --t-end");
+  CHECK(std::holds_alternative<std::monostate>(value_of(b.e, "--t-end")));
+  CHECK(field_of(b.e, "--t-end").text.empty());
+  CHECK(b.e.command_line() == "poinsot --omega=1,2,0.5 --method=rk4");
+
+  // a refused value is printed, the state stays, and its field shows what was typed and why
+  const Bench::Ran refused = b.run("set --mass -1\nset --omega 1,2,3,4\nset --nope 1");
+  CHECK(refused.out ==
+        "s.txt:1: refused: --mass: must be positive (got -1)\n"
+        "s.txt:2: refused: --omega: needs 3 numbers separated by commas (got "
+        "'1,2,3,4')\n"
+        "s.txt:3: refused: --nope: poinsot has no such input\n");
+  CHECK(refused.err.empty());
+  CHECK(value_of(b.e, "--mass") == InputValue(M_PI));
+  CHECK(value_of(b.e, "--omega") == InputValue(Eigen::Vector3d(1, 2, 0.5)));
+  CHECK(field_of(b.e, "--omega").text == "1,2,3,4");
+  CHECK(field_of(b.e, "--omega").refusal ==
+        "--omega: needs 3 numbers separated by commas (got '1,2,3,4')");
+  CHECK(field_of(b.e, "--mass").refusal == "--mass: must be positive (got -1)");
+
+  // `drag` holds the slider while its frame is built, as a hand does; `set` does not
+  bool held = false;
+  b.run("set --mass 2", [&] { held = held || b.e.view().interacting; });
+  CHECK_FALSE(held);
+  CHECK(value_of(b.e, "--mass") == InputValue(2.0));
+  b.run("drag --mass 2.5", [&] { held = held || b.e.view().interacting; });
+  CHECK(held);
+  CHECK(value_of(b.e, "--mass") == InputValue(2.5));
+  CHECK(field_of(b.e, "--mass").text == "2.5");
+  b.imgui.frame(b.e);
+  CHECK_FALSE(b.e.view().interacting);
+
+  b.run("textbook");
+  CHECK(b.e.session().at_textbook());
+  CHECK(b.e.command_line() == "poinsot");
+  for (std::size_t i = 0; i < b.e.session().input_count(); ++i) {
+    CHECK(b.e.view().fields[i].text == rigid::lab::argument_text(b.e.session().value(i)));
+    CHECK(b.e.view().fields[i].refusal.empty());
+  }
+}
+
+TEST_CASE("explore: a switch set on is in the command and the JSON and the file exported") {
+  struct Case {
+    std::string lab, flag;
+    Inputs before;  // what the switch needs set first
+  };
+  const fs::path dir = fresh_dir("effects-switches");
+  for (const Case& c : {Case{"lamina_tensor", "--examples", {}},
+                        Case{"poinsot", "--project", {{"--method", "rk4"}}},
+                        Case{"tennis_racquet", "--project", {{"--method", "rk4"}}}}) {
+    INFO(c.lab << " " << c.flag);
+    Bench b(c.lab);
+    std::string script, args;
+    for (const auto& [flag, text] : c.before) {
+      script += "set " + flag + " " + text + "\n";
+      args += " " + flag + "=" + text;
+    }
+    const fs::path file = dir / (c.lab + ".json");
+    const Bench::Ran on = b.run(script + "set " + c.flag + " on\nprint-command\nprint-json\n" +
+                                "export-json " + file.string());
+    CHECK(value_of(b.e, c.flag) == InputValue(true));
+    Inputs inputs = c.before;
+    inputs.emplace_back(c.flag, "on");
+    std::vector<std::string> command{c.lab};
+    for (const auto& [flag, text] : c.before) command.push_back(flag + "=" + text);
+    command.push_back(c.flag);
+    const std::string json = json_of(*session_at(c.lab, inputs), command);
+    CHECK(on.out == c.lab + args + " " + c.flag + "\n" + json);
+    CHECK(read_file(file) == json);
+    // off, and on again by its name alone (a switch's field with no text)
+    CHECK(b.run("set " + c.flag + " off\nprint-command").out == c.lab + args + "\n");
+    CHECK(value_of(b.e, c.flag) == InputValue(false));
+    CHECK(b.run("set " + c.flag + "\nprint-command").out == c.lab + args + " " + c.flag + "\n");
+  }
+}
+
+TEST_CASE(
+    "explore: seek and speed and play and pause and frames move the motion's time as they say") {
+  Bench b("poinsot");
+  const double seconds = b.e.session().animation()->seconds;
+  REQUIRE(seconds > 30);
+  b.run("seek 1.25");
+  CHECK(b.e.view().time == 1.25);
+  CHECK_FALSE(b.e.view().playing);
+  b.run("seek 1000");
+  CHECK(b.e.view().time == seconds);
+  b.run("speed 2");
+  CHECK(b.e.view().speed == 2);
+  b.run("speed 1000");
+  CHECK(b.e.view().speed == ex::fastest(*b.e.session().animation()));
+  b.run("speed 0.1");
+  CHECK(b.e.view().speed == 0.1);
+
+  // `play S` plays S s of the motion, a frame 1/30 s of it at the speed set
+  int playing = 0;
+  const auto count = [&] { playing += b.e.view().playing ? 1 : 0; };
+  b.run("seek 0\nspeed 1\nplay 2.5", count);
+  CHECK(playing == 75);
+  CHECK(b.e.view().time == Approx(2.5).epsilon(1e-12));
+  CHECK_FALSE(b.e.view().playing);
+  playing = 0;
+  b.run("seek 0.5\nspeed 2\nplay 2", count);
+  CHECK(playing == 30);
+  CHECK(b.e.view().time == Approx(2.5).epsilon(1e-12));
+
+  // `frames N` draws N frames more, the motion still
+  const int three = b.run("frames 3").frames, ten = b.run("frames 10").frames;
+  CHECK(ten - three == 7);
+  CHECK(b.e.view().time == Approx(2.5).epsilon(1e-12));
+
+  // `pause` stops a motion the window was playing
+  b.e.apply(ex::action::Play{true});
+  REQUIRE(b.e.view().playing);
+  ex::Script pause = ex::Script::parse("pause\n", "s.txt");
+  pause.step(b.e);
+  CHECK_FALSE(b.e.view().playing);
+}
+
+TEST_CASE("explore: turn and zoom and reset-view set the orbit the scene is seen through") {
+  Bench b("poinsot");
+  const Scene3D plain = described(b.e);
+  b.run("turn 30 -10\nzoom 1.5");
+  CHECK(b.e.view().orbit.yaw_deg == 30);
+  CHECK(b.e.view().orbit.pitch_deg == -10);
+  CHECK(b.e.view().orbit.zoom == 1.5);
+  // each adds to the last
+  b.run("turn 30 -10\nzoom 2");
+  CHECK(b.e.view().orbit.yaw_deg == 60);
+  CHECK(b.e.view().orbit.pitch_deg == -20);
+  CHECK(b.e.view().orbit.zoom == 3);
+  const Scene3D turned = described(b.e);
+  CHECK(same_camera(turned.camera, b.e.view().orbit.apply(plain.camera)));
+  CHECK_FALSE(same_camera(turned.camera, plain.camera));
+  b.run("reset-view");
+  CHECK(b.e.view().orbit.is_identity());
+  CHECK(same_camera(described(b.e).camera, plain.camera));
+  b.run("turn 200 0\nturn 200 0");
+  CHECK(b.e.view().orbit.yaw_deg == 40);
+}
+
+TEST_CASE("explore: show-scene and show-plot choose by name what is drawn") {
+  {
+    Bench b("poinsot");
+    const rigid::lab::Session& s = b.e.session();
+    b.run("show-scene herpolhode\nshow-plot integrators");
+    CHECK(ex::view_choices(s, true).at(b.e.view().scene_choice) == "herpolhode");
+    CHECK(ex::view_choices(s, false).at(b.e.view().plot_choice) == "integrators");
+    const auto& herpolhode = std::get<Scene3D>(ex::figure_named(s, "herpolhode")->figure);
+    const Scene3D shown = described(b.e);
+    CHECK(shown.title == herpolhode.title);
+    CHECK(shown.objects().size() == herpolhode.objects().size());
+    CHECK(ex::shown_plot(s, b.e.view())->title ==
+          std::get<rigid::render::Plot2D>(ex::figure_named(s, "integrators")->figure).title);
+    b.run("show-scene motion\nshow-plot omega");
+    CHECK(b.e.view().scene_choice == 0);
+    CHECK(b.e.view().plot_choice == 0);
+    CHECK(described(b.e).title == s.report().figure_title(s.animation()->scene(0).title));
+    CHECK(ex::shown_plot(s, b.e.view())->title ==
+          std::get<rigid::render::Plot2D>(ex::figure_named(s, "omega")->figure).title);
+  }
+  // the motion's strip by its one word, where the lab has one (one explorer at a time:
+  // Dear ImGui's context is one)
+  Bench racquet("tennis_racquet");
+  const rigid::lab::Session& r = racquet.e.session();
+  racquet.run("show-plot growth");
+  CHECK(ex::view_choices(r, false).at(racquet.e.view().plot_choice) == "growth");
+  racquet.run("seek 1\nshow-plot strip");
+  CHECK(racquet.e.view().plot_choice == 0);
+  CHECK(ex::shown_plot(r, racquet.e.view())->title == r.animation()->strip(1.0).title);
+}
+
+TEST_CASE("explore: hide and show take a part of the scene out of what is drawn and back") {
+  Bench b("poinsot");
+  const std::string part = "energy ellipsoid";
+  REQUIRE(draws(described(b.e), part));
+  b.run("hide \"" + part + "\"");
+  CHECK(b.e.view().hidden == std::vector<std::string>{part});
+  CHECK_FALSE(draws(described(b.e), part));
+  CHECK(draws(described(b.e), "invariable plane"));
+  // hiding a hidden part leaves it hidden, and showing a shown one leaves it shown
+  b.run("hide \"" + part + "\"\nshow \"invariable plane\"");
+  CHECK(b.e.view().hidden == std::vector<std::string>{part});
+  CHECK_FALSE(draws(described(b.e), part));
+  CHECK(draws(described(b.e), "invariable plane"));
+  b.run("hide \"invariable plane\"\nshow \"" + part + "\"");
+  CHECK(b.e.view().hidden == std::vector<std::string>{"invariable plane"});
+  CHECK(draws(described(b.e), part));
+  CHECK_FALSE(draws(described(b.e), "invariable plane"));
+  b.run("show \"invariable plane\"\nshow \"invariable plane\"");
+  CHECK(b.e.view().hidden.empty());
+  CHECK(draws(described(b.e), "invariable plane"));
+}
+
+TEST_CASE("explore: a scene or plot or part the lab does not show ends the script with exit 2") {
+  Bench b("poinsot");
+  const ex::ViewState before = b.e.view();
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"show-scene nope", "show-scene: poinsot shows no 'nope'"},
+      {"show-plot nope", "show-plot: poinsot shows no 'nope'"},
+      {"show-plot strip", "show-plot: poinsot shows no 'strip'"},
+      {"hide nope", "hide: the scene shows no part named 'nope'"},
+      {"show nope", "show: the scene shows no part named 'nope'"},
+  };
+  for (const auto& [line, says] : refused) {
+    INFO(line);
+    const Bench::Ran ran = b.run(line + "\nset --mass 2");
+    CHECK(ran.err == "s.txt:1: " + says + "\n");
+    CHECK(value_of(b.e, "--mass") == InputValue(M_PI));  // the script ended there
+    CHECK(b.e.view().scene_choice == before.scene_choice);
+    CHECK(b.e.view().plot_choice == before.plot_choice);
+    CHECK(b.e.view().hidden.empty());
+  }
+  CHECK(b.e.status() == 2);
+}
+
+TEST_CASE("explore: every export writes the bytes the lab's own writers give") {
+  const fs::path dir = fresh_dir("effects-exports");
+  const auto at = [&](const char* name) { return (dir / name).string(); };
+  Bench b("poinsot");
+  const Bench::Ran ran = b.run(
+      "set --omega 1,2,0.5\nturn 20 10\nhide \"energy ellipsoid\"\n"
+      "save-figure omega " +
+      at("omega.svg") +
+      " 400x300\n"
+      "save-figure omega " +
+      at("omega-1600.svg") +
+      "\n"
+      "save-figure herpolhode " +
+      at("herpolhode.png") +
+      " 200x150\n"
+      "save-view " +
+      at("view.png") +
+      " 200x150\n"
+      "export-json " +
+      at("r.json") + "\nexport-csv " + at("r.csv") +
+      "\n"
+      "screenshot " +
+      at("shot.png") + "\nprint-command\nprint-json");
+  CHECK(ran.err.empty());
+  const auto lab = session_at("poinsot", {{"--omega", "1,2,0.5"}});
+  const std::string json = json_of(*lab, {"poinsot", "--omega=1,2,0.5"});
+  CHECK(ran.out == "poinsot --omega=1,2,0.5\n" + json);
+  CHECK(read_file(at("r.json")) == json);
+  CHECK(read_file(at("r.csv")) == rigid::lab::csv_text(lab->report().time_series()));
+
+  // the figures, as the lab's --figures draws them
+  const auto& omega = std::get<rigid::render::Plot2D>(ex::figure_named(*lab, "omega")->figure);
+  rigid::render::save_figure(omega, at("lab-omega.svg"), rigid::render::FigureFormat::kSvg, 400,
+                             300);
+  rigid::render::save_figure(omega, at("lab-omega-1600.svg"), rigid::render::FigureFormat::kSvg,
+                             1600, 1200);
+  const auto& herpolhode = std::get<Scene3D>(ex::figure_named(*lab, "herpolhode")->figure);
+  rigid::render::write_png(rigid::render::draw(herpolhode, 200, 150), at("lab-herpolhode.png"));
+  CHECK(svg_file(at("omega.svg")) == svg_file(at("lab-omega.svg")));
+  CHECK(svg_file(at("omega-1600.svg")) == svg_file(at("lab-omega-1600.svg")));
+  CHECK(read_file(at("herpolhode.png")) == read_file(at("lab-herpolhode.png")));
+
+  // the view as described: turned, its part hidden, at its size
+  ex::SceneCache cache;
+  const Scene3D view = cache.view_scene(b.e.session(), b.e.view(), 200, 150);
+  CHECK_FALSE(draws(view, "energy ellipsoid"));
+  CHECK(b.e.view().orbit.yaw_deg == 20);
+  rigid::render::save_png(view, at("lab-view.png"), 200, 150);
+  CHECK(read_file(at("view.png")) == read_file(at("lab-view.png")));
+  CHECK(rigid::render::read_png(at("view.png")).width == 200);
+
+  // the window's frame, as it read it
+  rigid::render::write_png(b.frame_image, at("frame.png"));
+  CHECK(read_file(at("shot.png")) == read_file(at("frame.png")));
+}
+
+TEST_CASE("explore: lab opens another lab and quit ends the script and wait and wait-for hold it") {
+  Bench b("poinsot");
+  b.run("hide \"energy ellipsoid\"\nshow-scene herpolhode\nturn 10 0\nlab top_nutation\nframes 0");
+  const rigid::lab::Session& s = b.e.session();
+  CHECK(s.name() == "top_nutation");
+  CHECK(s.at_textbook());
+  REQUIRE(b.e.view().fields.size() == s.input_count());
+  CHECK(field_of(b.e, "--mass").text == "2");
+  CHECK(b.e.view().hidden.empty());
+  CHECK(b.e.view().scene_choice == 0);
+  CHECK(b.e.view().orbit.is_identity());
+  CHECK_FALSE(b.e.view().playing);
+  // a lab without motion: play draws its frames, the time stays 0
+  b.run("lab lamina_tensor\nplay 1\nseek 3\nframes 0");
+  CHECK(b.e.session().name() == "lamina_tensor");
+  CHECK(b.e.view().time == 0);
+  CHECK_FALSE(b.e.view().playing);
+
+  const Bench::Ran quit = b.run("quit\nset --mass 2\nprint-command");
+  CHECK(b.closed);
+  CHECK(quit.out.empty());
+  CHECK(value_of(b.e, "--mass") == InputValue(1.0));
+  CHECK(b.e.status() == 0);
+
+  // `wait` holds the script, the window live, for its wall time
+  ex::Script wait = ex::Script::parse("wait 600\nset --mass 2\n", "s.txt");
+  for (int k = 0; k < 5; ++k) {
+    CHECK(wait.step(b.e));
+    CHECK(wait.waiting());
+    b.imgui.frame(b.e);
+  }
+  CHECK(value_of(b.e, "--mass") == InputValue(1.0));
+  // `wait-for` holds it until the file comes
+  const fs::path go = fresh_dir("effects-wait") / "go";
+  ex::Script wait_for = ex::Script::parse("wait-for " + go.string() + "\nset --mass 2\n", "s.txt");
+  for (int k = 0; k < 5; ++k) {
+    CHECK(wait_for.step(b.e));
+    CHECK(wait_for.waiting());
+  }
+  CHECK(value_of(b.e, "--mass") == InputValue(1.0));
+  std::ofstream(go) << "";
+  CHECK(wait_for.step(b.e));
+  CHECK_FALSE(wait_for.waiting());
+  CHECK(value_of(b.e, "--mass") == InputValue(2.0));
+  CHECK_FALSE(wait_for.step(b.e));
+  CHECK(wait_for.status() == 0);
+}
+
+TEST_CASE("explore: record writes the motion the lab's own --animate writes") {
+  // the explorer as a program (its recording's lab is beside it), under Xvfb
+  const fs::path dir = fresh_dir("effects-record");
+  const Run run = run_explorer(
+      "poinsot", "set --omega 1,2,0.5\nrecord " + (dir / "explorer.webp").string() + "\n", dir);
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  const Run lab =
+      run_lab("poinsot", "--omega=1,2,0.5 --animate " + (dir / "lab.webp").string() + " --quiet");
+  INFO(lab.err);
+  REQUIRE(lab.status == 0);
+  CHECK(read_file(dir / "explorer.webp").size() > 1000);
+  CHECK(read_file(dir / "explorer.webp") == read_file(dir / "lab.webp"));
+}
