@@ -75,8 +75,9 @@ bool Script::step(Explorer& e) {
     if (--frames_left_ == 0) e.apply(action::Play{false});
     return true;
   }
-  // the script's end waits for a recording it began, as its next command would
-  if (next_ >= commands_.size()) return blocked_ = e.recording();
+  // the script's end waits for a recording it began, and a lab it asked for, as its next
+  // command would
+  if (next_ >= commands_.size()) return blocked_ = e.recording() || e.opening();
   blocked_ = !ready(commands_[next_], e);
   if (blocked_) return true;
   return run(commands_[next_++], e);

@@ -413,7 +413,8 @@ TEST_CASE("explore: every export writes the bytes the lab's own writers give") {
 
 TEST_CASE("explore: lab opens another lab and quit ends the script and wait and wait-for hold it") {
   Bench b("poinsot");
-  b.run("hide \"energy ellipsoid\"\nshow-scene herpolhode\nturn 10 0\nlab top_nutation\nframes 0");
+  // `lab` last: the script's end waits for the lab it asked for, as a next command would
+  b.run("hide \"energy ellipsoid\"\nshow-scene herpolhode\nturn 10 0\nlab top_nutation");
   const rigid::lab::Session& s = b.e.session();
   CHECK(s.name() == "top_nutation");
   CHECK(s.at_textbook());
