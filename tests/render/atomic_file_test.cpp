@@ -2,18 +2,22 @@
 #include "rigid/render/atomic_file.h"
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <cerrno>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 using rigid::render::write_file_atomically;
+using rigid::render::write_text_atomically;
 namespace fs = std::filesystem;
 
 namespace {
@@ -182,5 +186,140 @@ TEST_CASE("atomic file: a terminating signal mid-write removes the temporary and
     CHECK(WTERMSIG(status) == sig);
     CHECK(entries(dir) == 0);
   }
+  fs::remove_all(dir);
+}
+
+namespace {
+
+// A process of this user that lives until this object goes: it waits on a pipe that
+// closes when the object does.
+class LiveProcess {
+ public:
+  LiveProcess() {
+    int fds[2];
+    REQUIRE(::pipe(fds) == 0);
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::close(fds[1]);
+      char c;
+      while (::read(fds[0], &c, 1) < 0 && errno == EINTR) {
+      }
+      ::_exit(0);
+    }
+    ::close(fds[0]);
+    write_end_ = fds[1];
+  }
+  ~LiveProcess() {
+    ::close(write_end_);
+    ::waitpid(pid_, nullptr, 0);
+  }
+  LiveProcess(const LiveProcess&) = delete;
+  LiveProcess& operator=(const LiveProcess&) = delete;
+  pid_t pid() const { return pid_; }
+
+ private:
+  pid_t pid_ = -1;
+  int write_end_ = -1;
+};
+
+// The id of a process that has ended and been reaped: no process has it (ids are
+// handed out in turn, and come round again only after pid_max more processes).
+pid_t gone_process() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  ::waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+// A temporary's name for the target `base` ("" for the hidden short form) by process `pid`.
+std::string temporary(const std::string& base, const std::string& pid,
+                      const std::string& random = "0123456789abcdef") {
+  return base + ".rigidlab-tmp-" + pid + "-" + random;
+}
+
+}  // namespace
+
+TEST_CASE("atomic file: the sweep removes a dead run's temporaries and nothing else",
+          "[render][atomic]") {
+  const fs::path dir = fresh_dir("sweep");
+  const LiveProcess live;
+  const std::string alive = std::to_string(live.pid()), gone = std::to_string(gone_process());
+  const std::string self = std::to_string(::getpid());
+  // Its process gone: the stale temporaries of this target, by both forms of the name.
+  const std::vector<std::string> stale = {temporary("t.csv", gone), temporary("", gone)};
+  // A live process's (another of this user's, this one's, pid 1's), of either form.
+  std::vector<std::string> kept = {temporary("t.csv", alive), temporary("", alive),
+                                   temporary("t.csv", self), temporary("t.csv", "1")};
+  // The user's files, their process gone too, a character off our pattern.
+  for (const std::string& decoy :
+       {temporary("t.csv", gone, "0123456789abcde"), temporary("t.csv", gone, "0123456789abcdef0"),
+        temporary("t.csv", gone, "0123456789ABCDEF"), temporary("t.csv", "0" + gone),
+        temporary("t.csv", gone) + ".bak", temporary("t.csv", ""), temporary("t.csv", "0"),
+        temporary("t.csv", gone + "x"), temporary("t.csv", "12345678901"),
+        temporary("t.csv", "-" + gone),
+        temporary("t.csv", gone).substr(1 + std::string("t.csv").size()),
+        temporary("t.csv", gone, "0123456789abcdeg"),
+        "t.csv.rigidlab-tmp-" + gone + "_0123456789abcdef", "t.csv.rigidlab-tmp-" + gone}) {
+    kept.push_back(decoy);
+  }
+  for (const std::string& name : stale) std::ofstream(dir / name) << "partial\n";
+  for (const std::string& name : kept) std::ofstream(dir / name) << "the user's\n";
+  // Of our exact pattern and their process gone, but not a regular file of this user:
+  // a pipe, links (to a file, to nothing), a folder, and another user's file.
+  std::vector<std::string> not_files = {
+      temporary("t.csv", gone, "000000000000f1f0"), temporary("t.csv", gone, "000000000000f11c"),
+      temporary("t.csv", gone, "000000000000dead"), temporary("", gone, "000000000000d1a0")};
+  REQUIRE(::mkfifo((dir / not_files[0]).c_str(), 0600) == 0);
+  fs::create_symlink(dir / kept.front(), dir / not_files[1]);
+  fs::create_symlink(dir / "nowhere", dir / not_files[2]);
+  fs::create_directory(dir / not_files[3]);
+  if (::geteuid() == 0) {
+    const std::string theirs = temporary("t.csv", gone, "00000000000f0e55");
+    std::ofstream(dir / theirs) << "another user's\n";
+    REQUIRE(::chown((dir / theirs).c_str(), 65534, 65534) == 0);
+    not_files.push_back(theirs);
+  }
+
+  write_file_atomically((dir / "t.csv").string(), [](std::FILE* f) { std::fputs("new\n", f); });
+  CHECK(read(dir / "t.csv") == "new\n");
+  for (const std::string& name : stale) {
+    INFO(name);
+    CHECK_FALSE(fs::exists(fs::symlink_status(dir / name)));
+  }
+  for (const std::string& name : kept) {
+    INFO(name);
+    CHECK(read(dir / name) == "the user's\n");
+  }
+  for (const std::string& name : not_files) {
+    INFO(name);
+    CHECK(fs::exists(fs::symlink_status(dir / name)));
+  }
+  // Nothing else: no temporary of this write left either.
+  CHECK(entries(dir) == static_cast<int>(1 + kept.size() + not_files.size()));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("atomic file: the sweep keeps a temporary of another user's live process",
+          "[render][atomic]") {
+  // kill(pid, 0) says EPERM of a live process this user may not signal: alive, not gone.
+  // As root, a child that becomes another user (nobody) writes beside a temporary of
+  // its own named with the test's pid (root's, alive); as another user, pid 1's.
+  const bool root = ::geteuid() == 0;
+  if (!root && ::kill(1, 0) == 0) {
+    WARN("pid 1 is this user's here: no process of another user to name");
+    return;
+  }
+  const fs::path dir = fresh_dir("eperm");
+  const std::string owner = std::to_string(root ? ::getpid() : 1);
+  const fs::path held = dir / temporary("t.csv", owner);
+  if (root) REQUIRE(::chown(dir.c_str(), 65534, 65534) == 0);
+  const int status = in_child([&] {
+    if (root && (::setgid(65534) != 0 || ::setuid(65534) != 0)) return 2;
+    std::ofstream(held) << "held\n";
+    write_text_atomically((dir / "t.csv").string(), "new\n");
+    return read(held) == "held\n" && read(dir / "t.csv") == "new\n" ? 0 : 1;
+  });
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
   fs::remove_all(dir);
 }
