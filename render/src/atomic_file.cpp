@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <random>
 #include <stdexcept>
@@ -243,7 +244,10 @@ long pid_of_temporary(const std::string& name, const std::string& prefix) {
       digits.find_first_not_of("0123456789") != std::string::npos || digits[0] == '0') {
     return -1;
   }
-  return std::stol(digits);
+  // a number no process id can be (past pid_t) names no process of ours: not ours to
+  // remove (kill() would ask about a process group instead)
+  const long pid = std::stol(digits);
+  return pid <= std::numeric_limits<pid_t>::max() ? pid : -1;
 }
 
 // Removes the temporaries beside `path` that a killed run (SIGKILL, a power cut) left

@@ -256,6 +256,7 @@ TEST_CASE("atomic file: the sweep removes a dead run's temporaries and nothing e
         temporary("t.csv", gone, "0123456789ABCDEF"), temporary("t.csv", "0" + gone),
         temporary("t.csv", gone) + ".bak", temporary("t.csv", ""), temporary("t.csv", "0"),
         temporary("t.csv", gone + "x"), temporary("t.csv", "12345678901"),
+        temporary("t.csv", "9999999999"),  // 10 digits, past any process id (pid_t)
         temporary("t.csv", "-" + gone),
         temporary("t.csv", gone).substr(1 + std::string("t.csv").size()),
         temporary("t.csv", gone, "0123456789abcdeg"),
