@@ -328,13 +328,13 @@ TEST_CASE("explore: the copied command run in a shell prints the JSON the explor
             << " optional\n";
   // the walk reaches every kind of input given: a switch on, a choice, an optional
   // input, numbers, pairs and vectors, a vector's word
-  CHECK(with_inputs > static_cast<int>(cases.size()) * 9 / 10);
-  CHECK(reached.switches > 20);
-  CHECK(reached.choices > 50);
-  CHECK(reached.optionals > 50);
-  CHECK(reached.vectors > 50);
-  CHECK(reached.words > 5);
-  CHECK(reached.numbers > 200);
+  const int n = static_cast<int>(cases.size());
+  CHECK(with_inputs > n * 9 / 10);
+  CHECK(reached.numbers > n);
+  for (const int kind :
+       {reached.vectors, reached.words, reached.choices, reached.switches, reached.optionals}) {
+    CHECK(kind >= n / 50);
+  }
   CHECK(walk.refused < walk.changes / 2);
 }
 
