@@ -12,18 +12,19 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <condition_variable>
 #include <cstdlib>
 #include <deque>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <thread>
+#include <variant>
 #include <vector>
 
 #include "common/registry.h"
@@ -32,11 +33,9 @@
 
 namespace {
 
-using rigid::lab::InputKind;
-using rigid::lab::InputRule;
-using rigid::lab::InputValue;
-using rigid::lab::Pairing;
-using rigid::lab::Session;
+namespace lab = rigid::lab;
+using lab::InputValue;
+using lab::Session;
 
 // The random source of every choice, and the shapes of numbers drawn from it.
 struct Draw {
@@ -54,13 +53,13 @@ struct Draw {
 // textbook value (about 1 for an optional input the lab sets itself), now and then a
 // physical one far beyond it, or zero, as typed. Every bit of the double is random.
 double number_value(const Session& s, std::size_t i, Draw& d) {
-  const InputRule& r = s.rule(i);
+  const lab::InputRule& r = s.rule(i);
   const InputValue book = s.textbook_value(i);
   const double* textbook = std::get_if<double>(&book);
-  const rigid::lab::SliderSpan span = rigid::lab::slider_span(r, textbook ? *textbook : 1.0);
+  const lab::SliderSpan span = lab::slider_span(r, textbook ? *textbook : 1.0);
   double x = span.log ? d.log_uniform(span.lo, span.hi) : d.uniform(span.lo, span.hi);
   if (!r.own_range() && r.physical() && d.chance(0.1)) x *= std::pow(10.0, d.uniform(-4, 4));
-  if (r.bound() == InputRule::Bound::kFinite && d.chance(0.05)) x = 0;
+  if (r.bound() == lab::InputRule::Bound::kFinite && d.chance(0.05)) x = 0;
   return x;
 }
 
@@ -68,9 +67,9 @@ double number_value(const Session& s, std::size_t i, Draw& d) {
 // (any sign where the rule allows one), or, for one the lab sets itself, positive numbers
 // in increasing order (moments then keep their triangle rule, and a racquet's its order).
 InputValue numbers_value(const Session& s, std::size_t i, Draw& d) {
-  const InputRule& r = s.rule(i);
+  const lab::InputRule& r = s.rule(i);
   const InputValue book = s.textbook_value(i);
-  const bool signed_ok = r.bound() == InputRule::Bound::kFinite;
+  const bool signed_ok = r.bound() == lab::InputRule::Bound::kFinite;
   const auto component = [&](double textbook, double size) {
     if (textbook == 0 || (signed_ok && d.chance(0.2))) return d.uniform(-size, size);
     return d.chance(0.1) ? textbook : textbook * d.log_uniform(0.3, 3.0);
@@ -85,7 +84,7 @@ InputValue numbers_value(const Session& s, std::size_t i, Draw& d) {
     return Eigen::Vector2d(component((*v)[0], size), component((*v)[1], size));
   }
   std::vector<double> parts;
-  for (int k = 0; k < (r.kind() == InputKind::kVector ? 3 : 2); ++k) {
+  for (int k = 0; k < (r.kind() == lab::InputKind::kVector ? 3 : 2); ++k) {
     parts.push_back(d.uniform(1, 2));
   }
   std::sort(parts.begin(), parts.end());
@@ -95,19 +94,19 @@ InputValue numbers_value(const Session& s, std::size_t i, Draw& d) {
 
 // A value for input i other than absent: what its widget offers.
 InputValue a_value(const Session& s, std::size_t i, Draw& d) {
-  const InputRule& r = s.rule(i);
+  const lab::InputRule& r = s.rule(i);
   switch (r.kind()) {
-    case InputKind::kNumber:
+    case lab::InputKind::kNumber:
       return number_value(s, i, d);
-    case InputKind::kPair:
-    case InputKind::kVector:
+    case lab::InputKind::kPair:
+    case lab::InputKind::kVector:
       if (!r.word_names().empty() && d.chance(0.5)) {
         return r.word_names()[d.index(r.word_names().size())];
       }
       return numbers_value(s, i, d);
-    case InputKind::kChoice:
+    case lab::InputKind::kChoice:
       return r.choices()[d.index(r.choices().size())];
-    case InputKind::kFlag: {
+    case lab::InputKind::kFlag: {
       const InputValue now = s.value(i);
       return !(std::holds_alternative<bool>(now) && std::get<bool>(now));
     }
@@ -175,16 +174,16 @@ class Walk {
   void make_way(Session& s, std::size_t i) {
     const std::string& flag = s.rule(i).flag();
     for (std::size_t k = 0; k < s.input_count(); ++k) {
-      for (const Pairing& p : s.rule(k).pairings()) {
-        if (p.kind != Pairing::Kind::kExcludes) continue;
+      for (const lab::Pairing& p : s.rule(k).pairings()) {
+        if (p.kind != lab::Pairing::Kind::kExcludes) continue;
         for (const std::string& other : p.others) {
           const std::size_t j = k == i ? s.find(other) : k;
           if ((k == i || other == flag) && j < s.input_count() && given(s, j)) clear(s, j);
         }
       }
     }
-    for (const Pairing& p : s.rule(i).pairings()) {
-      if (p.kind != Pairing::Kind::kRequires) continue;
+    for (const lab::Pairing& p : s.rule(i).pairings()) {
+      if (p.kind != lab::Pairing::Kind::kRequires) continue;
       const auto is_given = [&](const std::string& o) { return given(s, s.find(o)); };
       if (std::none_of(p.others.begin(), p.others.end(), is_given)) {
         const std::size_t j = s.find(p.others[d_.index(p.others.size())]);
@@ -204,14 +203,14 @@ struct Reached {
   void add(const Session& s) {
     for (std::size_t i = 0; i < s.input_count(); ++i) {
       if (!given(s, i)) continue;
-      const InputRule& r = s.rule(i);
+      const lab::InputRule& r = s.rule(i);
       const InputValue v = s.value(i);
-      switches += r.kind() == InputKind::kFlag;
-      choices += r.kind() == InputKind::kChoice;
+      switches += r.kind() == lab::InputKind::kFlag;
+      choices += r.kind() == lab::InputKind::kChoice;
       optionals += !r.lab_default_text().empty();
       vectors +=
           std::holds_alternative<Eigen::Vector3d>(v) || std::holds_alternative<Eigen::Vector2d>(v);
-      words += r.kind() != InputKind::kChoice && std::holds_alternative<std::string>(v);
+      words += r.kind() != lab::InputKind::kChoice && std::holds_alternative<std::string>(v);
       numbers += std::holds_alternative<double>(v);
     }
   }
@@ -246,9 +245,10 @@ std::string with_json_word(const std::string& json) {
 // Runs the cases handed to it, `workers` at a time, while the sessions make more.
 class Runner {
  public:
-  explicit Runner(std::deque<Case>& cases, int workers) : cases_(cases) {
+  Runner(std::deque<Case>& cases, int workers) : cases_(cases) {
     for (int w = 0; w < workers; ++w) threads_.emplace_back([this] { work(); });
   }
+  ~Runner() { finish(); }
   void add(Case c) {
     std::lock_guard<std::mutex> lock(mutex_);
     cases_.push_back(std::move(c));
@@ -260,7 +260,9 @@ class Runner {
       done_ = true;
     }
     ready_.notify_all();
-    for (std::thread& t : threads_) t.join();
+    for (std::thread& t : threads_) {
+      if (t.joinable()) t.join();
+    }
   }
 
  private:
@@ -292,9 +294,9 @@ void put_labs_on_path() {
 
 TEST_CASE("explore: the copied command run in a shell prints the JSON the explorer shows") {
   put_labs_on_path();
-  const std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs();
+  const std::vector<lab::LabEntry> labs = lab::all_labs();
   std::vector<std::unique_ptr<Session>> sessions;
-  for (const auto& lab : labs) sessions.push_back(lab.make());
+  for (const auto& entry : labs) sessions.push_back(entry.make());
   Walk walk;
   Reached reached;
   std::deque<Case> cases;
@@ -340,8 +342,8 @@ TEST_CASE("explore: the copied command run in a shell prints the JSON the explor
 
 TEST_CASE("explore: the JSON's command names the argv the command line was given") {
   std::unique_ptr<Session> poinsot;
-  for (const auto& lab : rigid::lab::all_labs()) {
-    if (lab.name == "poinsot") poinsot = lab.make();
+  for (const auto& entry : lab::all_labs()) {
+    if (entry.name == "poinsot") poinsot = entry.make();
   }
   REQUIRE(poinsot);
   REQUIRE(!poinsot->set_text(poinsot->find("--mass"), "2.5"));
