@@ -310,7 +310,10 @@ std::variant<InputValue, std::string> read_input(const InputRule& rule, const st
       const auto x = read_number(text);
       if (!x) return "must be a number (got '" + quoted_text(text) + "')";
       if (std::string why = rule.broken(*x, text); !why.empty()) return why;
-      return InputValue(*x);
+      // -0 is 0 (adding +0.0 makes it so), as in the results: a -0 typed where 0 is the
+      // default leaves the input at its default, which the command that reproduces a
+      // state then leaves out
+      return InputValue(*x + 0.0);
     }
     case InputKind::kPair:
     case InputKind::kVector: {
@@ -325,7 +328,7 @@ std::variant<InputValue, std::string> read_input(const InputRule& rule, const st
                  (rule.word_names().empty() ? "" : ", or the value one of " + rule.word_list());
         }
         if (std::string why = rule.broken(*x, part); !why.empty()) return why;
-        xs.push_back(*x);
+        xs.push_back(*x + 0.0);
       }
       if (xs.size() != count) {
         return fmt::format("needs {} numbers separated by commas (got '{}')", count,
