@@ -341,7 +341,9 @@ TEST_CASE("one check of pairings: the command's own settings act only with their
       CHECK(help.substr(entry, next - entry).find("only with ") != std::string::npos);
       const Verdict cli = command_line(lab.name, args);
       CHECK(!cli.accepted);
-      CHECK(cli.message.rfind(args[0] + ": ", 0) == 0);
+      // (a build without the renderer refuses --figures itself first)
+      const bool no_renderer = cli.message.rfind("--figures: needs the renderer", 0) == 0;
+      CHECK((cli.message.rfind(args[0] + ": ", 0) == 0 || no_renderer));
       ++checked;
     }
   }
