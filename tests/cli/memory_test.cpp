@@ -26,7 +26,8 @@ fs::path fresh(const std::string& name) {
 }
 
 // The peak resident memory of a lab run with `args`, in bytes, and its exit status.
-std::uint64_t peak_of(const std::string& lab, std::vector<std::string> args, int& status) {
+[[maybe_unused]] std::uint64_t peak_of(const std::string& lab, std::vector<std::string> args,
+                                       int& status) {
   const std::string program = std::string(RIGID_LAB_DIR) + "/" + lab;
   args.insert(args.begin(), program);
   using rigid::support::Redirect;
