@@ -131,7 +131,7 @@ TEST_CASE("euler_angles: section 7 at and near a pole - exact terms, the bound c
   }
 }
 
-TEST_CASE("euler_angles: --from-omega shows omega as given; sin(theta) near 180 deg from degrees") {
+TEST_CASE("euler_angles: --from-omega shows omega as given, sin(theta) near 180 deg from degrees") {
   // a body whose moments differ by 60 decades: omega rebuilt from the rates lost its
   // 1e-60 component, and L_2 with it
   Inputs in;

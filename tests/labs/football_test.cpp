@@ -178,7 +178,7 @@ TEST_CASE("football: the inputs recorded are the preset and those given") {
   CHECK(earth.Is / earth.I == Approx(1.00327).epsilon(kRoundoff));
 }
 
-TEST_CASE("football: a body of one's own says custom; another Earth by its Is/I or day") {
+TEST_CASE("football: a body of one's own says custom, another Earth by its Is/I or day") {
   // --inertia replaces the preset's moments: the inputs, and so the table and the
   // figures' titles, say "custom", with the preset's omega and alpha it still uses.
   Inputs in;
@@ -263,7 +263,7 @@ TEST_CASE("football: a broken rule is an InputError naming the input") {
   CHECK_THROWS(compute(in));
 }
 
-TEST_CASE("football: the motion is exact at any time, in any order; its still is the cones") {
+TEST_CASE("football: the motion is exact at any time, in any order, its still is the cones") {
   for (const char* name : {"football", "frisbee", "earth"}) {
     INFO(name);
     std::optional<Motion> first, second;

@@ -416,7 +416,7 @@ TEST_CASE("poinsot: the method advised in --help and the README is the ranking's
   CHECK(said);
 }
 
-TEST_CASE("poinsot: an option the method does not use is said so; the shortened last step") {
+TEST_CASE("poinsot: an option the method does not use is said so, the shortened last step") {
   // a fixed step that does not divide t_end: the shortened last step is reported
   const Report fixed = compute(given("--method rk4 --step 0.3 --t-end 10"));
   CHECK(value(fixed.results(), "last_step_s") == Approx(10 - 33 * 0.3).epsilon(kRoundoff));

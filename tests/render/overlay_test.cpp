@@ -142,7 +142,7 @@ TEST_CASE("overlay: a long title wraps at a top-level separator, keeping the mar
                   120) == 0);
 }
 
-TEST_CASE("overlay: the wrap never splits inside parentheses; a title without a separator shrinks",
+TEST_CASE("overlay: the wrap never splits inside parentheses, a title without a separator shrinks",
           "[render][overlay]") {
   // The only top-level separator is the first ": "; the commas in the middle are inside ( ).
   std::string inner = "(";

@@ -132,7 +132,7 @@ const MethodComparison& of(const std::vector<MethodComparison>& comparisons, Met
 // Compiled here, once, as a problem of core's is in its own .cpp.
 template struct rigid::detail::ProblemCode<DampedBody>;
 
-TEST_CASE("damped body: with no closed form it integrates; an exact comparison is refused") {
+TEST_CASE("damped body: with no closed form it integrates, an exact comparison is refused") {
   const DampedBody body({1.0, 2.0, 3.0}, 0.1);
   const DampedState x0 = start({0.3, 1.0, 0.4});
   const std::vector<double> times = rigid::uniform_times(0.0, 20.0, 41);

@@ -225,7 +225,7 @@ TEST_CASE("heavy top: a fast top nods at Is S / I with amplitude 2 mgl I sin(the
   }
 }
 
-TEST_CASE("heavy top: integrators agree with the exact theta; splittings keep p_phi, p_psi") {
+TEST_CASE("heavy top: integrators agree with the exact theta, splittings keep p_phi, p_psi") {
   const rigid::HeavyTopExact exact(kText, {k30, 0.5, 3.0, kS500});
   const rigid::RotationState x0 = rigid::heavy_top_state(exact.angles(0.0));
   const std::vector<double> times = rigid::uniform_times(0.0, 3 * exact.nutation_period(), 301);
