@@ -44,7 +44,7 @@ bool Script::ready(const Command& c, const Explorer& e) const {
 // A `wait` or `wait-for` under way: whether it still holds the script (false also when
 // a file awaited did not come within the script's wall time left: the script ends).
 bool Script::keep_waiting() {
-  const Clock::time_point now = Clock::now();
+  const Clock::time_point now = now_();
   if (looking_since_) {
     const Command& c = commands_[next_ - 1];
     std::error_code ec;
@@ -149,10 +149,10 @@ bool Script::run(const Command& c, Explorer& e) {
       frame_budget_ -= frames_left_;
     } else if (op == "wait") {
       wait_left_ -= c.numbers[0];
-      wait_until_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+      wait_until_ = now_() + std::chrono::duration_cast<Clock::duration>(
                                        std::chrono::duration<double>(c.numbers[0]));
     } else if (op == "wait-for") {
-      looking_since_ = Clock::now();
+      looking_since_ = now_();
       wait_until_ = *looking_since_ + std::chrono::duration_cast<Clock::duration>(
                                           std::chrono::duration<double>(wait_left_));
     } else if (op == "print-command") {

@@ -42,6 +42,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -80,6 +81,10 @@ class Script {
     err_ = &err;
     prefix_ = std::move(prefix);
   }
+  /// The clock its waits read (steady_clock's own): a test gives one it moves itself.
+  void clock_from(std::function<std::chrono::steady_clock::time_point()> now) {
+    now_ = std::move(now);
+  }
   /// Runs the next command (or continues a long one); false once the script is done.
   bool step(Explorer& explorer);
   /// Whether a `wait` is under way, or the explorer's work (its frames unpaced would
@@ -110,6 +115,7 @@ class Script {
   long frames_left_ = 0;                  // of a `play` or `frames` under way
   long frame_budget_ = kScriptMaxFrames;  // what `play` and `frames` may still draw
   using Clock = std::chrono::steady_clock;
+  std::function<Clock::time_point()> now_ = Clock::now;
   std::optional<Clock::time_point> wait_until_;     // of a `wait`, or a `wait-for`'s last look
   std::optional<Clock::time_point> looking_since_;  // a `wait-for` under way
   double wait_left_ = kScriptMaxWaitSeconds;        // s of wall time still to wait, in all

@@ -4,6 +4,7 @@
 // and camera, not its pixels), and every file written, byte for byte the lab's own
 // writer's. (Each command's words, counted and typed when read: script_words_test.cpp.)
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <regex>
@@ -458,6 +459,42 @@ TEST_CASE("explore: lab opens another lab and quit ends the script and wait and 
   CHECK(value_of(b.e, "--mass") == InputValue(2.0));
   CHECK_FALSE(wait_for.step(b.e));
   CHECK(wait_for.status() == 0);
+
+  // On a clock the test moves: `wait 30` holds the script until 30 s have passed, and a
+  // file awaited that does not come within the script's 600 s of waiting ends it, exit 1
+  // (nothing the script asked was wrong: what it waited for did not happen).
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point now{};
+  const auto clock = [&now] { return now; };
+  ex::Script timed = ex::Script::parse("wait 30\nset --mass 3\n", "s.txt");
+  timed.clock_from(clock);
+  CHECK(timed.step(b.e));
+  now += std::chrono::seconds(29);
+  CHECK(timed.step(b.e));
+  CHECK(value_of(b.e, "--mass") == InputValue(2.0));
+  now += std::chrono::seconds(1);
+  CHECK(timed.step(b.e));  // the wait ends, and `set` comes in the same step
+  CHECK(value_of(b.e, "--mass") == InputValue(3.0));
+  std::ostringstream said;
+  ex::Script never = ex::Script::parse(
+      "wait-for " + (go.parent_path() / "never").string() + "\nset --mass 4\n", "s.txt");
+  never.clock_from(clock);
+  never.errors_to(said, "rigidlab-explore");
+  CHECK(never.step(b.e));
+  now += std::chrono::seconds(599);
+  CHECK(never.step(b.e));
+  now += std::chrono::seconds(2);
+  CHECK_FALSE(never.step(b.e));
+  CHECK(never.status() == 1);
+  CHECK(said.str().find("wait-for: '") != std::string::npos);
+  CHECK(said.str().find("' did not come within the script's wait of 600 s in all") !=
+        std::string::npos);
+  CHECK(value_of(b.e, "--mass") == InputValue(3.0));
+
+  // A command after `lab` acts on the lab it opened, never on the one left.
+  b.run("lab top_nutation\nset --mass 2.5");
+  CHECK(b.e.session().name() == "top_nutation");
+  CHECK(value_of(b.e, "--mass") == InputValue(2.5));
 }
 
 TEST_CASE("explore: record writes the motion the lab's own --animate writes") {
