@@ -150,7 +150,7 @@ bool Script::run(const Command& c, Explorer& e) {
     } else if (op == "wait") {
       wait_left_ -= c.numbers[0];
       wait_until_ = now_() + std::chrono::duration_cast<Clock::duration>(
-                                       std::chrono::duration<double>(c.numbers[0]));
+                                 std::chrono::duration<double>(c.numbers[0]));
     } else if (op == "wait-for") {
       looking_since_ = now_();
       wait_until_ = *looking_since_ + std::chrono::duration_cast<Clock::duration>(

@@ -460,6 +460,16 @@ TEST_CASE("explore: lab opens another lab and quit ends the script and wait and 
   CHECK_FALSE(wait_for.step(b.e));
   CHECK(wait_for.status() == 0);
 
+  // A command after `lab` acts on the lab it opened, never on the one left.
+  b.run("lab top_nutation\nset --mass 2.5");
+  CHECK(b.e.session().name() == "top_nutation");
+  CHECK(value_of(b.e, "--mass") == InputValue(2.5));
+}
+
+TEST_CASE("explore: wait and wait-for keep their time on a clock the test moves") {
+  Bench b("poinsot");
+  const fs::path dir = fresh_dir("effects-clock");
+  b.run("set --mass 2");
   // On a clock the test moves: `wait 30` holds the script until 30 s have passed, and a
   // file awaited that does not come within the script's 600 s of waiting ends it, exit 1
   // (nothing the script asked was wrong: what it waited for did not happen).
@@ -476,8 +486,8 @@ TEST_CASE("explore: lab opens another lab and quit ends the script and wait and 
   CHECK(timed.step(b.e));  // the wait ends, and `set` comes in the same step
   CHECK(value_of(b.e, "--mass") == InputValue(3.0));
   std::ostringstream said;
-  ex::Script never = ex::Script::parse(
-      "wait-for " + (go.parent_path() / "never").string() + "\nset --mass 4\n", "s.txt");
+  ex::Script never =
+      ex::Script::parse("wait-for " + (dir / "never").string() + "\nset --mass 4\n", "s.txt");
   never.clock_from(clock);
   never.errors_to(said, "rigidlab-explore");
   CHECK(never.step(b.e));
@@ -490,11 +500,6 @@ TEST_CASE("explore: lab opens another lab and quit ends the script and wait and 
   CHECK(said.str().find("' did not come within the script's wait of 600 s in all") !=
         std::string::npos);
   CHECK(value_of(b.e, "--mass") == InputValue(3.0));
-
-  // A command after `lab` acts on the lab it opened, never on the one left.
-  b.run("lab top_nutation\nset --mass 2.5");
-  CHECK(b.e.session().name() == "top_nutation");
-  CHECK(value_of(b.e, "--mass") == InputValue(2.5));
 }
 
 TEST_CASE("explore: record writes the motion the lab's own --animate writes") {
