@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/registry.h"
+#include "common/session.h"
 #include "common/writers.h"
 #include "explore_common.h"
 #include "explorer.h"
@@ -20,6 +21,7 @@
 #include "rigid/render/png.h"
 #include "scene_cache.h"
 #include "script.h"
+#include "tire_balancing/tire_balancing.h"
 
 using namespace rigid::test;
 namespace ex = rigid::explore;
@@ -96,8 +98,9 @@ struct Bench {
   rigid::render::Image frame_image{8, 6, std::vector<std::uint8_t>(8 * 6 * 3)};
   ex::Explorer e;
 
-  explicit Bench(const std::string& lab)
-      : e(rigid::lab::all_labs(), lab,
+  explicit Bench(const std::string& lab,
+                 std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs())
+      : e(std::move(labs), lab,
           ex::Window{nullptr, [this] { return frame_image; }, [this] { closed = true; }, nullptr}) {
     for (std::size_t k = 0; k < frame_image.rgb.size(); ++k)
       frame_image.rgb[k] = static_cast<std::uint8_t>(k * 37);
@@ -233,6 +236,7 @@ TEST_CASE(
   CHECK(b.e.view().speed == ex::fastest(*b.e.session().animation()));
   b.run("speed 0.1");
   CHECK(b.e.view().speed == 0.1);
+  CHECK(ex::fastest(*b.e.session().animation()) == ex::kMaxSpeed);
 
   // `play S` plays S s of the motion, a frame 1/30 s of it at the speed set
   int playing = 0;
@@ -257,6 +261,18 @@ TEST_CASE(
   ex::Script pause = ex::Script::parse("pause\n", "s.txt");
   pause.step(b.e);
   CHECK_FALSE(b.e.view().playing);
+}
+
+TEST_CASE("explore: a motion too long to watch at 10x plays in 10 s, and starts so") {
+  Bench b("football");
+  b.run("speed 1e6");
+  CHECK(b.e.view().speed == ex::kMaxSpeed);
+  b.run("set --preset earth");  // its precession, hundreds of days
+  const double seconds = b.e.session().animation()->seconds;
+  REQUIRE(seconds > ex::kMaxSpeed * ex::kLongMotionPlay);
+  CHECK(b.e.view().speed == seconds / ex::kLongMotionPlay);
+  b.run("speed 1\nspeed 1e6");
+  CHECK(b.e.view().speed == seconds / ex::kLongMotionPlay);
 }
 
 TEST_CASE("explore: turn and zoom and reset-view set the orbit the scene is seen through") {
@@ -410,6 +426,53 @@ TEST_CASE("explore: every export writes the bytes the lab's own writers give") {
   // the window's frame, as it read it
   rigid::render::write_png(b.frame_image, at("frame.png"));
   CHECK(read_file(at("shot.png")) == read_file(at("frame.png")));
+}
+
+// tire_balancing with its time series and figures taken away: a lab that gives neither,
+// as the explorer must expect of a lab (each of today's gives both at every input)
+rigid::lab::tire_balancing::Report without_series(const rigid::lab::tire_balancing::Inputs& in) {
+  rigid::lab::tire_balancing::Report report = rigid::lab::tire_balancing::program().compute(in);
+  report.series({});
+  return report;
+}
+void no_figures(const rigid::lab::tire_balancing::Report&, rigid::lab::FigureSink&) {}
+
+TEST_CASE("explore: an export the lab cannot give ends the script with exit 2 and no file") {
+  const fs::path dir = fresh_dir("effects-unavailable");
+  const auto at = [&](const char* name) { return (dir / name).string(); };
+  auto program = rigid::lab::tire_balancing::program();
+  program.compute = without_series;
+  program.figures = no_figures;
+  std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs();
+  labs.push_back({"no_series", [program] {
+                    auto p = program;
+                    p.name = "no_series";
+                    return rigid::lab::make_session(p);
+                  }});
+  struct Case {
+    std::string lab, line, says;
+  };
+  for (const Case& c :
+       {Case{"poinsot", "save-figure nope " + at("a.png"),
+             "save-figure: poinsot has no figure named 'nope'"},
+        Case{"lamina_tensor", "record " + at("a.mp4"),
+             "record: lamina_tensor has no motion to record"},
+        Case{"no_series", "save-view " + at("a.png"), "save-view: this lab draws no 3D scene"},
+        Case{"no_series", "export-csv " + at("a.csv"),
+             "export-csv: this run has no time series"}}) {
+    INFO(c.line);
+    Bench b(c.lab, labs);
+    const Bench::Ran ran = b.run(c.line + "\nprint-command");
+    CHECK(ran.err == "s.txt:1: " + c.says + "\n");
+    CHECK(ran.out.empty());  // the script ended there
+    CHECK(b.e.status() == 2);
+    CHECK(fs::is_empty(dir));
+  }
+  // the lab without a series still exports its JSON
+  Bench b("no_series", labs);
+  CHECK(b.run("export-json " + at("r.json")).err.empty());
+  CHECK(b.e.status() == 0);
+  CHECK(fs::exists(at("r.json")));
 }
 
 TEST_CASE("explore: lab opens another lab and quit ends the script and wait and wait-for hold it") {
