@@ -8,10 +8,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <sstream>
 
+#include "common/writers.h"
 #include "rigid/support/text.h"
 #include "scene_cache.h"
 #include "style.h"
+#include "text_wrap.h"
 
 namespace rigid::explore {
 
@@ -20,6 +23,17 @@ using lab::InputRule;
 using lab::InputValue;
 
 namespace {
+
+// Text wrapped to the space left, at its blanks only: a number is never broken.
+void text_wrapped(const std::string& text) {
+  const auto measure = [](std::string_view line) {
+    return ImGui::CalcTextSize(line.data(), line.data() + line.size()).x;
+  };
+  ImGui::BeginGroup();
+  for (const std::string& line : wrap_lines(text, ImGui::GetContentRegionAvail().x, measure))
+    ImGui::TextUnformatted(line.c_str());
+  ImGui::EndGroup();
+}
 
 // A number input: its slider (where it has a value) beside its field.
 void number_widget(const PanelContext& c, std::size_t i, const InputValue& value) {
@@ -80,7 +94,7 @@ void input_widget(const PanelContext& c, std::size_t i) {
   ImGui::PushID(static_cast<int>(i));
   std::string label = r.help();
   if (!r.unit_text().empty()) label += " [" + r.unit_text() + "]";
-  ImGui::TextWrapped("%s", label.c_str());
+  text_wrapped(label);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.flag().c_str());
   // the typed text is taken on Enter, or when the field is left edited
   const auto text_field = [&](const char* hint) {
@@ -126,7 +140,7 @@ void input_widget(const PanelContext& c, std::size_t i) {
   }
   if (!field.refusal.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kRuleColor);
-    ImGui::TextWrapped("%s", support::terminal_safe(field.refusal).c_str());
+    text_wrapped(support::terminal_safe(field.refusal));
     ImGui::PopStyleColor();
   }
   ImGui::Spacing();
@@ -148,7 +162,7 @@ void lab_heading(const PanelContext& c) {
     ImGui::EndCombo();
   }
   ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
-  ImGui::TextWrapped("%s", s.title().c_str());
+  text_wrapped(s.title());
   ImGui::PopStyleColor();
   const bool at_textbook = s.at_textbook();
   if (at_textbook) ImGui::BeginDisabled();
@@ -226,7 +240,7 @@ void export_section(const PanelContext& c) {
   if (ImGui::Button("Copy command")) c.queue.emplace_back(action::CopyCommand{});
   if (!v.message.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, v.message_error ? kRuleColor : kDimColor);
-    ImGui::TextWrapped("%s", v.message.c_str());
+    text_wrapped(v.message);
     ImGui::PopStyleColor();
   }
   if (c.recording) ImGui::TextColored(kDimColor, "recording %s ...", c.recording_path);
@@ -257,6 +271,16 @@ void inputs_panel(const PanelContext& c, float width, float height) {
 
 namespace {
 
+// A value shown just before: a click copies it (the number alone, to paste into a
+// calculator); hovering says so, after what the row remarks.
+void copyable(const std::string& value, const std::string& remark) {
+  if (!ImGui::IsItemHovered()) return;
+  ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) ImGui::SetClipboardText(value.c_str());
+  ImGui::SetTooltip("%s%sclick to copy %s", remark.c_str(), remark.empty() ? "" : "\n",
+                    value.c_str());
+}
+
 // The report's rows as the command line's table has them: each section's heading across
 // the panel, its rows in three columns aligned from one section to the next.
 void report_rows(const lab::Report& report) {
@@ -279,7 +303,7 @@ void report_rows(const lab::Report& report) {
       if (open) ImGui::EndTable();
       ImGui::Spacing();
       ImGui::PushStyleColor(ImGuiCol_Text, kHeadingColor);
-      ImGui::TextWrapped("%s", row.label.c_str());
+      text_wrapped(row.label);
       ImGui::PopStyleColor();
       begin_table();
       continue;
@@ -287,14 +311,14 @@ void report_rows(const lab::Report& report) {
     if (!open) continue;
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
-    ImGui::TextWrapped("%s", row.label.c_str());
+    text_wrapped(row.label);
     ImGui::TableSetColumnIndex(1);
     const std::string value = row.unit.empty() ? row.value : row.value + " " + row.unit;
-    ImGui::TextWrapped("%s", value.c_str());
-    if (!row.remark.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", row.remark.c_str());
+    text_wrapped(value);
+    copyable(row.value, row.remark);
     ImGui::TableSetColumnIndex(2);
     ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
-    ImGui::TextWrapped("%s", row.textbook.c_str());
+    text_wrapped(row.textbook);
     ImGui::PopStyleColor();
   }
   if (open) ImGui::EndTable();
@@ -302,7 +326,7 @@ void report_rows(const lab::Report& report) {
 
 void wrapped(const ImVec4& colour, const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  ImGui::TextWrapped("%s", text.c_str());
+  text_wrapped(text);
   ImGui::PopStyleColor();
 }
 
@@ -316,6 +340,14 @@ void numbers_panel(const lab::Session& s, float x, float width, float height) {
   ImGui::TextColored(kHeadingColor, "%s", report.lab().c_str());
   ImGui::SameLine();
   ImGui::TextColored(kDimColor, report.textbook_inputs() ? "the text's values beside" : "");
+  // the table as the command line prints it, to paste into notes (a value alone: a click)
+  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("Copy table").x -
+                  2 * ImGui::GetStyle().FramePadding.x);
+  if (ImGui::SmallButton("Copy table")) {
+    std::ostringstream table;
+    lab::write_table(table, report, {});
+    ImGui::SetClipboardText(table.str().c_str());
+  }
   if (s.pending()) {
     ImGui::TextColored(kDimColor, "comparing every method with the exact motion ...");
   }

@@ -263,7 +263,7 @@ TEST_CASE(
   CHECK_FALSE(b.e.view().playing);
 }
 
-TEST_CASE("explore: a motion too long to watch at 10x plays in 10 s, and starts so") {
+TEST_CASE("explore: a motion too long to watch at 10x plays in 10 s and starts so") {
   Bench b("football");
   b.run("speed 1e6");
   CHECK(b.e.view().speed == ex::kMaxSpeed);
