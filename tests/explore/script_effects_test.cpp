@@ -316,6 +316,16 @@ TEST_CASE("explore: show-scene and show-plot choose by name what is drawn") {
     CHECK(described(b.e).title == s.report().figure_title(s.animation()->scene(0).title));
     CHECK(ex::shown_plot(s, b.e.view())->title ==
           std::get<rigid::render::Plot2D>(ex::figure_named(s, "omega")->figure).title);
+    // a figure of the whole report is had right after new inputs, as the command line
+    // draws it at them: the comparison is waited for, not refused for the first look
+    for (const char* method : {"rk4", "vern9", "exact"}) {
+      INFO(method);
+      const Bench::Ran ran =
+          b.run(std::string("set --method ") + method + "\nshow-plot integrators");
+      CHECK(ran.err.empty());
+      CHECK(ex::view_choices(s, false).at(b.e.view().plot_choice) == "integrators");
+      CHECK_FALSE(s.pending());
+    }
   }
   // the motion's strip by its one word, where the lab has one (one explorer at a time:
   // Dear ImGui's context is one)
