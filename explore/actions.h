@@ -72,6 +72,9 @@ struct ShowPart {
 struct TogglePart {
   std::string part;
 };
+/// The scene's legend drawn over it, or collapsed to a button (it may hide what a turn
+/// brings under it).
+struct ToggleLegend {};
 
 // Exports, each through the lab's own writers, of the whole report (an export waits for
 // it, the frames going on meanwhile).
@@ -110,9 +113,9 @@ using Action =
     std::variant<action::SetText, action::SetValue, action::Textbook, action::OpenLab, action::Play,
                  action::TogglePlay, action::Seek, action::Step, action::Speed, action::Turn,
                  action::MouseTurn, action::Zoom, action::Wheel, action::ResetView, action::Show,
-                 action::ShowPart, action::TogglePart, action::SaveFigure, action::SaveView,
-                 action::ExportJson, action::ExportCsv, action::Record, action::Screenshot,
-                 action::CopyCommand>;
+                 action::ShowPart, action::TogglePart, action::ToggleLegend, action::SaveFigure,
+                 action::SaveView, action::ExportJson, action::ExportCsv, action::Record,
+                 action::Screenshot, action::CopyCommand>;
 
 /// Whether `a` writes what the whole report says (it waits for the report to come).
 bool needs_whole_report(const Action& a);

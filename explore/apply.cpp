@@ -124,6 +124,11 @@ struct Explorer::Apply {
     e.toggle(a.part);
     return "";
   }
+  std::string operator()(const action::ToggleLegend&) const {
+    e.view_.legend = !e.view_.legend;
+    ++e.view_.hidden_version;  // what is drawn changed
+    return "";
+  }
 
   // ---- exports (each checks its path again as it writes: exports.h)
   std::string operator()(const action::SaveFigure& a) const {

@@ -171,10 +171,16 @@ void Explorer::apply_queued() {
 
 void Explorer::build_ui() {
   const ImGuiIO& io = ImGui::GetIO();
-  const float W = io.DisplaySize.x, H = io.DisplaySize.y;
-  const float center_w = std::max(W - kInputsWidth - kNumbersWidth, 160.0f);
-  const float plot_h = std::floor((H - kTimeBarHeight) * kPlotShare);
-  const float scene_h = std::max(H - kTimeBarHeight - plot_h, 80.0f);
+  const float W = io.DisplaySize.x, H = io.DisplaySize.y, ui = ui_scale();
+  // a narrow window narrows the panels at the sides, not the scene between them
+  const float sides = (kInputsWidth + kNumbersWidth) * ui;
+  const float narrow = std::clamp((W - kMinSceneWidth * ui) / sides, 0.4f, 1.0f);
+  const float inputs_w = std::floor(kInputsWidth * ui * narrow);
+  const float numbers_w = std::floor(kNumbersWidth * ui * narrow);
+  const float bar_h = kTimeBarHeight * ui;
+  const float center_w = std::max(W - inputs_w - numbers_w, 160.0f);
+  const float plot_h = std::floor((H - bar_h) * kPlotShare);
+  const float scene_h = std::max(H - bar_h - plot_h, 80.0f);
   view_.interacting = script_held_;
   std::vector<std::string> parts;
   const PanelContext c{labs_,
@@ -184,13 +190,13 @@ void Explorer::build_ui() {
                        parts,
                        recording_.has_value(),
                        recording_ ? recording_->path.c_str() : ""};
-  inputs_panel(c, kInputsWidth, H);
-  numbers_panel(*session_, W - kNumbersWidth, kNumbersWidth, H);
-  views_.scene(*session_, view_, scenes_, {kInputsWidth, 0, center_w, scene_h}, queued_);
+  inputs_panel(c, inputs_w, H);
+  numbers_panel(*session_, W - numbers_w, numbers_w, H);
+  views_.scene(*session_, view_, scenes_, {inputs_w, 0, center_w, scene_h}, queued_);
   parts = scenes_.parts(*session_, view_);
-  time_panel(c, kInputsWidth, scene_h, center_w, kTimeBarHeight);
+  time_panel(c, inputs_w, scene_h, center_w, bar_h);
   keys(c);
-  views_.plot(*session_, view_, {kInputsWidth, scene_h + kTimeBarHeight, center_w, plot_h});
+  views_.plot(*session_, view_, {inputs_w, scene_h + bar_h, center_w, plot_h});
 }
 
 // ---- a recording, a screenshot, a script -----------------------------------------

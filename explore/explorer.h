@@ -83,6 +83,8 @@ class Explorer {
   /// The lab shown, and what the user sees of it.
   const lab::Session& session() const { return *session_; }
   const ViewState& view() const { return view_; }
+  /// The views as drawn, for a test to read.
+  const Views& views() const { return views_; }
   /// Whether a lab asked for is still opening (the one before is shown meanwhile).
   bool opening() const { return loader_.opening(); }
   /// Whether an animation is being written.

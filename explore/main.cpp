@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -33,6 +34,7 @@
 #include "rigid/support/cli.h"
 #include "rigid/support/text.h"
 #include "script.h"
+#include "style.h"
 
 namespace {
 
@@ -297,8 +299,15 @@ void start_imgui(GLFWwindow* window) {
   ImGuiStyle& style = ImGui::GetStyle();
   style.FrameRounding = 3.0f;
   style.WindowBorderSize = 0.0f;
+  // the monitor's content scale (a HiDPI screen's 2) enlarges the text and every size
+  // with it (style.h's ui_scale()); held to 4, past which no screen goes
+  float xscale = 1.0f, yscale = 1.0f;
+  glfwGetWindowContentScale(window, &xscale, &yscale);
+  const float scale = std::clamp(std::isfinite(yscale) ? yscale : 1.0f, 1.0f, 4.0f);
+  style.ScaleAllSizes(scale);
   // the figures' own font, so the window and its figures read alike
-  if (io.Fonts->AddFontFromFileTTF(RIGID_FONT_PATH, 15.0f) == nullptr) io.Fonts->AddFontDefault();
+  if (io.Fonts->AddFontFromFileTTF(RIGID_FONT_PATH, rigid::explore::kFontPx * scale) == nullptr)
+    io.Fonts->AddFontDefault();
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 }

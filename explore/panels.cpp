@@ -341,8 +341,15 @@ void numbers_panel(const lab::Session& s, float x, float width, float height) {
   ImGui::SameLine();
   ImGui::TextColored(kDimColor, report.textbook_inputs() ? "the text's values beside" : "");
   // the table as the command line prints it, to paste into notes (a value alone: a click)
-  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("Copy table").x -
-                  2 * ImGui::GetStyle().FramePadding.x);
+  // at the right of the heading's line, or under it where the panel is too narrow
+  const float button_w = ImGui::CalcTextSize("Copy table").x + 2 * ImGui::GetStyle().FramePadding.x;
+  const float at = ImGui::GetWindowContentRegionMax().x - button_w;
+  const float heading_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
+  if (heading_end + ImGui::GetStyle().ItemSpacing.x <= at) {
+    ImGui::SameLine(at);
+  } else {
+    ImGui::SetCursorPosX(at);
+  }
   if (ImGui::SmallButton("Copy table")) {
     std::ostringstream table;
     lab::write_table(table, report, {});
@@ -464,6 +471,7 @@ void keys(const PanelContext& c) {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)))
       c.queue.emplace_back(action::Step{-1});
   }
+  if (ImGui::IsKeyPressed('L', false)) c.queue.emplace_back(action::ToggleLegend{});
   // the keys 1 to 9 show and hide the scene's parts
   for (std::size_t k = 0; k < std::min<std::size_t>(c.scene_parts.size(), 9); ++k) {
     // (Dear ImGui 1.86 names no digit keys: the windowing backend's own codes, which

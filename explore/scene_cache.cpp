@@ -122,6 +122,7 @@ render::Scene3D SceneCache::view_scene(const lab::Session& s, const ViewState& v
                                        int height) {
   render::Scene3D scene = shown(s, v)->without(v.hidden);
   scene.camera = v.orbit.apply(base_camera(s, v, width, height));
+  scene.show_legend = v.legend;
   return scene;
 }
 

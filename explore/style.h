@@ -7,10 +7,22 @@ namespace rigid::explore {
 
 // The window's layout at any size: inputs on the left, numbers on the right, the
 // scene between them over the time bar and the plot.
+// Widths and heights at the window's own font size, kFontPx; a monitor's content scale
+// (HiDPI) enlarges the font, and ui_scale() every size with it.
 constexpr float kInputsWidth = 340.0f;
 constexpr float kNumbersWidth = 390.0f;
 constexpr float kTimeBarHeight = 64.0f;
-constexpr float kPlotShare = 0.34f;  // of the height under the scene's top
+constexpr float kPlotShare = 0.34f;       // of the height under the scene's top
+constexpr float kMinSceneWidth = 320.0f;  // the panels at the sides narrow to keep it
+constexpr float kFontPx = 15.0f;
+/// The smallest text of a figure in a view (ticks, legends) at ui_scale() 1: a little
+/// under the panels' own, where a figure that small would shrink it to 6 px.
+constexpr float kFigureTextPx = 12.0f;
+
+/// The window's sizes against kFontPx's: its font's, never under 1.
+inline float ui_scale() {
+  return ImGui::GetFontSize() > kFontPx ? ImGui::GetFontSize() / kFontPx : 1.0f;
+}
 
 // The panels stay where the layout puts them.
 constexpr ImGuiWindowFlags kPanel =

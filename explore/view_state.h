@@ -43,7 +43,8 @@ struct ViewState {
   bool long_motion = false;         ///< the motion shown is longer than 10 s at 10x
   bool interacting = false;         ///< an input's slider or drag is held this frame
   std::vector<std::string> hidden;  ///< the scene's parts (legend entries) not shown
-  long hidden_version = 0;          ///< moves when `hidden` does
+  long hidden_version = 0;          ///< moves when `hidden` or `legend` does
+  bool legend = true;               ///< the scene's legend drawn over it, or collapsed
 
   // the export section
   std::string export_path, figure_size = "1600x1200";

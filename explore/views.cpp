@@ -30,6 +30,11 @@ std::pair<int, int> begin_view(const char* name, ViewRect at) {
           std::max(16, static_cast<int>(at.h * io.DisplayFramebufferScale.y))};
 }
 
+// The smallest text of a figure in a view, in the framebuffer's pixels.
+double figure_text_px() {
+  return kFigureTextPx * ui_scale() * ImGui::GetIO().DisplayFramebufferScale.y;
+}
+
 // GL's rows run bottom-up: the texture is shown flipped.
 void show_texture(unsigned texture, ImVec2 origin, ViewRect at) {
   ImGui::GetWindowDrawList()->AddImage(
@@ -51,6 +56,26 @@ void Views::reset() {
   draw_error_.clear();
 }
 
+// The legend collapses to a button and opens again from it (or the key L): a turn of
+// the view may bring the scene under it.
+void Views::legend_button(const ViewState& v, ImVec2 origin, ViewRect at,
+                          std::vector<Action>& queue) const {
+  const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+  const bool open = v.legend && !legend_box_.empty();
+  const char* text = open ? "hide##legend" : "legend";
+  const float w =
+      ImGui::CalcTextSize(open ? "hide" : text).x + 2 * ImGui::GetStyle().FramePadding.x;
+  // under the legend at its right, or in the view's top right corner
+  const float right =
+      open ? origin.x + static_cast<float>(legend_box_.x1) / scale.x : origin.x + at.w - 8;
+  const float top =
+      open ? origin.y + static_cast<float>(legend_box_.y1) / scale.y + 2 : origin.y + 8;
+  ImGui::SetCursorScreenPos(ImVec2(right - w, top));
+  if (ImGui::SmallButton(text)) queue.emplace_back(action::ToggleLegend{});
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(open ? "collapse the legend (key L)" : "show the legend (key L)");
+}
+
 void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, ViewRect at,
                   std::vector<Action>& queue) {
   const auto [pw, ph] = begin_view("Scene", at);
@@ -61,7 +86,10 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
                      v.orbit,        v.hidden_version, true};
     if (!(scene_drawn_.valid && scene_drawn_ == want)) {
       try {
-        scene_image_.draw(cache.view_scene(s, v, pw, ph), pw, ph);
+        render::Scene3D scene = cache.view_scene(s, v, pw, ph);
+        scene.min_text_px = figure_text_px();
+        scene_image_.draw(scene, pw, ph);
+        legend_box_ = render::layout(scene, pw, ph).legend;
         draw_error_.clear();
       } catch (const std::exception& e) {
         draw_error_ = e.what();
@@ -80,6 +108,7 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
     if (io.MouseWheel != 0.0f) queue.emplace_back(action::Wheel{io.MouseWheel});
     if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) queue.emplace_back(action::ResetView{});
   }
+  if (any) legend_button(v, origin, at, queue);
   if (!draw_error_.empty()) {
     ImGui::SetCursorScreenPos(
         ImVec2(origin.x + 8, origin.y + at.h - 2 * ImGui::GetTextLineHeight()));
@@ -94,10 +123,11 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
 
 void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int height,
                       bool strip) {
-  const std::optional<render::Plot2D> plot = shown_plot(s, v);
+  std::optional<render::Plot2D> plot = shown_plot(s, v);
   cursors_.clear();
   plot_drawn_.valid = plot.has_value();
   if (!plot) return;
+  plot->min_text_px = figure_text_px();
   try {
     plot_image_.draw(*plot, width, height);
     // where the panels against the motion's time are, for the cursor

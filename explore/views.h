@@ -4,6 +4,8 @@
 // the window's context, again only when what it shows has changed.
 #pragma once
 
+#include <imgui.h>
+
 #include <string>
 #include <vector>
 
@@ -30,6 +32,8 @@ class Views {
              std::vector<Action>& queue);
   /// The plot view.
   void plot(const lab::Session& s, const ViewState& v, ViewRect at);
+  /// The scene's texture as last drawn (what the window shows of it).
+  render::Image scene_pixels() const { return scene_image_.read(); }
 
  private:
   // What a view's texture was drawn from: it is drawn again when this changes.
@@ -47,8 +51,11 @@ class Views {
     render::ScreenRect frame;
     double x_lo = 0, x_hi = 1;
   };
+  void legend_button(const ViewState& v, ImVec2 origin, ViewRect at,
+                     std::vector<Action>& queue) const;
   void draw_plot(const lab::Session& s, const ViewState& v, int width, int height, bool strip);
   render::LiveImage scene_image_, plot_image_;
+  render::ScreenRect legend_box_;  ///< the scene's legend as drawn, framebuffer pixels
   Drawn scene_drawn_, plot_drawn_;
   std::vector<Cursor> cursors_;
   std::string draw_error_;

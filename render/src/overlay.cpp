@@ -7,17 +7,19 @@
 
 namespace rigid::render::detail {
 
-Style figure_style(int width, int height) {
+Style figure_style(int width, int height, double min_text_px) {
+  // the smallest fonts (ticks, legend, notes) are 27 px at the reference
+  constexpr double kSmallestFont = 27;
   Style st;
   st.s = std::min(width / 1600.0, height / 1200.0);
-  st.f = std::pow(st.s, 0.7);
+  st.f = std::max(std::pow(st.s, 0.7), min_text_px / kSmallestFont);
   const double f = st.f, s = st.s;
   st.title_font = 40 * f;
   st.panel_title_font = 33 * f;
   st.axis_label_font = 31 * f;
-  st.tick_font = 27 * f;
-  st.legend_font = 27 * f;
-  st.note_font = 27 * f;
+  st.tick_font = kSmallestFont * f;
+  st.legend_font = kSmallestFont * f;
+  st.note_font = kSmallestFont * f;
   st.label_font = 34 * f;
   st.pad = 14 * f;
   // Two paddings: the title, a plot's axis labels and a scene's geometry all

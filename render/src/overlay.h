@@ -47,8 +47,9 @@ struct Style {
   double marker(double ref) const;
 };
 
-/// The figure style at an image size.
-Style figure_style(int width, int height);
+/// The figure style at an image size, its smallest text (ticks, legend) at least
+/// `min_text_px` pixels (0: no floor), the other sizes scaled with it.
+Style figure_style(int width, int height, double min_text_px = 0);
 
 /// Dash pattern in pixels for a line of a width.
 DashPattern dash_pattern(Dash dash, double width, const Style& st);

@@ -285,7 +285,7 @@ std::vector<LegendEntry> shared_entries(const Plot2D& plot) {
 
 FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
   FigurePlan fp;
-  fp.st = figure_style(width, plot.style_height > 0 ? plot.style_height : height);
+  fp.st = figure_style(width, plot.style_height > 0 ? plot.style_height : height, plot.min_text_px);
   const Style& st = fp.st;
   fp.title =
       layout_title(plot.title, st.title_font, st.margin, width - st.margin, 0.5 * width, st.margin);

@@ -146,7 +146,7 @@ std::vector<ScreenRect> label_candidates(const Vector2d& q, const TextExtent& e,
 
 SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_labels) {
   SceneFrame fr;
-  fr.st = figure_style(width, height);
+  fr.st = figure_style(width, height, scene.min_text_px);
   const Style& st = fr.st;
   fr.title = layout_title(scene.title, st.title_font, st.margin, width - st.margin, 0.5 * width,
                           st.margin);

@@ -157,6 +157,10 @@ class Plot2D {
   /// image's own. A strip under an animation's scene sets the whole frame's height,
   /// so its text matches the scene's instead of shrinking with the strip.
   int style_height = 0;
+  /// The smallest text drawn (ticks, the legend), in pixels; 0: the figure style's own
+  /// at the image's size. A plot shown in a small panel on a screen sets it, so its
+  /// text stays legible where a figure that small would shrink it.
+  double min_text_px = 0;
 
   /// Where one panel's parts land at a size, and where the whole figure's do: what
   /// layout() in draw.h returns. Only declared here, as the description never lays

@@ -68,6 +68,9 @@ class Scene3D {
   Camera camera;
   std::string title;        ///< drawn at the top (text.h markup)
   bool show_legend = true;  ///< a legend of labelled objects in the top-right corner
+  /// The smallest text drawn (labels, the legend), in pixels; 0: the figure style's own
+  /// at the image's size. A scene shown small on a screen sets it, so it stays legible.
+  double min_text_px = 0;
   /// When set, the legend drawn is this scene's (each entry once), then any part of this
   /// scene's own it lacks: an animation's frames share the legend of all of them, so it
   /// neither grows nor reorders when a part appears mid-film (the path so far, the
