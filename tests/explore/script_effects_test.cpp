@@ -6,133 +6,14 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
-#include <functional>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "common/registry.h"
 #include "common/session.h"
-#include "common/writers.h"
-#include "explore_common.h"
-#include "explorer.h"
-#include "rigid/render/draw.h"
-#include "rigid/render/png.h"
-#include "scene_cache.h"
-#include "script.h"
+#include "effects_bench.h"
 #include "tire_balancing/tire_balancing.h"
 
-using namespace rigid::test;
-namespace ex = rigid::explore;
-using rigid::lab::InputValue;
-using rigid::render::Scene3D;
-
-namespace {
-
-using Inputs = std::vector<std::pair<std::string, std::string>>;
-
-// What the command line computes for `lab` at `inputs` (each its flag and text): a
-// session of its own, whole.
-std::unique_ptr<rigid::lab::Session> session_at(const std::string& lab, const Inputs& inputs) {
-  for (const auto& entry : rigid::lab::all_labs()) {
-    if (entry.name != lab) continue;
-    auto s = entry.make();
-    for (const auto& [flag, text] : inputs) REQUIRE_FALSE(s->set_text(s->find(flag), text));
-    s->wait();
-    return s;
-  }
-  FAIL("no lab " << lab);
-  return nullptr;
-}
-
-// The JSON the lab's own writer prints for `s`, its command named by hand.
-std::string json_of(const rigid::lab::Session& s, const std::vector<std::string>& command) {
-  rigid::lab::RunOutputs outputs;
-  outputs.command = command;
-  std::ostringstream text;
-  rigid::lab::write_json(text, s.report(), outputs, RIGID_VERSION);
-  return text.str();
-}
-
-InputValue value_of(const ex::Explorer& e, const std::string& flag) {
-  const std::size_t i = e.session().find(flag);
-  REQUIRE(i < e.session().input_count());
-  return e.session().value(i);
-}
-const ex::Field& field_of(const ex::Explorer& e, const std::string& flag) {
-  return e.view().fields.at(e.session().find(flag));
-}
-
-// Whether any surface or line of `scene` is labelled `label`.
-bool draws(const Scene3D& scene, const std::string& label) {
-  for (const auto& o : scene.objects())
-    if (o.label == label) return true;
-  for (const auto& p : scene.polylines())
-    if (p.label == label) return true;
-  return false;
-}
-
-// An SVG file's text, the id cairo numbers its surfaces by in the process made plain (a
-// drawing's second surface in one process is "surface11", where a lab's first is "surface1").
-std::string svg_file(const std::string& path) {
-  return std::regex_replace(read_file(path), std::regex("id=\"surface[0-9]+\""), "id=\"surface\"");
-}
-
-bool same_camera(const rigid::render::Camera& a, const rigid::render::Camera& b) {
-  return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fov_y_deg == b.fov_y_deg &&
-         a.orthographic == b.orthographic && a.ortho_height == b.ortho_height;
-}
-
-// The scene the explorer describes for drawing its view now, at 640x480 (a cache of its
-// own, as a fresh view would make it).
-Scene3D described(const ex::Explorer& e) {
-  ex::SceneCache cache;
-  return cache.view_scene(e.session(), e.view(), 640, 480);
-}
-
-// The explorer held in-process, its window a close flag and a known frame.
-struct Bench {
-  Headless imgui;
-  bool closed = false;
-  rigid::render::Image frame_image{8, 6, std::vector<std::uint8_t>(8 * 6 * 3)};
-  ex::Explorer e;
-
-  explicit Bench(const std::string& lab,
-                 std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs())
-      : e(std::move(labs), lab,
-          ex::Window{nullptr, [this] { return frame_image; }, [this] { closed = true; }, nullptr}) {
-    for (std::size_t k = 0; k < frame_image.rgb.size(); ++k)
-      frame_image.rgb[k] = static_cast<std::uint8_t>(k * 37);
-  }
-
-  struct Ran {
-    std::string out, err;
-    int frames = 0;
-  };
-  // Runs `text` as a script to its end, as the window does (a step a frame); `each` after
-  // every frame.
-  Ran run(const std::string& text, const std::function<void()>& each = {}) {
-    auto script = std::make_unique<ex::Script>(ex::Script::parse(text + "\n", "s.txt", all_labs()));
-    std::ostringstream out, err;
-    script->report_to(out);
-    script->errors_to(err);
-    closed = false;
-    e.run(std::move(script));
-    Ran ran;
-    for (; !closed; ++ran.frames) {
-      REQUIRE(ran.frames < 100000);
-      imgui.frame(e);
-      e.after_render();
-      if (each) each();
-    }
-    ran.out = out.str();
-    ran.err = err.str();
-    return ran;
-  }
-};
-
-}  // namespace
+using namespace rigid::test::effects;
 
 TEST_CASE(
     "explore: set and drag and unset and textbook change the session's inputs and its fields") {
@@ -275,52 +156,6 @@ TEST_CASE("explore: a motion too long to watch at 10x plays in 10 s and starts s
   CHECK(b.e.view().speed == seconds / ex::kLongMotionPlay);
 }
 
-TEST_CASE("explore: turn and zoom and reset-view set the orbit the scene is seen through") {
-  Bench b("poinsot");
-  const Scene3D plain = described(b.e);
-  b.run("turn 30 -10\nzoom 1.5");
-  CHECK(b.e.view().orbit.yaw_deg == 30);
-  CHECK(b.e.view().orbit.pitch_deg == -10);
-  CHECK(b.e.view().orbit.zoom == 1.5);
-  // each adds to the last
-  b.run("turn 30 -10\nzoom 2");
-  CHECK(b.e.view().orbit.yaw_deg == 60);
-  CHECK(b.e.view().orbit.pitch_deg == -20);
-  CHECK(b.e.view().orbit.zoom == 3);
-  const Scene3D turned = described(b.e);
-  CHECK(same_camera(turned.camera, b.e.view().orbit.apply(plain.camera)));
-  CHECK_FALSE(same_camera(turned.camera, plain.camera));
-  b.run("reset-view");
-  CHECK(b.e.view().orbit.is_identity());
-  CHECK(same_camera(described(b.e).camera, plain.camera));
-  b.run("turn 200 0\nturn 200 0");
-  CHECK(b.e.view().orbit.yaw_deg == 40);
-
-  // the camera itself: yaw turns the eye about up by its degrees, pitch raises it by its
-  // degrees, zoom brings it nearer by its factor (to roundoff: a few ulps of the angles)
-  const auto sight = [](const rigid::render::Camera& c) {
-    return Eigen::Vector3d(c.eye - c.target);
-  };
-  const Eigen::Vector3d up = plain.camera.up.normalized(), s0 = sight(plain.camera);
-  const auto elevation_deg = [&](const Eigen::Vector3d& s) {
-    return std::asin(s.normalized().dot(up)) * 180.0 / M_PI;
-  };
-  const auto azimuth_deg = [&](const Eigen::Vector3d& s) {
-    const Eigen::Vector3d x = (s0 - s0.dot(up) * up).normalized(), y = up.cross(x);
-    return std::atan2(s.dot(y), s.dot(x)) * 180.0 / M_PI;
-  };
-  b.run("reset-view\nturn 35 0");
-  const Eigen::Vector3d s1 = sight(described(b.e).camera);
-  CHECK(azimuth_deg(s1) == Approx(35).margin(1e-9));
-  CHECK(elevation_deg(s1) == Approx(elevation_deg(s0)).margin(1e-9));
-  CHECK(s1.norm() == Approx(s0.norm()).epsilon(1e-12));
-  b.run("reset-view\nturn 0 -10\nzoom 2");
-  const Eigen::Vector3d s2 = sight(described(b.e).camera);
-  CHECK(elevation_deg(s2) == Approx(elevation_deg(s0) - 10).margin(1e-9));  // the eye lower
-  CHECK(azimuth_deg(s2) == Approx(0).margin(1e-9));
-  CHECK(s2.norm() == Approx(s0.norm() / 2).epsilon(1e-12));
-}
-
 TEST_CASE("explore: show-scene and show-plot choose by name what is drawn") {
   {
     Bench b("poinsot");
@@ -360,88 +195,6 @@ TEST_CASE("explore: show-scene and show-plot choose by name what is drawn") {
   racquet.run("seek 1\nshow-plot strip");
   CHECK(racquet.e.view().plot_choice == 0);
   CHECK(ex::shown_plot(r, racquet.e.view())->title == r.animation()->strip(1.0).title);
-}
-
-TEST_CASE("explore: hide and show take a part of the scene out of what is drawn and back") {
-  Bench b("poinsot");
-  const std::string part = "energy ellipsoid";
-  REQUIRE(draws(described(b.e), part));
-  b.run("hide \"" + part + "\"");
-  CHECK(b.e.view().hidden == std::vector<std::string>{part});
-  CHECK_FALSE(draws(described(b.e), part));
-  CHECK(draws(described(b.e), "invariable plane"));
-  // hiding a hidden part leaves it hidden, and showing a shown one leaves it shown
-  b.run("hide \"" + part + "\"\nshow \"invariable plane\"");
-  CHECK(b.e.view().hidden == std::vector<std::string>{part});
-  CHECK_FALSE(draws(described(b.e), part));
-  CHECK(draws(described(b.e), "invariable plane"));
-  b.run("hide \"invariable plane\"\nshow \"" + part + "\"");
-  CHECK(b.e.view().hidden == std::vector<std::string>{"invariable plane"});
-  CHECK(draws(described(b.e), part));
-  CHECK_FALSE(draws(described(b.e), "invariable plane"));
-  b.run("show \"invariable plane\"\nshow \"invariable plane\"");
-  CHECK(b.e.view().hidden.empty());
-  CHECK(draws(described(b.e), "invariable plane"));
-
-  // the legend collapses and opens again; what is drawn changes with it
-  const long version = b.e.view().hidden_version;
-  b.e.apply(ex::action::ToggleLegend{});
-  CHECK_FALSE(described(b.e).show_legend);
-  CHECK(b.e.view().hidden_version != version);
-  CHECK(draws(described(b.e), "invariable plane"));
-  b.e.apply(ex::action::ToggleLegend{});
-  CHECK(described(b.e).show_legend);
-}
-
-TEST_CASE("explore: the window's scene is drawn again when a part or the legend goes") {
-  Bench b("poinsot");
-  const auto pixels = [&] { return b.e.views().scene_pixels().rgb; };
-  b.run("frames 1");
-  const std::vector<std::uint8_t> all = pixels();
-  b.run("hide \"energy ellipsoid\"\nframes 1");
-  const std::vector<std::uint8_t> without = pixels();
-  CHECK(without != all);
-  b.run("show \"energy ellipsoid\"\nframes 1");
-  CHECK(pixels() == all);
-  b.e.apply(ex::action::ToggleLegend{});
-  b.run("frames 1");
-  CHECK(pixels() != all);
-}
-
-TEST_CASE("explore: another lab's scene is drawn as that lab opened alone draws it") {
-  std::vector<std::uint8_t> alone;
-  {
-    Bench b("tennis_racquet");
-    b.run("frames 1");
-    alone = b.e.views().scene_pixels().rgb;
-  }
-  Bench b("poinsot");
-  b.run("seek 0.5\nframes 1\nlab tennis_racquet\nframes 1");
-  CHECK(b.e.session().name() == "tennis_racquet");
-  CHECK(b.e.views().scene_pixels().rgb == alone);
-}
-
-TEST_CASE("explore: the keys 1 to 9 show and hide the scene's parts in the legend's order") {
-  Bench b("poinsot");
-  b.run("frames 1");
-  ex::SceneCache cache;
-  const std::vector<std::string> parts = cache.parts(b.e.session(), b.e.view());
-  REQUIRE(parts.size() >= 3);
-  ImGuiIO& io = ImGui::GetIO();
-  for (std::size_t k = 0; k < 3; ++k) {
-    INFO("key " << k + 1);
-    // Dear ImGui 1.86 reads GLFW's key codes, a digit's its character
-    io.KeysDown['1' + k] = true;
-    b.imgui.frame(b.e);
-    io.KeysDown['1' + k] = false;
-    b.imgui.frame(b.e);
-    CHECK(b.e.view().hidden == std::vector<std::string>{parts[k]});
-    io.KeysDown['1' + k] = true;
-    b.imgui.frame(b.e);
-    io.KeysDown['1' + k] = false;
-    b.imgui.frame(b.e);
-    CHECK(b.e.view().hidden.empty());
-  }
 }
 
 TEST_CASE("explore: a scene or plot or part the lab does not show ends the script with exit 2") {
