@@ -298,7 +298,9 @@ LabProgram<Inputs, Report> program() {
           compute,
           figures,
           animation,
-          /*csv=*/true,
+          /*csv=*/
+          "the free motion against time: the Euler angles, their rates and omega in "
+          "the fixed, intermediate and body frames",
           /*preview=*/nullptr,
           /*textbook_example=*/false};
 }

@@ -257,7 +257,9 @@ LabProgram<Inputs, Report> program() {
           compute,
           figures,
           animation,
-          /*csv=*/true,
+          /*csv=*/
+          "the run at its sample times: omega in body axes, the attitude quaternion, "
+          "T and |L|",
           /*preview=*/leave_out_comparisons<Inputs>};
 }
 

@@ -561,7 +561,9 @@ LabProgram<Inputs, Report> program() {
           compute,
           figures,
           animation,
-          /*csv=*/true,
+          /*csv=*/
+          "the run at its sample times: theta (and the closed form's), omega, the "
+          "attitude quaternion, the energy error and the Euler angles and their rates",
           /*preview=*/leave_out_comparisons<Inputs>};
 }
 
