@@ -1,4 +1,4 @@
-// The lab contract (README, "The labs") for every lab in the one list, without naming
+// The lab contract (docs/guide.md, "Running a lab") for every lab in the one list, without naming
 // any: --help, the table, the JSON with its units, and exit status 2 with one
 // line naming the option for input no lab accepts.
 #include <unistd.h>
