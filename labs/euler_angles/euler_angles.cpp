@@ -292,12 +292,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName,
-          kTitle,
-          input_table(),
-          compute,
-          figures,
-          animation,
+  return {kName, kTitle, input_table(), compute, figures, animation,
           /*csv=*/
           "the free motion against time: the Euler angles, their rates and omega in "
           "the fixed, intermediate and body frames",

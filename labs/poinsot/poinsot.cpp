@@ -251,12 +251,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName,
-          kTitle,
-          input_table(),
-          compute,
-          figures,
-          animation,
+  return {kName, kTitle, input_table(), compute, figures, animation,
           /*csv=*/
           "the run at its sample times: omega in body axes, the attitude quaternion, "
           "T and |L|",

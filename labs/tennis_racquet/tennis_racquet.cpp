@@ -395,12 +395,7 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName,
-          kTitle,
-          input_table(),
-          compute,
-          figures,
-          animation,
+  return {kName, kTitle, input_table(), compute, figures, animation,
           /*csv=*/
           "the spin about --spin-axis at its sample times: the exact omega, the "
           "attitude quaternion and --method's omega"};
