@@ -1,27 +1,54 @@
-# Shared set-up for the two README commands (sourced, not run): install what is
-# missing from Debian 12's packages, then configure and build the release
-# preset. Set-up with nothing to do costs nothing: the package check is skipped
-# while its stamp is newer than this file, and the configure step while the
-# build directory exists (the build re-runs CMake itself when a CMakeLists.txt
-# changes).
+# Shared set-up for the README's two commands (sourced, not run): install what is
+# missing from Debian 12's packages, then configure and build the release preset.
+#
+#   source scripts/setup.sh run    what running the labs needs (scripts/run-labs): the
+#                                  labs, rigidlab, the explorer, their man pages; the
+#                                  build without the tests and the bench
+#   source scripts/setup.sh test   that and what testing needs (scripts/run-tests, the
+#                                  sanitizers, the explorer's screenshots; the default)
+#
+# Set-up with nothing to do costs nothing: the package check is skipped while its
+# stamp is newer than this file, and the configure step while the build directory
+# exists (the build re-runs CMake itself when a CMakeLists.txt changes); a build first
+# made for running gains the tests and the bench when testing asks for them.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+rigid_setup="${1:-test}"
+case "$rigid_setup" in
+  run | test) ;;
+  *) echo "scripts/setup.sh: unknown set-up '$rigid_setup' (run or test)" >&2; exit 2 ;;
+esac
 
-RIGID_PACKAGES=(
-  build-essential cmake ninja-build pkg-config
-  libeigen3-dev libboost-dev libcli11-dev nlohmann-json3-dev libfmt-dev catch2
+# To build and run: the compilers and CMake (Python runs at configure time and for
+# the errata sheet), the physics' libraries, the renderer's (OSMesa, EGL, PNG,
+# FreeType and the font, cairo for the plots and the SVG and PDF figures, WebP and
+# FFmpeg for --animate), the explorer's (GLFW, Dear ImGui) and help2man for the man
+# pages `cmake --install` puts beside the programs.
+RIGID_RUN_PACKAGES=(
+  build-essential cmake ninja-build pkg-config python3
+  libeigen3-dev libboost-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libpng-dev libfreetype-dev fonts-dejavu-core
-  libgsl-dev python3-scipy python3-matplotlib python3-mpmath python3-jsonschema help2man
-  libwebp-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
-  libglfw3-dev libimgui-dev xvfb xauth xdotool
-  libcairo2-dev librsvg2-bin poppler-utils
+  libcairo2-dev libwebp-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
+  libglfw3-dev libimgui-dev help2man
+)
+# To test: Catch2; Python's numbers for the references, the schema check and the
+# bench's peers (with GSL's); Xvfb, xauth and xdotool for the explorer under a display
+# server; librsvg and poppler to read back the SVG and PDF figures; clang-format and
+# pmccabe for scripts/check-format and check-size; emscripten (with node) for the
+# wasm test; file for cpack's dpkg-shlibdeps (the package test).
+RIGID_TEST_PACKAGES=(
+  catch2 libgsl-dev
+  python3-scipy python3-matplotlib python3-mpmath python3-jsonschema
+  xvfb xauth xdotool librsvg2-bin poppler-utils
   clang-format pmccabe emscripten file
 )
+packages=("${RIGID_RUN_PACKAGES[@]}")
+[ "$rigid_setup" = test ] && packages+=("${RIGID_TEST_PACKAGES[@]}")
 
-stamp=build/.packages-installed
+stamp=build/.packages-$rigid_setup
 if [ ! -f "$stamp" ] || [ scripts/setup.sh -nt "$stamp" ]; then
   missing=()
-  for package in "${RIGID_PACKAGES[@]}"; do
+  for package in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
       missing+=("$package")
   done
@@ -35,13 +62,20 @@ if [ ! -f "$stamp" ] || [ scripts/setup.sh -nt "$stamp" ]; then
   fi
 fi
 
-# A build directory from an older generator is made anew.
+# A build directory from an older generator is made anew; one made for running gains
+# the tests and the bench when testing asks for them.
 # In CI (CI=true) the project's own sources build with -Werror.
+suite=ON
+[ "$rigid_setup" = run ] && suite=OFF
 if [ ! -f build/build.ninja ]; then
   rm -rf build
   werror=OFF
   [ "${CI:-}" = true ] && werror=ON
-  cmake --preset release -DRIGID_WERROR=$werror >/dev/null
+  cmake --preset release -DRIGID_WERROR=$werror -DRIGID_BUILD_TESTS=$suite \
+    -DRIGID_BUILD_BENCH=$suite >/dev/null
+elif [ "$suite" = ON ] && grep -q '^RIGID_BUILD_\(TESTS\|BENCH\):BOOL=OFF' build/CMakeCache.txt; then
+  cmake build -DRIGID_BUILD_TESTS=ON -DRIGID_BUILD_BENCH=ON >/dev/null
 fi
 mkdir -p build && touch "$stamp"
+[ "$rigid_setup" = test ] && touch build/.packages-run  # testing's packages hold running's
 cmake --build --preset release -j "$(nproc)" | { grep -v '^ninja: no work to do' || true; }

@@ -41,8 +41,8 @@ int explore(const std::string& name, int argc, char** argv, int at) {
 }  // namespace
 
 int run_command(const std::string& name, const std::string& title,
-                const std::vector<BoundInput>& inputs, bool csv, bool animation, int argc,
-                char** argv, const std::function<Computed()>& compute) {
+                const std::vector<BoundInput>& inputs, const std::string& csv, bool animation,
+                int argc, char** argv, const std::function<Computed()>& compute) {
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--explore") == 0) return explore(name, argc, argv, k);
   }

@@ -34,8 +34,8 @@ struct Computed {
 
 /// Parses argv into the bound inputs, runs `compute`, writes; returns the exit status.
 int run_command(const std::string& name, const std::string& title,
-                const std::vector<BoundInput>& inputs, bool csv, bool animation, int argc,
-                char** argv, const std::function<Computed()>& compute);
+                const std::vector<BoundInput>& inputs, const std::string& csv, bool animation,
+                int argc, char** argv, const std::function<Computed()>& compute);
 
 template <class In, class Rep>
 int run_command(int argc, char** argv, const LabProgram<In, Rep>& lab) {

@@ -48,8 +48,9 @@ CLI::Validator in_range(double lo, double hi, const std::string& what) {
 }  // namespace
 
 CommandLine::CommandLine(const std::string& name, const std::string& title,
-                         const std::vector<BoundInput>& inputs, bool csv, bool animation)
-    : app_(title, name), csv_enabled_(csv), animation_enabled_(animation) {
+                         const std::vector<BoundInput>& inputs, const std::string& csv,
+                         bool animation)
+    : app_(title, name), csv_enabled_(!csv.empty()), animation_enabled_(animation) {
   options_.lab = name;
   app_.footer(kNumberRule);
   add_run_options();
@@ -58,8 +59,7 @@ CommandLine::CommandLine(const std::string& name, const std::string& title,
                         "print the version and exit");
   for (const BoundInput& input : inputs) bind(input);
   if (csv_enabled_) {
-    app_.add_option("--csv", options_.csv_path, "write the lab's time series to FILE as CSV")
-        ->type_name("FILE");
+    app_.add_option("--csv", options_.csv_path, "write FILE as CSV: " + csv)->type_name("FILE");
   }
   if (animation_enabled_) {
     add_animation_options(std::any_of(inputs.begin(), inputs.end(), [](const BoundInput& in) {

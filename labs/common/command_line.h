@@ -20,10 +20,10 @@ namespace rigid::lab {
 
 class CommandLine {
  public:
-  /// The command of lab `name`, its inputs bound to their Inputs; `csv` and
-  /// `animation` say whether it takes --csv and --animate.
+  /// The command of lab `name`, its inputs bound to their Inputs; `csv` says what its
+  /// --csv writes (empty: it takes none), `animation` whether it takes --animate.
   CommandLine(const std::string& name, const std::string& title,
-              const std::vector<BoundInput>& inputs, bool csv, bool animation);
+              const std::vector<BoundInput>& inputs, const std::string& csv, bool animation);
   CommandLine(const CommandLine&) = delete;
   CommandLine& operator=(const CommandLine&) = delete;
 

@@ -43,7 +43,7 @@ inline constexpr std::size_t kMaxComparisonSteps = 20'000;
 inline constexpr double kEqualCostEvaluations = 1000.0;
 inline constexpr double kMaxRankedPeriods = 1000.0;
 
-/// Which method to use, as --method's help (and so the man pages) and the README give
+/// Which method to use, as --method's help (and so the man pages) and the user guide give
 /// it: the answer of each lab's own ranking at equal cost ("which method to use") on
 /// the bodies of its tests, over 10 and over 1000 periods.
 inline constexpr char kMethodAdvice[] =

@@ -23,7 +23,9 @@ struct LabProgram {
   /// The motion (nullptr for a lab without one); `frame_times` are the times the
   /// animation will ask for, at which an integrated motion is best sampled.
   Animation (*animation)(const Rep&, const FrameTimes& frame_times) = nullptr;
-  bool csv = false;  ///< the lab writes a time series with --csv
+  /// What --csv writes, as its --help says it ("the run at its sample times: ..."): a time
+  /// series or the sweep a figure draws; empty where the lab writes no CSV.
+  std::string csv;
   /// What a live view computes first when the inputs change, if the whole compute can
   /// take long: the inputs with the slow part left out (nullptr: nothing is slow). The
   /// whole report follows when it is done (session.h).

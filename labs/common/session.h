@@ -50,7 +50,7 @@ class Session {
 
   virtual const std::string& name() const = 0;
   virtual const std::string& title() const = 0;
-  /// Whether the lab writes a time series (--csv).
+  /// Whether the lab writes a CSV (--csv: a time series, or the sweep a figure draws).
   virtual bool has_time_series() const = 0;
   /// Whether the defaults are the text's worked example (else the lab's own choice).
   virtual bool has_textbook_example() const = 0;
@@ -150,7 +150,7 @@ class ProgramSession final : public Session {
 
   const std::string& name() const override { return lab_.name; }
   const std::string& title() const override { return lab_.title; }
-  bool has_time_series() const override { return lab_.csv; }
+  bool has_time_series() const override { return !lab_.csv.empty(); }
   bool has_textbook_example() const override { return lab_.textbook_example; }
   std::size_t input_count() const override { return fields().size(); }
   const InputRule& rule(std::size_t i) const override { return fields().at(i).rule; }

@@ -292,13 +292,10 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName,
-          kTitle,
-          input_table(),
-          compute,
-          figures,
-          animation,
-          /*csv=*/true,
+  return {kName, kTitle, input_table(), compute, figures, animation,
+          /*csv=*/
+          "the free motion against time: the Euler angles, their rates and omega in "
+          "the fixed, intermediate and body frames",
           /*preview=*/nullptr,
           /*textbook_example=*/false};
 }

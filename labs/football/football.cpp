@@ -378,7 +378,11 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/true};
+  return {kName, kTitle, input_table(), compute, figures, animation,
+          /*csv=*/
+          "the rates Omega/omega and phi_dot/omega at each angle alpha between omega "
+          "and the symmetry axis, up to 89.5 deg (a sweep, as the rates figure draws it; no "
+          "time series)"};
 }
 
 }  // namespace rigid::lab::football

@@ -233,7 +233,10 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/true};
+  return {kName, kTitle, input_table(), compute, figures, nullptr,
+          /*csv=*/
+          "the moment n.I.n about an axis in the plate's plane at each angle alpha "
+          "from x, -90 to 90 deg (a sweep, as the moment figure draws it; no time series)"};
 }
 
 }  // namespace rigid::lab::lamina_tensor

@@ -251,13 +251,10 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName,
-          kTitle,
-          input_table(),
-          compute,
-          figures,
-          animation,
-          /*csv=*/true,
+  return {kName, kTitle, input_table(), compute, figures, animation,
+          /*csv=*/
+          "the run at its sample times: omega in body axes, the attitude quaternion, "
+          "T and |L|",
           /*preview=*/leave_out_comparisons<Inputs>};
 }
 

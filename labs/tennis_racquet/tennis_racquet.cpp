@@ -395,7 +395,10 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, animation, /*csv=*/true};
+  return {kName, kTitle, input_table(), compute, figures, animation,
+          /*csv=*/
+          "the spin about --spin-axis at its sample times: the exact omega, the "
+          "attitude quaternion and --method's omega"};
 }
 
 }  // namespace rigid::lab::tennis_racquet

@@ -179,7 +179,13 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName, kTitle, input_table(), compute, figures, nullptr, /*csv=*/true};
+  return {kName,
+          kTitle,
+          input_table(),
+          compute,
+          figures,
+          nullptr,
+          /*csv=*/"the wheel's L and the bearings' torque N against time over one turn"};
 }
 
 }  // namespace rigid::lab::tire_balancing

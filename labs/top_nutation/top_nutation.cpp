@@ -555,13 +555,10 @@ Report compute(const Inputs& in) {
 }
 
 LabProgram<Inputs, Report> program() {
-  return {kName,
-          kTitle,
-          input_table(),
-          compute,
-          figures,
-          animation,
-          /*csv=*/true,
+  return {kName, kTitle, input_table(), compute, figures, animation,
+          /*csv=*/
+          "the run at its sample times: theta (and the closed form's), omega, the "
+          "attitude quaternion, the energy error and the Euler angles and their rates",
           /*preview=*/leave_out_comparisons<Inputs>};
 }
 

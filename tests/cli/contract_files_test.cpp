@@ -1,4 +1,4 @@
-// The lab contract's files (README, "The labs"): a run lands all its outputs or none,
+// The lab contract's files (docs/guide.md, "Running a lab"): a run lands all its outputs or none,
 // writes regular files only, never follows or replaces a link of the user's, leaves no
 // temporary when it fails or is killed, and says when its output never arrives.
 // (`rigidlab figures` as one transaction: rigidlab_figures_test.cpp.)

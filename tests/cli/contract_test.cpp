@@ -1,4 +1,4 @@
-// The lab contract (README, "The labs") for every lab in the one list, without naming
+// The lab contract (docs/guide.md, "Running a lab") for every lab in the one list, without naming
 // any: --help, the table, the JSON with its units, and exit status 2 with one
 // line naming the option for input no lab accepts.
 #include <unistd.h>
@@ -313,4 +313,40 @@ TEST_CASE("contract: a rule that joins inputs names those of them the user gave"
     CHECK(run.one_error_line());
     CHECK(run.err.rfind(std::string("tire_balancing: error: ") + error, 0) == 0);
   }
+}
+
+TEST_CASE("contract: --csv's help says what the CSV holds, a time series or a sweep") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rigid_csv_help_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  int sweeps = 0;
+  for (const std::string& lab : all_labs()) {
+    INFO(lab);
+    const std::string help = run_lab(lab, "--help").out;
+    const auto at = help.find("\n  --csv ");
+    if (at == std::string::npos) continue;
+    const std::string line = help.substr(at + 1, help.find('\n', at + 1) - at - 1);
+    INFO(line);
+    const fs::path csv = dir / (lab + ".csv");
+    REQUIRE(run_lab(lab, "--quiet --csv '" + csv.string() + "'").status == 0);
+    // The header is the first line that is not a comment; its first column is what a
+    // row is taken at: the time (t_s), or the swept quantity (alpha_deg).
+    std::ifstream in(csv);
+    std::string header;
+    while (std::getline(in, header) && header.rfind("#", 0) == 0) {
+    }
+    const std::string first = header.substr(0, header.find(','));
+    INFO(first);
+    if (first == "t_s") {
+      CHECK(line.find("time") != std::string::npos);
+      CHECK(line.find("sweep") == std::string::npos);
+    } else {
+      ++sweeps;
+      CHECK(line.find("a sweep") != std::string::npos);
+      CHECK(line.find("no time series") != std::string::npos);
+      CHECK(line.find(first.substr(0, first.find('_'))) != std::string::npos);
+    }
+  }
+  CHECK(sweeps == 2);  // lamina_tensor's moment and football's rates, both against alpha
+  fs::remove_all(dir);
 }

@@ -8,7 +8,7 @@ its figures.
 
 What this test cannot do is install the package with apt on a fresh Debian 12
 (that needs a clean root and the package registry): that was done by hand in a
-debootstrap chroot (README, "A Debian package").
+debootstrap chroot (docs/guide.md, "Installing").
 
 Usage: package_test.py BUILD_DIR VERSION
 """

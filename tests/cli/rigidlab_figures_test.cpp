@@ -1,4 +1,4 @@
-// `rigidlab figures` as one transaction (README, "The labs"): every lab's figures land
+// `rigidlab figures` as one transaction (docs/guide.md, "Installing"): every lab's figures land
 // together or none does, in a staging folder of the run's own making; a signal that
 // ends rigidlab ends its labs and removes that folder; a line that cannot be written
 // lands nothing; and its options follow the labs' rules.

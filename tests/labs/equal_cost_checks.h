@@ -1,7 +1,7 @@
 // What a lab that ranks its integrators at equal cost (common/integrated_run.h:
 // "which method to use") is held to, in-process: the ranking is by the error the
 // lab reports, every run at the same cost, the method named the first, and the
-// advice of --help and the README the ranking's own answer.
+// advice of --help and the user guide the ranking's own answer.
 #pragma once
 
 #include <fmt/format.h>
@@ -92,9 +92,9 @@ inline std::string named_method(const rigid::lab::Json& r) {
   return space == std::string::npos ? name : name.substr(0, space);
 }
 
-/// The README, where the advice is written for a reader.
-inline std::string readme() {
-  std::ifstream in(std::string(RIGID_SOURCE_DIR) + "/README.md");
+/// The user guide, where the advice is written for a reader.
+inline std::string user_guide() {
+  std::ifstream in(std::string(RIGID_SOURCE_DIR) + "/docs/guide.md");
   std::stringstream text;
   text << in.rdbuf();
   return text.str();

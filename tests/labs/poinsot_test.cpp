@@ -27,7 +27,7 @@ using rigid::test::named_method;
 using rigid::test::names_input;
 using rigid::test::prints_as;
 using rigid::test::ranked_methods;
-using rigid::test::readme;
+using rigid::test::user_guide;
 using rigid::test::value;
 
 TEST_CASE("poinsot: defaults reproduce the text's ellipsoid of section 5.1") {
@@ -388,12 +388,12 @@ TEST_CASE("poinsot: which method to use - every method ranked by its error at eq
   CHECK(value(r, "equal_cost_energy_error_max_rel_vern8_project") < 1e-13);
 }
 
-TEST_CASE("poinsot: the method advised in --help and the README is the ranking's own") {
+TEST_CASE("poinsot: the method advised in --help and the user guide is the ranking's own") {
   const auto* method = rigid::lab::poinsot::input_table().find("--method");
   REQUIRE(method != nullptr);
   CHECK_THAT(method->rule.description(), Catch::Contains("symplectic splitting, order 2"));
   CHECK_THAT(method->rule.description(), Catch::Contains(rigid::lab::kMethodAdvice));
-  CHECK_THAT(readme(), Catch::Contains(rigid::lab::kMethodAdvice));
+  CHECK_THAT(user_guide(), Catch::Contains(rigid::lab::kMethodAdvice));
   // The text's ellipsoid, the book spun about its middle axis (near the separatrix:
   // k'^2 = 1.4e-4) and a body nearer still, over 10 and 1000 periods.
   for (const char* body : {"", "--box 0.24,0.16,0.04 --mass 0.8 --omega 0.06,6,0.06",

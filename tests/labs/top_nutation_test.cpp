@@ -28,7 +28,7 @@ using rigid::test::kRoundoff;
 using rigid::test::named_method;
 using rigid::test::prints_as;
 using rigid::test::ranked_methods;
-using rigid::test::readme;
+using rigid::test::user_guide;
 using rigid::test::value;
 
 namespace {
@@ -246,11 +246,11 @@ TEST_CASE("top_nutation: which method to use - every method ranked by its error 
   CHECK(ranked_methods(r).size() == rigid::kAllMethods.size());
 }
 
-TEST_CASE("top_nutation: the method advised in --help and the README is the ranking's own") {
+TEST_CASE("top_nutation: the method advised in --help and the user guide is the ranking's own") {
   const auto* method = rigid::lab::top_nutation::input_table().find("--method");
   REQUIRE(method != nullptr);
   CHECK_THAT(method->rule.description(), Catch::Contains(rigid::lab::kMethodAdvice));
-  CHECK_THAT(readme(), Catch::Contains(rigid::lab::kMethodAdvice));
+  CHECK_THAT(user_guide(), Catch::Contains(rigid::lab::kMethodAdvice));
   // The text's top, a fast top and a looping one, over 10 and 1000 nutation periods.
   for (const auto& [spin_rpm, theta0_deg, phidot0] :
        {std::tuple{500.0, 30.0, 0.0}, std::tuple{3000.0, 30.0, 0.0},

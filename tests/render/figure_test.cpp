@@ -1,9 +1,9 @@
 // Golden images: each lab's figures, regenerated with its textbook defaults,
 // match the committed figures/ within a tolerance; every golden of the lab is
-// drawn (a lab that stops drawing one fails), and the README gallery shows each
+// drawn (a lab that stops drawing one fails), and the gallery (docs/gallery.md) shows each
 // figure with the caption the lab gives it. On a mismatch the actual, expected
 // and difference PNGs are written to build/figure-diff/. To accept new goldens:
-// `cmake --build build --target figures` and commit figures/ and README.md.
+// `cmake --build build --target figures` and commit figures/ and docs/.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
@@ -75,15 +75,15 @@ void check_lab_figures(const std::string& lab) {
   const auto figures = j["figures"];
   REQUIRE(!figures.empty());
   std::set<std::string> drawn;
-  const std::string readme = read_text(fs::path(RIGID_SOURCE_DIR) / "README.md");
+  const std::string gallery = read_text(fs::path(RIGID_SOURCE_DIR) / "docs" / "gallery.md");
   for (const auto& name : figures) {
     const std::string file = name.get<std::string>();
     INFO(file);
     drawn.insert(file);
     // The gallery shows it with the lab's caption.
     const std::string caption = j["captions"][file];
-    CHECK(readme.find("](figures/" + file + ")") != std::string::npos);
-    CHECK(readme.find("`" + lab + "`: " + caption + " |") != std::string::npos);
+    CHECK(gallery.find("](../figures/" + file + ")") != std::string::npos);
+    CHECK(gallery.find("`" + lab + "`: " + caption + " |") != std::string::npos);
     const fs::path golden = fs::path(RIGID_SOURCE_DIR) / "figures" / file;
     REQUIRE(fs::exists(golden));
     const auto expected = rigid::render::read_png(golden.string());

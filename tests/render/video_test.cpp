@@ -245,7 +245,7 @@ TEST_CASE("video: an MP4 streams into its temporary file as it is encoded, not i
   fs::remove_all(dir);
 }
 
-TEST_CASE("video: the README's animations are what the figures target makes") {
+TEST_CASE("video: the gallery's animations are what the figures target makes") {
   // figures/<lab>_motion.webp: 640x360, 12 fps, 8 s (scripts/figures.cmake)
   int found = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(RIGID_SOURCE_DIR) / "figures")) {
