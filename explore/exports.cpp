@@ -15,9 +15,6 @@
 
 namespace rigid::explore {
 
-namespace {
-
-// A word a shell would read as itself, else single-quoted.
 std::string shell_word(const std::string& word) {
   if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
                                               "0123456789_./=,:+-@%") == std::string::npos) {
@@ -27,6 +24,8 @@ std::string shell_word(const std::string& word) {
   for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
 }
+
+namespace {
 
 std::string write_text(const std::string& path, const std::string& text) {
   if (std::string why = output_refusal(path); !why.empty()) return why;

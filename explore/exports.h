@@ -39,6 +39,9 @@ std::string export_csv(lab::Session& s, const std::string& path);
 std::string json_text(lab::Session& s);
 /// The command line that reproduces the session's inputs, each word a shell reads as itself.
 std::string command_line(const lab::Session& s);
+/// `word` as a POSIX shell reads it back: as it is where every character is safe, else
+/// single-quoted (a quote inside as '\'').
+std::string shell_word(const std::string& word);
 /// `LAB ARGS --animate PATH --quiet` started, its stderr into a pipe this process reads,
 /// ended (SIGTERM, which removes its temporaries) if this process dies first; throws
 /// std::system_error if it cannot be started.

@@ -363,3 +363,23 @@ TEST_CASE("explore: the JSON's command names the argv the command line was given
   REQUIRE(run.wait() == 0);
   CHECK(nlohmann::json::parse(printed)["command"] == nlohmann::json(argv));
 }
+
+TEST_CASE("explore: a word of the copied command is read back by a shell as itself") {
+  // no input of today's labs holds a blank or a quote, but a word that did (a choice,
+  // a path) must still reach the lab whole
+  const std::vector<std::string> words{
+      "plain", "--omega=1,2,3", "two words",   "it's",       "tab\there", "$HOME", "`ls`", "*",
+      "a\nb",  "\"quoted\"",    "back\\slash", "semi;colon", "amp&",      "",      "é"};
+  std::string line = "printf '%s|' ";
+  for (const std::string& w : words) line += " " + rigid::explore::shell_word(w);
+  rigid::support::Subprocess sh(
+      "/bin/sh", {"sh", "-c", line},
+      {rigid::support::Redirect::pipe(), rigid::support::Redirect::null()});
+  const std::string printed = sh.read_to_end();
+  REQUIRE(sh.wait() == 0);
+  std::string expected;
+  for (const std::string& w : words) expected += w + "|";
+  CHECK(printed == expected);
+  // and a safe word is left as it is
+  CHECK(rigid::explore::shell_word("--omega=1,2,3") == "--omega=1,2,3");
+}
