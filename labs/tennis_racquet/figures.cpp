@@ -166,7 +166,9 @@ render::Scene3D flip_scene(const Report& f) {
                     first ? "L, fixed in space" : "");
     scene.add_arrow(c, c + 0.4 * length * R.col(1), 0.03 * a, {colors::kPrincipal[1]},
                     first ? "body axis 2" : "");
-    scene.add_label(c - 0.45 * length * Vector3d::UnitZ(), fmt::format("t = {:.3f} s", t));
+    // the time over L's arrow, which always points up: under the racquet, axis 2 turned
+    // down (late in the flip) pushed it aside, onto its neighbour's
+    scene.add_label(c + 0.68 * length * Vector3d::UnitZ(), fmt::format("t = {:.3f} s", t));
     scene.add_label(c + 0.45 * length * R.col(1), fmt::format("{:.0f}\\deg", rad_to_deg(angle2(t))),
                     colors::kPrincipal[1]);
   }

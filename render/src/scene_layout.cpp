@@ -176,7 +176,7 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_l
   fr.view = make_view(fr.camera, width, height, znear, zfar);
 
   // Labels in order, each clear of the geometry where it can be, never over the title,
-  // the legend or an earlier label, and inside the region the scene was fitted into.
+  // the legend or near an earlier label, and inside the region the scene was fitted into.
   // (A camera asked for alone needs none of it: the geometry's grid is most of the work.)
   if (!place_labels) return fr;
   const Occupancy grid = scene_grid(scene, fr.view, st);
@@ -196,7 +196,10 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_l
     // No candidate inside the region (text wider than it): on the point, kept in view.
     const ScreenRect box = pl.box.empty() ? keep_inside(c.front(), bounds) : pl.box;
     fr.labels.push_back(box);
-    taken.push_back(box.grown(0.25 * st.pad));
+    // later labels keep half a line's height off it, and on its line one and a half:
+    // two labels a space apart read as one ("t = 0.769 s t = 0.984 s")
+    const double h = box.height();
+    taken.push_back({box.x0 - 1.5 * h, box.y0 - 0.5 * h, box.x1 + 1.5 * h, box.y1 + 0.5 * h});
   }
   return fr;
 }
