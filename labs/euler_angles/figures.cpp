@@ -92,18 +92,21 @@ render::Scene3D rotations_scene(const Report& report) {
     const Vector3d z = Vector3d::UnitZ();
     const Vector3d nodes = Eigen::AngleAxisd(e.phi, z) * Vector3d::UnitX();
     const Vector3d three = quaternion_from_euler_zxz(e) * z;
-    const double scale = 1.0 / std::max(report.omega_space.norm(), 1e-300);
+    // omega half again as long as the axes: its head and the parts' clear of the axes'
+    // tips and labels, and the shortest part (theta_dot x', a sixth of omega here) long
+    // enough to show as an arrow
+    const double scale = 1.5 / std::max(report.omega_space.norm(), 1e-300);
     Vector3d tip = Vector3d::Zero();
     const auto part = [&](const Vector3d& along, render::Color color, const std::string& label) {
       const Vector3d next = tip + scale * along;
-      if ((next - tip).norm() > 1e-6) scene.add_arrow(tip, next, 0.012, {color}, label);
+      if ((next - tip).norm() > 1e-6) scene.add_arrow(tip, next, 0.02, {color}, label);
       tip = next;
     };
     part(r.phi_dot * z, kPhiColor, "\\phi-dot z");
     part(r.theta_dot * nodes, kThetaColor, "\\theta-dot x'");
     part(r.psi_dot * three, kPsiColor, "\\psi-dot 3");
     if (tip.norm() > 1e-6) {
-      scene.add_arrow(Vector3d::Zero(), tip, 0.016, {colors::kOmega},
+      scene.add_arrow(Vector3d::Zero(), tip, 0.022, {colors::kOmega},
                       "\\omega = \\phi-dot z + \\theta-dot x' + \\psi-dot 3");
     }
   } else if (report.omega_space.norm() > 0) {
@@ -179,7 +182,8 @@ render::Scene3D gimbal_scene(const Report& report) {
   axis(z, kPhiColor, "\\phi turns about z", "z");
   axis(nodes, kThetaColor, "\\theta about the line of nodes x'", "x'");
   axis(three, kPsiColor, "\\psi about the body's 3", "3");
-  add_arc(scene, nodes, z, theta, 0.75, kThetaColor, "\\theta");
+  // the arc halfway up, its label off the arrowheads of z and 3 (at 0.75 it sat on z's)
+  add_arc(scene, nodes, z, theta, 0.5, kThetaColor, "\\theta");
   if (rates) {
     axis(0.8 * normal, colors::kOmega,
          fmt::format("1 rad/s about n = z \u00d7 x' needs \\phi-dot = {:.3g}, \\psi-dot = "
