@@ -48,9 +48,10 @@ void add_table_line(render::Panel& panel, std::vector<double> x, std::vector<dou
                     double table) {
   render::Series& rim = panel.add_line(
       std::move(x), std::move(y), fmt::format("rim on a table, {:.4g}\\deg", rad_to_deg(table)));
-  rim.color = render::kGray;
-  rim.width = 2.5;
-  rim.dash = render::Dash::kDashed;
+  // dotted and dark: the turning angles' lines beside it are grey dashes
+  rim.color = render::kBlack;
+  rim.width = 3;
+  rim.dash = render::Dash::kDotted;
 }
 
 // V(theta) with E' = E - Is S^2 / 2, the turning points where they meet, and the
@@ -253,10 +254,12 @@ double phi_dot_of(const RotationState& x) {
   return sin2 > 0 ? (omega_z - w.z() * c) / sin2 : 0.0;
 }
 
-// theta(t) and phi_dot(t): the exact motion beside an integrated run.
+// theta(t) and phi_dot(t): the exact motion beside an integrated run, this run's or, for
+// an exact run (`exact_run`), one integrated as a check on it.
 // `integrated_run` null: none beside it (`why_none` goes in the title).
 render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integrated_run,
-                          double t_end, const std::string& why_none, std::optional<double> table) {
+                          bool exact_run, double t_end, const std::string& why_none,
+                          std::optional<double> table) {
   std::vector<double> t, theta, phi_dot, ti, thetai, tpi, phi_doti;
   for (int k = 0; k <= 1200; ++k) {
     t.push_back(t_end * k / 1200);
@@ -283,8 +286,11 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
     tpi.push_back(s.t);
     phi_doti.push_back(phi_dot_of(s.x));
   }
+  // an exact run's figure integrates beside it as a check, and says so
   const std::string integrated =
-      integrated_run ? std::string(method_name(integrated_run->method)) + ", integrated" : "";
+      !integrated_run ? ""
+      : exact_run     ? std::string(method_name(integrated_run->method)) + ", a check on it"
+                      : std::string(method_name(integrated_run->method)) + ", this run";
   render::Plot2D plot(2, 1);
   plot.title = integrated_run ? "nutation and precession"
                               : "nutation and precession, exact (" + why_none + ")";
@@ -345,7 +351,8 @@ void figures(const Report& report, FigureSink& sink) {
   sink.add("band", "the same paths as theta against phi: waves, cusps or loops at any spin",
            band_plot(motion));
   sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
-           theta_plot(motion, integrated, report.t_end, why_none, report.table_theta));
+           theta_plot(motion, integrated, report.method == "exact", report.t_end, why_none,
+                      report.table_theta));
   sink.add("top", "the top, L, the gravity torque and the precession circle",
            Motion(report).scene(0.0));
   // A sleeping top has no comparison at equal cost: the one at the lab's settings.

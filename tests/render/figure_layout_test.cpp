@@ -148,3 +148,30 @@ TEST_CASE("figures: the integrators are listed as the table ranks them, each its
   }
   CHECK(compared == 2);  // poinsot and top_nutation
 }
+
+TEST_CASE("figures: each legend entry of a plot names a series with a point inside its axes") {
+  for (const rigid::lab::LabEntry& entry : rigid::lab::all_labs()) {
+    SECTION(entry.name) {
+      auto session = entry.make();
+      session->wait();
+      for (const rigid::lab::NamedFigure& f : session->figures()) {
+        const auto* plot = std::get_if<Plot2D>(&f.figure);
+        if (plot == nullptr) continue;
+        const Plot2D::Layout layout = rigid::render::layout(*plot, 800, 600);
+        for (int r = 0; r < plot->rows(); ++r)
+          for (int c = 0; c < plot->cols(); ++c) {
+            const auto& at = layout.panels.at(static_cast<std::size_t>(r * plot->cols() + c));
+            for (const auto& s : plot->panel(r, c).series) {
+              if (s.label.empty()) continue;
+              INFO(entry.name << "_" << f.name << ": '" << s.label << "'");
+              bool inside = false;
+              for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k)
+                inside = inside || (s.x[k] >= at.x_lo && s.x[k] <= at.x_hi && s.y[k] >= at.y_lo &&
+                                    s.y[k] <= at.y_hi);
+              CHECK(inside);
+            }
+          }
+      }
+    }
+  }
+}
