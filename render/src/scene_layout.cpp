@@ -192,7 +192,12 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_l
       continue;
     }
     const std::vector<ScreenRect> c = label_candidates({s.x(), s.y()}, extents[k], st);
-    const Placement pl = choose_place(c, grid, bounds, taken);
+    Placement pl;
+    if (l.pinned) {
+      pl = choose_place({c.front()}, Occupancy(bounds, bounds.width()), bounds, taken);
+      if (!pl.found) pl = {};
+    }
+    if (pl.box.empty()) pl = choose_place(c, grid, bounds, taken);
     // No candidate inside the region (text wider than it): on the point, kept in view.
     const ScreenRect box = pl.box.empty() ? keep_inside(c.front(), bounds) : pl.box;
     fr.labels.push_back(box);
