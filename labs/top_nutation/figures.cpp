@@ -163,13 +163,13 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
   scene.title =
       fmt::format("the symmetry axis on the unit sphere: this run{}",
                   others.empty() ? std::string() : ", and \\phi-dot_0 = " + others + " rad/s");
-  // Three spheres in an L: this run's above the first other, the second beside that,
-  // the legend in the free corner (in a row they left the lower part of a 4:3 frame
-  // empty); fewer in a row.
-  const double gap = 3.3, rise = 3.5;
+  // Three spheres in an L, seen from above: this run's above the first other, the second
+  // beside that, the legend in the free corner (in a row they left the lower part of a
+  // 4:3 frame empty); fewer in a row.
+  const double gap = 4.6, rise = 3.6;
   const std::vector<Vector3d> centres =
       paths.size() == 3
-          ? std::vector<Vector3d>{Vector3d(0, 0, rise), Vector3d::Zero(), Vector3d(gap, 0, 0)}
+          ? std::vector<Vector3d>{Vector3d(0, rise, 0), Vector3d::Zero(), Vector3d(gap, 0, 0)}
           : std::vector<Vector3d>{Vector3d::Zero(), Vector3d(gap, 0, 0), Vector3d(2 * gap, 0, 0)};
   int index = 0;
   for (const RegimePaths::Path& p : paths) {
@@ -190,21 +190,20 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
     scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlack, 2.5);
     scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {colors::kFixedAxis},
                     first ? "vertical z" : "");
-    scene.add_label(c + Vector3d(0, -1.0, -0.8),
+    scene.add_label(c + Vector3d(0, -1.35, 0),
                     fmt::format("{}: {}", p.name, to_string(motion.regime())));
     ++index;
   }
-  // From the front, 35 deg above the horizon, far off with a narrow view: each vertical
-  // points up the page and the three stand parallel (from near and above, one perspective
-  // tilted them up-left, up and up-right), and the caps the axes sweep still face the
-  // camera enough to show their loops and cusps.
+  // From above, 15 deg off the vertical, far off with a narrow view: the caps the axes
+  // sweep face the camera, so that waves, cusps (touching the outer circle) and loops
+  // differ at a glance (from the side, 35 deg above the horizon, the three looked alike),
+  // and the tilt keeps the spheres round bodies with z standing out of them.
   Vector3d middle = Vector3d::Zero();
   for (std::size_t k = 0; k < paths.size(); ++k) middle += centres[k] / paths.size();
-  middle.z() += 0.4;
-  const double elevation = deg_to_rad(35.0), distance = 26.0;
-  scene.camera.eye =
-      middle + Vector3d(0, -distance * std::cos(elevation), distance * std::sin(elevation));
+  const double tilt = deg_to_rad(15.0), distance = 26.0;
+  scene.camera.eye = middle + Vector3d(0, -distance * std::sin(tilt), distance * std::cos(tilt));
   scene.camera.target = middle;
+  scene.camera.up = Vector3d::UnitY();
   scene.camera.fov_y_deg = 12;
   return scene;
 }
