@@ -27,7 +27,7 @@ constexpr render::Color kPsiColor = render::kReddishPurple;
 constexpr render::Color kBodyColor = render::kBluishGreen;
 
 // An arc of radius `radius` about `axis` from direction `from` through `angle` (rad),
-// with its label at the middle, a little outside; none for a zero angle.
+// with its label (if any) at the middle, a little outside; none for a zero angle.
 void add_arc(render::Scene3D& scene, const Vector3d& axis, const Vector3d& from, double angle,
              double radius, render::Color color, const std::string& text) {
   angle = std::remainder(angle, 2 * kPi);  // phi and psi of any size: the same turn
@@ -38,7 +38,8 @@ void add_arc(render::Scene3D& scene, const Vector3d& axis, const Vector3d& from,
     points.push_back(radius * (Eigen::AngleAxisd(angle * k / n, axis) * from));
   }
   scene.add_polyline(points, color, 5.0);
-  scene.add_label(1.18 * radius * (Eigen::AngleAxisd(0.5 * angle, axis) * from), text, color);
+  if (!text.empty())
+    scene.add_label(1.18 * radius * (Eigen::AngleAxisd(0.5 * angle, axis) * from), text, color);
 }
 
 // Seen from 45 deg of azimuth before the line of nodes of `phi` (halfway to 3's, 90 deg
@@ -182,8 +183,13 @@ render::Scene3D gimbal_scene(const Report& report) {
   axis(z, kPhiColor, "\\phi turns about z", "z");
   axis(nodes, kThetaColor, "\\theta about the line of nodes x'", "x'");
   axis(three, kPsiColor, "\\psi about the body's 3", "3");
-  // the arc halfway up, its label off the arrowheads of z and 3 (at 0.75 it sat on z's)
-  add_arc(scene, nodes, z, theta, 0.5, kThetaColor, "\\theta");
+  // the arc halfway up, its label beside it on 3's side, pinned there: between the two
+  // shafts there is no room, and at 0.75 up it sat on z's arrowhead
+  add_arc(scene, nodes, z, theta, 0.5, kThetaColor, "");
+  render::Label3D theta_label{0.5 * (z + three).normalized() + 0.14 * (three - z).normalized(),
+                              "\\theta", kThetaColor};
+  theta_label.pinned = true;
+  scene.add_label(std::move(theta_label));
   if (rates) {
     axis(0.8 * normal, colors::kOmega,
          fmt::format("1 rad/s about n = z \u00d7 x' needs \\phi-dot = {:.3g}, \\psi-dot = "

@@ -587,27 +587,3 @@ TEST_CASE("football: the rates figure shows the Earth's two rates apart, with th
   CHECK(linear.series[2].y[1] < 0);  // prolate: Omega against omega_3
   check_rate_scale_threshold();
 }
-
-TEST_CASE(
-    "football: the cones' legend names only paths wide enough to draw; the Earth's rates "
-    "beside its flattening") {
-  for (const char* name : {"football", "frisbee", "earth"}) {
-    INFO(name);
-    const auto report = compute(preset(name));
-    KeptFigures figures;
-    rigid::lab::football::figures(report, figures);
-    const auto& cones = figures.scenes.at("cones");
-    // a labelled path spans at least a hundredth of the scene's unit length (the
-    // Earth's omega path, 1.8e-7 degrees about L, is a point at any size)
-    for (const auto& line : cones.polylines()) {
-      if (line.label.empty()) continue;
-      INFO(line.label);
-      double span = 0;
-      for (const auto& p : line.points) span = std::max(span, (p - line.points.front()).norm());
-      CHECK(span > 0.01);
-    }
-    // where alpha is tiny the rates are flat in it: a second panel against the flattening
-    const bool tiny = report.alpha_deg < 0.5;
-    CHECK(figures.plots.at("rates").cols() == (tiny ? 2 : 1));
-  }
-}
