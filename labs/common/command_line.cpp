@@ -102,10 +102,11 @@ void CommandLine::add_figure_options() {
         .requires_input("--figures", "sets the figures: give --figures DIR too")
         .description();
   };
-  app_.add_option("--figure-format", figure_format_name_,
-                  figure_option("--figure-format",
-                                "png, or svg or pdf for slides and papers (a plot's lines and text "
-                                "as vectors, a 3D scene as its image at --figure-size)"))
+  app_.add_option(
+          "--figure-format", figure_format_name_,
+          figure_option("--figure-format",
+                        "png, or svg or pdf for slides and papers (a plot's lines and text "
+                        "as vectors, a 3D scene as its image at --figure-size under its text)"))
       ->type_name("FORMAT")
       ->capture_default_str()
       ->check(CLI::Validator(

@@ -1,5 +1,7 @@
 #include "common/free_body_scenes.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -19,7 +21,21 @@ void frame_camera(render::Scene3D& scene, double size) {
   scene.camera.fov_y_deg = 27;
 }
 
-// Polhodes on one energy ellipsoid, about the largest and the smallest axis (in
+namespace {
+
+// A family of polhodes named by the axis it circles: that of the largest moment is the
+// energy ellipsoid's shortest axis (semi-axis sqrt(2T / I)), which "the largest axis" had
+// a student look for on the ellipsoid.
+std::string family_name(bool about_largest, Eigen::Index largest, Eigen::Index smallest) {
+  return about_largest
+             ? fmt::format("polhodes about \\omega_{}: largest I, shortest semi-axis", largest + 1)
+             : fmt::format("polhodes about \\omega_{}: smallest I, longest semi-axis",
+                           smallest + 1);
+}
+
+}  // namespace
+
+// Polhodes on one energy ellipsoid, about the axes of the largest and the smallest moment (in
 // the colours of those principal axes), split by the separatrix through the
 // intermediate axis (section 4.1); this body's in omega's colour.
 render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omega0,
@@ -55,9 +71,7 @@ render::Scene3D polhodes_scene(const FreeBodyExact& motion, const Vector3d& omeg
         for (const auto& curve : rigid::polhode(I, sign * w, 240)) {
           scene.add_tube(lift(curve), 0.006 * size,
                          {colors::kPrincipal[about_largest ? largest : smallest]},
-                         k == 1 && sign > 0 ? (about_largest ? "polhodes about the largest axis"
-                                                             : "polhodes about the smallest axis")
-                                            : "");
+                         k == 1 && sign > 0 ? family_name(about_largest, largest, smallest) : "");
         }
       }
     }

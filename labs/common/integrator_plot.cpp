@@ -37,37 +37,49 @@ namespace {
 struct LineStyle {
   render::Color color;
   render::Dash dash;
+  render::Marker marker;
 };
 
 // One line style a method, so a method looks alike in every lab and no two share one:
-// each its own colour (Okabe-Ito's seven that read on white, olive, wine and grey), and
-// a family one dash besides (Verner's pairs solid, dashed, dash-dot, dashed; the
-// splittings solid and dashed), for a reader who cannot tell two colours apart.
+// each its own colour (Okabe-Ito's seven that read on white, olive, wine and grey), a
+// family one dash besides (Verner's pairs solid, dashed, dash-dot, dashed; the splittings
+// solid and dashed), for a reader who cannot tell two colours apart, and its own marker:
+// curves that lie on one another (several at the roundoff floor) each show theirs.
 LineStyle line_style(Method m) {
   using render::Dash;
+  using render::Marker;
   switch (m) {
     case Method::kSplitting:
-      return {render::kBlue, Dash::kSolid};
+      return {render::kBlue, Dash::kSolid, Marker::kCircle};
     case Method::kSplitting4:
-      return {render::kGray, Dash::kDashed};
+      return {render::kGray, Dash::kDashed, Marker::kSquare};
     case Method::kRk4:
-      return {render::kBluishGreen, Dash::kSolid};
+      return {render::kBluishGreen, Dash::kSolid, Marker::kTriangle};
     case Method::kDopri5:
-      return {render::kVermillion, Dash::kDashDot};
+      return {render::kVermillion, Dash::kDashDot, Marker::kTriangleDown};
     case Method::kRkf78:
-      return {render::kReddishPurple, Dash::kSolid};
+      return {render::kReddishPurple, Dash::kSolid, Marker::kDiamond};
     case Method::kBulirschStoer:
-      return {render::kSkyBlue, Dash::kDotted};
+      return {render::kSkyBlue, Dash::kDotted, Marker::kHexagon};
     case Method::kVern6:
-      return {render::kOrange, Dash::kSolid};
+      return {render::kOrange, Dash::kSolid, Marker::kTriangleLeft};
     case Method::kVern7:
-      return {render::kOlive, Dash::kDashed};
+      return {render::kOlive, Dash::kDashed, Marker::kTriangleRight};
     case Method::kVern8:
-      return {render::kBlack, Dash::kDashDot};
+      return {render::kBlack, Dash::kDashDot, Marker::kPlus};
     case Method::kVern9:
-      return {render::kWine, Dash::kDashed};
+      return {render::kWine, Dash::kDashed, Marker::kCross};
   }
-  return {render::kGray, Dash::kSolid};
+  return {render::kGray, Dash::kSolid, Marker::kNone};
+}
+
+// Markers along each curve this far apart (reference pixels), each method's at its own
+// phase of that spacing: ten methods' markers, 16 px apart, side by side where their
+// curves coincide.
+constexpr double kMarkerSpacing = 160;
+
+double marker_phase(Method m) {
+  return (static_cast<double>(m) + 0.5) / static_cast<double>(kAllMethods.size());
 }
 
 // The first sample (t = 0) has no error to show on a log axis; an error below the
@@ -77,24 +89,6 @@ std::vector<double> running_max(const std::vector<double>& v, double floor) {
   double most = floor;
   for (auto it = v.begin() + 1; it != v.end(); ++it) out.push_back(most = std::max(most, *it));
   return out;
-}
-
-// The legend lists the best first: by the largest error, floored, so methods at
-// roundoff tie and keep the methods' own order instead of one their last bits choose.
-std::vector<std::size_t> best_first(const std::vector<MethodCurve>& methods, double error_floor) {
-  std::vector<std::size_t> order(methods.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  const auto floored_max = [&](const MethodCurve& m) {
-    double most = error_floor;
-    for (const double e : m.error) most = std::max(most, e);
-    return most;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const double ea = floored_max(methods[a]), eb = floored_max(methods[b]);
-    if (ea != eb) return ea < eb;
-    return methods[a].method < methods[b].method;
-  });
-  return order;
 }
 
 // The largest value a panel draws, its axis's start at least.
@@ -130,7 +124,7 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
   energy.x.label = t_label;
   energy.y = {energy_label, render::Scale::kLog10};
   energy.y.min = kRoundoffFloor / 3;
-  for (const std::size_t k : best_first(methods, error_floor)) {
+  for (std::size_t k = 0; k < methods.size(); ++k) {
     // A method that did not run, or blew up, has no curve to show.
     if (!methods[k].drawn || methods[k].t.size() < 2) continue;
     std::vector<double> t(methods[k].t.begin() + 1, methods[k].t.end());
@@ -143,6 +137,10 @@ render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const s
     const LineStyle style = line_style(methods[k].method);
     a.color = b.color = style.color;
     a.dash = b.dash = style.dash;
+    a.marker = b.marker = style.marker;
+    a.marker_size = b.marker_size = 12;
+    a.marker_spacing = b.marker_spacing = kMarkerSpacing;
+    a.marker_phase = b.marker_phase = marker_phase(methods[k].method);
   }
   // both panels draw the same methods: one legend under them, where no axis grows for it
   plot.shared_legend = true;

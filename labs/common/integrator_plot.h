@@ -57,7 +57,9 @@ struct ErrorCeiling {
 /// method's band shows as a level line, a steady drift as a rising one). The
 /// first sample (t = 0, no error) is left out. Errors below roundoff are drawn at it:
 /// `error_floor` (kRoundoffFloor in the error's unit) and kRoundoffFloor for the
-/// energy's, where each axis starts; the title says so. One legend under both panels.
+/// energy's, where each axis starts; the title says so. One legend under both panels, in
+/// the order of `methods` (the lab's table's: at equal cost, its ranking), each method its
+/// own colour, dash and marker, so that curves at the floor each show.
 render::Plot2D integrators_plot(const std::vector<MethodCurve>& methods, const std::string& title,
                                 const TimeAxis& time, const std::string& error_title,
                                 const std::string& error_label, const std::string& energy_label,

@@ -27,7 +27,7 @@ constexpr render::Color kPsiColor = render::kReddishPurple;
 constexpr render::Color kBodyColor = render::kBluishGreen;
 
 // An arc of radius `radius` about `axis` from direction `from` through `angle` (rad),
-// with its label at the middle, a little outside; none for a zero angle.
+// with its label (if any) at the middle, a little outside; none for a zero angle.
 void add_arc(render::Scene3D& scene, const Vector3d& axis, const Vector3d& from, double angle,
              double radius, render::Color color, const std::string& text) {
   angle = std::remainder(angle, 2 * kPi);  // phi and psi of any size: the same turn
@@ -38,7 +38,8 @@ void add_arc(render::Scene3D& scene, const Vector3d& axis, const Vector3d& from,
     points.push_back(radius * (Eigen::AngleAxisd(angle * k / n, axis) * from));
   }
   scene.add_polyline(points, color, 5.0);
-  scene.add_label(1.18 * radius * (Eigen::AngleAxisd(0.5 * angle, axis) * from), text, color);
+  if (!text.empty())
+    scene.add_label(1.18 * radius * (Eigen::AngleAxisd(0.5 * angle, axis) * from), text, color);
 }
 
 // Seen from 45 deg of azimuth before the line of nodes of `phi` (halfway to 3's, 90 deg
@@ -92,18 +93,21 @@ render::Scene3D rotations_scene(const Report& report) {
     const Vector3d z = Vector3d::UnitZ();
     const Vector3d nodes = Eigen::AngleAxisd(e.phi, z) * Vector3d::UnitX();
     const Vector3d three = quaternion_from_euler_zxz(e) * z;
-    const double scale = 1.0 / std::max(report.omega_space.norm(), 1e-300);
+    // omega half again as long as the axes: its head and the parts' clear of the axes'
+    // tips and labels, and the shortest part (theta_dot x', a sixth of omega here) long
+    // enough to show as an arrow
+    const double scale = 1.5 / std::max(report.omega_space.norm(), 1e-300);
     Vector3d tip = Vector3d::Zero();
     const auto part = [&](const Vector3d& along, render::Color color, const std::string& label) {
       const Vector3d next = tip + scale * along;
-      if ((next - tip).norm() > 1e-6) scene.add_arrow(tip, next, 0.012, {color}, label);
+      if ((next - tip).norm() > 1e-6) scene.add_arrow(tip, next, 0.02, {color}, label);
       tip = next;
     };
     part(r.phi_dot * z, kPhiColor, "\\phi-dot z");
     part(r.theta_dot * nodes, kThetaColor, "\\theta-dot x'");
     part(r.psi_dot * three, kPsiColor, "\\psi-dot 3");
     if (tip.norm() > 1e-6) {
-      scene.add_arrow(Vector3d::Zero(), tip, 0.016, {colors::kOmega},
+      scene.add_arrow(Vector3d::Zero(), tip, 0.022, {colors::kOmega},
                       "\\omega = \\phi-dot z + \\theta-dot x' + \\psi-dot 3");
     }
   } else if (report.omega_space.norm() > 0) {
@@ -179,7 +183,13 @@ render::Scene3D gimbal_scene(const Report& report) {
   axis(z, kPhiColor, "\\phi turns about z", "z");
   axis(nodes, kThetaColor, "\\theta about the line of nodes x'", "x'");
   axis(three, kPsiColor, "\\psi about the body's 3", "3");
-  add_arc(scene, nodes, z, theta, 0.75, kThetaColor, "\\theta");
+  // the arc halfway up, its label beside it on 3's side, pinned there: between the two
+  // shafts there is no room, and at 0.75 up it sat on z's arrowhead
+  add_arc(scene, nodes, z, theta, 0.5, kThetaColor, "");
+  render::Label3D theta_label{0.5 * (z + three).normalized() + 0.14 * (three - z).normalized(),
+                              "\\theta", kThetaColor};
+  theta_label.pinned = true;
+  scene.add_label(std::move(theta_label));
   if (rates) {
     axis(0.8 * normal, colors::kOmega,
          fmt::format("1 rad/s about n = z \u00d7 x' needs \\phi-dot = {:.3g}, \\psi-dot = "

@@ -14,6 +14,9 @@
 namespace rigid::lab::football {
 namespace {
 
+const char* const kSpaceRateLabel = "\\phi-dot / \\omega, 3 about L in space (eq. 147)";
+const char* const kBodyRateLabel = "|\\Omega| / \\omega, \\omega about 3 in the body (eq. 109)";
+
 // A circle of `radius` about the z axis at height z.
 std::vector<Vec3> circle_about_z(double radius, double z) {
   std::vector<Vec3> points;
@@ -56,8 +59,11 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   const double slant = 1.0;  // both cones end on the circle omega's tip sweeps
   const char* space_name = "space cone (fixed, about L)";
   const char* body_name = "body cone (about 3, rolls)";
-  if (space < deg_to_rad(1.0)) {  // too narrow to see: omega all but along L; say so
-    scene.title += fmt::format("; space cone {:.3g}\\deg, not drawn", rad_to_deg(p.space_cone));
+  // too narrow to see: omega all but along L, its path about L a point; say so
+  const bool narrow = space < deg_to_rad(1.0);
+  if (narrow) {
+    scene.title += fmt::format("; space cone {:.3g}\\deg and \\omega's path in it, not drawn",
+                               rad_to_deg(p.space_cone));
   } else {
     // The space cone as lines in L's colour: inside the body cone (an oblate body) two
     // translucent cones would blend into a colour neither swatch shows.
@@ -94,12 +100,46 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   scene.add_polyline(circle_about_z(1.45 * std::sin(theta), 1.45 * std::cos(theta)),
                      colors::kSymmetryAxis, 3.0, "path of 3 about L");
   // omega's tip goes round L on the space cone's rim, once per precession period.
-  scene.add_polyline(circle_about_z(1.3 * std::sin(std::abs(lead)), 1.3 * std::cos(lead)),
-                     colors::kOmega, 3.0, "path of \\omega about L");
+  if (!narrow) {
+    scene.add_polyline(circle_about_z(1.3 * std::sin(std::abs(lead)), 1.3 * std::cos(lead)),
+                       colors::kOmega, 3.0, "path of \\omega about L");
+  }
   scene.add_label(1.5 * L, "L", colors::kL);
   scene.add_label(1.5 * axis3, "3", colors::kSymmetryAxis);
   scene.add_label(1.35 * omega, "\\omega", colors::kOmega);
+  // the cones' common apex named: the fit keeps its label in view, and so the apex off
+  // the image's bottom edge
+  scene.add_label(Vec3(0, 0, -0.1), "centre of mass");
   return scene;
+}
+
+// Where alpha is tiny the rates do not change with it (the Earth's two flat lines): beside
+// them, the rates at this alpha against the flattening |Is/I - 1| of a body of the same I,
+// on log axes: |Omega| grows with it, so that the nearly round Earth wobbles once in 305
+// days while it turns daily. Same lines, same legend.
+void flattening_panel(render::Panel& panel, const Report& report) {
+  const double sign = report.Is >= report.I ? 1.0 : -1.0;
+  const double alpha = deg_to_rad(report.alpha_deg);
+  std::vector<double> flattening, body, space;
+  for (int k = 0; k <= 160; ++k) {
+    const double e = std::pow(10.0, -5.0 + 5.0 * k / 160) * 0.99;
+    const SymmetricPrecession p =
+        free_symmetric_precession(report.I, report.I * (1 + sign * e), report.omega, alpha);
+    flattening.push_back(e);
+    body.push_back(std::abs(p.body_rate) / report.omega);
+    space.push_back(p.space_rate / report.omega);
+  }
+  panel.x = {"flattening |Is/I - 1| at this \\alpha, log scale", render::Scale::kLog10,
+             flattening.front(), flattening.back()};
+  panel.y = {"rate / \\omega, log scale", render::Scale::kLog10};
+  panel.add_line(flattening, space, kSpaceRateLabel).color = colors::kL;
+  panel.add_line(flattening, body, kBodyRateLabel).color = colors::kSymmetryAxis;
+  const double e = std::abs(report.Is / report.I - 1);
+  const SymmetricPrecession& p = report.precession;
+  panel
+      .add_points({e, e}, {p.space_rate / report.omega, std::abs(p.body_rate) / report.omega},
+                  fmt::format("this run, \\alpha = {:.3g}\\deg", report.alpha_deg))
+      .color = colors::kMarker;
 }
 
 // Omega / omega and phi_dot / omega against alpha for this body. Where the two rates differ
@@ -119,8 +159,14 @@ render::Plot2D rates_plot(const Report& report) {
     body.push_back(log_rates ? std::abs(row[1]) : row[1]);
     space.push_back(row[2]);
   }
-  render::Plot2D plot;
-  plot.title = fmt::format("rates against \\alpha, Is/I = {:.4g}", report.Is / report.I);
+  const bool flattening = log_alpha && log_rates;
+  render::Plot2D plot(1, flattening ? 2 : 1);
+  plot.title = fmt::format("rates against \\alpha{}, Is/I = {:.4g}",
+                           flattening ? " and against the flattening" : "", report.Is / report.I);
+  if (flattening) {
+    flattening_panel(plot.panel(0, 1), report);
+    plot.shared_legend = true;
+  }
   render::Panel& panel = plot.panel();
   if (log_alpha) {
     panel.x = {"angle \\alpha between \\omega and 3 (\\deg), log scale", render::Scale::kLog10,
@@ -132,12 +178,11 @@ render::Plot2D rates_plot(const Report& report) {
   if (log_rates) panel.y.scale = render::Scale::kLog10;
   // In the colours of the cones' axes: the turn about L (the space cone's), the turn
   // about 3 (the body cone's).
-  panel.add_line(alpha_deg, space, "\\phi-dot / \\omega, 3 about L in space (eq. 147)").color =
-      colors::kL;
+  panel.add_line(alpha_deg, space, kSpaceRateLabel).color = colors::kL;
   panel
-      .add_line(alpha_deg, body,
-                log_rates ? "|\\Omega| / \\omega, \\omega about 3 in the body (eq. 109)"
-                          : "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
+      .add_line(
+          alpha_deg, body,
+          log_rates ? kBodyRateLabel : "\\Omega / \\omega, \\omega about 3 in the body (eq. 109)")
       .color = colors::kSymmetryAxis;
   const double body_point = log_rates ? std::abs(body_rate) : body_rate;
   panel
@@ -182,7 +227,8 @@ void figures(const Report& report, FigureSink& sink) {
   sink.add("cones", "the body cone rolls on the space cone along omega", Motion(report).scene(0.0));
   sink.add("cones_contrast", other.caption,
            cones_scene(other.ratio, report.alpha_deg, other.precession, other.title + ": ", 0.0));
-  sink.add("rates", "the precession rates against alpha", rates_plot(report));
+  sink.add("rates", "the precession rates against alpha (and the flattening, where alpha is tiny)",
+           rates_plot(report));
 }
 
 }  // namespace rigid::lab::football

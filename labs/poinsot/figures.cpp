@@ -77,7 +77,8 @@ void figures(const Report& report, FigureSink& sink) {
   const auto curve = polhode(exact.moments(), report.omega0, 400);
   sink.add("ellipsoids", "energy and momentum ellipsoids meet on the polhode",
            ellipsoids_scene(exact, report.omega0, curve));
-  sink.add("polhodes", "polhodes about the largest and smallest axes, the separatrix",
+  sink.add("polhodes",
+           "polhodes about the axes of the largest and smallest moments, the separatrix",
            polhodes_scene(exact, report.omega0, curve));
   sink.add("omega", "omega(t) of the text's ellipsoid and its phase plot",
            omega_plot(report.omega0, report.run.samples));

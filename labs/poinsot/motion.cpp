@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -114,6 +115,58 @@ render::Scene3D Motion::scene(double t) const {
   return scene;
 }
 
+namespace {
+
+// The contact points at t = 0, tau, 2 tau, .. (tau the polhode period: T is the kinetic
+// energy), each with its time outside the herpolhode's ring of radius `ring` about
+// `centre`, along the ray from the centre through the point: clear of the loops, and in
+// the order the points go round; the label at its leader's end, a ray near an earlier
+// one's taking its label farther out.
+void add_contact_points(render::Scene3D& scene, const std::vector<Vector3d>& points,
+                        const Vector3d& centre, double ring, double size) {
+  // markers no larger than two fifths of the nearest two's distance, so that points close
+  // together (a book spun near its middle axis) stay apart, and not below a third of
+  // their usual size, so that they show
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      nearest = std::min(nearest, (points[i] - points[j]).norm());
+  const double marker = std::clamp(nearest / 2.5, 0.01 * size, 0.03 * size);
+  std::vector<Vector3d> rays;
+  std::vector<int> levels;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Vector3d& p = points[k];
+    scene.add_marker(p, marker, {colors::kOmega},
+                     k == 0 ? "the contact point at t = 0, \\tau, 2\\tau, .. (\\tau: the polhode "
+                              "period)"
+                            : "");
+    Vector3d out = p - centre;
+    out.z() = 0;
+    out = out.norm() > 1e-6 * ring ? out.normalized() : Vector3d::UnitX();
+    // the first level no ray within 40 degrees holds
+    int level = 0;
+    for (bool clash = true; clash; ++level) {
+      clash = false;
+      for (std::size_t j = 0; j < rays.size(); ++j)
+        clash = clash || (levels[j] == level && out.dot(rays[j]) > std::cos(0.7));
+      if (!clash) break;
+    }
+    rays.push_back(out);
+    levels.push_back(level);
+    const double reach = ring + (0.1 + 0.15 * level) * size;
+    const Vector3d lift(0, 0, p.z() - centre.z());
+    render::Label3D label{centre + (reach + 0.05 * size) * out + lift,
+                          k == 0   ? "0"
+                          : k == 1 ? "\\tau"
+                                   : fmt::format("{}\\tau", k)};
+    label.pinned = true;
+    scene.add_label(std::move(label));
+    scene.add_polyline({p, centre + reach * out + lift}, colors::kOmega, 1.5);
+  }
+}
+
+}  // namespace
+
 render::Scene3D Motion::herpolhode_scene(double periods) const {
   const double T = exact_.period();
   const auto contact = [&](double t) {
@@ -141,23 +194,10 @@ render::Scene3D Motion::herpolhode_scene(double periods) const {
                  "invariable plane");
   // a thin line: many loops over a few periods
   scene.add_polyline(std::move(trace), render::kBlack, 2.0, "herpolhode");
-  // Each contact point's time outside the herpolhode's ring, along the ray from its
-  // centre through the point: clear of the loops, and in the order the points go round.
-  const double ring = std::max(reach, 1e-9 * size_);
-  for (int k = 0; k <= static_cast<int>(periods); ++k) {
-    const Vector3d p = contact(k * T);
-    scene.add_marker(p, 0.03 * size_, {colors::kOmega},
-                     k == 0 ? "the contact point at t = 0, T, 2T, .." : "");
-    Vector3d out = p - offset_;
-    out.z() = 0;
-    out = out.norm() > 1e-6 * ring ? out.normalized() : Vector3d::UnitX();
-    Vector3d at = offset_ + (ring + 0.16 * size_) * out;
-    at.z() = p.z();
-    scene.add_label(at, k == 0 ? "0" : k == 1 ? "T" : fmt::format("{}T", k));
-    scene.add_polyline(
-        {p, offset_ + (ring + 0.1 * size_) * out + Vector3d(0, 0, p.z() - offset_.z())},
-        colors::kOmega, 1.5);
-  }
+  const int count = static_cast<int>(periods) + 1;
+  std::vector<Vector3d> points;
+  for (int k = 0; k < count; ++k) points.push_back(contact(k * T));
+  add_contact_points(scene, points, offset_, std::max(reach, 1e-9 * size_), size_);
   // the energy ellipsoid at t = 0, touching the plane at the first contact point
   const RotationState x0 = exact_.state(0.0);
   const Eigen::Matrix3d a0 = space_ * attitude(x0).toRotationMatrix();

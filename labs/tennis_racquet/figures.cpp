@@ -20,7 +20,9 @@ const char* const kAxisWords[] = {"the handle", "in the plane", "the face's norm
 // omega_1, omega_2, omega_3 against t for the launch about each axis (sections 4.1.1-4.1.2).
 render::Plot2D omega_plot(const Report& f) {
   render::Plot2D plot(3, 1);
-  plot.title = "\\omega in body axes for a spin about each principal axis";
+  plot.title =
+      "\\omega in body axes for a spin about each principal axis; a stable spin's own "
+      "\\omega_i less its start, to show its change";
   const int samples = 1500;
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<double> t(samples), w[3];
@@ -38,10 +40,8 @@ render::Plot2D omega_plot(const Report& f) {
     panel.title =
         p.unstable ? fmt::format("about 2 ({}): unstable, grows at {:.4g}/s, flips every {:.3g} s",
                                  kAxisWords[axis], p.rate, 0.5 * f.launches[axis].period())
-                   : fmt::format(
-                         "about {0} ({1}): stable, wobbles at {2:.4g} rad/s; \\omega_{0} "
-                         "less {3:.6g}",
-                         axis + 1, kAxisWords[axis], p.rate, spin);
+                   : fmt::format("about {} ({}): stable, wobbles at {:.4g} rad/s", axis + 1,
+                                 kAxisWords[axis], p.rate);
     panel.x = {axis == 2 ? "t (s)" : "", render::Scale::kLinear, 0, f.t_end};
     panel.y.label = "\\omega_i (rad/s)";
     for (int i = 0; i < 3; ++i) {
@@ -63,7 +63,11 @@ render::Plot2D omega_plot(const Report& f) {
                              [](double a, double b) { return std::abs(a) < std::abs(b); }) -
             y.begin());
       }
-      render::Annotation& label = panel.annotate(t[n], y[n], fmt::format("\\omega_{}", i + 1));
+      // the spin's omega says what is taken off it (its start; the title says why)
+      const std::string name = i == axis && spin != 0.0
+                                   ? fmt::format("\\omega_{} \u2212 {:.6g}", i + 1, spin)
+                                   : fmt::format("\\omega_{}", i + 1);
+      render::Annotation& label = panel.annotate(t[n], y[n], name);
       label.color = colors::kPrincipal[i];
       label.arrow = false;
     }
@@ -166,7 +170,9 @@ render::Scene3D flip_scene(const Report& f) {
                     first ? "L, fixed in space" : "");
     scene.add_arrow(c, c + 0.4 * length * R.col(1), 0.03 * a, {colors::kPrincipal[1]},
                     first ? "body axis 2" : "");
-    scene.add_label(c - 0.45 * length * Vector3d::UnitZ(), fmt::format("t = {:.3f} s", t));
+    // the time over L's arrow, which always points up: under the racquet, axis 2 turned
+    // down (late in the flip) pushed it aside, onto its neighbour's
+    scene.add_label(c + 0.68 * length * Vector3d::UnitZ(), fmt::format("t = {:.3f} s", t));
     scene.add_label(c + 0.45 * length * R.col(1), fmt::format("{:.0f}\\deg", rad_to_deg(angle2(t))),
                     colors::kPrincipal[1]);
   }

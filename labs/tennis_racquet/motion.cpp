@@ -83,7 +83,19 @@ render::Plot2D Motion::strip(double t) const {
         colors::kPrincipal[i];
   }
   panel.add_ref_line(t, true).color = colors::kMarker;
-  panel.legend = render::LegendPlace::kAuto;
+  // no legend: in a strip this short its box sat on the curves; each omega named in its
+  // colour beside its largest swing instead, placed clear of the curves
+  panel.legend = render::LegendPlace::kNone;
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<double>& y = strip_omega_[i];
+    const auto n = static_cast<std::size_t>(
+        std::max_element(y.begin(), y.end(),
+                         [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+        y.begin());
+    render::Annotation& label = panel.annotate(strip_t_[n], y[n], fmt::format("\\omega_{}", i + 1));
+    label.color = colors::kPrincipal[i];
+    label.arrow = false;
+  }
   return plot;
 }
 

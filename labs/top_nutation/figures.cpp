@@ -48,9 +48,10 @@ void add_table_line(render::Panel& panel, std::vector<double> x, std::vector<dou
                     double table) {
   render::Series& rim = panel.add_line(
       std::move(x), std::move(y), fmt::format("rim on a table, {:.4g}\\deg", rad_to_deg(table)));
-  rim.color = render::kGray;
-  rim.width = 2.5;
-  rim.dash = render::Dash::kDashed;
+  // dotted and dark: the turning angles' lines beside it are grey dashes
+  rim.color = render::kBlack;
+  rim.width = 3;
+  rim.dash = render::Dash::kDotted;
 }
 
 // V(theta) with E' = E - Is S^2 / 2, the turning points where they meet, and the
@@ -162,13 +163,13 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
   scene.title =
       fmt::format("the symmetry axis on the unit sphere: this run{}",
                   others.empty() ? std::string() : ", and \\phi-dot_0 = " + others + " rad/s");
-  // Three spheres in an L: this run's above the first other, the second beside that,
-  // the legend in the free corner (in a row they left the lower part of a 4:3 frame
-  // empty); fewer in a row.
-  const double gap = 3.3, rise = 3.5;
+  // Three spheres in an L, seen from above: this run's above the first other, the second
+  // beside that, the legend in the free corner (in a row they left the lower part of a
+  // 4:3 frame empty); fewer in a row.
+  const double gap = 4.6, rise = 3.6;
   const std::vector<Vector3d> centres =
       paths.size() == 3
-          ? std::vector<Vector3d>{Vector3d(0, 0, rise), Vector3d::Zero(), Vector3d(gap, 0, 0)}
+          ? std::vector<Vector3d>{Vector3d(0, rise, 0), Vector3d::Zero(), Vector3d(gap, 0, 0)}
           : std::vector<Vector3d>{Vector3d::Zero(), Vector3d(gap, 0, 0), Vector3d(2 * gap, 0, 0)};
   int index = 0;
   for (const RegimePaths::Path& p : paths) {
@@ -189,21 +190,20 @@ render::Scene3D paths_scene(const HeavyTopExact& m) {
     scene.add_polyline(circle(motion.theta_max(), c, 1.02), render::kBlack, 2.5);
     scene.add_arrow(c, c + 1.25 * Vector3d::UnitZ(), 0.02, {colors::kFixedAxis},
                     first ? "vertical z" : "");
-    scene.add_label(c + Vector3d(0, -1.0, -0.8),
+    scene.add_label(c + Vector3d(0, -1.35, 0),
                     fmt::format("{}: {}", p.name, to_string(motion.regime())));
     ++index;
   }
-  // From the front, 35 deg above the horizon, far off with a narrow view: each vertical
-  // points up the page and the three stand parallel (from near and above, one perspective
-  // tilted them up-left, up and up-right), and the caps the axes sweep still face the
-  // camera enough to show their loops and cusps.
+  // From above, 15 deg off the vertical, far off with a narrow view: the caps the axes
+  // sweep face the camera, so that waves, cusps (touching the outer circle) and loops
+  // differ at a glance (from the side, 35 deg above the horizon, the three looked alike),
+  // and the tilt keeps the spheres round bodies with z standing out of them.
   Vector3d middle = Vector3d::Zero();
   for (std::size_t k = 0; k < paths.size(); ++k) middle += centres[k] / paths.size();
-  middle.z() += 0.4;
-  const double elevation = deg_to_rad(35.0), distance = 26.0;
-  scene.camera.eye =
-      middle + Vector3d(0, -distance * std::cos(elevation), distance * std::sin(elevation));
+  const double tilt = deg_to_rad(15.0), distance = 26.0;
+  scene.camera.eye = middle + Vector3d(0, -distance * std::sin(tilt), distance * std::cos(tilt));
   scene.camera.target = middle;
+  scene.camera.up = Vector3d::UnitY();
   scene.camera.fov_y_deg = 12;
   return scene;
 }
@@ -253,10 +253,12 @@ double phi_dot_of(const RotationState& x) {
   return sin2 > 0 ? (omega_z - w.z() * c) / sin2 : 0.0;
 }
 
-// theta(t) and phi_dot(t): the exact motion beside an integrated run.
+// theta(t) and phi_dot(t): the exact motion beside an integrated run, this run's or, for
+// an exact run (`exact_run`), one integrated as a check on it.
 // `integrated_run` null: none beside it (`why_none` goes in the title).
 render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integrated_run,
-                          double t_end, const std::string& why_none, std::optional<double> table) {
+                          bool exact_run, double t_end, const std::string& why_none,
+                          std::optional<double> table) {
   std::vector<double> t, theta, phi_dot, ti, thetai, tpi, phi_doti;
   for (int k = 0; k <= 1200; ++k) {
     t.push_back(t_end * k / 1200);
@@ -283,8 +285,11 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
     tpi.push_back(s.t);
     phi_doti.push_back(phi_dot_of(s.x));
   }
+  // an exact run's figure integrates beside it as a check, and says so
   const std::string integrated =
-      integrated_run ? std::string(method_name(integrated_run->method)) + ", integrated" : "";
+      !integrated_run ? ""
+      : exact_run     ? std::string(method_name(integrated_run->method)) + ", a check on it"
+                      : std::string(method_name(integrated_run->method)) + ", this run";
   render::Plot2D plot(2, 1);
   plot.title = integrated_run ? "nutation and precession"
                               : "nutation and precession, exact (" + why_none + ")";
@@ -345,7 +350,8 @@ void figures(const Report& report, FigureSink& sink) {
   sink.add("band", "the same paths as theta against phi: waves, cusps or loops at any spin",
            band_plot(motion));
   sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
-           theta_plot(motion, integrated, report.t_end, why_none, report.table_theta));
+           theta_plot(motion, integrated, report.method == "exact", report.t_end, why_none,
+                      report.table_theta));
   sink.add("top", "the top, L, the gravity torque and the precession circle",
            Motion(report).scene(0.0));
   // A sleeping top has no comparison at equal cost: the one at the lab's settings.

@@ -61,7 +61,32 @@ DashPattern dash_pattern(Dash d, double width, const Style& st) {
 }
 
 namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// A regular polygon of n corners on a circle of radius r about (x, y), the first at angle a0
+// (radians, counter-clockwise from +x on screen, y down).
+std::vector<P3> regular_polygon(double x, double y, double r, int n, double a0) {
+  std::vector<P3> pts;
+  for (int k = 0; k < n; ++k) {
+    const double a = a0 + 2 * kPi * k / n;
+    pts.push_back({x + r * std::cos(a), y - r * std::sin(a), 0});
+  }
+  return pts;
+}
+
+// A bar of half length h and half width w through (x, y) at angle a: a plus's or a cross's
+// arm.
+std::vector<P3> bar(double x, double y, double h, double w, double a) {
+  const double c = std::cos(a), s = std::sin(a);
+  return {{x + h * c - w * s, y - h * s - w * c, 0},
+          {x + h * c + w * s, y - h * s + w * c, 0},
+          {x - h * c + w * s, y + h * s + w * c, 0},
+          {x - h * c - w * s, y + h * s - w * c, 0}};
+}
+
 void marker_shape(Canvas& p, Marker m, double x, double y, double r, Color c) {
+  // the triangles' centroid on the point, their area about the square's
+  const double t = 1.25 * r;
   switch (m) {
     case Marker::kNone:
       break;
@@ -72,8 +97,30 @@ void marker_shape(Canvas& p, Marker m, double x, double y, double r, Color c) {
       p.rect(x - 0.85 * r, y - 0.85 * r, x + 0.85 * r, y + 0.85 * r, c);
       break;
     case Marker::kTriangle:
-      p.triangle({x, y - 1.15 * r, 0}, {x - r, y + 0.6 * r, 0}, {x + r, y + 0.6 * r, 0}, c);
+      p.convex(regular_polygon(x, y, t, 3, kPi / 2), c);
       break;
+    case Marker::kTriangleDown:
+      p.convex(regular_polygon(x, y, t, 3, -kPi / 2), c);
+      break;
+    case Marker::kTriangleLeft:
+      p.convex(regular_polygon(x, y, t, 3, kPi), c);
+      break;
+    case Marker::kTriangleRight:
+      p.convex(regular_polygon(x, y, t, 3, 0), c);
+      break;
+    case Marker::kDiamond:
+      p.convex(regular_polygon(x, y, 1.2 * r, 4, 0), c);
+      break;
+    case Marker::kHexagon:
+      p.convex(regular_polygon(x, y, 1.05 * r, 6, kPi / 2), c);
+      break;
+    case Marker::kPlus:
+    case Marker::kCross: {
+      const double a = m == Marker::kPlus ? 0 : kPi / 4;
+      p.convex(bar(x, y, 1.15 * r, 0.38 * r, a), c);
+      p.convex(bar(x, y, 1.15 * r, 0.38 * r, a + kPi / 2), c);
+      break;
+    }
   }
 }
 }  // namespace

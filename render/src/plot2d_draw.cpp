@@ -74,40 +74,10 @@ void PanelPlan::data(Canvas& p) const {
     else
       p.polyline({{rect_.x0, ym_(r.value), 0}, {rect_.x1, ym_(r.value), 0}}, w, r.color, dash);
   }
-  for (std::size_t i = 0; i < pn_.series.size(); ++i) {
-    const std::size_t k = pn_.first_on_top ? pn_.series.size() - 1 - i : i;
-    const Series& s = pn_.series[k];
-    const Color c = colors_.series[k];
-    const std::size_t n = std::min(s.x.size(), s.y.size());
-    if (s.width > 0) {
-      const double w = st_.line(s.width);
-      const auto dash = dash_pattern(s.dash, w, st_);
-      const bool round = s.dash == Dash::kDotted || s.dash == Dash::kDashDot;
-      // Break the line at points an axis cannot show (NaN, or <= 0 on a log axis).
-      std::vector<P3> run;
-      auto emit = [&] {
-        if (run.size() >= 2) p.polyline(run, w, c, dash, round);
-        run.clear();
-      };
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!xm_.valid(s.x[i]) || !ym_.valid(s.y[i])) {
-          emit();
-          continue;
-        }
-        P3 q = map(s.x[i], s.y[i]);
-        q.x() = std::clamp(q.x(), -1e5, 1e5);
-        q.y() = std::clamp(q.y(), -1e5, 1e5);
-        run.push_back(q);
-      }
-      emit();
-    }
-    if (s.marker != Marker::kNone) {
-      const double size = st_.marker(s.marker_size);
-      for (std::size_t i = 0; i < n; ++i)
-        if (xm_.valid(s.x[i]) && ym_.valid(s.y[i]))
-          draw_marker(p, s.marker, xm_(s.x[i]), ym_(s.y[i]), size, c);
-    }
-  }
+  // Every line, then every series' markers over them: a marker is not hidden by a line
+  // drawn after it (curves on one another each show theirs).
+  series_lines(p);
+  series_markers(p);
   // Reference-line labels where they were placed (a vertical line's reads upwards).
   for (std::size_t k = 0; k < pn_.ref_lines.size(); ++k) {
     const RefLine& r = pn_.ref_lines[k];
@@ -126,6 +96,52 @@ void PanelPlan::data(Canvas& p) const {
   }
   p.no_clip();
   annotations(p);
+}
+
+// The series in the order they are drawn, a later one over an earlier.
+std::size_t PanelPlan::drawn_series(std::size_t i) const {
+  return pn_.first_on_top ? pn_.series.size() - 1 - i : i;
+}
+
+void PanelPlan::series_lines(Canvas& p) const {
+  for (std::size_t i = 0; i < pn_.series.size(); ++i) {
+    const std::size_t k = drawn_series(i);
+    const Series& s = pn_.series[k];
+    if (s.width <= 0) continue;
+    const Color c = colors_.series[k];
+    const std::size_t n = std::min(s.x.size(), s.y.size());
+    const double w = st_.line(s.width);
+    const auto dash = dash_pattern(s.dash, w, st_);
+    const bool round = s.dash == Dash::kDotted || s.dash == Dash::kDashDot;
+    // Break the line at points an axis cannot show (NaN, or <= 0 on a log axis).
+    std::vector<P3> run;
+    auto emit = [&] {
+      if (run.size() >= 2) p.polyline(run, w, c, dash, round);
+      run.clear();
+    };
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!xm_.valid(s.x[j]) || !ym_.valid(s.y[j])) {
+        emit();
+        continue;
+      }
+      P3 q = map(s.x[j], s.y[j]);
+      q.x() = std::clamp(q.x(), -1e5, 1e5);
+      q.y() = std::clamp(q.y(), -1e5, 1e5);
+      run.push_back(q);
+    }
+    emit();
+  }
+}
+
+void PanelPlan::series_markers(Canvas& p) const {
+  for (std::size_t i = 0; i < pn_.series.size(); ++i) {
+    const std::size_t k = drawn_series(i);
+    const Series& s = pn_.series[k];
+    if (s.marker == Marker::kNone) continue;
+    const double size = st_.marker(s.marker_size);
+    for (const Vector2d& q : marker_points(s))
+      draw_marker(p, s.marker, q.x(), q.y(), size, colors_.series[k]);
+  }
 }
 
 void PanelPlan::annotations(Canvas& p) const {

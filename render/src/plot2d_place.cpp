@@ -37,6 +37,32 @@ bool at_bottom(Spot s) {
 
 }  // namespace
 
+std::vector<Vector2d> PanelPlan::marker_points(const Series& s) const {
+  std::vector<Vector2d> out;
+  const std::size_t n = std::min(s.x.size(), s.y.size());
+  const auto valid = [&](std::size_t i) { return xm_.valid(s.x[i]) && ym_.valid(s.y[i]); };
+  if (!(s.marker_spacing > 0)) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (valid(i)) out.emplace_back(xm_(s.x[i]), ym_(s.y[i]));
+    return out;
+  }
+  // where the line crosses each x of the comb, each segment taking its crossings in
+  // [left, right) so that a vertex two segments share is counted once
+  const double d = std::max(1.0, s.marker_spacing * st_.s), phase = s.marker_phase;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (!valid(i) || !valid(i + 1)) continue;
+    const Vector2d a(xm_(s.x[i]), ym_(s.y[i])), b(xm_(s.x[i + 1]), ym_(s.y[i + 1]));
+    const double lo = std::min(a.x(), b.x()), hi = std::max(a.x(), b.x());
+    if (!(hi > lo)) continue;
+    for (double k = std::ceil((lo - rect_.x0) / d - phase);; ++k) {
+      const double x = rect_.x0 + (k + phase) * d;
+      if (x >= hi) break;
+      out.push_back(a + (x - a.x()) / (b.x() - a.x()) * (b - a));
+    }
+  }
+  return out;
+}
+
 // What the data draws inside the frame: lines, markers, bands and the annotated points in
 // full weight; reference lines lightly (text may cross them if it must).
 Occupancy PanelPlan::data_grid() const {
@@ -46,15 +72,15 @@ Occupancy PanelPlan::data_grid() const {
     const Series& s = pn_.series[k];
     const std::size_t n = std::min(s.x.size(), s.y.size());
     const double hw = 0.5 * st_.line(s.width) + 1;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; s.width > 0 && i + 1 < n; ++i) {
       if (!xm_.valid(s.x[i]) || !ym_.valid(s.y[i])) continue;
-      const Vector2d q = xy(s.x[i], s.y[i]);
-      if (s.width > 0 && i + 1 < n && xm_.valid(s.x[i + 1]) && ym_.valid(s.y[i + 1]))
-        grid.add_segment(q, xy(s.x[i + 1], s.y[i + 1]), hw, 1.0f);
-      if (s.marker != Marker::kNone) {
-        const double r = 0.5 * st_.marker(s.marker_size) + 1;
+      if (xm_.valid(s.x[i + 1]) && ym_.valid(s.y[i + 1]))
+        grid.add_segment(xy(s.x[i], s.y[i]), xy(s.x[i + 1], s.y[i + 1]), hw, 1.0f);
+    }
+    if (s.marker != Marker::kNone) {
+      const double r = 0.5 * st_.marker(s.marker_size) + 1;
+      for (const Vector2d& q : marker_points(s))
         grid.add_rect({q.x() - r, q.y() - r, q.x() + r, q.y() + r}, 1.0f);
-      }
     }
   }
   for (const Band& b : pn_.bands) {

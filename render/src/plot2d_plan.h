@@ -73,6 +73,9 @@ class PanelPlan {
   void layout();
   void equalize();
   P3 map(double x, double y) const { return {xm_(x), ym_(y), 0}; }
+  // Where a series' markers go, in pixels: at its points, or along its line
+  // (Series::marker_spacing).
+  std::vector<Eigen::Vector2d> marker_points(const Series& s) const;
 
   // Placing (plot2d_place.cpp)
   Occupancy data_grid() const;
@@ -86,6 +89,9 @@ class PanelPlan {
   // Drawing (plot2d_draw.cpp)
   void background(Canvas& p) const;
   void data(Canvas& p) const;
+  std::size_t drawn_series(std::size_t i) const;
+  void series_lines(Canvas& p) const;
+  void series_markers(Canvas& p) const;
   void annotations(Canvas& p) const;
   void frame_and_ticks(Canvas& p) const;
   void labels(Canvas& p) const;

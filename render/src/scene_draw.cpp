@@ -226,22 +226,41 @@ void draw_geometry(const Scene3D& scene, const SceneFrame& fr) {
   for (GpuMesh& g : pass.temporary) release(g);
 }
 
-// The text overlay: labels where they were placed, the title and the legend.
+// The text overlay, in GL over the image drawn so far.
 void draw_overlay(const Scene3D& scene, const SceneFrame& fr) {
   Painter& p = painter();
   p.begin(fr.view.width, fr.view.height);
-  for (std::size_t k = 0; k < scene.labels().size(); ++k) {
-    const ScreenRect& b = fr.labels[k];
-    if (b.empty()) continue;
-    const Label3D& l = scene.labels()[k];
-    p.text(l.text, b.x0, b.y0, fr.st.label_font, l.color, HAlign::kLeft, VAlign::kTop);
-  }
-  draw_title(p, fr.title);
-  draw_legend(p, fr.entries, fr.legend, fr.st);
+  draw_scene_overlay(p, scene.labels(), fr);
   p.flush();
 }
 
 }  // namespace
+
+void draw_scene_overlay(Canvas& p, const std::vector<Label3D>& labels, const SceneFrame& fr) {
+  for (std::size_t k = 0; k < labels.size() && k < fr.labels.size(); ++k) {
+    const ScreenRect& b = fr.labels[k];
+    if (b.empty()) continue;
+    p.text(labels[k].text, b.x0, b.y0, fr.st.label_font, labels[k].color, HAlign::kLeft,
+           VAlign::kTop);
+  }
+  draw_title(p, fr.title);
+  draw_legend(p, fr.entries, fr.legend, fr.st);
+}
+
+SceneParts draw_scene_parts(const Scene3D& scene, int width, int height, FigureTiming* timing) {
+  const double k = normalising_scale(scene);
+  if (k != 1.0) return draw_scene_parts(scene.scaled(k), width, height, timing);
+  PhaseClock clock(timing);
+  target().begin(width, height, true, kWhite);
+  clock.lap(&FigureTiming::setup, true);
+  SceneParts parts{{}, frame_scene(scene, width, height), scene.labels()};
+  clock.lap(&FigureTiming::layout);
+  draw_geometry(scene, parts.frame);
+  clock.lap(&FigureTiming::draw, true);
+  parts.image = target().finish();
+  clock.lap(&FigureTiming::resolve);
+  return parts;
+}
 
 }  // namespace detail
 

@@ -131,12 +131,13 @@ Occupancy scene_grid(const Scene3D& scene, const View& view, const Style& st) {
 }
 
 // Where a label's text may go about its projected point: on it, then beside it (right,
-// left, above, below, diagonally), near and then farther.
+// left, above, below, diagonally), near and then farther (farther for a point that
+// several labels share, each kept off the others).
 std::vector<ScreenRect> label_candidates(const Vector2d& q, const TextExtent& e, const Style& st) {
   const double w = e.width, h = e.height();
   std::vector<ScreenRect> c{{q.x() - 0.5 * w, q.y() - 0.5 * h, q.x() + 0.5 * w, q.y() + 0.5 * h}};
-  for (double d : {0.5 * st.pad, 2.0 * st.pad, 4.0 * st.pad}) {
-    const std::vector<ScreenRect> ring = boxes_around(q.x(), q.y(), w, h, d);
+  for (double d : {0.5, 2.0, 4.0, 6.0, 8.0, 10.0, 12.0}) {
+    const std::vector<ScreenRect> ring = boxes_around(q.x(), q.y(), w, h, d * st.pad);
     c.insert(c.end(), ring.begin(), ring.end());
   }
   return c;
@@ -176,7 +177,7 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_l
   fr.view = make_view(fr.camera, width, height, znear, zfar);
 
   // Labels in order, each clear of the geometry where it can be, never over the title,
-  // the legend or an earlier label, and inside the region the scene was fitted into.
+  // the legend or near an earlier label, and inside the region the scene was fitted into.
   // (A camera asked for alone needs none of it: the geometry's grid is most of the work.)
   if (!place_labels) return fr;
   const Occupancy grid = scene_grid(scene, fr.view, st);
@@ -192,11 +193,19 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_l
       continue;
     }
     const std::vector<ScreenRect> c = label_candidates({s.x(), s.y()}, extents[k], st);
-    const Placement pl = choose_place(c, grid, bounds, taken);
+    Placement pl;
+    if (l.pinned) {
+      pl = choose_place({c.front()}, Occupancy(bounds, bounds.width()), bounds, taken);
+      if (!pl.found) pl = {};
+    }
+    if (pl.box.empty()) pl = choose_place(c, grid, bounds, taken);
     // No candidate inside the region (text wider than it): on the point, kept in view.
     const ScreenRect box = pl.box.empty() ? keep_inside(c.front(), bounds) : pl.box;
     fr.labels.push_back(box);
-    taken.push_back(box.grown(0.25 * st.pad));
+    // later labels keep two fifths of a line's height off it, and on its line more than a
+    // line's height: two labels a space apart read as one ("t = 0.769 s t = 0.984 s")
+    const double h = box.height();
+    taken.push_back({box.x0 - 1.1 * h, box.y0 - 0.4 * h, box.x1 + 1.1 * h, box.y1 + 0.4 * h});
   }
   return fr;
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "overlay.h"
+#include "rigid/render/image.h"
 #include "rigid/render/scene3d.h"
 #include "scene_fit.h"
 
@@ -24,5 +25,20 @@ struct SceneFrame {
 
 /// Frames a scene (already normalised to about unit size) at width × height.
 SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_labels = true);
+
+class Canvas;
+
+/// Draws a frame's text overlay (each label where it was placed, the title, the legend) on
+/// any canvas: GL over the scene's image, or cairo's vectors over it in an SVG or a PDF.
+void draw_scene_overlay(Canvas& p, const std::vector<Label3D>& labels, const SceneFrame& fr);
+
+/// A scene drawn without its overlay, and what the overlay needs: a vector file puts its
+/// text over this image as text.
+struct SceneParts {
+  Image image;
+  SceneFrame frame;
+  std::vector<Label3D> labels;
+};
+SceneParts draw_scene_parts(const Scene3D& scene, int width, int height, FigureTiming* timing);
 
 }  // namespace rigid::render::detail

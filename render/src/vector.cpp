@@ -1,7 +1,8 @@
 // Plots through cairo: as SVG and PDF, drawn on a CairoCanvas (paths for lines and
 // fills; text as text: in a PDF the figure's own font embedded, in an SVG <text> of
 // DejaVu Sans with every glyph placed where the layout put it), a 3D scene as its
-// raster image inside a page of the same size; and as pixels, cairo's antialiased
+// geometry's raster image inside a page of the same size, its title, legend and labels
+// drawn over it as a plot's are; and as pixels, cairo's antialiased
 // rasteriser on the CPU (no multisampled buffers to clear, resolve and read back: a
 // plot's fixed cost in the GL path was about 30 ms).
 //
@@ -34,6 +35,7 @@
 #include "font.h"
 #include "rigid/render/atomic_file.h"
 #include "rigid/render/draw.h"
+#include "scene_layout.h"
 #include "target.h"
 
 namespace rigid::render {
@@ -468,7 +470,10 @@ void save_figure(const Plot2D& plot, const std::string& path, FigureFormat forma
 void save_figure(const Scene3D& scene, const std::string& path, FigureFormat format, int width,
                  int height, FigureTiming* timing) {
   if (format == FigureFormat::kPng) return save_png(scene, path, width, height, timing);
-  const Image img = draw(scene, width, height, timing);
+  // the geometry as the PNG's pixels, its title, legend and labels as vectors over them:
+  // text a reader of the slide can select and search, and that scales
+  const detail::SceneParts parts = detail::draw_scene_parts(scene, width, height, timing);
+  const Image& img = parts.image;
   detail::PhaseClock clock(timing);
   write_vector(path, format, width, height, plain_text(scene.title), [&](cairo_t* cr) {
     const CairoApi& api = cairo_api();
@@ -492,7 +497,10 @@ void save_figure(const Scene3D& scene, const std::string& path, FigureFormat for
     api.cairo_set_source_surface(cr, pixels, 0, 0);
     api.cairo_paint(cr);
     api.cairo_surface_destroy(pixels);
-    return std::string();
+    CairoCanvas canvas(cr, format == FigureFormat::kSvg);
+    detail::draw_scene_overlay(canvas, parts.labels, parts.frame);
+    canvas.finish();
+    return canvas.svg_text();
   });
   clock.lap(&FigureTiming::encode);
 }

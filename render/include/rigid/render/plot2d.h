@@ -33,8 +33,21 @@ namespace rigid::render {
 enum class Scale { kLinear, kLog10 };
 /// Dash pattern of a line.
 enum class Dash { kSolid, kDashed, kDotted, kDashDot };
-/// Symbol drawn at each data point.
-enum class Marker { kNone, kCircle, kSquare, kTriangle };
+/// Symbol drawn at each data point (or along a line, Series::marker_spacing): ten shapes,
+/// so that as many curves lying on one another each show their own.
+enum class Marker {
+  kNone,
+  kCircle,
+  kSquare,
+  kTriangle,
+  kDiamond,
+  kTriangleDown,
+  kPlus,
+  kCross,
+  kTriangleLeft,
+  kTriangleRight,
+  kHexagon
+};
 /// Where a legend box goes. kAuto (like matplotlib's loc="best") takes the place among the
 /// corners, the top and bottom centre and the middle of the sides whose box covers the least
 /// data; if each covers some, the y axis grows at its free end (top or bottom, not one the
@@ -62,6 +75,12 @@ struct Series {
   Dash dash = Dash::kSolid;
   Marker marker = Marker::kNone;
   double marker_size = 11;  ///< marker diameter in reference pixels
+  /// 0: a marker at each data point. Else markers along the line, where it crosses
+  /// x = (k + marker_phase) * marker_spacing reference pixels from the frame's left edge
+  /// (k = 0, 1, ...): curves that lie on one another, given phases apart, each show their
+  /// markers beside the others' instead of under them.
+  double marker_spacing = 0;
+  double marker_phase = 0;  ///< 0 to 1, a share of marker_spacing
 };
 
 /// The region between two curves y_lo(x) and y_hi(x), filled translucent.

@@ -60,6 +60,9 @@ struct Label3D {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   std::string text;
   Color color = kTextColor;
+  /// Centred on its point whatever it covers, unless another text is there: for the end
+  /// of a leader line the scene draws to it (moved off, the label would leave its leader).
+  bool pinned = false;
 };
 
 /// A scene of shapes, lines and labels rendered to an image.
