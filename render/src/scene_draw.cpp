@@ -253,13 +253,13 @@ SceneParts draw_scene_parts(const Scene3D& scene, int width, int height, FigureT
   PhaseClock clock(timing);
   target().begin(width, height, true, kWhite);
   clock.lap(&FigureTiming::setup, true);
-  SceneParts parts{{}, frame_scene(scene, width, height), scene.labels()};
+  SceneFrame frame = frame_scene(scene, width, height);
   clock.lap(&FigureTiming::layout);
-  draw_geometry(scene, parts.frame);
+  draw_geometry(scene, frame);
   clock.lap(&FigureTiming::draw, true);
-  parts.image = target().finish();
+  Image image = target().finish();
   clock.lap(&FigureTiming::resolve);
-  return parts;
+  return SceneParts{std::move(image), std::move(frame), scene.labels()};
 }
 
 }  // namespace detail
