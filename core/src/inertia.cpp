@@ -197,10 +197,16 @@ InPlaneAxes in_plane_principal_axes(const Mat3& I) {
     return Ixx * c * c + Iyy * s * s + 2.0 * Ixy * c * s;
   };
   InPlaneAxes axes;
-  // atan2 picks the root of eq. 53 that stays defined when Ixx = Iyy.
-  axes.two_theta = std::atan2(2.0 * Ixy, Ixx - Iyy);
+  // atan2 stays defined when Ixx = Iyy; folded into (-90, 90] deg, 2 theta is the
+  // principal value of eq. 53's arctangent, as the text takes it (-45 deg). Axes are
+  // lines, so each angle is given in (-90, 90] deg, and a +-0 as 0 (a rectangle about
+  // its centre: 0 and 90, not 90 and 180).
+  double two_theta = std::atan2(2.0 * Ixy, Ixx - Iyy);
+  if (two_theta > 0.5 * kPi) two_theta -= kPi;
+  if (two_theta <= -0.5 * kPi) two_theta += kPi;
+  axes.two_theta = two_theta + 0.0;
   axes.theta = 0.5 * axes.two_theta;
-  axes.theta_other = axes.theta + 0.5 * kPi;
+  axes.theta_other = axes.theta <= 0.0 ? axes.theta + 0.5 * kPi : axes.theta - 0.5 * kPi;
   axes.moment = moment_at(axes.theta);
   axes.moment_other = moment_at(axes.theta_other);
   return axes;

@@ -35,8 +35,8 @@ SymmetricPrecession free_symmetric_precession(double I, double Is, double omega,
   if (!std::isfinite(omega) || !(omega > 0.0)) {
     throw std::invalid_argument("|omega| must be positive and finite, got " + format_number(omega));
   }
-  if (!(alpha > 0.0 && alpha < kPi / 2)) {
-    throw std::invalid_argument("alpha must lie strictly between 0 and 90 deg, got " +
+  if (!(alpha >= 0.0 && alpha < kPi / 2)) {
+    throw std::invalid_argument("alpha must be at least 0 and below 90 deg, got " +
                                 format_number(rad_to_deg(alpha)) + " deg");
   }
   const double s = std::sin(alpha), c = std::cos(alpha);
@@ -61,6 +61,9 @@ SymmetricPrecession free_symmetric_precession(double I, double Is, double omega,
 PrecessionCheck integrated_precession(double I, double Is, double omega, double alpha, double tol,
                                       std::size_t max_steps) {
   const SymmetricPrecession p = free_symmetric_precession(I, Is, omega, alpha);
+  if (alpha == 0.0) {
+    throw std::invalid_argument("at alpha = 0 the axis 3 lies along L: it has no turn to measure");
+  }
   const double period = p.space_period * omega;  // dimensionless: time in units of 1/omega
   const PrincipalMoments moments{1.0, 1.0, Is / I};
   const RotationState x0 =

@@ -64,6 +64,10 @@ InputRule& InputRule::range_from(double lo, double hi) {
   hi_ = hi;
   return *this;
 }
+InputRule& InputRule::or_zero() {
+  or_zero_ = true;
+  return *this;
+}
 InputRule& InputRule::nonzero() {
   nonzero_ = true;
   return *this;
@@ -205,9 +209,11 @@ bool InputRule::own_range() const {
 
 std::string InputRule::range_text() const {
   const std::string unit = unit_.empty() ? "" : " " + unit_;
+  const std::string zero = or_zero_ ? "0, or " : "";
   if (bound_ == Bound::kOpenRange)
-    return fmt::format("between {} and {}{}, exclusive", lo_, hi_, unit);
-  if (bound_ == Bound::kRangeFrom) return fmt::format("at least {} and below {}{}", lo_, hi_, unit);
+    return fmt::format("{}between {} and {}{}, exclusive", zero, lo_, hi_, unit);
+  if (bound_ == Bound::kRangeFrom)
+    return fmt::format("{}at least {} and below {}{}", zero, lo_, hi_, unit);
   return "";
 }
 
@@ -226,6 +232,7 @@ std::string InputRule::broken(double value, const std::string& text) const {
     return fail(std::isinf(value) ? range_rule : kBelowNormal);
   }
   if (!std::isfinite(value)) return fail("must be finite");
+  if (or_zero_ && value == 0.0) return "";
   switch (bound_) {
     case Bound::kPositive:
       if (!(value > 0.0)) return fail("must be positive");

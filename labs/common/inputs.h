@@ -126,6 +126,9 @@ class InputRule {
   InputRule& open_range(double lo, double hi);
   /// Values must satisfy lo <= value < hi.
   InputRule& range_from(double lo, double hi);
+  /// Besides its own range, the input takes 0 exactly: a case with an answer of its own
+  /// (no disturbance, no tilt) below a range whose small end keeps the digits.
+  InputRule& or_zero();
   /// A vector must not be (0, 0, 0).
   InputRule& nonzero();
   /// The symbol (text markup) that names this input in figure titles, e.g. "\\theta".
@@ -155,6 +158,7 @@ class InputRule {
   const std::string& lab_default_text() const { return lab_default_; }
   bool physical() const { return physical_; }
   bool is_nonzero() const { return nonzero_; }
+  bool takes_zero() const { return or_zero_; }
   Bound bound() const { return bound_; }
   double lo() const { return lo_; }
   double hi() const { return hi_; }
@@ -202,6 +206,7 @@ class InputRule {
   bool physical_ = true, nonzero_ = false;
   Bound bound_ = Bound::kFinite;
   double lo_ = -1, hi_ = -1;
+  bool or_zero_ = false;
   std::vector<std::string> choices_, words_;
   std::vector<Pairing> pairings_;
 };

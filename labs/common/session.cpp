@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -29,7 +30,7 @@ SliderSpan slider_span(const InputRule& r, double textbook) {
   switch (r.bound()) {
     case InputRule::Bound::kOpenRange:
     case InputRule::Bound::kRangeFrom:
-      return {r.lo(), r.hi(), false};
+      return {r.takes_zero() ? std::min(0.0, r.lo()) : r.lo(), r.hi(), false};
     case InputRule::Bound::kPositive:
       return d > 0 ? SliderSpan{d / 10, d * 10, true} : SliderSpan{1e-3, 1.0, true};
     case InputRule::Bound::kNonNegative:

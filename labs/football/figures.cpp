@@ -27,13 +27,44 @@ std::vector<Vec3> circle_about_z(double radius, double z) {
   return points;
 }
 
+// A spin along 3 (alpha = 0): omega, L and 3 on one line, both cones lines. The three
+// arrows are nested, the shortest the thickest, so each shows its own colour; lines
+// fixed in the body turn about 3 at omega.
+render::Scene3D aligned_scene(double ratio, double omega, const std::string& prefix, double t) {
+  render::Scene3D scene;
+  scene.title = prefix + fmt::format(
+                             "Is/I = {:.6g}: \\omega, L and 3 on one line; "
+                             "nothing precesses",
+                             ratio);
+  scene.camera.eye = Vec3(0.9, -3.6, 1.5);
+  scene.camera.target = Vec3(0.15, 0, 0.55);
+  scene.camera.fov_y_deg = 32;
+  const double r = 0.016;
+  scene.add_arrow(Vec3::Zero(), 1.45 * Vec3::UnitZ(), r, {colors::kL}, "L (fixed in space)");
+  scene.add_arrow(Vec3::Zero(), 1.3 * Vec3::UnitZ(), 1.5 * r, {colors::kSymmetryAxis},
+                  "symmetry axis 3");
+  scene.add_arrow(Vec3::Zero(), 1.15 * Vec3::UnitZ(), 2 * r, {colors::kOmega}, "\\omega");
+  // The body's turn about 3, seen on a disk of lines fixed in it.
+  const double turn = omega * t;
+  for (int k = 0; k < 8; ++k) {
+    const double beta = turn + 2 * kPi * k / 8;
+    scene.add_polyline({Vec3(0, 0, 0.6), Vec3(0.5 * std::cos(beta), 0.5 * std::sin(beta), 0.6)},
+                       colors::kSymmetryAxis, 2.5);
+  }
+  scene.add_polyline(circle_about_z(0.5, 0.6), colors::kSymmetryAxis, 3.0,
+                     "lines fixed in the body, turning about 3");
+  scene.add_label(1.55 * Vec3::UnitZ(), "L, 3, \\omega");
+  scene.add_label(Vec3(0, 0, -0.1), "centre of mass");
+  return scene;
+}
+
 // L along z; the symmetry axis 3 and omega in the x-z plane at t = 0. The body
 // cone (half-angle alpha about 3) touches the space cone (half-angle |theta - alpha|
 // about L) along omega. Small angles are magnified by one factor, said in the title.
 // At time t the plane of L, 3 and omega has turned about L by phi_dot t, and the body
 // cone has rolled on the space cone: lines drawn on it, fixed in the body, show it.
-render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrecession& p,
-                            const std::string& prefix, double t) {
+render::Scene3D rolling_cones_scene(double ratio, double alpha_deg, const SymmetricPrecession& p,
+                                    const std::string& prefix, double t) {
   const double widest = std::max(p.theta, p.body_cone);
   const double magnify =
       std::max(1.0, std::min(deg_to_rad(22.0) / p.body_cone, deg_to_rad(70.0) / widest));
@@ -113,6 +144,14 @@ render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrece
   return scene;
 }
 
+// The cones of a precession, or, spun along 3, the one line of omega, L and 3.
+render::Scene3D cones_scene(double ratio, double alpha_deg, const SymmetricPrecession& p,
+                            const std::string& prefix, double t) {
+  // there phi_dot = |L| / I = omega Is / I
+  if (p.body_cone == 0.0) return aligned_scene(ratio, p.space_rate / ratio, prefix, t);
+  return rolling_cones_scene(ratio, alpha_deg, p, prefix, t);
+}
+
 // Where alpha is tiny the rates do not change with it (the Earth's two flat lines): beside
 // them, the rates at this alpha against the flattening |Is/I - 1| of a body of the same I,
 // on log axes: |Omega| grows with it, so that the nearly round Earth wobbles once in 305
@@ -151,7 +190,7 @@ render::Plot2D rates_plot(const Report& report) {
   const double body_rate = p.body_rate / report.omega, space_rate = p.space_rate / report.omega;
   const bool log_rates = body_rate != 0.0 && (std::abs(body_rate) < space_rate / 20.0 ||
                                               std::abs(body_rate) > space_rate * 20.0);
-  const bool log_alpha = report.alpha_deg < 0.5;
+  const bool log_alpha = report.alpha_deg > 0 && report.alpha_deg < 0.5;
   // the sweep --csv writes (rate_sweep): alpha, Omega / omega, phi_dot / omega
   std::vector<double> alpha_deg, body, space;
   for (const std::vector<double>& row : report.time_series().rows) {

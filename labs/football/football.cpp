@@ -126,7 +126,7 @@ std::string readable_period(double seconds) {
 
 // The rates against alpha for this body, as the rates figure draws them and --csv
 // writes them: Omega / omega and phi_dot / omega at alpha = 0.5, 1, .., 89.5 deg, or,
-// where the run's alpha lies below 0.5 deg (the Earth's 0.2 arcsec), at 179 angles
+// where the run's alpha lies above 0 and below 0.5 deg (the Earth's 0.2 arcsec), at 179 angles
 // spaced evenly in log alpha from a decade below it to 89.5 deg.
 TimeSeries rate_sweep(double I, double Is, double alpha_deg) {
   TimeSeries sweep{{"alpha_deg", "Omega_over_omega", "phi_dot_over_omega"},
@@ -137,7 +137,7 @@ TimeSeries rate_sweep(double I, double Is, double alpha_deg) {
                     "Omega_over_omega: omega's turn about 3 in the body over |omega| (eq. 109, "
                     "+: along omega_3); phi_dot_over_omega: 3's turn about L in space over "
                     "|omega| (eq. 147)"}};
-  const bool fine = alpha_deg < 0.5;
+  const bool fine = alpha_deg > 0 && alpha_deg < 0.5;
   const double low = std::max(std::log10(alpha_deg) - 1.0, -300.0), high = std::log10(89.5);
   for (int k = 1; k < 180; ++k) {
     const double a = fine ? std::pow(10.0, low + (high - low) * (k - 1) / 178.0) : 0.5 * k;
@@ -180,8 +180,9 @@ const InputTable<Inputs>& input_table() {
         .lab_default("--omega's")
         .excludes("--omega", "give the speed once: --omega or --day");
     t.angle_deg("--alpha-deg", &Inputs::alpha_deg,
-                "angle alpha between omega and the symmetry axis")
-        .open_range(0.0, 90.0)
+                "angle alpha between omega and the symmetry axis (0: a spin along it, "
+                "which does not precess)")
+        .range_from(0.0, 90.0)
         .symbol("\\alpha")
         .lab_default("the preset's");
     return t;
@@ -260,6 +261,11 @@ void report_rates(Report& report, const Inputs& in, const ExampleText& text, dou
   report.result("spin_rate_rad_s",
                 "psi_dot = omega_3 - phi_dot cos(theta), 3 spins in space about itself",
                 p.spin_rate, "rad/s");
+  if (alpha == 0.0) {
+    report.remark(
+        "(alpha = 0: nothing precesses; these are the rates of a wobble as it starts, "
+        "alpha -> 0)");
+  }
   if (p.body_rate != 0.0) {
     report.result("body_precession_period_s", "2 pi / |Omega|", p.body_period, "s");
   } else {
@@ -289,11 +295,14 @@ void report_cross_check(Report& report, double alpha) {
   // spin would need years of steps): beyond it the cross-check is not run.
   constexpr std::size_t kCheckSteps = 2'000'000;
   std::optional<PrecessionCheck> check;
-  try {
-    check = integrated_precession(report.I, report.Is, report.omega, alpha, 1e-12, kCheckSteps);
-  } catch (const std::runtime_error&) {
+  std::string skipped = "not run: at alpha = 0 the axis 3 lies along L and does not turn";
+  if (alpha > 0.0) {
+    skipped = fmt::format("not run: needs more than {} steps", kCheckSteps);
+    try {
+      check = integrated_precession(report.I, report.Is, report.omega, alpha, 1e-12, kCheckSteps);
+    } catch (const std::runtime_error&) {
+    }
   }
-  const std::string skipped = fmt::format("not run: needs more than {} steps", kCheckSteps);
   const char* labels[] = {
       "phi_dot, 3's turn about L in a quarter period", "|integrated / closed-form phi_dot - 1|",
       "angle of 3 from its start after 2 pi / phi_dot", "max |L - L0| / |L0| in space"};
@@ -330,7 +339,16 @@ void report_answer(Report& report) {
   const SymmetricPrecession& p = report.precession;
   const double I = report.I, Is = report.Is;
   const std::string kind = Is < I ? "prolate" : Is > I ? "oblate" : "a sphere";
-  if (p.contact == ConeContact::kNone) {
+  if (report.alpha_deg == 0.0) {
+    report.answer(fmt::format(
+        "{} (Is/I = {:.6g}), spun along its symmetry axis (alpha = 0): omega, L and 3 stay on "
+        "one line and nothing precesses; it turns about 3 once every {}. A slight wobble would "
+        "take 3 round L every {}{}",
+        kind, Is / I, readable_period(2 * kPi / report.omega), readable_period(p.space_period),
+        p.body_rate == 0.0
+            ? ""
+            : ", and omega round 3 in the body every " + readable_period(p.body_period)));
+  } else if (p.contact == ConeContact::kNone) {
     report.answer(fmt::format("{}: omega, L and 3 stay together; nothing precesses", kind));
   } else {
     report.answer(fmt::format(

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "rigid/units.h"
@@ -227,8 +228,9 @@ Report compute(const Inputs& in) {
           : fmt::format("L is {:.3g} deg from omega: n is not a principal axis, so turning "
                         "steadily about it takes a torque |N| = {:.4g} N m; in the plate's plane "
                         "the principal axes lie at {:.4g} and {:.4g} deg from x",
-                        L_omega, N.stableNorm(), rad_to_deg(plane.theta),
-                        rad_to_deg(plane.theta_other)));
+                        L_omega, N.stableNorm(),
+                        rad_to_deg(std::min(plane.theta, plane.theta_other)),
+                        rad_to_deg(std::max(plane.theta, plane.theta_other))));
   return report;
 }
 

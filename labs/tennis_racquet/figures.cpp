@@ -37,11 +37,21 @@ render::Plot2D omega_plot(const Report& f) {
     // of the other two (a share epsilon of it) fills the panel instead of a flat line at
     // 0 under one at omega.
     const double spin = p.unstable ? 0.0 : w[axis].front();
-    panel.title =
-        p.unstable ? fmt::format("about 2 ({}): unstable, grows at {:.4g}/s, flips every {:.3g} s",
-                                 kAxisWords[axis], p.rate, 0.5 * f.launches[axis].period())
-                   : fmt::format("about {} ({}): stable, wobbles at {:.4g} rad/s", axis + 1,
-                                 kAxisWords[axis], p.rate);
+    // Launched exactly along its axis (no disturbance), a spin has no polhode to go
+    // round: it neither flips nor wobbles, and the rate is the one a disturbance would have.
+    const double period = f.launches[axis].period();
+    const bool still = f.launches[axis].regime() == FreeMotionRegime::kSteady;
+    std::string does;
+    if (p.unstable) {
+      does = still ? fmt::format("unstable, would grow at {:.4g}/s; undisturbed, it stays", p.rate)
+                   : fmt::format("unstable, grows at {:.4g}/s, flips every {:.3g} s", p.rate,
+                                 0.5 * period);
+    } else {
+      does =
+          still ? fmt::format("stable, would wobble at {:.4g} rad/s; undisturbed, it stays", p.rate)
+                : fmt::format("stable, wobbles at {:.4g} rad/s", p.rate);
+    }
+    panel.title = fmt::format("about {} ({}): {}", axis + 1, kAxisWords[axis], does);
     panel.x = {axis == 2 ? "t (s)" : "", render::Scale::kLinear, 0, f.t_end};
     panel.y.label = "\\omega_i (rad/s)";
     for (int i = 0; i < 3; ++i) {

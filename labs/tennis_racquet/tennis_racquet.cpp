@@ -61,10 +61,12 @@ const InputTable<Inputs>& input_table() {
         .positive()
         .symbol("\\omega");
     t.number("--perturbation", &Inputs::perturbation,
-             "transverse share of omega at launch, along the next axis (1->2, 2->3, 3->1)")
+             "transverse share of omega at launch, along the next axis (1->2, 2->3, 3->1); "
+             "0: a spin exactly along the axis, which stays there")
         // From 1e-60, as every input's magnitude: the polhode's k'^2 ~ share^2 must not
         // underflow (below ~1e-154 the period came out infinite, "first flip: none").
         .range_from(1e-60, 0.5)
+        .or_zero()
         .symbol("\\epsilon");
     add_end_time_inputs(t, &Inputs::t_end, &Inputs::periods, "polhode period",
                         "one polhode period of the spin about axis 2: two flips");
@@ -78,6 +80,10 @@ const InputTable<Inputs>& input_table() {
 }
 
 namespace {
+
+// Why a launch with no disturbance (--perturbation 0) has no wobble, growth or flip.
+constexpr char kUndisturbed[] =
+    "launched exactly along the axis (perturbation 0): it stays there, nothing to measure";
 
 // The body: the ring-and-rod model of Figure 5, or any body's moments (--inertia), drawn
 // as the box with those moments.
@@ -202,7 +208,9 @@ void report_measured(Report& report, const Inputs& in) {
                   "next axis",
                   in.perturbation));
   const char* measured = "axis 2: growth rate fitted to the exact omega_1, omega_3";
-  if (growth) {
+  if (in.perturbation == 0) {
+    report.result_none("growth_rate_measured_per_s", measured, "1/s", kUndisturbed);
+  } else if (growth) {
     report.result("growth_rate_measured_per_s", measured, growth->rate, "1/s");
     report.result("growth_fit_interval_s", "  fitted over t from, to",
                   Vector2d(growth->t_begin, growth->t_end), "s");
@@ -213,8 +221,14 @@ void report_measured(Report& report, const Inputs& in) {
         "growth_rate_measured_per_s", measured, "1/s",
         "the spin about 2 does not flip: I1, I2, I3 not distinct to double precision");
   }
-  report.result("wobble_frequencies_measured_rad_s", "axes 1, 3: 2 pi / polhode period",
-                Vector2d(2 * kPi / launches[0].period(), 2 * kPi / launches[2].period()), "rad/s");
+  const char* wobbles = "axes 1, 3: 2 pi / polhode period";
+  if (in.perturbation > 0) {
+    report.result("wobble_frequencies_measured_rad_s", wobbles,
+                  Vector2d(2 * kPi / launches[0].period(), 2 * kPi / launches[2].period()),
+                  "rad/s");
+  } else {
+    report.result_none("wobble_frequencies_measured_rad_s", wobbles, "rad/s", kUndisturbed);
+  }
 }
 
 // What the answer says of the spin about the chosen axis.
@@ -254,8 +268,9 @@ ChosenSpin report_chosen_spin(Report& report, const Inputs& in) {
     report.result("flip_interval_s", "time between flips: half the period of omega_2",
                   0.5 * motion.period(), "s");
   } else {
-    report.result_none("first_flip_s", "first flip", "s", "stable: it does not flip");
-    report.result_none("flip_interval_s", "time between flips", "s", "stable: it does not flip");
+    const char* why = in.perturbation == 0 ? kUndisturbed : "stable: it does not flip";
+    report.result_none("first_flip_s", "first flip", "s", why);
+    report.result_none("flip_interval_s", "time between flips", "s", why);
   }
   // The handle stays near the plane across L (spins about 2 and 3) or near L (about 1).
   // Over a polhode period, or over the run where there is none (the separatrix).
@@ -360,7 +375,17 @@ void report_answer(Report& report, const Inputs& in, const ChosenSpin& spin) {
   const std::string& axis_name = spin.name;
   const std::string& axis1 = spin.axis1;
   const double first_flip = spin.first_flip, excursion = spin.excursion;
-  if (std::isfinite(first_flip)) {
+  if (in.perturbation == 0) {
+    report.answer(fmt::format(
+        "a spin exactly along axis {} stays there, turning steadily at {:g} rad/s: nothing "
+        "wobbles and nothing flips. The balance is {}: {}",
+        axis_name, in.omega, predicted[axis].unstable ? "unstable" : "stable",
+        predicted[axis].unstable
+            ? fmt::format("the slightest disturbance grows at {:.4g}/s and turns the {} over",
+                          predicted[axis].rate, in.inertia ? "body" : "racquet")
+            : fmt::format("a slight disturbance wobbles at {:.4g} rad/s and {} stays near {}",
+                          predicted[axis].rate, axis1, axis == 0 ? "L" : "the plane across L")));
+  } else if (std::isfinite(first_flip)) {
     report.answer(fmt::format(
         "a spin about axis {} flips: launched {:g} off it, the {} turns over first at {:.4g} "
         "s, then every {:.4g} s (the disturbance grows at {:.4g}/s); about axes 1 and 3 it "

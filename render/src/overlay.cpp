@@ -33,6 +33,7 @@ Style figure_style(int width, int height, double min_text_px) {
   st.legend_padding = 0.8 * st.pad;
   st.row_gap = 0.35 * st.pad;
   st.legend_edge = std::max(1.0, 1.2 * s);
+  st.title_floor = min_text_px > 0 ? st.legend_font : 0.0;
   return st;
 }
 
@@ -181,8 +182,48 @@ std::vector<std::string> split_title(std::string_view m, double size) {
   return {std::string(m.substr(0, best + 1)), std::string(m.substr(best + 2))};
 }
 
+namespace {
+
+// Markup's words: split at the blanks outside markup groups ("\\omega_{1 2}" stays whole).
+std::vector<std::string> title_words(std::string_view m) {
+  std::vector<std::string> words(1);
+  int depth = 0;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const char c = m[i];
+    if (c == '\\' && i + 1 < m.size() && !std::isalpha(static_cast<unsigned char>(m[i + 1]))) {
+      words.back() += m.substr(i, 2);
+      ++i;
+      continue;
+    }
+    if (c == '{') ++depth;
+    if (c == '}') depth = std::max(0, depth - 1);
+    if (c == ' ' && depth == 0) {
+      if (!words.back().empty()) words.emplace_back();
+      continue;
+    }
+    words.back() += c;
+  }
+  if (words.back().empty()) words.pop_back();
+  return words;
+}
+
+// Words filled into lines no wider than `room` at `size`; a word wider alone is a line.
+std::vector<std::string> fill_lines(std::string_view m, double size, double room) {
+  std::vector<std::string> lines;
+  for (const std::string& w : title_words(m)) {
+    if (!lines.empty() && measure_text(lines.back() + " " + w, size).width <= room) {
+      lines.back() += " " + w;
+    } else {
+      lines.push_back(w);
+    }
+  }
+  return lines;
+}
+
+}  // namespace
+
 TitleBlock layout_title(const std::string& markup, double size, double left, double right,
-                        double centre, double top) {
+                        double centre, double top, double floor) {
   TitleBlock t;
   if (markup.empty()) return t;
   const double room = std::max(1.0, right - left);
@@ -193,6 +234,12 @@ TitleBlock layout_title(const std::string& markup, double size, double left, dou
   }
   t.size = size;
   for (const std::string& l : t.lines) t.size = std::min(t.size, fitting_size(l, size, room));
+  if (t.size < floor) {
+    t.size = std::min(size, floor);
+    t.lines = fill_lines(markup, t.size, room);
+    const double at = t.size;
+    for (const std::string& l : t.lines) t.size = std::min(t.size, fitting_size(l, at, room));
+  }
   // Lines a tenth of a text height apart.
   double height = 0, widest = 0;
   for (const std::string& l : t.lines) {

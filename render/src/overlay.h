@@ -40,6 +40,9 @@ struct Style {
   double tick_len = 0, frame_width = 0, grid_width = 0;
   // Legend: swatch length, gap swatch-text, inner padding, extra row height, outline width.
   double swatch = 0, swatch_gap = 0, legend_padding = 0, row_gap = 0, legend_edge = 0;
+  /// Where the smallest text has a floor (a live view's panel), titles keep to it too:
+  /// they wrap onto more lines rather than shrink below it. 0: no floor.
+  double title_floor = 0;
 
   /// A line width given in reference pixels, never under 2 px.
   double line(double ref) const;
@@ -74,9 +77,10 @@ std::vector<std::string> split_title(std::string_view markup, double size);
 
 /// Lays out a title at font size `size` between left and right, centred on `centre` as far
 /// as the room allows, top at `top`: wrapped onto two lines if wider than the room, then
-/// shrunk if still too wide.
+/// shrunk if still too wide; but never below `floor` (0: no floor) while wrapping at more
+/// blanks can keep it there.
 TitleBlock layout_title(const std::string& markup, double size, double left, double right,
-                        double centre, double top);
+                        double centre, double top, double floor = 0);
 /// Draws a laid-out title.
 void draw_title(Canvas& p, const TitleBlock& title, Color color = kTextColor);
 

@@ -222,7 +222,7 @@ void PanelPlan::layout() {
   ScreenRect r{cell.x0 + 0.15 * cell.width(), cell.y0 + 0.08 * cell.height(),
                cell.x1 - 0.04 * cell.width(), cell.y1 - 0.14 * cell.height()};
   title_ = layout_title(pn_.title, st_.panel_title_font, cell.x0 + st_.pad, cell.x1 - st_.pad,
-                        0.5 * (cell.x0 + cell.x1), cell.y0 + 0.4 * st_.pad);
+                        0.5 * (cell.x0 + cell.x1), cell.y0 + 0.4 * st_.pad, st_.title_floor);
   for (int pass = 0; pass < 2; ++pass) {
     xm_.p0 = r.x0, xm_.p1 = r.x1, ym_.p0 = r.y1, ym_.p1 = r.y0;
     const Ticks xt = ticks_fitting(pn_.x, xm_, true);
@@ -252,7 +252,7 @@ void PanelPlan::layout() {
   xm_.p0 = r.x0, xm_.p1 = r.x1, ym_.p0 = r.y1, ym_.p1 = r.y0;
   // The panel title is centred over the plot area, as far as the cell allows.
   title_ = layout_title(pn_.title, st_.panel_title_font, cell.x0 + st_.pad, cell.x1 - st_.pad,
-                        0.5 * (r.x0 + r.x1), cell.y0 + 0.4 * st_.pad);
+                        0.5 * (r.x0 + r.x1), cell.y0 + 0.4 * st_.pad, st_.title_floor);
 }
 
 // Equal aspect: widen whichever axis range has more pixels per unit (linear axes only).
@@ -287,8 +287,8 @@ FigurePlan plan_figure(const Plot2D& plot, int width, int height) {
   FigurePlan fp;
   fp.st = figure_style(width, plot.style_height > 0 ? plot.style_height : height, plot.min_text_px);
   const Style& st = fp.st;
-  fp.title =
-      layout_title(plot.title, st.title_font, st.margin, width - st.margin, 0.5 * width, st.margin);
+  fp.title = layout_title(plot.title, st.title_font, st.margin, width - st.margin, 0.5 * width,
+                          st.margin, st.title_floor);
   // Panels keep a padding inside their cells, so the cells reach to a padding short of the
   // margin: a panel's outermost text then sits at the margin, as the title does.
   const double edge = st.margin - st.pad;

@@ -150,7 +150,7 @@ SceneFrame frame_scene(const Scene3D& scene, int width, int height, bool place_l
   fr.st = figure_style(width, height, scene.min_text_px);
   const Style& st = fr.st;
   fr.title = layout_title(scene.title, st.title_font, st.margin, width - st.margin, 0.5 * width,
-                          st.margin);
+                          st.margin, st.title_floor);
   const double below_title = scene.title.empty() ? 0.0 : fr.title.box.y1;
   fr.region = {st.margin, below_title + st.margin, width - st.margin, height - st.margin};
   if (scene.show_legend) fr.entries = legend_entries(scene);

@@ -180,7 +180,7 @@ TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {
 
 TEST_CASE("football: bad input exits 2 with one line naming the option") {
   const std::pair<const char*, const char*> cases[] = {
-      {"--alpha-deg 0", "--alpha-deg"},
+      {"--alpha-deg -0.001", "--alpha-deg"},
       {"--alpha-deg 90", "--alpha-deg"},
       {"--alpha-deg nan", "--alpha-deg"},
       {"--inertia 1,3", "--inertia"},
@@ -239,7 +239,7 @@ TEST_CASE("tennis_racquet: bad input exits 2 with one line naming the option") {
   const std::pair<const char*, const char*> cases[] = {
       {"--spin-axis 4", "--spin-axis"},
       {"--spin-axis 0", "--spin-axis"},
-      {"--perturbation 0", "--perturbation"},
+      {"--perturbation 1e-61", "--perturbation"},
       {"--perturbation 0.5", "--perturbation"},
       {"--perturbation nan", "--perturbation"},
       {"--perturbation -0.1", "--perturbation"},

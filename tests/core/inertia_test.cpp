@@ -1,6 +1,7 @@
 // Inertia core: every worked number of sections 1-3.1 and the theorems behind them.
 #include "rigid/inertia.h"
 
+#include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -90,6 +91,45 @@ TEST_CASE("inertia: section 2.3 principal angles from tan 2 theta") {
   // The -22.5 degree axis carries 1.540 ma^2 and the 67.5 degree one 0.126 ma^2.
   CHECK(prints_as(axes.moment, 1.540, 3));
   CHECK(prints_as(axes.moment_other, 0.126, 3));
+}
+
+TEST_CASE("inertia: in-plane principal angles lie in the conventional range") {
+  // A rectangle about its centre has Ixy = 0: its axes are x and y, at 0 and 90 deg (not
+  // 90 and 180, nor -0), whichever side is longer.
+  for (const auto& [a, b] : {std::pair{2.0, 1.0}, std::pair{1.0, 2.0}, std::pair{1.0, 1.0}}) {
+    const Mat3 I = Vec3(b * b, a * a, a * a + b * b).asDiagonal();
+    const InPlaneAxes axes = in_plane_principal_axes(I);
+    INFO("a " << a << ", b " << b);
+    CHECK(std::signbit(axes.theta) == false);
+    CHECK(axes.theta == 0.0);
+    CHECK(axes.theta_other == Approx(0.5 * rigid::kPi).epsilon(1e-15));
+  }
+  // Any lamina: 2 theta is the arctangent's principal value, each axis lies in (-90, 90]
+  // deg, the two are 90 deg apart, and the moments about them are the tensor's in-plane
+  // eigenvalues (Eigen's solver, a second method), to a few roundings of the largest.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double Ixx = 1.0 + u(rng), Iyy = 1.0 + u(rng);
+    const double Ixy = 0.999 * std::sqrt(Ixx * Iyy) * u(rng);
+    Mat3 I = Mat3::Zero();
+    I << Ixx, Ixy, 0, Ixy, Iyy, 0, 0, 0, Ixx + Iyy;
+    const InPlaneAxes axes = in_plane_principal_axes(I);
+    INFO("Ixx " << Ixx << ", Iyy " << Iyy << ", Ixy " << Ixy);
+    CHECK(axes.two_theta > -0.5 * rigid::kPi);
+    CHECK(axes.two_theta <= 0.5 * rigid::kPi);
+    for (const double t : {axes.theta, axes.theta_other}) {
+      CHECK(t > -0.5 * rigid::kPi);
+      CHECK(t <= 0.5 * rigid::kPi);
+    }
+    CHECK(std::abs(axes.theta - axes.theta_other) == Approx(0.5 * rigid::kPi).epsilon(1e-15));
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(I.topLeftCorner<2, 2>());
+    const double lo = std::min(axes.moment, axes.moment_other);
+    const double hi = std::max(axes.moment, axes.moment_other);
+    const double scale = eig.eigenvalues().cwiseAbs().maxCoeff();
+    CHECK_THAT(lo, WithinAbs(eig.eigenvalues()(0), 8 * kRoundoff * scale));
+    CHECK_THAT(hi, WithinAbs(eig.eigenvalues()(1), 8 * kRoundoff * scale));
+  }
 }
 
 TEST_CASE("inertia: section 2.4 diagonalisation gives eqs. 67-69") {

@@ -144,9 +144,34 @@ TEST_CASE("symmetric top: bad input throws std::invalid_argument") {
   CHECK_THROWS_AS(rigid::free_symmetric_precession(-1.0, 1.0, 1.0, a), std::invalid_argument);
   CHECK_THROWS_AS(rigid::free_symmetric_precession(1.0, NAN, 1.0, a), std::invalid_argument);
   CHECK_THROWS_AS(rigid::free_symmetric_precession(1.0, 1.0, 0.0, a), std::invalid_argument);
-  CHECK_THROWS_AS(rigid::free_symmetric_precession(1.0, 1.0, 1.0, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(rigid::free_symmetric_precession(1.0, 1.0, 1.0, -1e-300), std::invalid_argument);
   CHECK_THROWS_AS(rigid::free_symmetric_precession(1.0, 1.0, 1.0, rigid::kPi / 2),
                   std::invalid_argument);
+  // At alpha = 0 there is no turn of 3 about L to measure.
+  CHECK_THROWS_AS(rigid::integrated_precession(2.0, 1.0, 1.0, 0.0), std::invalid_argument);
+}
+
+TEST_CASE("symmetric top: a spin along 3 (alpha = 0) does not precess, its rates the limits") {
+  for (const Case& c : kCases) {
+    INFO(c.name);
+    const auto p = rigid::free_symmetric_precession(c.I, c.Is, c.omega, 0.0);
+    CHECK(p.theta == 0.0);
+    CHECK(p.body_cone == 0.0);
+    CHECK(p.space_cone == 0.0);
+    CHECK(p.contact == rigid::ConeContact::kNone);
+    CHECK(p.L == Approx(c.Is * c.omega).epsilon(1e-15));
+    // The rates as alpha -> 0: at alpha = 1e-8 they differ from the limits by O(alpha^2)
+    // = 1e-16 relative, below the 1e-14 asked here (a few roundings of the products).
+    const auto near = rigid::free_symmetric_precession(c.I, c.Is, c.omega, 1e-8);
+    CHECK(p.body_rate == Approx(near.body_rate).epsilon(1e-14));
+    CHECK(p.space_rate == Approx(near.space_rate).epsilon(1e-14));
+    CHECK(p.space_rate == Approx(c.omega * c.Is / c.I).epsilon(1e-15));
+    // The exact motion launched along 3 keeps omega there: nothing wobbles.
+    const rigid::FreeBodyExact exact({c.I, c.I, c.Is}, Vec3(0.0, 0.0, c.omega));
+    for (const double t : {0.5, 3.0, 40.0}) {
+      CHECK(exact.omega_body(t).head<2>().norm() <= 1e-15 * c.omega);
+    }
+  }
 }
 
 TEST_CASE("symmetric top: the integrated run agrees with phi_dot and brings 3 back") {

@@ -1,5 +1,7 @@
 // What every lab's report shares (labs/common): how a result reads in the table,
 // where roundoff is shown as 0, and the rules an input table checks.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -9,6 +11,7 @@
 
 #include "common/inputs.h"
 #include "common/report.h"
+#include "common/session.h"
 #include "common/writers.h"
 #include "rigid/support/text.h"
 
@@ -168,6 +171,20 @@ TEST_CASE("lab common: an input with a range of its own is held to that range al
   CHECK_THAT(std::string(rigid::lab::kNumberRule), Catch::Contains("between 1e-60 and 1e60"));
   // --help states the range and the pairings.
   CHECK(tilt.description() == "tilt [deg] (at least 0 and below 45 deg)");
+  // A range whose small end keeps the digits, and 0 besides (an answer of its own): 0
+  // is taken, exactly; between 0 and the range, and outside it, the rule names both.
+  InputRule share(InputKind::kNumber, "--perturbation", "share");
+  share.range_from(1e-60, 0.5).or_zero();
+  CHECK(share.takes_zero());
+  CHECK(share.broken(0.0, "0").empty());
+  CHECK(share.broken(-0.0, "-0").empty());
+  CHECK(share.broken(1e-60, "1e-60").empty());
+  for (const char* text : {"1e-61", "-1e-300", "0.5"}) {
+    CHECK(share.broken(std::stod(text), text) ==
+          fmt::format("must be 0, or at least 1e-60 and below 0.5 (got {})", text));
+  }
+  CHECK(share.description() == "share (0, or at least 1e-60 and below 0.5)");
+  CHECK(rigid::lab::slider_span(share, 0.01).lo == 0.0);
   InputRule rate(InputKind::kNumber, "--phi-dot", "phi's rate");
   rate.excludes("--from-omega", "give the rates or --from-omega, not both");
   InputRule timing(InputKind::kFlag, "--timing", "times");

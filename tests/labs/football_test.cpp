@@ -230,7 +230,7 @@ TEST_CASE("football: a broken rule is an InputError naming the input") {
   using rigid::lab::InputError;
   using rigid::test::names_input;
   Inputs in;
-  in.alpha_deg = 0;
+  in.alpha_deg = -1e-9;
   CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--alpha-deg"));
   in.alpha_deg = 90;
   CHECK_THROWS_MATCHES(compute(in), InputError, names_input("--alpha-deg"));

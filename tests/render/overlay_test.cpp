@@ -406,3 +406,35 @@ TEST_CASE("label3d: labels at one point spread out, clear of each other, the leg
     CHECK(under == 0);
   }
 }
+
+TEST_CASE("overlay: with a text floor a long title wraps onto more lines rather than shrink",
+          "[render][overlay]") {
+  // A live view's narrow scene (the explorer at 800x600): the figure's text floor is 12 px,
+  // and the title keeps to it, each line inside the margins, every word whole.
+  const std::string long_title =
+      "poinsot: A, B, C = (3, 2, 1) m, M = 3.14159 kg, \\omega_0 = (1, 1, 1) rad/s: the body "
+      "turning, L fixed; its energy ellipsoid rolls on the invariable plane: t = 0.00 s";
+  for (const int w : {300, 420}) {
+    CAPTURE(w);
+    Scene3D scene;
+    scene.title = long_title;
+    scene.min_text_px = 12;
+    scene.add_sphere({0, 0, 0}, 1, {kBlue});
+    const Scene3D::Layout l = layout(scene, w, 400);
+    CHECK(l.title_size >= 12);
+    CHECK(l.title_lines >= 3);
+    CHECK(l.title.x0 >= 0);
+    CHECK(l.title.x1 <= w);
+    // Without the floor the same title shrinks onto two lines, below 12 px.
+    scene.min_text_px = 0;
+    const Scene3D::Layout shrunk = layout(scene, w, 400);
+    CHECK(shrunk.title_lines == 2);
+    CHECK(shrunk.title_size < 12);
+  }
+  // A plot's title keeps the same floor.
+  Plot2D plot;
+  plot.title = long_title;
+  plot.min_text_px = 12;
+  plot.panel().add_line({0, 1}, {0, 1}, "a line");
+  CHECK(layout(plot, 420, 400).title_size >= 12);
+}

@@ -85,10 +85,10 @@ PrincipalAxes principal_axes(const Mat3& I);
 
 /// Principal axes in the x-y plane of a tensor whose z axis is principal (eqs. 45-56).
 struct InPlaneAxes {
-  double two_theta = 0.0;     ///< 2 theta = atan2(2 Ixy, Ixx - Iyy), rad (eq. 53)
-  double theta = 0.0;         ///< one principal axis, rad from x, in (-pi/2, pi/2]
-  double moment = 0.0;        ///< moment about it, Ixx + Ixy tan theta (eq. 50)
-  double theta_other = 0.0;   ///< the perpendicular principal axis, theta + pi/2
+  double two_theta = 0.0;  ///< 2 theta in (-pi/2, pi/2], tan 2 theta = 2 Ixy / (Ixx - Iyy) (eq. 53)
+  double theta = 0.0;      ///< one principal axis, rad from x, in (-pi/4, pi/4]
+  double moment = 0.0;     ///< moment about it, Ixx + Ixy tan theta (eq. 50)
+  double theta_other = 0.0;   ///< the perpendicular principal axis, theta +- pi/2 in (-pi/2, pi/2]
   double moment_other = 0.0;  ///< moment about it
 };
 

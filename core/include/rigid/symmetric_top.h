@@ -21,7 +21,8 @@ namespace rigid {
 enum class ConeContact {
   kOutside,  ///< prolate (Is < I): the body cone rolls on the outside of the space cone
   kInside,   ///< oblate (Is > I): the body cone surrounds the space cone and rolls on it
-  kNone,     ///< sphere (Is == I): omega is along L, both cones are lines
+  kNone,     ///< sphere (Is == I) or a spin along 3 (alpha = 0): omega is along L, both
+             ///< cones are lines
 };
 
 /// "outside", "inside" or "none".
@@ -46,7 +47,9 @@ struct SymmetricPrecession {
 void validate_symmetric(double I, double Is);
 
 /// The free precession for moments I (transverse) and Is (symmetry), |omega| > 0
-/// finite and 0 < alpha < pi/2. Throws std::invalid_argument otherwise.
+/// finite and 0 <= alpha < pi/2. Throws std::invalid_argument otherwise. At alpha = 0
+/// nothing precesses: omega, L and 3 lie on one line and both cones are lines; the
+/// rates are then their limits as alpha -> 0, those of a wobble as it starts.
 /// theta - alpha is formed without cancellation (tan(theta - alpha) =
 /// (I - Is) sin a cos a / (Is cos^2 a + I sin^2 a)), so the Earth's cones of
 /// nanoradians keep full precision.
@@ -66,7 +69,8 @@ struct PrecessionCheck {
 /// at t = 0) for one space-precession period 2 pi / phi_dot with dopri5 at relative and
 /// absolute tolerance `tol`. The run is in units of the moments I and of time 1/|omega|,
 /// so that one tolerance fits every body (the Earth's omega is 7e-5 rad/s); the rate
-/// is scaled back by omega. Throws like free_symmetric_precession.
+/// is scaled back by omega. Throws like free_symmetric_precession, and at alpha = 0
+/// (3 along L: no turn to measure).
 /// At most `max_steps` steps: a run needing more (a body whose precession is slower
 /// than its spin by many orders) throws std::runtime_error.
 PrecessionCheck integrated_precession(double I, double Is, double omega, double alpha,
