@@ -22,23 +22,26 @@ esac
 # To build and run: the compilers and CMake (Python runs at configure time and for
 # the errata sheet), the physics' libraries, the renderer's (OSMesa, EGL, PNG,
 # FreeType and the font, cairo for the plots and the SVG and PDF figures, WebP and
-# FFmpeg for --animate), the explorer's (GLFW, Dear ImGui) and help2man for the man
-# pages `cmake --install` puts beside the programs.
+# FFmpeg for --animate), the explorer's (GLFW, Dear ImGui), pybind11, Python's headers
+# and NumPy for `import rigidlab`, and help2man for the man pages `cmake --install`
+# puts beside the programs.
 RIGID_RUN_PACKAGES=(
   build-essential cmake ninja-build pkg-config python3
   libeigen3-dev libboost-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libpng-dev libfreetype-dev fonts-dejavu-core
   libcairo2-dev libwebp-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
-  libglfw3-dev libimgui-dev help2man
+  libglfw3-dev libimgui-dev pybind11-dev python3-dev python3-numpy help2man
 )
 # To test: Catch2; Python's numbers for the references, the schema check and the
 # bench's peers (with GSL's); Xvfb, xauth and xdotool for the explorer under a display
 # server; librsvg and poppler to read back the SVG and PDF figures; clang-format and
 # pmccabe for scripts/check-format and check-size; emscripten (with node) for the
-# wasm test; file for cpack's dpkg-shlibdeps (the package test).
+# wasm test; file for cpack's dpkg-shlibdeps (the package test); pytest, nbconvert and
+# ipykernel for the Python module's tests and its worked notebook.
 RIGID_TEST_PACKAGES=(
   catch2 libgsl-dev
-  python3-scipy python3-matplotlib python3-mpmath python3-jsonschema
+  python3-scipy python3-matplotlib python3-mpmath python3-jsonschema python3-pytest
+  jupyter-nbconvert python3-ipykernel
   xvfb xauth xdotool librsvg2-bin poppler-utils
   clang-format pmccabe emscripten file
 )

@@ -177,6 +177,22 @@ void CommandLine::add_animation_options(bool has_t_end) {
                          options_.animation_height));
 }
 
+namespace {
+
+// A check that the inputs' one reader (read_input) takes the text, its refusal worded
+// as every front door words it.
+CLI::Validator read_by(const InputRule& rule) {
+  return CLI::Validator(
+      [&rule](std::string& text) -> std::string {
+        const auto read = read_input(rule, text);
+        const auto* why = std::get_if<std::string>(&read);
+        return why != nullptr ? *why : "";
+      },
+      "");
+}
+
+}  // namespace
+
 void CommandLine::bind(const BoundInput& input) {
   const InputRule& rule = *input.rule;
   Slot& slot = slots_.emplace_back();
@@ -212,13 +228,7 @@ void CommandLine::bind(const BoundInput& input) {
       if (!rule.word_names().empty()) type_name += "|" + rule.word_list();
       slot.cli =
           app_.add_option(rule.flag(), slot.text)->type_name(type_name)->default_str(default_text);
-      slot.cli->check(CLI::Validator(
-          [&rule](std::string& text) -> std::string {
-            const auto read = read_input(rule, text);
-            const auto* why = std::get_if<std::string>(&read);
-            return why != nullptr ? *why : "";
-          },
-          ""));
+      slot.cli->check(read_by(rule));
       break;
     }
     case InputKind::kChoice: {
@@ -229,6 +239,8 @@ void CommandLine::bind(const BoundInput& input) {
     }
     case InputKind::kFlag:
       slot.cli = app_.add_flag(rule.flag(), slot.on);
+      // --project=maybe: the one reader words the refusal, as a live view's field does
+      slot.cli->check(read_by(rule));
       break;
   }
   if (!rule.lab_default_text().empty()) slot.cli->default_str("");
@@ -371,34 +383,10 @@ void CommandLine::check_pairings() const {
   lab::check_pairings(rules, [this](const std::string& flag) { return given(flag); });
 }
 
-std::string CommandLine::given_among(const std::vector<std::string>& joint) const {
-  std::vector<std::string> named;
-  for (const std::string& flag : joint) {
-    for (const Slot& s : slots_) {
-      if (s.input->rule->flag() == flag && given(s)) named.push_back(flag);
-    }
-  }
-  return InputError::joined(named.empty() ? joint : named);
-}
-
-std::string CommandLine::blamed_option() const {
-  for (const Slot& s : slots_) {
-    if (s.input->rule->physical() && given(s)) return s.input->rule->flag();
-  }
-  for (const Slot& s : slots_) {  // then a numerical one
-    if (given(s)) return s.input->rule->flag();
-  }
-  return "--inputs";
-}
-
-std::string CommandLine::message(const InputError& e) const {
-  return e.input.empty()   ? blamed_option() + ": " + e.rule
-         : e.joint.empty() ? e.what()
-                           : given_among(e.joint) + ": " + e.rule;
-}
-
 std::string CommandLine::message(const std::exception& e) const {
-  return blamed_option() + ": " + e.what();
+  std::vector<const InputRule*> rules;
+  for (const Slot& slot : slots_) rules.push_back(slot.input->rule);
+  return refusal_message(e, rules, [this](const std::string& flag) { return given(flag); });
 }
 
 // A build without the renderer refuses what would draw, before any work.

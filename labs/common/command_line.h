@@ -33,11 +33,9 @@ class CommandLine {
   std::optional<int> parse(int argc, char** argv);
   const CommandOptions& options() const { return options_; }
 
-  /// What an InputError says: "--option: rule", where an error that names no input is
-  /// said of the first input given (a physical one first), and a joint rule of those
-  /// among its inputs that were given.
-  std::string message(const InputError& e) const;
-  /// A rule of core's broken where the lab named no input: said of the inputs given.
+  /// What a refusal says (refusal_message): an InputError's "--option: rule", where an
+  /// error that names no input, or a rule of core's, is said of the first input given (a
+  /// physical one first), and a joint rule of those among its inputs that were given.
   std::string message(const std::exception& e) const;
 
  private:
@@ -67,9 +65,6 @@ class CommandLine {
   void check_output_paths() const;
   void check_animation_path() const;
   void check_renderer() const;
-  std::string blamed_option() const;
-  /// Of a joint rule's inputs, those the user gave (all of them if none was).
-  std::string given_among(const std::vector<std::string>& joint) const;
   bool given(const std::string& flag) const;
   static bool given(const Slot& slot) {
     return slot.cli->count() > 0 || (slot.old != nullptr && slot.old->count() > 0);

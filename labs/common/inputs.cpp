@@ -384,4 +384,26 @@ std::variant<Size, std::string> read_size(const std::string& text, const SizeLim
   return size;
 }
 
+std::string refusal_message(const std::exception& e, const std::vector<const InputRule*>& rules,
+                            const std::function<bool(const std::string&)>& given) {
+  const auto blamed = [&] {
+    for (const InputRule* r : rules) {
+      if (r->physical() && given(r->flag())) return r->flag();
+    }
+    for (const InputRule* r : rules) {  // then a numerical one
+      if (given(r->flag())) return r->flag();
+    }
+    return std::string("--inputs");
+  };
+  const auto* input = dynamic_cast<const InputError*>(&e);
+  if (input == nullptr) return blamed() + ": " + e.what();
+  if (input->input.empty()) return blamed() + ": " + input->rule;
+  if (input->joint.empty()) return input->what();
+  std::vector<std::string> named;
+  for (const std::string& flag : input->joint) {
+    if (given(flag)) named.push_back(flag);
+  }
+  return InputError::joined(named.empty() ? input->joint : named) + ": " + input->rule;
+}
+
 }  // namespace rigid::lab

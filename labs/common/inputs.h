@@ -380,6 +380,13 @@ class InputTable {
 void check_pairings(const std::vector<const InputRule*>& rules,
                     const std::function<bool(const std::string&)>& given);
 
+/// What a front door says of a compute() that threw `e`, among the inputs `rules` (in the
+/// table's order) of which `given` names those given: an InputError's inputs, of a joint
+/// rule only those given; else, where the lab named no input (a rule of core's), the first
+/// physical input given, then the first given, blamed ("--inputs" if none was).
+std::string refusal_message(const std::exception& e, const std::vector<const InputRule*>& rules,
+                            const std::function<bool(const std::string&)>& given);
+
 /// Whether `in` gives input `flag`: an optional one has a value, any other differs from its
 /// default, as Session::arguments() would write it on a command line.
 template <class In>

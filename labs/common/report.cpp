@@ -101,12 +101,14 @@ void Report::result(const std::string& key, const std::string& label, double val
   // Adding +0.0 turns a negative zero into 0.
   store(key, value + 0.0, std::isfinite(value), unit, printed);
   rows_.push_back({label, format_number(value, 6), unit, printed.value_or("")});
+  rows_.back().key = key;
 }
 
 void Report::result(const std::string& key, const std::string& label, const Eigen::Vector2d& value,
                     const std::string& unit, std::optional<std::string> printed) {
   store(key, Json::array({value(0) + 0.0, value(1) + 0.0}), value.allFinite(), unit, printed);
   rows_.push_back({label, format_vec2(value), unit, printed.value_or("")});
+  rows_.back().key = key;
 }
 
 void Report::result(const std::string& key, const std::string& label, const Eigen::Vector3d& value,
@@ -114,6 +116,7 @@ void Report::result(const std::string& key, const std::string& label, const Eige
   store(key, Json::array({value(0) + 0.0, value(1) + 0.0, value(2) + 0.0}), value.allFinite(), unit,
         printed);
   rows_.push_back({label, format_vec3(value), unit, printed.value_or("")});
+  rows_.back().key = key;
 }
 
 void Report::result(const std::string& key, const std::string& label, const Eigen::Matrix3d& value,
@@ -127,6 +130,7 @@ void Report::result(const std::string& key, const std::string& label, const Eige
     rows_.push_back({i == 0 ? label : "", format_vec3(value.row(i).transpose()), i == 0 ? unit : "",
                      i == 0 ? printed.value_or("") : ""});
   }
+  rows_[rows_.size() - 3].key = key;
 }
 
 void Report::result_none(const std::string& key, const std::string& label, const std::string& unit,
@@ -134,12 +138,14 @@ void Report::result_none(const std::string& key, const std::string& label, const
   results_[key] = nullptr;
   units_[key] = unit.empty() ? "1" : unit;
   rows_.push_back({label, "none", "", "(" + why + ")"});
+  rows_.back().key = key;
 }
 
 void Report::result_text(const std::string& key, const std::string& label,
                          const std::string& value) {
   results_[key] = value;
   rows_.push_back({label, value, "", ""});
+  rows_.back().key = key;
 }
 
 void Report::result_roundoff(const std::string& key, const std::string& label, double value,
@@ -155,12 +161,14 @@ void Report::count(const std::string& key, const std::string& label, std::size_t
   results_[key] = value;
   units_[key] = "1";
   rows_.emplace_back(label, std::to_string(value), "", "");
+  rows_.back().key = key;
 }
 
 void Report::answer(const std::string& text) {
   results_["answer"] = text;
   const TableRow heading("in short", "", "", "", true);
   TableRow row("answer", text, "", "");
+  row.key = "answer";
   rows_.insert(rows_.begin(), {heading, row});
 }
 

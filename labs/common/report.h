@@ -49,6 +49,7 @@ struct TableRow {
   std::string label, value, unit, textbook;
   bool heading = false;
   std::string remark;  ///< printed after the unit and textbook, e.g. the roundoff bound
+  std::string key;  ///< the result's JSON key ("" for a heading, a remark or a matrix's later rows)
 };
 
 class Report {

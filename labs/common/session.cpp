@@ -59,6 +59,17 @@ std::string argument_text(const InputValue& value) {
   return std::visit(Text{}, value);
 }
 
+Refusal refusal_of(const std::exception& e, const std::string& changed) {
+  if (const auto* input = dynamic_cast<const InputError*>(&e)) {
+    std::vector<std::string> named = input->joint;
+    if (named.empty()) named.push_back(input->input.empty() ? changed : input->input);
+    return Refusal{input->input.empty() ? changed + ": " + input->rule : input->what(), named};
+  }
+  // a rule of core's the lab names no input for: the one just changed broke it
+  if (changed.empty()) return Refusal{e.what(), {}};
+  return Refusal{changed + ": " + e.what(), {changed}};
+}
+
 std::optional<Refusal> Session::set_text(std::size_t i, const std::string& text) {
   const InputRule& r = rule(i);
   const auto parsed = read_input(r, text);

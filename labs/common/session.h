@@ -15,6 +15,7 @@
 //   draw(s->animation()->scene(t));
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <future>
 #include <memory>
@@ -122,6 +123,15 @@ std::string argument_text(const InputValue& value);
 /// switch; "" is no value for an optional input), or the rule the text breaks, worded as
 /// the command line words it.
 
+/// Texts given for inputs at once, by option: what a script or a notebook asks of a lab in
+/// one call ({"--mass", "2"}, {"--spin-rpm", "500"}; "" for a switch that is on).
+using GivenTexts = std::vector<std::pair<std::string, std::string>>;
+
+/// The refusal of a compute() that threw when input `changed` was set: an InputError
+/// names its inputs; any other rule of core's, which the lab names no input for, is
+/// laid to `changed`.
+Refusal refusal_of(const std::exception& e, const std::string& changed);
+
 namespace detail {
 
 template <class In, class Rep>
@@ -130,6 +140,13 @@ class ProgramSession final : public Session {
   explicit ProgramSession(LabProgram<In, Rep> lab) : lab_(std::move(lab)) {
     compute(In{});
     wait();
+  }
+  // `in` computed once and whole, on this thread (session_at()).
+  struct Whole {};
+  ProgramSession(LabProgram<In, Rep> lab, const In& in, Whole)
+      : lab_(std::move(lab)), in_(in), whole_never_(true) {
+    show(std::make_shared<const Rep>(lab_.compute(in)));
+    ++inputs_generation_;
   }
   // A preview of `in`, never made whole (with()).
   ProgramSession(LabProgram<In, Rep> lab, const In& in) : lab_(std::move(lab)), whole_never_(true) {
@@ -166,13 +183,8 @@ class ProgramSession final : public Session {
     f.set(next, value);
     try {
       compute(next);
-    } catch (const InputError& e) {
-      std::vector<std::string> named = e.joint;
-      if (named.empty()) named.push_back(e.input.empty() ? f.rule.flag() : e.input);
-      return Refusal{e.input.empty() ? f.rule.flag() + ": " + e.rule : e.what(), named};
     } catch (const std::exception& e) {
-      // a rule of core's the lab names no input for: the one just changed broke it
-      return Refusal{f.rule.flag() + ": " + e.what(), {f.rule.flag()}};
+      return refusal_of(e, f.rule.flag());
     }
     return std::nullopt;
   }
@@ -312,6 +324,45 @@ class ProgramSession final : public Session {
 template <class In, class Rep>
 std::unique_ptr<Session> make_session(LabProgram<In, Rep> lab) {
   return std::make_unique<detail::ProgramSession<In, Rep>>(std::move(lab));
+}
+
+/// A session of `lab` at the textbook's inputs but for `given`, as the command line takes
+/// them: each text read by the one reader (read_input), an option given twice or not the
+/// lab's refused, the pairings checked among the options given; then computed once and
+/// whole (no preview, no second thread). What a script or a notebook asks in one call.
+template <class In, class Rep>
+std::variant<std::unique_ptr<Session>, Refusal> session_at(LabProgram<In, Rep> lab,
+                                                           const GivenTexts& given) {
+  In in{};
+  std::vector<std::string> flags;
+  for (const auto& [flag, text] : given) {
+    const InputField<In>* f = lab.inputs.find(flag);
+    if (f == nullptr) return Refusal{flag + ": not an input of " + lab.name, {}};
+    if (std::find(flags.begin(), flags.end(), flag) != flags.end()) {
+      return Refusal{flag + ": given twice", {flag}};
+    }
+    flags.push_back(flag);
+    const auto read = read_input(f->rule, text);
+    if (const auto* why = std::get_if<std::string>(&read))
+      return Refusal{flag + ": " + *why, {flag}};
+    f->set(in, std::get<InputValue>(read));
+  }
+  std::vector<const InputRule*> rules;
+  for (const InputField<In>& f : lab.inputs.fields()) rules.push_back(&f.rule);
+  const auto given_flag = [&](const std::string& flag) {
+    return std::find(flags.begin(), flags.end(), flag) != flags.end();
+  };
+  try {
+    check_pairings(rules, given_flag);
+    using Made = detail::ProgramSession<In, Rep>;
+    return std::make_unique<Made>(std::move(lab), in, typename Made::Whole{});
+  } catch (const std::exception& e) {
+    std::vector<std::string> named;
+    if (const auto* input = dynamic_cast<const InputError*>(&e)) {
+      named = input->joint.empty() ? std::vector<std::string>{input->input} : input->joint;
+    }
+    return Refusal{refusal_message(e, rules, given_flag), named};
+  }
 }
 
 }  // namespace rigid::lab

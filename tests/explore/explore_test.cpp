@@ -379,13 +379,16 @@ TEST_CASE("explore: another lab opens off the frame's thread while the frames go
   const auto poinsot =
       std::find_if(labs.begin(), labs.end(), [](const auto& l) { return l.name == "poinsot"; });
   REQUIRE(poinsot != labs.end());
-  labs.push_back({"held", [&gate, make = poinsot->make] {
-                    gate.set(&Gate::began);
-                    gate.wait_for(&Gate::open);
-                    auto session = make();
-                    gate.set(&Gate::made);
-                    return session;
-                  }});
+  rigid::lab::LabEntry held = *poinsot;
+  held.name = "held";
+  held.make = [&gate, make = poinsot->make] {
+    gate.set(&Gate::began);
+    gate.wait_for(&Gate::open);
+    auto session = make();
+    gate.set(&Gate::made);
+    return session;
+  };
+  labs.push_back(held);
   rigid::explore::Explorer e(labs, "lamina_tensor", {});
   CHECK(imgui.frame(e));
   e.queue(rigid::explore::action::OpenLab{"held"});

@@ -291,11 +291,14 @@ TEST_CASE("explore: an export the lab cannot give ends the script with exit 2 an
   program.compute = without_series;
   program.figures = no_figures;
   std::vector<rigid::lab::LabEntry> labs = rigid::lab::all_labs();
-  labs.push_back({"no_series", [program] {
-                    auto p = program;
-                    p.name = "no_series";
-                    return rigid::lab::make_session(p);
-                  }});
+  rigid::lab::LabEntry no_series = rigid::lab::lab_entry(&rigid::lab::tire_balancing::program);
+  no_series.name = "no_series";
+  no_series.make = [program] {
+    auto p = program;
+    p.name = "no_series";
+    return rigid::lab::make_session(p);
+  };
+  labs.push_back(no_series);
   struct Case {
     std::string lab, line, says;
   };

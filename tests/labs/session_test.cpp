@@ -1,21 +1,26 @@
 // Every lab held live (common/session.h), as the explorer holds it: a refused change
 // leaves the state as it was and says the rule; the command line a state gives
-// reproduces it; and random slider moves across every lab never leave a NaN in what
-// is shown (the report, the figures, the motion), nor crash (the sanitizer build runs
-// this too).
+// reproduces it; a lab computed once from texts given together (session_at) is the
+// live session at those inputs; and random slider moves across every lab never leave
+// a NaN in what is shown (the report, the figures, the motion), nor crash (the
+// sanitizer build runs this too).
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include "common/registry.h"
 #include "common/writers.h"
 
+using rigid::lab::GivenTexts;
 using rigid::lab::InputKind;
 using rigid::lab::InputValue;
 using rigid::lab::Json;
+using rigid::lab::LabEntry;
+using rigid::lab::Refusal;
 using rigid::lab::Session;
 
 namespace {
@@ -88,6 +93,22 @@ void check_shown(const Session& s) {
       if (motion->strip) CHECK(finite_plot(motion->strip(share * motion->seconds)));
     }
   }
+}
+
+const LabEntry& lab(const std::string& name) {
+  static const std::vector<LabEntry> labs = rigid::lab::all_labs();
+  for (const LabEntry& e : labs) {
+    if (e.name == name) return e;
+  }
+  FAIL("no lab " << name);
+  return labs.front();
+}
+
+// The refusal's message ("" if the texts computed).
+std::string refused(const std::string& name, const GivenTexts& given) {
+  auto made = lab(name).make_at(given);
+  if (const auto* r = std::get_if<Refusal>(&made)) return r->message;
+  return "";
 }
 
 }  // namespace
@@ -263,4 +284,53 @@ TEST_CASE("session: a film's one legend lists every part any of its frames shows
       }
     }
   }
+}
+
+TEST_CASE("session_at: every lab at no texts is the textbook's, whole, described alike") {
+  for (const LabEntry& e : rigid::lab::all_labs()) {
+    INFO(e.name);
+    auto made = e.make_at({});
+    REQUIRE(std::holds_alternative<std::unique_ptr<Session>>(made));
+    const auto& at = *std::get<std::unique_ptr<Session>>(made);
+    const auto live = e.make();
+    CHECK(!at.pending());
+    CHECK(json_of(at) == json_of(*live));
+    // the entry describes the inputs as the session holds them, computing nothing
+    REQUIRE(e.inputs.size() == live->input_count());
+    for (std::size_t i = 0; i < e.inputs.size(); ++i) {
+      CHECK(e.inputs[i].rule.flag() == live->rule(i).flag());
+      CHECK(e.inputs[i].textbook == live->textbook_value(i));
+    }
+    CHECK(e.has_motion == (live->animation() != nullptr));
+    CHECK(e.title == live->title());
+  }
+}
+
+TEST_CASE("session_at: texts set together equal the same changes made one at a time") {
+  const LabEntry& top = lab("top_nutation");
+  auto made = top.make_at({{"--mass", "2"}, {"--spin-rpm", "500"}});
+  REQUIRE(std::holds_alternative<std::unique_ptr<Session>>(made));
+  auto live = top.make();
+  REQUIRE(!live->set_text(live->find("--mass"), "2"));
+  REQUIRE(!live->set_text(live->find("--spin-rpm"), "500"));
+  live->wait();
+  CHECK(json_of(*std::get<std::unique_ptr<Session>>(made)) == json_of(*live));
+}
+
+TEST_CASE("session_at: a refusal is the command line's message") {
+  // a text the one reader refuses
+  CHECK(refused("top_nutation", {{"--mass", "-1"}}) == "--mass: must be positive (got -1)");
+  CHECK(refused("top_nutation", {{"--mass", "two"}}).rfind("--mass: ", 0) == 0);
+  // not the lab's, or given twice
+  CHECK(refused("top_nutation", {{"--mas", "1"}}) == "--mas: not an input of top_nutation");
+  CHECK(refused("top_nutation", {{"--mass", "1"}, {"--mass", "2"}}) == "--mass: given twice");
+  // a pairing among the options given: alternatives, whatever their values
+  CHECK(refused("football", {{"--preset", "earth"}, {"--inertia", "1,1"}}) ==
+        "--inertia: replaces the moments of --preset; give one or the other");
+  CHECK(refused("football", {{"--omega", "1"}, {"--day", "3"}}) ==
+        "--day: give the speed once: --omega or --day");
+  // a rule of core's the lab words itself
+  CHECK(refused("football", {{"--inertia", "1,3"}}) ==
+        "--inertia: principal moments must satisfy the triangle inequality I1 + I2 >= I3, got "
+        "1 + 1 < 3");
 }

@@ -1,0 +1,239 @@
+// rigidlab's Python module, _rigidlab: the lab registry (common/registry.h) as it is,
+// the one generic binding over the type-erased lab interface the explorer drives. A lab
+// is computed once and whole from the texts given (session_at, through the one reader
+// of user text), with the GIL released, so that a thread pool runs a sweep on every
+// core. The Python package (rigidlab/__init__.py) makes the calls read like the text.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "common/registry.h"
+#include "common/writers.h"
+
+#ifdef RIGID_HAVE_RENDER
+#include "rigid/render/draw.h"
+#include "rigid/render/figure_format.h"
+#endif
+
+namespace py = pybind11;
+using rigid::lab::LabEntry;
+using rigid::lab::Session;
+
+namespace {
+
+const std::vector<LabEntry>& registry() {
+  static const std::vector<LabEntry> labs = rigid::lab::all_labs();
+  return labs;
+}
+
+const LabEntry& entry(const std::string& name) {
+  for (const LabEntry& e : registry()) {
+    if (e.name == name) return e;
+  }
+  throw py::key_error("no lab named '" + name + "'");
+}
+
+const char* kind_name(rigid::lab::InputKind kind) {
+  using rigid::lab::InputKind;
+  switch (kind) {
+    case InputKind::kNumber:
+      return "number";
+    case InputKind::kPair:
+      return "pair";
+    case InputKind::kVector:
+      return "vector";
+    case InputKind::kChoice:
+      return "choice";
+    case InputKind::kFlag:
+      return "flag";
+  }
+  return "number";
+}
+
+// What a lab takes, for the package to build its function, signature and help from.
+py::dict describe(const LabEntry& e) {
+  py::list inputs;
+  for (const rigid::lab::InputInfo& info : e.inputs) {
+    const rigid::lab::InputRule& r = info.rule;
+    py::dict d;
+    d["flag"] = r.flag();
+    d["key"] = r.key();
+    d["kind"] = kind_name(r.kind());
+    d["help"] = r.help();
+    d["description"] = r.description();
+    d["unit"] = r.unit_text();
+    d["choices"] = r.choices();
+    d["words"] = r.word_names();
+    d["range"] = r.range_text();
+    d["lab_default"] = r.lab_default_text();
+    d["numerical"] = !r.physical();
+    d["default"] = rigid::lab::argument_text(info.textbook);
+    d["has_default"] = !std::holds_alternative<std::monostate>(info.textbook);
+    inputs.append(d);
+  }
+  py::dict d;
+  d["name"] = e.name;
+  d["title"] = e.title;
+  d["csv"] = e.csv;
+  d["has_motion"] = e.has_motion;
+  d["textbook_example"] = e.textbook_example;
+  d["inputs"] = inputs;
+  return d;
+}
+
+// One computed lab: its session, held whole.
+class Run {
+ public:
+  Run(std::string lab, rigid::lab::GivenTexts given, std::unique_ptr<Session> session)
+      : lab_(std::move(lab)), given_(std::move(given)), session_(std::move(session)) {}
+
+  const rigid::lab::Report& report() const { return session_->report(); }
+
+  // The JSON the command line prints with --json, its "command" the call's arguments.
+  std::string json() const {
+    rigid::lab::RunOutputs outputs;
+    outputs.command = command();
+    std::ostringstream out;
+    rigid::lab::write_json(out, report(), outputs, RIGID_VERSION);
+    return out.str();
+  }
+
+  std::string table() const {
+    rigid::lab::RunOutputs outputs;
+    outputs.command = command();
+    std::ostringstream out;
+    rigid::lab::write_table(out, report(), outputs);
+    return out.str();
+  }
+
+  // The command line that gives the same report: the lab, then each option as given.
+  std::vector<std::string> command() const {
+    std::vector<std::string> argv{lab_};
+    for (const auto& [flag, text] : given_) {
+      argv.push_back(text.empty() ? flag : flag + "=" + text);
+    }
+    return argv;
+  }
+
+  // (key, label, value as printed, unit, the text's value, remark, is a heading)
+  py::list rows() const {
+    py::list out;
+    for (const rigid::lab::TableRow& r : report().rows()) {
+      out.append(py::make_tuple(r.key, r.label, r.value, r.unit, r.textbook, r.remark, r.heading));
+    }
+    return out;
+  }
+
+  // The CSV's columns, comments and numbers (rows x columns), None where there is none.
+  py::object series() const {
+    const rigid::lab::TimeSeries& s = report().time_series();
+    if (s.columns.empty()) return py::none();
+    py::array_t<double> data({s.rows.size(), s.columns.size()});
+    auto view = data.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < s.rows.size(); ++i) {
+      for (std::size_t j = 0; j < s.columns.size(); ++j) view(i, j) = s.rows[i][j];
+    }
+    return py::make_tuple(s.columns, s.comments, data);
+  }
+
+  std::string csv_text() const { return rigid::lab::csv_text(report().time_series()); }
+
+  // (name, caption, "scene" or "plot") of each figure, in the lab's order.
+  std::vector<std::tuple<std::string, std::string, std::string>> figures() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::tuple<std::string, std::string, std::string>> out;
+    for (const rigid::lab::NamedFigure& f : session_->figures()) {
+      out.emplace_back(f.name, f.caption, f.is_scene() ? "scene" : "plot");
+    }
+    return out;
+  }
+
+  // Writes figure `name` to `path` as the command line draws it (PNG, SVG or PDF).
+  void save_figure(const std::string& name, const std::string& path, const std::string& format,
+                   int width, int height) const {
+#ifdef RIGID_HAVE_RENDER
+    const auto kind = rigid::render::figure_format_named(format);
+    if (!kind) throw py::value_error("format must be png, svg or pdf (got '" + format + "')");
+    // the figures are described on first asking: one thread at a time, the GIL released
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (const rigid::lab::NamedFigure& f : session_->figures()) {
+      if (f.name != name) continue;
+      std::visit(
+          [&](const auto& figure) {
+            rigid::render::save_figure(figure, path, *kind, width, height);
+          },
+          f.figure);
+      return;
+    }
+    throw py::key_error("no figure named '" + name + "'");
+#else
+    (void)name, (void)path, (void)format, (void)width, (void)height;
+    throw std::runtime_error("rigidlab was built without the renderer: no figures");
+#endif
+  }
+
+  double motion_seconds() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const rigid::lab::Animation* a = session_->animation();
+    return a == nullptr ? 0.0 : a->seconds;
+  }
+
+ private:
+  std::string lab_;
+  rigid::lab::GivenTexts given_;
+  std::unique_ptr<Session> session_;
+  mutable std::mutex mutex_;
+};
+
+// The lab computed at the texts given; a broken rule raises ValueError with the lab's
+// own message, as the command line prints it after "LAB: error: ".
+std::unique_ptr<Run> run(const std::string& name, const rigid::lab::GivenTexts& given) {
+  const LabEntry& e = entry(name);
+  std::variant<std::unique_ptr<Session>, rigid::lab::Refusal> made;
+  {
+    py::gil_scoped_release release;
+    made = e.make_at(given);
+  }
+  if (auto* refusal = std::get_if<rigid::lab::Refusal>(&made)) {
+    throw py::value_error(refusal->message);
+  }
+  return std::make_unique<Run>(name, given, std::move(std::get<std::unique_ptr<Session>>(made)));
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_rigidlab, m) {
+  m.doc() = "rigidlab's lab libraries; use the package rigidlab, which reads like the text.";
+  m.attr("__version__") = RIGID_VERSION;
+#ifdef RIGID_HAVE_RENDER
+  m.attr("has_renderer") = true;
+#else
+  m.attr("has_renderer") = false;
+#endif
+  m.def("labs", [] {
+    py::list out;
+    for (const LabEntry& e : registry()) out.append(describe(e));
+    return out;
+  });
+  m.def("run", &run, py::arg("lab"), py::arg("given"));
+  py::class_<Run>(m, "Run")
+      .def("json", &Run::json)
+      .def("table", &Run::table)
+      .def("command", &Run::command)
+      .def("rows", &Run::rows)
+      .def("series", &Run::series)
+      .def("csv_text", &Run::csv_text)
+      .def("figures", &Run::figures)
+      .def("save_figure", &Run::save_figure, py::arg("name"), py::arg("path"),
+           py::arg("format") = "png", py::arg("width") = 1600, py::arg("height") = 1200,
+           py::call_guard<py::gil_scoped_release>())
+      .def("motion_seconds", &Run::motion_seconds);
+}

@@ -1,0 +1,247 @@
+"""rigidlab: the labs of "Rigid Body Motion in 3D" from Python.
+
+Each lab is a function whose keywords are the lab's options in snake_case, read by the
+same reader as the command line, and which returns a Result:
+
+    >>> import rigidlab as rl
+    >>> r = rl.top_nutation(mass=2, spin_rpm=500)
+    >>> r.answer                    # the "in short" line
+    >>> r["s_min_rad_s"]            # a value; r.results[key]: value, unit, printed, label
+    >>> r.notes, r.errata           # notes, and where the text is wrong
+    >>> r.series["t_s"]             # the CSV's columns as NumPy arrays
+    >>> r.figures["potential"]      # shown inline in Jupyter; .save("v.pdf", size=(1600, 1200))
+
+rl.labs() lists the labs; help(rl.top_nutation) lists its inputs with their units,
+defaults and rules. A broken rule raises ValueError with the lab's own message, an
+unknown keyword TypeError naming the nearest option. The computation releases the GIL:
+a thread pool runs a sweep on every core.
+"""
+
+import difflib
+import inspect
+import json
+import keyword
+import numbers
+import os
+import re
+import tempfile
+from collections import namedtuple
+
+import numpy as np
+
+from . import _rigidlab
+
+__version__ = _rigidlab.__version__
+__all__ = ["labs", "Result", "Quantity", "Figure"]
+
+_LABS = {d["name"]: d for d in _rigidlab.labs()}
+
+
+def labs():
+    """The labs' names, in the chapter's order."""
+    return list(_LABS)
+
+
+Quantity = namedtuple("Quantity", "value unit printed label")
+Quantity.__doc__ = ("A result: its value (a float, a list, a string or None), its unit "
+                    "(\"1\" for a pure number), the text's printed value (None where the "
+                    "text prints none) and its label in the table.")
+
+
+def _parameter(info):
+    """The Python keyword of an input: its JSON key, clear of Python's own words."""
+    key = info["key"]
+    return key + "_" if keyword.iskeyword(key) else key
+
+
+def _text(lab, name, info, value):
+    """The command-line text of a keyword's value, or None for a switch left off."""
+    kind = info["kind"]
+    if isinstance(value, str):
+        return value  # as typed on a command line: the one reader decides
+    if kind == "flag":
+        if isinstance(value, (bool, np.bool_)):
+            return "" if value else None
+        raise TypeError(f"{lab}(): {name} is a switch: True or False (got {value!r})")
+    if kind in ("number",):
+        if isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
+            return repr(float(value)) if not isinstance(value, numbers.Integral) else str(int(value))
+        raise TypeError(f"{lab}(): {name} takes a number (got {value!r})")
+    if kind in ("pair", "vector"):
+        count = 2 if kind == "pair" else 3
+        try:
+            parts = [float(v) for v in np.asarray(value, dtype=float).ravel()]
+        except (TypeError, ValueError):
+            raise TypeError(f"{lab}(): {name} takes {count} numbers (got {value!r})") from None
+        return ",".join(repr(p) for p in parts)
+    raise TypeError(f"{lab}(): {name} takes one of {', '.join(info['choices'])} (got {value!r})")
+
+
+class Figure:
+    """One of a result's figures, drawn by the same renderer as the command line's.
+
+    In Jupyter it shows inline; save(path) writes PNG, SVG or PDF (from the suffix, or
+    format=), at size=(width, height) pixels (1600 x 1200 by default)."""
+
+    def __init__(self, run, name, caption, kind):
+        self._run, self.name, self.caption, self.kind = run, name, caption, kind
+
+    def __repr__(self):
+        return f"<rigidlab figure {self.name!r} ({self.kind}): {self.caption}>"
+
+    def save(self, path, size=(1600, 1200), format=None):
+        """Writes the figure to path (PNG, SVG or PDF) and returns the path."""
+        path = os.fspath(path)
+        if format is None:
+            format = os.path.splitext(path)[1].lstrip(".").lower() or "png"
+        width, height = (int(v) for v in size)
+        self._run.save_figure(self.name, path, format, width, height)
+        return path
+
+    def data(self, format="png", size=(1600, 1200)):
+        """The figure's bytes in a format (png, svg or pdf)."""
+        with tempfile.TemporaryDirectory(prefix="rigidlab-") as folder:
+            path = self.save(os.path.join(folder, f"{self.name}.{format}"), size, format)
+            with open(path, "rb") as f:
+                return f.read()
+
+    def _repr_png_(self):
+        return self.data("png", (1000, 750))
+
+    def _repr_svg_(self):
+        return self.data("svg", (1000, 750)).decode("utf-8")
+
+
+class Figures(dict):
+    """A result's figures by name, in the lab's order."""
+
+    def __missing__(self, name):
+        near = difflib.get_close_matches(str(name), list(self), n=1)
+        hint = f"; did you mean {near[0]!r}?" if near else f"; the figures: {', '.join(self)}"
+        raise KeyError(f"no figure {name!r}{hint}")
+
+
+class Result:
+    """What a lab computed for its inputs: the numbers, the words, the series, the figures.
+
+    r.answer: the "in short" line; r[key]: a value; r.results[key]: a Quantity (value,
+    unit, printed, label); r.notes; r.errata (where, printed, correction); r.series: the
+    CSV's columns as NumPy arrays (r.series_comments: what each means); r.figures; r.json:
+    the command line's --json, parsed; r.command: the command line that gives the same;
+    r.table: the command line's table."""
+
+    def __init__(self, lab, run):
+        self.lab = lab
+        self._run = run
+        self.json = json.loads(run.json())
+        self.command = run.command()
+        self.inputs = self.json["inputs"]
+        labels = {key: label for key, label, *_ in run.rows() if key}
+        units, printed = self.json["units"], self.json["textbook"]
+        self.results = {
+            key: Quantity(value, units.get(key), printed.get(key), labels.get(key, key))
+            for key, value in self.json["results"].items()
+        }
+        self.answer = self.json["results"].get("answer")
+        self.notes = list(self.json["notes"])
+        self.errata = list(self.json["errata"])
+        series = run.series()
+        self.series, self.series_comments = {}, []
+        if series is not None:
+            columns, self.series_comments, data = series
+            self.series = {c: data[:, k] for k, c in enumerate(columns)}
+        self.figures = Figures(
+            (name, Figure(run, name, caption, kind)) for name, caption, kind in run.figures())
+
+    def __getitem__(self, key):
+        if key not in self.results:
+            near = difflib.get_close_matches(str(key), list(self.results), n=1)
+            hint = f"; did you mean {near[0]!r}?" if near else ""
+            raise KeyError(f"{self.lab} has no result {key!r}{hint}")
+        return self.results[key].value
+
+    def keys(self):
+        return self.results.keys()
+
+    @property
+    def table(self):
+        return self._run.table()
+
+    def csv(self, path):
+        """Writes the CSV the command line's --csv writes, and returns the path."""
+        text = self._run.csv_text()
+        if not text:
+            raise ValueError(f"{self.lab} writes no CSV")
+        path = os.fspath(path)
+        with open(path, "w", newline="") as f:
+            f.write(text)
+        return path
+
+    def __repr__(self):
+        return f"<rigidlab {self.lab}: {self.answer}>"
+
+    def _repr_markdown_(self):
+        lines = [f"**{self.lab}**: {self.answer}", "", "| quantity | value | unit | text |",
+                 "|---|---|---|---|"]
+        for key, label, value, unit, printed, remark, heading in self._run.rows():
+            if heading:
+                lines.append(f"| *{label}* | | | |")
+            elif key != "answer":
+                cell = [c.replace("|", "\\|") for c in (label, value, unit, printed or remark)]
+                lines.append("| " + " | ".join(cell) + " |")
+        return "\n".join(lines)
+
+
+def _docstring(info):
+    lines = [info["title"], "", "Parameters (keyword only; None or left out: the default)",
+             "----------"]
+    for i in info["inputs"]:
+        unit = f" [{i['unit']}]" if i["unit"] else ""
+        default = (i["default"] if i["has_default"] and i["default"] != "" else
+                   (i["lab_default"] or "none"))
+        kind = i["kind"] + (f": {'|'.join(i['choices'])}" if i["choices"] else "")
+        lines.append(f"{_parameter(i)} : {kind}{unit}, default {default}")
+        # the command line's --options named as this function's keywords
+        lines.append("    " + re.sub(r"--([a-z0-9-]+)", lambda m: m[1].replace("-", "_"),
+                                      i["description"]))
+    lines += ["", "Returns", "-------", "Result", "    answer, results, notes, errata, series, "
+              "figures; see help(rigidlab.Result)."]
+    if info["csv"]:
+        lines += ["", f"series: {info['csv']}"]
+    return "\n".join(lines)
+
+
+def _make(name, info):
+    by_parameter = {_parameter(i): i for i in info["inputs"]}
+
+    def lab(**given):
+        texts = []
+        for key, value in given.items():
+            i = by_parameter.get(key)
+            if i is None:
+                near = difflib.get_close_matches(key, list(by_parameter), n=1)
+                hint = f"; did you mean {near[0]!r}?" if near else ""
+                raise TypeError(f"{name}() got an unexpected keyword argument {key!r}{hint}")
+            if value is None:
+                continue
+            text = _text(name, key, i, value)
+            if text is not None:
+                texts.append((i["flag"], text))
+        # the options in the lab's own order, as --help lists them
+        order = {i["flag"]: k for k, i in enumerate(info["inputs"])}
+        texts.sort(key=lambda t: order[t[0]])
+        return Result(name, _rigidlab.run(name, texts))
+
+    lab.__name__ = lab.__qualname__ = name
+    lab.__doc__ = _docstring(info)
+    lab.__signature__ = inspect.Signature([
+        inspect.Parameter(_parameter(i), inspect.Parameter.KEYWORD_ONLY, default=None)
+        for i in info["inputs"]])
+    lab.__module__ = __name__
+    return lab
+
+
+for _name, _info in _LABS.items():
+    globals()[_name] = _make(_name, _info)
+    __all__.append(_name)
+del _name, _info
