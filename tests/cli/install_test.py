@@ -161,10 +161,32 @@ def run_tree(stage, expected, failures):
         failures.append(f"rejected figures left {os.listdir(bad_out)}")
 
 
+def import_installed(root, package_dir, failures):
+    """import rigidlab from the installed tree alone: a lab computed, its figure saved."""
+    site = os.path.join(root, package_dir)
+    code = (
+        "import os, sys, rigidlab as rl\n"
+        "assert rl.__file__.startswith(sys.argv[1]), rl.__file__\n"
+        "r = rl.tennis_racquet(perturbation=0.01)\n"
+        "assert ' flips: ' in r.answer, r.answer\n"
+        "if rl._rigidlab.has_renderer:\n"
+        "    path = r.figures['flip'].save(os.path.join(sys.argv[2], 'flip.png'), size=(800, 600))\n"
+        "    assert open(path, 'rb').read(8) == b'\\x89PNG\\r\\n\\x1a\\n'\n"
+        "print(rl.labs())\n")
+    env = {"PATH": "/usr/bin:/bin", "HOME": root, "PYTHONPATH": site,
+           "PYTHONDONTWRITEBYTECODE": "1"}
+    done = subprocess.run([sys.executable, "-c", code, site, root], capture_output=True,
+                          text=True, env=env, cwd=root)
+    if done.returncode != 0 or "tennis_racquet" not in done.stdout:
+        failures.append(f"import rigidlab from {site}: {done.stderr[-600:]!r}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("build")
     parser.add_argument("--figures", type=int, help="run the tree and expect N figures")
+    parser.add_argument("--python", metavar="DIR",
+                        help="import rigidlab from DIR under the prefix (lib/python3/...)")
     parser.add_argument("--man-pages", nargs="*", default=[],
                         help="the programs whose man pages the tree must hold")
     args = parser.parse_args()
@@ -174,6 +196,8 @@ def main():
     try:
         root = install(build, stage, failures)
         check_layout(root, args.man_pages, failures)
+        if args.python and not failures:
+            import_installed(root, args.python, failures)
         if args.figures is not None and not failures:
             run_tree(root, args.figures, failures)
     finally:

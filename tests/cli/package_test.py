@@ -52,6 +52,11 @@ def main():
             if lib not in recommends:
                 failures.append(f"Recommends lacks {lib} (--animate): {recommends!r}")
 
+        # import rigidlab: Debian's python3 (the module's ABI) and NumPy
+        python = len(sys.argv) > 3 and sys.argv[3] == "--python"
+        if python and ("python3 (>= 3.11)" not in recommends or "python3-numpy" not in recommends):
+            failures.append(f"Recommends lacks python3 3.11 and NumPy: {recommends!r}")
+
         listing = subprocess.run(["dpkg-deb", "-c", deb], check=True, capture_output=True,
                                  text=True).stdout
         files = {line.split()[-1].lstrip(".") for line in listing.splitlines()}
@@ -60,6 +65,8 @@ def main():
         expected = {f"/usr/bin/{lab}" for lab in labs + ["rigidlab"]}
         expected |= {f"/usr/share/man/man1/{lab}.1" for lab in labs + ["rigidlab"]}
         expected.add("/usr/share/bash-completion/completions/rigidlab")
+        if python:
+            expected.add("/usr/lib/python3/dist-packages/rigidlab/__init__.py")
         for missing in sorted(expected - files):
             failures.append(f"the package lacks {missing}")
 
@@ -72,6 +79,15 @@ def main():
         env.update({k: v for k, v in os.environ.items() if k.endswith("SAN_OPTIONS")})
         run = subprocess.run(["poinsot", "--figures", figures, "--json"], capture_output=True,
                              text=True, env=env, cwd=work)
+        if python:
+            # and a lab from Python, the package's dist-packages alone on the path
+            site = os.path.join(root, "usr", "lib", "python3", "dist-packages")
+            imported = subprocess.run(
+                ["/usr/bin/python3", "-c", "import rigidlab as rl; print(rl.football().answer)"],
+                capture_output=True, text=True, cwd=work,
+                env={**env, "PYTHONPATH": site, "PYTHONDONTWRITEBYTECODE": "1"})
+            if imported.returncode != 0 or "prolate" not in imported.stdout:
+                failures.append(f"import rigidlab from the package: {imported.stderr[-400:]!r}")
         if run.returncode != 0:
             failures.append(f"poinsot from the package: {run.returncode} {run.stderr!r}")
         else:
