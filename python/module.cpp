@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -89,6 +90,23 @@ py::dict describe(const LabEntry& e) {
   return d;
 }
 
+// A JSON value as Python's: numbers, text, lists, None.
+py::object to_python(const rigid::lab::Json& j) {
+  if (j.is_null()) return py::none();
+  if (j.is_boolean()) return py::bool_(j.get<bool>());
+  if (j.is_number_integer()) return py::int_(j.get<long long>());
+  if (j.is_number()) return py::float_(j.get<double>());
+  if (j.is_string()) return py::str(j.get<std::string>());
+  if (j.is_array()) {
+    py::list out;
+    for (const auto& item : j) out.append(to_python(item));
+    return out;
+  }
+  py::dict out;
+  for (const auto& [key, item] : j.items()) out[py::str(key)] = to_python(item);
+  return out;
+}
+
 // One computed lab: its session, held whole.
 class Run {
  public:
@@ -121,6 +139,15 @@ class Run {
       argv.push_back(text.empty() ? flag : flag + "=" + text);
     }
     return argv;
+  }
+
+  // One result by its JSON key (KeyError if the lab has none): what a sweep reads, with
+  // nothing else of the report converted.
+  py::object value(const std::string& key) const {
+    const rigid::lab::Json& results = report().results();
+    const auto found = results.find(key);
+    if (found == results.end()) throw py::key_error(key);
+    return to_python(*found);
   }
 
   // (key, label, value as printed, unit, the text's value, remark, is a heading)
@@ -208,6 +235,26 @@ std::unique_ptr<Run> run(const std::string& name, const rigid::lab::GivenTexts& 
   return std::make_unique<Run>(name, given, std::move(std::get<std::unique_ptr<Session>>(made)));
 }
 
+// For the bench: the seconds of each of `repeats` computations of the lab at the texts
+// given, in C++ alone (the GIL released, nothing of Python's in the loop): what a
+// Python call's own cost is measured against.
+std::vector<double> compute_seconds(const std::string& name, const rigid::lab::GivenTexts& given,
+                                    int repeats) {
+  const LabEntry& e = entry(name);
+  std::vector<double> seconds;
+  py::gil_scoped_release release;
+  for (int k = 0; k < repeats; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto made = e.make_at(given);
+    seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (std::holds_alternative<rigid::lab::Refusal>(made)) {
+      throw py::value_error(std::get<rigid::lab::Refusal>(made).message);
+    }
+  }
+  return seconds;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_rigidlab, m) {
@@ -224,9 +271,11 @@ PYBIND11_MODULE(_rigidlab, m) {
     return out;
   });
   m.def("run", &run, py::arg("lab"), py::arg("given"));
+  m.def("_compute_seconds", &compute_seconds, py::arg("lab"), py::arg("given"), py::arg("repeats"));
   py::class_<Run>(m, "Run")
       .def("json", &Run::json)
       .def("table", &Run::table)
+      .def("value", &Run::value)
       .def("command", &Run::command)
       .def("rows", &Run::rows)
       .def("series", &Run::series)

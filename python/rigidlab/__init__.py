@@ -128,40 +128,87 @@ class Result:
     unit, printed, label); r.notes; r.errata (where, printed, correction); r.series: the
     CSV's columns as NumPy arrays (r.series_comments: what each means); r.figures; r.json:
     the command line's --json, parsed; r.command: the command line that gives the same;
-    r.table: the command line's table."""
+    r.table: the command line's table. Each part is made when first asked for: a sweep
+    that reads r[key] pays for that value alone."""
 
     def __init__(self, lab, run):
         self.lab = lab
         self._run = run
-        self.json = json.loads(run.json())
-        self.command = run.command()
-        self.inputs = self.json["inputs"]
-        labels = {key: label for key, label, *_ in run.rows() if key}
-        units, printed = self.json["units"], self.json["textbook"]
-        self.results = {
-            key: Quantity(value, units.get(key), printed.get(key), labels.get(key, key))
-            for key, value in self.json["results"].items()
-        }
-        self.answer = self.json["results"].get("answer")
-        self.notes = list(self.json["notes"])
-        self.errata = list(self.json["errata"])
-        series = run.series()
-        self.series, self.series_comments = {}, []
-        if series is not None:
-            columns, self.series_comments, data = series
-            self.series = {c: data[:, k] for k, c in enumerate(columns)}
-        self.figures = Figures(
-            (name, Figure(run, name, caption, kind)) for name, caption, kind in run.figures())
+        self._cache = {}
+
+    def _once(self, name, make):
+        if name not in self._cache:
+            self._cache[name] = make()
+        return self._cache[name]
+
+    @property
+    def json(self):
+        return self._once("json", lambda: json.loads(self._run.json()))
+
+    @property
+    def command(self):
+        return self._run.command()
+
+    @property
+    def inputs(self):
+        return self.json["inputs"]
+
+    @property
+    def answer(self):
+        return self._run.value("answer")
+
+    @property
+    def results(self):
+        def make():
+            labels = {key: label for key, label, *_ in self._run.rows() if key}
+            j = self.json
+            units, printed = j["units"], j["textbook"]
+            return {key: Quantity(value, units.get(key), printed.get(key), labels.get(key, key))
+                    for key, value in j["results"].items()}
+        return self._once("results", make)
+
+    @property
+    def notes(self):
+        return list(self.json["notes"])
+
+    @property
+    def errata(self):
+        return list(self.json["errata"])
+
+    def _series(self):
+        def make():
+            series = self._run.series()
+            if series is None:
+                return {}, []
+            columns, comments, data = series
+            return {c: data[:, k] for k, c in enumerate(columns)}, list(comments)
+        return self._once("series", make)
+
+    @property
+    def series(self):
+        return self._series()[0]
+
+    @property
+    def series_comments(self):
+        return self._series()[1]
+
+    @property
+    def figures(self):
+        return self._once("figures", lambda: Figures(
+            (name, Figure(self._run, name, caption, kind))
+            for name, caption, kind in self._run.figures()))
 
     def __getitem__(self, key):
-        if key not in self.results:
-            near = difflib.get_close_matches(str(key), list(self.results), n=1)
+        try:
+            return self._run.value(key)
+        except KeyError:
+            keys = list(self.json["results"])
+            near = difflib.get_close_matches(str(key), keys, n=1)
             hint = f"; did you mean {near[0]!r}?" if near else ""
-            raise KeyError(f"{self.lab} has no result {key!r}{hint}")
-        return self.results[key].value
+            raise KeyError(f"{self.lab} has no result {key!r}{hint}") from None
 
     def keys(self):
-        return self.results.keys()
+        return self.json["results"].keys()
 
     @property
     def table(self):

@@ -13,8 +13,8 @@ import tempfile
 PROGRAMS = ["bench_work_precision", "bench_heavy_top", "bench_report", "bench_figure_context",
             "bench_startup_bare", "bench_startup_cairo", "bench_startup_ffmpeg"]
 # progress.py is a module the scripts import, not a program
-SCRIPTS = ["explore_bench.py", "figures_bench.py", "figures_matplotlib.py", "scipy_heavy_top.py",
-           "scipy_work_precision.py"]
+SCRIPTS = ["explore_bench.py", "figures_bench.py", "figures_matplotlib.py", "python_bench.py",
+           "scipy_heavy_top.py", "scipy_work_precision.py"]
 
 
 def main():
