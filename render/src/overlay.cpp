@@ -207,10 +207,29 @@ std::vector<std::string> title_words(std::string_view m) {
   return words;
 }
 
-// Words filled into lines no wider than `room` at `size`; a word wider alone is a line.
+// Words that read as one stay on one line: "omega = 10 rad/s", not "omega" above "= 10".
+// A "=" joins both its neighbours, and a word after a number (its unit) joins that number.
+std::vector<std::string> title_phrases(std::string_view m) {
+  std::vector<std::string> phrases;
+  bool join_next = false;
+  for (const std::string& w : title_words(m)) {
+    const bool after_number = !phrases.empty() &&
+                              std::isdigit(static_cast<unsigned char>(phrases.back().back())) &&
+                              !std::isdigit(static_cast<unsigned char>(w.front()));
+    if (!phrases.empty() && (join_next || w == "=" || after_number)) {
+      phrases.back() += " " + w;
+    } else {
+      phrases.push_back(w);
+    }
+    join_next = w == "=";
+  }
+  return phrases;
+}
+
+// Phrases filled into lines no wider than `room` at `size`; one wider alone is a line.
 std::vector<std::string> fill_lines(std::string_view m, double size, double room) {
   std::vector<std::string> lines;
-  for (const std::string& w : title_words(m)) {
+  for (const std::string& w : title_phrases(m)) {
     if (!lines.empty() && measure_text(lines.back() + " " + w, size).width <= room) {
       lines.back() += " " + w;
     } else {
