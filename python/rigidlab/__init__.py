@@ -74,6 +74,8 @@ def _text(lab, name, info, value):
         except (TypeError, ValueError):
             raise TypeError(f"{lab}(): {name} takes {count} numbers (got {value!r})") from None
         return ",".join(repr(p) for p in parts)
+    if isinstance(value, numbers.Integral) and str(int(value)) in info["choices"]:
+        return str(int(value))  # spin_axis=2 for "2"
     raise TypeError(f"{lab}(): {name} takes one of {', '.join(info['choices'])} (got {value!r})")
 
 

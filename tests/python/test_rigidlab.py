@@ -145,6 +145,10 @@ def test_an_unknown_keyword_names_the_nearest_option():
         rl.top_nutation(spin_rmp=500)
     with pytest.raises(TypeError, match="takes a number"):
         rl.top_nutation(mass=[1, 2])
+    # a choice of numbers takes the number itself
+    assert rl.tennis_racquet(spin_axis=1).inputs["spin_axis"] == "1"
+    with pytest.raises(TypeError, match="takes one of 1, 2, 3"):
+        rl.tennis_racquet(spin_axis=4.5)
 
 
 def test_help_shows_every_input_with_its_unit_default_and_rule():
