@@ -27,6 +27,15 @@ std::vector<Vec3> circle_about_z(double radius, double z) {
   return points;
 }
 
+// Both scenes seen alike: L up, the cones' apex low in the view.
+render::Camera cones_camera() {
+  render::Camera camera;
+  camera.eye = Vec3(0.9, -3.6, 1.5);
+  camera.target = Vec3(0.15, 0, 0.55);
+  camera.fov_y_deg = 32;
+  return camera;
+}
+
 // A spin along 3 (alpha = 0): omega, L and 3 on one line, both cones lines. The three
 // arrows are nested, the shortest the thickest, so each shows its own colour; lines
 // fixed in the body turn about 3 at omega.
@@ -36,9 +45,7 @@ render::Scene3D aligned_scene(double ratio, double omega, const std::string& pre
                              "Is/I = {:.6g}: \\omega, L and 3 on one line; "
                              "nothing precesses",
                              ratio);
-  scene.camera.eye = Vec3(0.9, -3.6, 1.5);
-  scene.camera.target = Vec3(0.15, 0, 0.55);
-  scene.camera.fov_y_deg = 32;
+  scene.camera = cones_camera();
   const double r = 0.016;
   scene.add_arrow(Vec3::Zero(), 1.45 * Vec3::UnitZ(), r, {colors::kL}, "L (fixed in space)");
   scene.add_arrow(Vec3::Zero(), 1.3 * Vec3::UnitZ(), 1.5 * r, {colors::kSymmetryAxis},
@@ -83,9 +90,7 @@ render::Scene3D rolling_cones_scene(double ratio, double alpha_deg, const Symmet
       fmt::format("Is/I = {:.6g}, \\alpha = {:.3g}\\deg, body cone rolls {} the space cone", ratio,
                   alpha_deg, p.contact == ConeContact::kInside ? "round" : "outside");
   if (magnify > 1) scene.title += fmt::format("; angles \\times{:.3g}", magnify);
-  scene.camera.eye = Vec3(0.9, -3.6, 1.5);
-  scene.camera.target = Vec3(0.15, 0, 0.55);
-  scene.camera.fov_y_deg = 32;
+  scene.camera = cones_camera();
 
   const double slant = 1.0;  // both cones end on the circle omega's tip sweeps
   const char* space_name = "space cone (fixed, about L)";

@@ -16,7 +16,7 @@ using Eigen::Vector3d;
 namespace {
 
 // The racquet in state x at time t of `motion`, L turned to display z: spun about axis 2
-// it turns over and back.
+// it turns over and back, launched exactly along an axis it stays.
 render::Scene3D spin_scene(const DrawnBody& body, const FreeBodyExact& motion, int axis, double t,
                            const RotationState& x) {
   const Eigen::Quaterniond to_display =
@@ -26,14 +26,12 @@ render::Scene3D spin_scene(const DrawnBody& body, const FreeBodyExact& motion, i
   const double I2 = motion.moments().I2, L = motion.angular_momentum_magnitude();
   const double angle2 = std::acos(std::clamp(I2 * omega_body(x)(1) / L, -1.0, 1.0));
   render::Scene3D scene;
-  scene.title = axis == 1 ? fmt::format(
-                                "spun about axis 2, it turns over and back: t = {:.3f} s, "
-                                "axis 2 at {:.0f}\\deg from L",
-                                t, rad_to_deg(angle2))
-                          : fmt::format(
-                                "spun about axis {}, it wobbles: t = {:.3f} s, axis 2 at "
-                                "{:.0f}\\deg from L",
-                                axis + 1, t, rad_to_deg(angle2));
+  // launched exactly along its axis (--perturbation 0), it neither turns over nor wobbles
+  const char* does = motion.regime() == FreeMotionRegime::kSteady ? "it stays"
+                     : axis == 1                                  ? "it turns over and back"
+                                                                  : "it wobbles";
+  scene.title = fmt::format("spun about axis {}, {}: t = {:.3f} s, axis 2 at {:.0f}\\deg from L",
+                            axis + 1, does, t, rad_to_deg(angle2));
   add_body(scene, body, R, Vector3d::Zero(), true);
   scene.add_arrow(Vector3d::Zero(), 0.55 * length * Vector3d::UnitZ(), 0.03 * a, {colors::kL},
                   "L, fixed in space");

@@ -63,10 +63,11 @@ def _text(lab, name, info, value):
         if isinstance(value, (bool, np.bool_)):
             return "" if value else None
         raise TypeError(f"{lab}(): {name} is a switch: True or False (got {value!r})")
-    if kind in ("number",):
-        if isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
-            return repr(float(value)) if not isinstance(value, numbers.Integral) else str(int(value))
-        raise TypeError(f"{lab}(): {name} takes a number (got {value!r})")
+    if kind == "number":
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+            raise TypeError(f"{lab}(): {name} takes a number (got {value!r})")
+        # repr: the shortest text that reads back as the same double
+        return str(int(value)) if isinstance(value, numbers.Integral) else repr(float(value))
     if kind in ("pair", "vector"):
         count = 2 if kind == "pair" else 3
         try:
@@ -262,6 +263,8 @@ def _docstring(info):
 
 def _make(name, info):
     by_parameter = {_parameter(i): i for i in info["inputs"]}
+    # the options in the lab's own order, as --help lists them and the command line reads them
+    order = {i["flag"]: k for k, i in enumerate(info["inputs"])}
 
     def lab(**given):
         texts = []
@@ -276,8 +279,6 @@ def _make(name, info):
             text = _text(name, key, i, value)
             if text is not None:
                 texts.append((i["flag"], text))
-        # the options in the lab's own order, as --help lists them
-        order = {i["flag"]: k for k, i in enumerate(info["inputs"])}
         texts.sort(key=lambda t: order[t[0]])
         return Result(name, _rigidlab.run(name, texts))
 

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <string>
+#include <vector>
 
 #include "lab_library.h"
 #include "tennis_racquet/tennis_racquet.h"
@@ -44,5 +45,10 @@ TEST_CASE("tennis_racquet: a spin exactly along an axis stays there, and says so
     CHECK(contains(answer, k == 1 ? "unstable: the slightest disturbance grows at"
                                   : "stable: a slight disturbance wobbles at"));
     CHECK(contains(answer, fmt::format("{:.4g}", report.predicted[k].rate)));
+    // the film says it stays, not that it turns over
+    const auto film = rigid::lab::tennis_racquet::animation(report, [](double seconds) {
+      return std::vector<double>{0.0, seconds};
+    });
+    CHECK(contains(film.scene(0.0).title, fmt::format("spun about axis {}, it stays", axis)));
   }
 }
