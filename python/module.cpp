@@ -16,8 +16,10 @@
 #include <variant>
 #include <vector>
 
+#include "common/output_paths.h"
 #include "common/registry.h"
 #include "common/writers.h"
+#include "rigid/render/atomic_file.h"
 
 #ifdef RIGID_HAVE_RENDER
 #include "rigid/render/draw.h"
@@ -29,6 +31,13 @@ using rigid::lab::LabEntry;
 using rigid::lab::Session;
 
 namespace {
+
+// A run's files land together under one transaction, which is the process's: the
+// module writes files one call at a time, so that no other thread's file joins it.
+std::mutex& files_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
 
 const std::vector<LabEntry>& registry() {
   static const std::vector<LabEntry> labs = rigid::lab::all_labs();
@@ -159,7 +168,8 @@ class Run {
     return out;
   }
 
-  // The CSV's columns, comments and numbers (rows x columns), None where there is none.
+  // The CSV's title, its columns (name, unit, meaning) and its numbers (rows x
+  // columns), None where there is none.
   py::object series() const {
     const rigid::lab::TimeSeries& s = report().time_series();
     if (s.columns.empty()) return py::none();
@@ -168,10 +178,46 @@ class Run {
     for (std::size_t i = 0; i < s.rows.size(); ++i) {
       for (std::size_t j = 0; j < s.columns.size(); ++j) view(i, j) = s.rows[i][j];
     }
-    return py::make_tuple(s.columns, s.comments, data);
+    py::list columns;
+    for (const rigid::lab::SeriesColumn& c : s.columns) {
+      columns.append(py::make_tuple(c.name, c.unit, c.meaning));
+    }
+    return py::make_tuple(s.title, columns, data);
   }
 
   std::string csv_text() const { return rigid::lab::csv_text(report().time_series()); }
+
+  // Writes the CSV and its metadata beside it as --csv does, the two landing together
+  // or neither; a path --csv would refuse raises ValueError with its rule, a failed
+  // write OSError.
+  void write_csv(const std::string& path) const {
+    const rigid::lab::TimeSeries& series = report().time_series();
+    if (series.columns.empty()) throw py::value_error(lab_ + " writes no CSV");
+    const std::string metadata = rigid::lab::csv_metadata_path(path);
+    try {
+      rigid::lab::check_csv_file("", path);
+    } catch (const rigid::lab::InputError& e) {
+      throw py::value_error(e.rule);
+    }
+    std::string failed;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(files_mutex());
+      try {
+        rigid::render::FileTransaction files;
+        rigid::render::write_text_atomically(path, rigid::lab::csv_text(series));
+        rigid::render::write_text_atomically(
+            metadata, rigid::lab::csv_metadata_text(series, path, RIGID_VERSION));
+        files.commit();
+      } catch (const std::exception& e) {
+        failed = e.what();
+      }
+    }
+    if (!failed.empty()) {
+      PyErr_SetString(PyExc_OSError, failed.c_str());
+      throw py::error_already_set();
+    }
+  }
 
   // (name, caption, "scene" or "plot") of each figure, in the lab's order.
   std::vector<std::tuple<std::string, std::string, std::string>> figures() const {
@@ -191,6 +237,7 @@ class Run {
     if (!kind) throw py::value_error("format must be png, svg or pdf (got '" + format + "')");
     // the figures are described on first asking: one thread at a time, the GIL released
     const std::lock_guard<std::mutex> lock(mutex_);
+    const std::lock_guard<std::mutex> writing(files_mutex());
     for (const rigid::lab::NamedFigure& f : session_->figures()) {
       if (f.name != name) continue;
       std::visit(
@@ -280,6 +327,7 @@ PYBIND11_MODULE(_rigidlab, m) {
       .def("rows", &Run::rows)
       .def("series", &Run::series)
       .def("csv_text", &Run::csv_text)
+      .def("write_csv", &Run::write_csv, py::arg("path"))
       .def("figures", &Run::figures)
       .def("save_figure", &Run::save_figure, py::arg("name"), py::arg("path"),
            py::arg("format") = "png", py::arg("width") = 1600, py::arg("height") = 1200,

@@ -127,24 +127,32 @@ class Background {
   int status_ = -1;
 };
 
-/// A CSV file a lab wrote: its header line and its rows of numbers.
+/// A CSV file a lab wrote: its header line, its rows of numbers, and the CSV on the
+/// Web metadata beside it (FILE-metadata.json; null if there is none).
 struct Csv {
-  std::vector<std::string> comments;  ///< the "# ..." lines before the header
   std::string header;
   std::vector<std::vector<double>> rows;
+  nlohmann::json metadata;
+  /// The metadata's column `name`: its "dc:description" and "schema:unitText".
+  nlohmann::json column(const std::string& name) const {
+    for (const auto& c : metadata["tableSchema"]["columns"]) {
+      if (c["name"] == name) return c;
+    }
+    return nullptr;
+  }
 };
 inline Csv read_csv(const std::string& path) {
   Csv csv;
   std::ifstream in(path);
-  // the comment lines first ("# t_s: time, s; ..."), then the header
-  while (std::getline(in, csv.header) && csv.header.rfind('#', 0) == 0)
-    csv.comments.push_back(csv.header);
+  std::getline(in, csv.header);  // the header first: no line before it
   for (std::string line; std::getline(in, line);) {
     std::vector<double> row;
     std::stringstream cells(line);
     for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
     csv.rows.push_back(std::move(row));
   }
+  std::ifstream metadata(path + "-metadata.json");
+  if (metadata) csv.metadata = nlohmann::json::parse(metadata);
   return csv;
 }
 

@@ -442,7 +442,7 @@ void CommandLine::check_output_paths() const {
   const bool csv = csv_enabled_ && app_.count("--csv") > 0;
   if (csv) {
     if (o.csv_path.empty()) throw InputError("--csv", "needs a file name");
-    check_output_file("--csv", o.csv_path);
+    check_csv_file("--csv", o.csv_path);
   }
   const bool animation = animation_enabled_ && app_.count("--animate") > 0;
   check_distinct_outputs(csv ? o.csv_path : "", animation ? o.animation_path : "", o.figures_dir,

@@ -169,12 +169,16 @@ void OutputRun::draw(const Computed& computed) {
   }
 }
 
-// A CSV that cannot be written (a full disk, EFBIG past ulimit -f) is a failed write,
-// exit 1 as for a figure: its path passed the checks made before any work.
+// The CSV and its metadata beside it land together. A CSV that cannot be written (a
+// full disk, EFBIG past ulimit -f) is a failed write, exit 1 as for a figure: its path
+// passed the checks made before any work.
 void OutputRun::write_csv(const Report& report) {
   if (options_.csv_path.empty() || report.time_series().columns.empty()) return;
   try {
-    render::write_text_atomically(options_.csv_path, csv_text(report.time_series()));
+    const TimeSeries& series = report.time_series();
+    render::write_text_atomically(options_.csv_path, csv_text(series));
+    render::write_text_atomically(csv_metadata_path(options_.csv_path),
+                                  csv_metadata_text(series, options_.csv_path, RIGID_VERSION));
   } catch (const std::runtime_error& e) {
     failed("--csv", e);
   }

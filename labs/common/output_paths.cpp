@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "common/inputs.h"
+#include "common/writers.h"
 #include "rigid/support/memory.h"
 
 namespace rigid::lab {
@@ -78,6 +79,19 @@ void check_output_dir(const std::string& option, const std::string& dir_name,
   if (ec || !fs::is_directory(dir, ec) || !can_create_in(dir.string())) {
     throw InputError(option, "cannot create or write directory '" + quoted_text(dir_name) + "'");
   }
+}
+
+void check_csv_file(const std::string& option, const std::string& name) {
+  check_output_file(option, name);
+  const std::string metadata = csv_metadata_path(name);
+  if (fs::path(metadata).filename().string().size() > kMaxFileName) {
+    throw InputError(
+        option, fmt::format("'{}' leaves no room for the metadata beside it: '{}' "
+                            "would be a name longer than {} bytes",
+                            quoted_text(name), quoted_text(fs::path(metadata).filename().string()),
+                            kMaxFileName));
+  }
+  check_output_file(option, metadata);
 }
 
 void check_output_file(const std::string& option, const std::string& name) {
@@ -155,13 +169,20 @@ bool within(const fs::path& inner, const fs::path& outer) {
 void check_distinct_outputs(const std::string& csv, const std::string& animation,
                             const std::string& figures_dir, const std::string& figure_stem,
                             const std::string& figure_extension) {
-  if (!csv.empty() && !animation.empty() && output_place(csv) == output_place(animation)) {
-    throw InputError("--animate", "'" + quoted_text(animation) +
-                                      "' is the file --csv writes; give each its own");
+  // --csv writes two files: FILE and its metadata beside it.
+  const std::string metadata = csv.empty() ? "" : csv_metadata_path(csv);
+  if (!csv.empty() && !animation.empty()) {
+    for (const std::string& written : {csv, metadata}) {
+      if (output_place(written) == output_place(animation)) {
+        throw InputError("--animate", "'" + quoted_text(animation) +
+                                          "' is a file --csv writes; give each its own");
+      }
+    }
   }
   if (figures_dir.empty()) return;
   const fs::path figures = output_place(figures_dir);
-  for (const auto& [option, name] : {std::pair{"--csv", csv}, std::pair{"--animate", animation}}) {
+  for (const auto& [option, name] :
+       {std::pair{"--csv", csv}, std::pair{"--csv", metadata}, std::pair{"--animate", animation}}) {
     if (name.empty()) continue;
     const fs::path file = output_place(name);
     if (within(figures, file)) {

@@ -18,6 +18,8 @@ bool can_create_in(const std::string& dir);
 void check_output_dir(const std::string& option, const std::string& dir, std::size_t longest_file);
 /// `path` (--csv) can be written as a regular file by rename.
 void check_output_file(const std::string& option, const std::string& path);
+/// `path` and its metadata's path can both be written as regular files by rename.
+void check_csv_file(const std::string& option, const std::string& path);
 /// `path` (--animate) is not something other than a regular file, and its directory
 /// can be written.
 void check_animation_file(const std::string& option, const std::string& path);
@@ -36,8 +38,8 @@ void check_drawing_memory(const std::string& option, int width, int height, std:
 std::filesystem::path output_place(const std::string& name);
 
 /// The run's outputs are different places (each "" if not asked for): --csv and
-/// --animate not the same file, neither where --figures writes a figure (a name
-/// `figure_stem`*`figure_extension`, e.g. "poinsot_*.png", in that directory), and the
+/// --animate not the same file (nor the CSV's metadata), neither where --figures writes a figure (a
+/// name `figure_stem`*`figure_extension`, e.g. "poinsot_*.png", in that directory), and the
 /// directory not inside either file.
 void check_distinct_outputs(const std::string& csv, const std::string& animation,
                             const std::string& figures_dir, const std::string& figure_stem,

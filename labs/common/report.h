@@ -7,27 +7,52 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <initializer_list>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/inputs.h"
 
 namespace rigid::lab {
 
-/// The time series written by --csv: a header and rows of numbers, after comment
-/// lines ("# ...") that say what each column is, its unit and its conventions.
-struct TimeSeries {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::vector<std::string> comments;
+/// One column of a lab's CSV: its name in the header, its unit ("1" for a pure number)
+/// and what it is.
+struct SeriesColumn {
+  std::string name;
+  std::string unit;
+  std::string meaning;
 };
 
-/// The comment every free-body and top CSV carries on its attitude columns.
+/// The table written by --csv: a header line of names, then rows of numbers, so that
+/// every CSV reader takes it with no option. What the table is, and each column's unit
+/// and meaning, go beside it as CSV on the Web metadata (writers.h) and into the JSON.
+struct TimeSeries {
+  explicit TimeSeries(std::string what = {}) : title(std::move(what)) {}
+
+  std::string title;
+  std::vector<SeriesColumn> columns;
+  std::vector<std::vector<double>> rows;
+
+  /// Columns that share a unit and a meaning, named in order ("omega1", "omega2", ...).
+  TimeSeries& add(std::initializer_list<const char*> names, const std::string& unit,
+                  const std::string& meaning) {
+    for (const char* name : names) columns.push_back({name, unit, meaning});
+    return *this;
+  }
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const SeriesColumn& c : columns) out.push_back(c.name);
+    return out;
+  }
+};
+
+/// What every free-body and top CSV says of its attitude columns qw, qx, qy, qz.
 inline constexpr char kQuaternionConvention[] =
-    "qw, qx, qy, qz: the attitude, the unit quaternion that turns body axes into space axes "
-    "(Hamilton's convention, scalar first; v_space = q v_body q*), the identity at t = 0 "
-    "unless the start sets it";
+    "the attitude, the unit quaternion that turns body axes into space axes (Hamilton's "
+    "convention, scalar first; v_space = q v_body q*), the identity at t = 0 unless the "
+    "start sets it";
 
 /// An error in the text: where (the section and equation), what the text prints, quoted,
 /// and the correction with this run's numbers. docs/errata.md is made from these.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "rigid/format.h"
@@ -119,6 +120,8 @@ void write_json(std::ostream& out, const Report& report, const RunOutputs& outpu
   if (!outputs.timing.is_null()) json["timing"] = outputs.timing;
   json["textbook"] = report.textbook_printed();
   json["textbook_values"] = report.textbook_values();
+  if (!report.time_series().columns.empty())
+    json["series"] = series_columns_json(report.time_series());
   // Every file the run wrote, by its absolute path.
   Json files = Json::array();
   std::error_code ec;
@@ -127,7 +130,9 @@ void write_json(std::ostream& out, const Report& report, const RunOutputs& outpu
         fs::absolute(fs::path(outputs.figures_dir) / figure, ec).lexically_normal().string());
   }
   if (!outputs.csv_path.empty() && !report.time_series().columns.empty()) {
-    files.push_back(fs::absolute(outputs.csv_path, ec).lexically_normal().string());
+    for (const std::string& path : {outputs.csv_path, csv_metadata_path(outputs.csv_path)}) {
+      files.push_back(fs::absolute(path, ec).lexically_normal().string());
+    }
   }
   if (!outputs.animation.is_null()) files.push_back(outputs.animation["path"]);
   json["outputs"] = files;
@@ -142,9 +147,8 @@ void write_json(std::ostream& out, const Report& report, const RunOutputs& outpu
 
 std::string csv_text(const TimeSeries& series) {
   std::string text;
-  for (const std::string& comment : series.comments) text += "# " + comment + "\n";
   for (size_t i = 0; i < series.columns.size(); ++i) {
-    text += (i ? "," : "") + series.columns[i];
+    text += (i ? "," : "") + series.columns[i].name;
   }
   text += "\n";
   for (const auto& row : series.rows) {
@@ -152,6 +156,60 @@ std::string csv_text(const TimeSeries& series) {
     text += "\n";
   }
   return text;
+}
+
+namespace {
+
+// A file name as a relative URL: every byte but the unreserved ones percent-encoded
+// (RFC 3986), so that any name a file system allows resolves to that file.
+std::string url_of_file_name(const std::string& name) {
+  std::string url;
+  for (const unsigned char c : name) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') {
+      url += static_cast<char>(c);
+    } else {
+      url += fmt::format("%{:02X}", c);
+    }
+  }
+  return url;
+}
+
+}  // namespace
+
+std::string csv_metadata_path(const std::string& csv_path) {
+  return csv_path + "-metadata.json";
+}
+
+Json series_columns_json(const TimeSeries& series) {
+  Json columns = Json::array();
+  for (const SeriesColumn& c : series.columns) {
+    columns.push_back({{"name", c.name}, {"unit", c.unit}, {"meaning", c.meaning}});
+  }
+  return {{"title", series.title}, {"columns", columns}};
+}
+
+std::string csv_metadata_text(const TimeSeries& series, const std::string& csv_path,
+                              const std::string& version) {
+  // W3C CSV on the Web (https://www.w3.org/TR/tabular-metadata/): a column's meaning
+  // as dc:description and its unit as schema:unitText, both from the initial context
+  // every CSVW processor knows.
+  Json columns = Json::array();
+  for (const SeriesColumn& c : series.columns) {
+    columns.push_back({{"name", c.name},
+                       {"titles", c.name},
+                       {"datatype", "double"},
+                       {"required", true},
+                       {"dc:description", c.meaning},
+                       {"schema:unitText", c.unit}});
+  }
+  Json json;
+  json["@context"] = {"http://www.w3.org/ns/csvw", {{"@language", "en"}}};
+  json["url"] = url_of_file_name(fs::path(csv_path).filename().string());
+  json["dc:title"] = series.title;
+  json["dc:creator"] = "rigidlab " + version;
+  json["dialect"] = {{"header", true}, {"delimiter", ","}};
+  json["tableSchema"] = {{"columns", columns}};
+  return json.dump(2) + "\n";
 }
 
 }  // namespace rigid::lab

@@ -129,18 +129,19 @@ void report_psi(Report& report, const PrincipalMoments& I, const FreeBodyExact& 
 // its time scale (a polhode period), 200 samples
 void add_free_series(Report& report, const FreeBodyExact& motion, const EulerAngles& e,
                      double scale) {
-  TimeSeries series{{"t_s", "phi_rad", "theta_rad", "psi_rad", "phi_dot_rad_s", "theta_dot_rad_s",
-                     "psi_dot_rad_s", "omega_x", "omega_y", "omega_z", "omega_xp", "omega_yp",
-                     "omega_zp", "omega_1", "omega_2", "omega_3"},
-                    {},
-                    {"euler_angles: the free motion of the body of section 7 from the angles "
-                     "and rates given, over one polhode period (or one turn)",
-                     "phi_rad, theta_rad, psi_rad: the z-x-z Euler angles of section 6, phi and "
-                     "psi continuous from the start (not wrapped); their rates in rad/s (at a "
-                     "pole, where they are undefined, 0)",
-                     "omega_x, omega_y, omega_z: omega in the fixed frame; omega_xp, omega_yp, "
-                     "omega_zp: in the intermediate frame x'y'z' (x' the line of nodes); omega_1, "
-                     "omega_2, omega_3: in the body; all rad/s"}};
+  TimeSeries series(
+      "euler_angles: the free motion of the body of section 7 from the angles and rates "
+      "given, over one polhode period (or one turn)");
+  series.add({"t_s"}, "s", "time")
+      .add({"phi_rad", "theta_rad", "psi_rad"}, "rad",
+           "the z-x-z Euler angles of section 6, phi and psi continuous from the start (not "
+           "wrapped)")
+      .add({"phi_dot_rad_s", "theta_dot_rad_s", "psi_dot_rad_s"}, "rad/s",
+           "the angles' rates (at a pole, where they are undefined, 0)")
+      .add({"omega_x", "omega_y", "omega_z"}, "rad/s", "omega in the fixed frame")
+      .add({"omega_xp", "omega_yp", "omega_zp"}, "rad/s",
+           "omega in the intermediate frame x'y'z' (x' the line of nodes)")
+      .add({"omega_1", "omega_2", "omega_3"}, "rad/s", "omega in the body's principal axes");
   EulerAngles previous = e;
   for (int n = 0; n <= 200; ++n) {
     const double t = scale * n / 200.0;

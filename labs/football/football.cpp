@@ -129,14 +129,13 @@ std::string readable_period(double seconds) {
 // where the run's alpha lies above 0 and below 0.5 deg (the Earth's 0.2 arcsec), at 179 angles
 // spaced evenly in log alpha from a decade below it to 89.5 deg.
 TimeSeries rate_sweep(double I, double Is, double alpha_deg) {
-  TimeSeries sweep{{"alpha_deg", "Omega_over_omega", "phi_dot_over_omega"},
-                   {},
-                   {"football: the rates against alpha for this body (a sweep: the lab has no "
-                    "time series), as its rates figure draws them",
-                    "alpha_deg: the angle between omega and the symmetry axis 3, deg",
-                    "Omega_over_omega: omega's turn about 3 in the body over |omega| (eq. 109, "
-                    "+: along omega_3); phi_dot_over_omega: 3's turn about L in space over "
-                    "|omega| (eq. 147)"}};
+  TimeSeries sweep(
+      "football: the rates against alpha for this body (a sweep: the lab has no time series), "
+      "as its rates figure draws them");
+  sweep.add({"alpha_deg"}, "deg", "alpha, the angle between omega and the symmetry axis 3")
+      .add({"Omega_over_omega"}, "1",
+           "Omega / |omega|: omega's turn about 3 in the body (eq. 109; +: along omega_3)")
+      .add({"phi_dot_over_omega"}, "1", "phi_dot / |omega|: 3's turn about L in space (eq. 147)");
   const bool fine = alpha_deg > 0 && alpha_deg < 0.5;
   const double low = std::max(std::log10(alpha_deg) - 1.0, -300.0), high = std::log10(89.5);
   for (int k = 1; k < 180; ++k) {

@@ -15,12 +15,12 @@ constexpr const char* kTitle = "inertia tensor of a rectangular lamina (sections
 // The moment n.I.n about an axis in the x-y plane at alpha = -90, -89.5, .., 90 deg
 // from x, as the moment figure draws it and --csv writes it.
 TimeSeries moment_sweep(const Mat3& I) {
-  TimeSeries sweep{{"alpha_deg", "moment_kg_m2"},
-                   {},
-                   {"lamina_tensor: the moment about an axis in the plate's plane against its "
-                    "angle (a sweep: the lab has no time series), as its moment figure draws it",
-                    "alpha_deg: the axis's angle from x toward y, deg; moment_kg_m2: n.I.n about "
-                    "that axis through the origin, kg m^2 (extreme on the principal axes)"}};
+  TimeSeries sweep(
+      "lamina_tensor: the moment about an axis in the plate's plane against its angle (a "
+      "sweep: the lab has no time series), as its moment figure draws it");
+  sweep.add({"alpha_deg"}, "deg", "the axis's angle from x toward y")
+      .add({"moment_kg_m2"}, "kg m^2",
+           "n.I.n about that axis through the origin (extreme on the principal axes)");
   for (int k = 0; k <= 360; ++k) {
     const double alpha = deg_to_rad(-90.0 + 0.5 * k);
     sweep.rows.push_back(

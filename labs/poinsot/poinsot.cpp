@@ -124,14 +124,12 @@ void report_answer(Report& report) {
 
 // The run as --csv writes it: t, omega, the attitude, T and |L| at each sample.
 TimeSeries run_series(const FreeBodyRun& run, const PrincipalMoments& I) {
-  TimeSeries series{
-      {"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz", "energy_J", "L_kg_m2_s"},
-      {},
-      {"poinsot: the run at its sample times (the closed form's, or --method's)",
-       "t_s: time, s; omega1, omega2, omega3: omega in the body's principal axes 1, 2, 3, rad/s",
-       kQuaternionConvention,
-       "energy_J: kinetic energy T, J; L_kg_m2_s: |L|, kg m^2/s (both constant but for the "
-       "integrator's error)"}};
+  TimeSeries series("poinsot: the run at its sample times (the closed form's, or --method's)");
+  series.add({"t_s"}, "s", "time")
+      .add({"omega1", "omega2", "omega3"}, "rad/s", "omega in the body's principal axes 1, 2, 3")
+      .add({"qw", "qx", "qy", "qz"}, "1", kQuaternionConvention)
+      .add({"energy_J"}, "J", "the kinetic energy T (constant but for the integrator's error)")
+      .add({"L_kg_m2_s"}, "kg m^2/s", "|L| (constant but for the integrator's error)");
   for (const auto& s : run.samples) {
     const Vector3d w = omega_body(s.x);
     series.rows.push_back({s.t, w(0), w(1), w(2), s.x[3], s.x[4], s.x[5], s.x[6],

@@ -351,15 +351,14 @@ void report_erratum_and_notes(Report& report, const Inputs& in,
 // --csv: the spin about the chosen axis, exact and integrated, at the run's times.
 void add_series(Report& report) {
   const FreeBodyExact& motion = report.launches[report.spin_axis];
-  TimeSeries series{{"t_s", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
-                     "omega1_integrated", "omega2_integrated", "omega3_integrated"},
-                    {},
-                    {"tennis_racquet: the spin about the chosen axis, exact and integrated",
-                     "t_s: time, s; omega1, omega2, omega3: the exact omega in the racquet's "
-                     "principal axes (1 the handle, 2 in the head's plane, 3 normal to it), rad/s",
-                     kQuaternionConvention,
-                     "omega1_integrated, omega2_integrated, omega3_integrated: --method's omega "
-                     "at the same times, rad/s"}};
+  TimeSeries series("tennis_racquet: the spin about the chosen axis, exact and integrated");
+  series.add({"t_s"}, "s", "time")
+      .add({"omega1", "omega2", "omega3"}, "rad/s",
+           "the exact omega in the racquet's principal axes (1 the handle, 2 in the head's "
+           "plane, 3 normal to it)")
+      .add({"qw", "qx", "qy", "qz"}, "1", kQuaternionConvention)
+      .add({"omega1_integrated", "omega2_integrated", "omega3_integrated"}, "rad/s",
+           "--method's omega at the same times");
   for (const FreeBodyRun::Sample& s : report.run) {
     const RotationState x = motion.state(s.t);
     series.rows.push_back({s.t, x[0], x[1], x[2], x[3], x[4], x[5], x[6], s.x[0], s.x[1], s.x[2]});

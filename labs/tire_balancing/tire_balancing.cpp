@@ -93,13 +93,13 @@ void report_balancing(Report& report, const Inputs& in, double torque_unbalanced
 
 // One turn of the unbalanced wheel: L and the bearing torque sweep a cone.
 TimeSeries one_turn(const CrookedWheel& wheel, double omega) {
-  TimeSeries turn{{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"},
-                  {},
-                  {"tire_balancing: one turn of the unbalanced wheel",
-                   "t_s: time, s; Lx, Ly, Lz: its angular momentum, kg m^2/s; Nx, Ny, Nz: the "
-                   "torque the bearings exert, N m (eqs. 74-76); both in the axes the wheel "
-                   "had at t = 0: x its symmetry axis, the axle in the x-y plane at the tilt "
-                   "from x, so L sweeps a cone about the axle"}};
+  // both vectors in the axes the wheel had at t = 0: x its symmetry axis, the axle in
+  // the x-y plane at the tilt from x, so L sweeps a cone about the axle
+  const std::string axes = " (x the wheel's symmetry axis at t = 0, the axle in the x-y plane)";
+  TimeSeries turn("tire_balancing: one turn of the unbalanced wheel");
+  turn.add({"t_s"}, "s", "time")
+      .add({"Lx", "Ly", "Lz"}, "kg m^2/s", "the wheel's angular momentum" + axes)
+      .add({"Nx", "Ny", "Nz"}, "N m", "the torque the bearings exert (eqs. 74-76)" + axes);
   const int samples = 361;
   const double period = 2.0 * kPi / omega;
   for (int k = 0; k < samples; ++k) {

@@ -433,21 +433,19 @@ void report_run(Report& report, const Inputs& in, double S) {
 // --csv: the run at its sample times beside the closed form, with the Euler angles.
 void add_series(Report& report) {
   const HeavyTopExact& motion = *report.motion;
-  TimeSeries series{
-      {"t_s", "theta_rad", "theta_exact_rad", "omega1", "omega2", "omega3", "qw", "qx", "qy", "qz",
-       "energy_error_rel", "phi_rad", "psi_rad", "theta_dot_rad_s", "phi_dot_rad_s",
-       "psi_dot_rad_s"},
-      {},
-      {"top_nutation: the run at its sample times (the closed form's, or --method's)",
-       "t_s: time, s; theta_rad: the tilt of the axis from the vertical, rad; theta_exact_rad: "
-       "the closed form's at the same time",
-       "omega1, omega2, omega3: omega in body axes (3 the symmetry axis), rad/s",
-       kQuaternionConvention, "energy_error_rel: |E - E0| / (T0 + m g l)",
-       "phi_rad, psi_rad: the z-x-z Euler angles of section 6 with theta (q = Rz(phi) Rx(theta) "
-       "Rz(psi)): phi the precession about the vertical z, psi the spin about 3, in (-pi, pi]; "
-       "at theta = 0 only phi + psi is defined and psi is 0",
-       "theta_dot_rad_s, phi_dot_rad_s, psi_dot_rad_s: their rates from omega (eqs. 134-136 "
-       "inverted), rad/s"}};
+  TimeSeries series("top_nutation: the run at its sample times (the closed form's, or --method's)");
+  series.add({"t_s"}, "s", "time")
+      .add({"theta_rad"}, "rad", "the tilt of the axis from the vertical")
+      .add({"theta_exact_rad"}, "rad", "the closed form's tilt at the same time")
+      .add({"omega1", "omega2", "omega3"}, "rad/s", "omega in body axes (3 the symmetry axis)")
+      .add({"qw", "qx", "qy", "qz"}, "1", kQuaternionConvention)
+      .add({"energy_error_rel"}, "1", "|E - E0| / (T0 + m g l)")
+      .add({"phi_rad", "psi_rad"}, "rad",
+           "the z-x-z Euler angles of section 6 with theta (q = Rz(phi) Rx(theta) Rz(psi)): "
+           "phi the precession about the vertical z, psi the spin about 3, in (-pi, pi]; at "
+           "theta = 0 only phi + psi is defined and psi is 0")
+      .add({"theta_dot_rad_s", "phi_dot_rad_s", "psi_dot_rad_s"}, "rad/s",
+           "the angles' rates from omega (eqs. 134-136 inverted)");
   for (const HeavyTopRun::Sample& s : report.run.samples) {
     const TopAngles a = euler_angles_and_rates(attitude(s.x), omega_body(s.x));
     series.rows.push_back({s.t, tilt_of(attitude(s.x)), motion.theta(s.t), s.x[0], s.x[1], s.x[2],

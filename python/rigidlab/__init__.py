@@ -32,7 +32,7 @@ import numpy as np
 from . import _rigidlab
 
 __version__ = _rigidlab.__version__
-__all__ = ["labs", "Result", "Quantity", "Figure"]
+__all__ = ["labs", "Result", "Quantity", "Column", "Figure"]
 
 _LABS = {d["name"]: d for d in _rigidlab.labs()}
 
@@ -41,6 +41,10 @@ def labs():
     """The labs' names, in the chapter's order."""
     return list(_LABS)
 
+
+Column = namedtuple("Column", "name unit meaning")
+Column.__doc__ = ("A column of a lab's series: its name (the CSV's header), its unit "
+                  "(\"1\" for a pure number) and what it is.")
 
 Quantity = namedtuple("Quantity", "value unit printed label")
 Quantity.__doc__ = ("A result: its value (a float, a list, a string or None), its unit "
@@ -129,7 +133,8 @@ class Result:
 
     r.answer: the "in short" line; r[key]: a value; r.results[key]: a Quantity (value,
     unit, printed, label); r.notes; r.errata (where, printed, correction); r.series: the
-    CSV's columns as NumPy arrays (r.series_comments: what each means); r.figures; r.json:
+    CSV's columns as NumPy arrays (r.series_columns[name]: its unit and meaning;
+    r.series_title: what the table is); r.figures; r.json:
     the command line's --json, parsed; r.command: the command line that gives the same;
     r.table: the command line's table. Each part is made when first asked for: a sweep
     that reads r[key] pays for that value alone."""
@@ -182,9 +187,10 @@ class Result:
         def make():
             series = self._run.series()
             if series is None:
-                return {}, []
-            columns, comments, data = series
-            return {c: data[:, k] for k, c in enumerate(columns)}, list(comments)
+                return {}, None, {}
+            title, columns, data = series
+            return ({name: data[:, k] for k, (name, _, _) in enumerate(columns)}, title,
+                    {name: Column(name, unit, meaning) for name, unit, meaning in columns})
         return self._once("series", make)
 
     @property
@@ -192,8 +198,12 @@ class Result:
         return self._series()[0]
 
     @property
-    def series_comments(self):
+    def series_title(self):
         return self._series()[1]
+
+    @property
+    def series_columns(self):
+        return self._series()[2]
 
     @property
     def figures(self):
@@ -218,13 +228,11 @@ class Result:
         return self._run.table()
 
     def csv(self, path):
-        """Writes the CSV the command line's --csv writes, and returns the path."""
-        text = self._run.csv_text()
-        if not text:
-            raise ValueError(f"{self.lab} writes no CSV")
+        """Writes the CSV the command line's --csv writes, with its metadata beside it
+        (PATH-metadata.json, W3C CSV on the Web: each column's unit and meaning), and
+        returns the path."""
         path = os.fspath(path)
-        with open(path, "w", newline="") as f:
-            f.write(text)
+        self._run.write_csv(path)
         return path
 
     def __repr__(self):

@@ -121,11 +121,19 @@ TEST_CASE("contract: --csv writes regular files only and never follows or replac
   std::string line;
   std::getline(kept, line);
   CHECK(line == "keep");
-  for (const std::size_t length : {200, 251}) {
+  // the metadata beside it (NAME-metadata.json) the longest: 255 bytes
+  for (const std::size_t length : {200, 237}) {
     const fs::path long_name = dir / (std::string(length, 'y') + ".csv");
     CHECK(run_lab("poinsot", "--quiet --csv '" + long_name.string() + "'").status == 0);
     CHECK(fs::is_regular_file(long_name));
+    CHECK(fs::is_regular_file(long_name.string() + "-metadata.json"));
   }
+  // a name with no room for its metadata is refused before anything is written
+  const fs::path no_room = dir / (std::string(238, 'z') + ".csv");
+  const auto no_room_run = run_lab("poinsot", "--quiet --csv '" + no_room.string() + "'");
+  CHECK(no_room_run.status == 2);
+  CHECK_THAT(no_room_run.err, Catch::Contains("leaves no room for the metadata beside it"));
+  CHECK_FALSE(fs::exists(no_room));
   for (const auto& entry : fs::directory_iterator(dir)) {
     CHECK(entry.path().filename().string().find(".rigidlab-tmp-") == std::string::npos);
   }

@@ -212,13 +212,14 @@ TEST_CASE("contract: the JSON says which version ran, the command as given and e
   CHECK(j["command"][7] == "book-");
   // Every file by its absolute path, each of them there.
   std::vector<std::string> outputs = j["outputs"];
-  REQUIRE(outputs.size() == 3);
+  REQUIRE(outputs.size() == 4);  // two figures, the CSV and its metadata
   for (const std::string& path : outputs) {
     INFO(path);
     CHECK(fs::path(path).is_absolute());
     CHECK(fs::is_regular_file(path));
   }
-  CHECK(outputs.back() == fs::absolute(csv).lexically_normal().string());
+  CHECK(outputs[2] == fs::absolute(csv).lexically_normal().string());
+  CHECK(outputs[3] == fs::absolute(csv + "-metadata.json").lexically_normal().string());
   CHECK(fs::exists(dir / "book-tire_balancing_scene.png"));
   // Counts are integers.
   const auto poinsot = run_lab("poinsot", "--json --method rk4").json();

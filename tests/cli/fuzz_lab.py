@@ -9,8 +9,9 @@ code) and runs it many times. Classes (each case's class is in its report line):
               combinations, --csv paths;
   bytes       random bytes (invalid UTF-8, C0 and C1 controls, bidi overrides) in
               a word option or the --csv name, under --json;
-  file names  any name the filesystem accepts (up to 255 bytes, any byte but '/'
-              and NUL) as --csv, beside decoys a careless cleanup would delete;
+  file names  any name the filesystem accepts with room for the metadata's beside it
+              (up to 241 bytes, any byte but '/' and NUL) as --csv, beside decoys a
+              careless cleanup would delete;
   figures     the numbers class's inputs with --figures: every valid run draws;
   signals     any signal that ends a process and can be caught (ENDING: the
               real-time ones among them) at a random moment of a run writing --csv
@@ -203,18 +204,23 @@ def random_bytes(rng, for_file_name=False):
     return out
 
 
+# --csv FILE writes FILE-metadata.json beside it: FILE's name leaves room for that suffix.
+METADATA_SUFFIX = b"-metadata.json"
+
+
 def file_name(rng):
-    """Any name the filesystem takes: up to 255 bytes, no '/' or NUL, not . or .."""
+    """Any name the filesystem takes with room for the CSV's metadata beside it: up to
+    241 bytes, no '/' or NUL, not . or .."""
     pick = rng.random()
     if pick < 0.3:
         name = random_bytes(rng, True)
     elif pick < 0.5:
-        name = b"n" * rng.randint(200, 251) + b".csv"
+        name = b"n" * rng.randint(200, 237) + b".csv"
     else:
         name = rng.choice([b"-out.csv", b" lead", b"trail ", b"a\nb.csv", b"$(touch pwned)",
                            b"c.csv.tmp-99999", b"x.rigidlab-tmp-1-0123456789abcdef", b".hidden",
                            "\u00e9t\u00e9.csv".encode(), b"*?[]", b"'\"", b"\\"])
-    return name[:255]
+    return name[:255 - len(METADATA_SUFFIX)]
 
 
 def decoys_for(workdir, target):
@@ -397,14 +403,17 @@ class Fuzz:
                 made = decoys_for(workdir, name)
                 argv = [os.fsencode(self.lab), b"--json", b"--csv", name]
                 target = os.path.join(os.fsencode(workdir), name)
-                result = self.attempt("file names", argv, workdir, ours=set(made) | {target})
+                result = self.attempt("file names", argv, workdir,
+                                      ours=set(made) | {target, target + METADATA_SUFFIX})
                 if result:
                     proc, problems = result
                     problems += decoys_intact(made)
                     if proc.returncode != 0:
                         problems.append("a name the filesystem accepts was refused")
-                    elif not os.path.isfile(os.path.join(os.fsencode(workdir), name)):
+                    elif not os.path.isfile(target):
                         problems.append("exit 0 but the file is not there")
+                    elif not os.path.isfile(target + METADATA_SUFFIX):
+                        problems.append("exit 0 but its metadata is not there")
                     self.report("file names", argv, problems)
 
     def figures(self, cases):

@@ -18,14 +18,16 @@ TEST_CASE("tire_balancing: --csv writes one turn of L and the torque") {
   const rigid::test::Csv csv = rigid::test::read_csv(path);
   CHECK(csv.header == "t_s,Lx,Ly,Lz,Nx,Ny,Nz");
   CHECK(csv.rows.size() == 361);
-  // the columns, their units and axes said in the comment lines before the header
-  REQUIRE(csv.comments.size() == 2);
-  CHECK_THAT(csv.comments[1], Catch::Contains("Lx, Ly, Lz: its angular momentum, kg m^2/s"));
+  // the columns' units and axes said in the metadata beside it
+  CHECK(csv.column("Ly")["schema:unitText"] == "kg m^2/s");
+  CHECK_THAT(csv.column("Ly")["dc:description"].get<std::string>(),
+             Catch::Contains("the wheel's angular momentum"));
+  CHECK(csv.column("Nz")["schema:unitText"] == "N m");
   std::remove(path.c_str());
+  std::remove((path + "-metadata.json").c_str());
 }
 
-TEST_CASE(
-    "football and lamina_tensor: --csv writes the sweep their figure draws, said in comments") {
+TEST_CASE("football and lamina_tensor: --csv writes the sweep their figure draws and says so") {
   struct Case {
     const char* lab;
     const char* header;
@@ -47,9 +49,11 @@ TEST_CASE(
     REQUIRE(csv.rows.size() == c.rows);
     CHECK(csv.rows.front()[0] == c.first);
     CHECK(csv.rows.back()[0] == c.last);
-    REQUIRE(!csv.comments.empty());
-    CHECK_THAT(csv.comments.front(), Catch::Contains("a sweep: the lab has no time series"));
+    CHECK_THAT(csv.metadata["dc:title"].get<std::string>(),
+               Catch::Contains("a sweep: the lab has no time series"));
+    CHECK(csv.column("alpha_deg")["schema:unitText"] == "deg");
     std::remove(path.c_str());
+    std::remove((path + "-metadata.json").c_str());
   }
   // The moment at the sweep's ends is I_yy (the axis along y): the default plate's
   // m (a^2 + ... ) is the lab's own number, here only its symmetry: -90 and 90 deg alike.
@@ -58,6 +62,7 @@ TEST_CASE(
   const rigid::test::Csv csv = rigid::test::read_csv(path);
   CHECK(csv.rows.front()[1] == Approx(csv.rows.back()[1]).epsilon(1e-15));
   std::remove(path.c_str());
+  std::remove((path + "-metadata.json").c_str());
 }
 
 TEST_CASE("labs: help texts say only what the lab does") {
@@ -132,15 +137,15 @@ TEST_CASE("poinsot: --csv writes t, omega, the quaternion, energy and |L|") {
   REQUIRE(run_lab("poinsot", "--quiet --method splitting --csv " + path).status == 0);
   const rigid::test::Csv csv = rigid::test::read_csv(path);
   CHECK(csv.header == "t_s,omega1,omega2,omega3,qw,qx,qy,qz,energy_J,L_kg_m2_s");
-  // the quaternion's order and frame said before the header
-  bool convention = false;
-  for (const std::string& line : csv.comments) {
-    convention = convention || line.find(
-                                   "# qw, qx, qy, qz: the attitude, the unit quaternion that "
-                                   "turns body axes into space axes") == 0;
+  // the quaternion's order and frame said of each of its columns beside it
+  for (const char* q : {"qw", "qx", "qy", "qz"}) {
+    CHECK_THAT(csv.column(q)["dc:description"].get<std::string>(),
+               Catch::StartsWith("the attitude, the unit quaternion that turns body axes into "
+                                 "space axes"));
+    CHECK(csv.column(q)["schema:unitText"] == "1");
   }
-  CHECK(convention);
   std::remove(path.c_str());
+  std::remove((path + "-metadata.json").c_str());
 }
 
 TEST_CASE("poinsot: bad input exits 2 with one line naming the option") {

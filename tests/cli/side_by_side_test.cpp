@@ -250,7 +250,8 @@ TEST_CASE("side by side: runs of one lab to one --csv at once leave one run's wh
       runs.push_back(std::make_unique<Background>(run(inertia)(dir)));
     for (auto& r : runs) CHECK(finish(*r) == 0);
     const Files found = files_in(dir);
-    CHECK(names(found) == std::vector<std::string>{"c.csv"});
+    // the CSV and its metadata (the same for each: one lab, one file name)
+    CHECK(names(found) == std::vector<std::string>{"c.csv", "c.csv-metadata.json"});
     const std::string bytes = found.count("c.csv") ? found.at("c.csv") : "";
     CHECK(std::count(alone.begin(), alone.end(), bytes) == 1);
     fs::remove_all(dir);

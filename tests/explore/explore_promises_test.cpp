@@ -145,7 +145,7 @@ TEST_CASE("explore: a path that goes bad after it was given is refused as it is 
   for (int frames = 0; frames < 100000 && e.view().message_error; ++frames) imgui.frame(e);
   CHECK_FALSE(e.view().message_error);
   CHECK(e.view().message == "wrote " + (dir / "fine.csv").string());
-  CHECK(decoys.untouched({"late.json", "fine.csv"}));
+  CHECK(decoys.untouched({"late.json", "fine.csv", "fine.csv-metadata.json"}));
 }
 
 TEST_CASE("explore: a script's numbers and sizes and labs and work in all are checked when read") {

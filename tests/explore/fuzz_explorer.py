@@ -280,6 +280,8 @@ class Fuzz:
                "export-csv": b".csv", "record": b".webp"}.get(op)
         path = case.fresh(r, ext) if valid else case.bad_path(r)
         case.name_output(path)
+        if op == "export-csv" and path:
+            case.name_output(path + b"-metadata.json")  # written beside the CSV, as --csv's
         words = [quoted(path)]
         if op == "save-figure":
             words.insert(0, r.choice([b"omega", b"energy", b"nope"]))

@@ -248,6 +248,8 @@ TEST_CASE("explore: every export writes the bytes the lab's own writers give") {
   CHECK(ran.out == "poinsot --omega=1,2,0.5\n" + json);
   CHECK(read_file(at("r.json")) == json);
   CHECK(read_file(at("r.csv")) == rigid::lab::csv_text(lab->report().time_series()));
+  CHECK(read_file(at("r.csv-metadata.json")) ==
+        rigid::lab::csv_metadata_text(lab->report().time_series(), at("r.csv"), RIGID_VERSION));
 
   // the figures, as the lab's --figures draws them
   const auto& omega = std::get<rigid::render::Plot2D>(ex::figure_named(*lab, "omega")->figure);

@@ -79,7 +79,7 @@ TEST_CASE("poinsot: every method agrees with the exact solution within its toler
 TEST_CASE("poinsot: the time series has t, omega, the quaternion, energy and |L|") {
   // (the file --csv writes from it stays a test of the command)
   const Report report = compute(given("--method splitting"));
-  CHECK(report.time_series().columns == std::vector<std::string>{"t_s", "omega1", "omega2",
+  CHECK(report.time_series().names() == std::vector<std::string>{"t_s", "omega1", "omega2",
                                                                  "omega3", "qw", "qx", "qy", "qz",
                                                                  "energy_J", "L_kg_m2_s"});
 }

@@ -167,7 +167,7 @@ TEST_CASE("tennis_racquet: the time series holds the exact motion and the integr
   const double t_end = value(report.results(), "t_end_s");
   const auto& series = report.time_series();
   std::string header;
-  for (const std::string& column : series.columns) header += (header.empty() ? "" : ",") + column;
+  for (const std::string& column : series.names()) header += (header.empty() ? "" : ",") + column;
   CHECK(header ==
         "t_s,omega1,omega2,omega3,qw,qx,qy,qz,omega1_integrated,omega2_integrated,"
         "omega3_integrated");

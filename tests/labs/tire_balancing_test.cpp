@@ -38,7 +38,7 @@ TEST_CASE("tire_balancing: defaults give both balancing masses") {
 TEST_CASE("tire_balancing: the time series is one turn of L and the torque") {
   const auto report = compute(Inputs{});
   const auto& series = report.time_series();
-  CHECK(series.columns == std::vector<std::string>{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"});
+  CHECK(series.names() == std::vector<std::string>{"t_s", "Lx", "Ly", "Lz", "Nx", "Ny", "Nz"});
   CHECK(series.rows.size() == 361);
 }
 

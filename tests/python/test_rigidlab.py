@@ -166,7 +166,7 @@ def test_series_equal_the_command_lines_csv(lab, tmp_path):
     csv_path = tmp_path / f"{lab}.csv"
     status, _, _ = cli(lab, ["--csv", str(csv_path)])
     assert status == 0
-    lines = [line for line in csv_path.read_text().splitlines() if not line.startswith("#")]
+    lines = csv_path.read_text().splitlines()
     columns = lines[0].split(",")
     numbers = np.array([[float(x) for x in line.split(",")] for line in lines[1:]])
     r = getattr(rl, lab)()
@@ -174,8 +174,18 @@ def test_series_equal_the_command_lines_csv(lab, tmp_path):
     for k, column in enumerate(columns):
         # 17 digits in the file: the same doubles
         assert np.array_equal(r.series[column], numbers[:, k]), column
-    assert r.csv(tmp_path / "again.csv") and (tmp_path / "again.csv").read_text() == \
-        csv_path.read_text()
+    again = tmp_path / "again.csv"
+    assert r.csv(again) == str(again) and again.read_text() == csv_path.read_text()
+    # its metadata too, but for the file it names
+    meta = (tmp_path / "again.csv-metadata.json").read_text()
+    assert meta == (tmp_path / f"{lab}.csv-metadata.json").read_text().replace(
+        f'"url": "{lab}.csv"', '"url": "again.csv"')
+    # a path --csv refuses is refused with its rule, and nothing is written
+    with pytest.raises(ValueError, match="is a directory, not a file"):
+        r.csv(tmp_path)
+    with pytest.raises(ValueError, match="leaves no room for the metadata"):
+        r.csv(tmp_path / ("z" * 238 + ".csv"))
+    assert not (tmp_path / ("z" * 238 + ".csv")).exists()
 
 
 @pytest.mark.skipif(not rl._rigidlab.has_renderer, reason="built without the renderer")
