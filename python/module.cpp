@@ -7,7 +7,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -20,6 +22,7 @@
 #include "common/registry.h"
 #include "common/writers.h"
 #include "rigid/render/atomic_file.h"
+#include "rigid/rotation.h"
 
 #ifdef RIGID_HAVE_RENDER
 #include "rigid/render/draw.h"
@@ -254,6 +257,12 @@ class Run {
 #endif
   }
 
+  // The body's motion at any time (none for a lab without one).
+  rigid::lab::BodyMotion body_motion() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return session_->body_motion();
+  }
+
   double motion_seconds() const {
     const std::lock_guard<std::mutex> lock(mutex_);
     const rigid::lab::Animation* a = session_->animation();
@@ -266,6 +275,80 @@ class Run {
   std::unique_ptr<Session> session_;
   mutable std::mutex mutex_;
 };
+
+// What the motion's at() gives, a column each: the name, its unit and what it is.
+const std::vector<std::array<const char*, 3>>& motion_columns() {
+  static const std::vector<std::array<const char*, 3>> columns = [] {
+    const char* q =
+        "the attitude, the unit quaternion that turns body axes into space axes "
+        "(Hamilton's convention, scalar first)";
+    const char* angles =
+        "the z-x-z Euler angles of section 6 of the attitude (q = Rz(phi) "
+        "Rx(theta) Rz(psi)), phi and psi in (-pi, pi]";
+    return std::vector<std::array<const char*, 3>>{{"t_s", "s", "time"},
+                                                   {"qw", "1", q},
+                                                   {"qx", "1", q},
+                                                   {"qy", "1", q},
+                                                   {"qz", "1", q},
+                                                   {"omega1", "rad/s", "omega in body axes"},
+                                                   {"omega2", "rad/s", "omega in body axes"},
+                                                   {"omega3", "rad/s", "omega in body axes"},
+                                                   {"omega_x", "rad/s", "omega in space axes"},
+                                                   {"omega_y", "rad/s", "omega in space axes"},
+                                                   {"omega_z", "rad/s", "omega in space axes"},
+                                                   {"phi_rad", "rad", angles},
+                                                   {"theta_rad", "rad", angles},
+                                                   {"psi_rad", "rad", angles}};
+  }();
+  return columns;
+}
+
+// The body at each of `times` (s, >= 0): a row of motion_columns() a time. A time
+// before the start raises ValueError, as a run the integrator cannot make does, with
+// the rule it breaks.
+py::array_t<double> motion_at(
+    const rigid::lab::BodyMotion& motion,
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& t) {
+  const auto times = t.unchecked<1>();
+  const std::size_t n = static_cast<std::size_t>(times.shape(0)), width = motion_columns().size();
+  py::array_t<double> out({n, width});
+  auto row = out.mutable_unchecked<2>();
+  std::string refused;
+  {
+    py::gil_scoped_release release;
+    try {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double ti = times(static_cast<py::ssize_t>(i));
+        if (!std::isfinite(ti))
+          throw std::invalid_argument("t must be finite (got " + std::to_string(ti) + ")");
+        const rigid::lab::BodyState s = motion(ti);
+        const Eigen::Vector3d space = s.attitude.normalized() * s.omega_body;
+        const rigid::EulerAngles e = rigid::euler_zxz(s.attitude.normalized());
+        const double values[] = {ti,
+                                 s.attitude.w(),
+                                 s.attitude.x(),
+                                 s.attitude.y(),
+                                 s.attitude.z(),
+                                 s.omega_body(0),
+                                 s.omega_body(1),
+                                 s.omega_body(2),
+                                 space(0),
+                                 space(1),
+                                 space(2),
+                                 e.phi,
+                                 e.theta,
+                                 e.psi};
+        for (std::size_t j = 0; j < width; ++j) row(i, j) = values[j];
+      }
+    } catch (const rigid::lab::InputError& e) {
+      refused = e.what();
+    } catch (const std::invalid_argument& e) {
+      refused = e.what();
+    }
+  }
+  if (!refused.empty()) throw py::value_error(refused);
+  return out;
+}
 
 // The lab computed at the texts given; a broken rule raises ValueError with the lab's
 // own message, as the command line prints it after "LAB: error: ".
@@ -332,5 +415,15 @@ PYBIND11_MODULE(_rigidlab, m) {
       .def("save_figure", &Run::save_figure, py::arg("name"), py::arg("path"),
            py::arg("format") = "png", py::arg("width") = 1600, py::arg("height") = 1200,
            py::call_guard<py::gil_scoped_release>())
-      .def("motion_seconds", &Run::motion_seconds);
+      .def("motion_seconds", &Run::motion_seconds)
+      .def("body_motion", &Run::body_motion);
+  py::class_<rigid::lab::BodyMotion>(m, "BodyMotion")
+      .def("__bool__", [](const rigid::lab::BodyMotion& f) { return static_cast<bool>(f); })
+      .def("at", &motion_at, py::arg("t"));
+  m.def("motion_columns", [] {
+    py::list out;
+    for (const auto& [name, unit, meaning] : motion_columns())
+      out.append(py::make_tuple(name, unit, meaning));
+    return out;
+  });
 }

@@ -6,6 +6,7 @@
 // a context or a pixel offset.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <functional>
 #include <memory>
 #include <string>
@@ -70,6 +71,19 @@ struct Animation {
   std::function<render::Plot2D(double)> strip;
   double strip_share = 0.0;
 };
+
+/// The body at a time of its motion: its attitude, the unit quaternion that turns body
+/// axes into space axes (as the lab's CSV writes it, not renormalised), and omega in
+/// body axes, rad/s.
+struct BodyState {
+  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
+};
+
+/// A lab's body at any time t >= 0 (s) of its motion, in the lab's own time (not a
+/// film's): the closed form, or the integrator the lab's method names, the same at a
+/// time its CSV samples as the CSV's row. Throws std::invalid_argument for t < 0.
+using BodyMotion = std::function<BodyState(double)>;
 
 /// How many scenes, spread over a motion (at k/16 of it), a film's one camera is fitted
 /// to and its one legend gathered from.

@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <tuple>
 #include <utility>
 
+#include "common/integrated_motion.h"
 #include "rigid/free_body_integrate.h"
 #include "rigid/racquet.h"
 #include "rigid/units.h"
@@ -196,6 +198,26 @@ const ExactErrorWords& free_body_words() {
     return w;
   }();
   return words;
+}
+
+BodyMotion free_body_motion(const FreeBodyExact& exact, const std::optional<OdeOptions>& integrator,
+                            const std::vector<FreeBodyRun::Sample>& samples) {
+  if (!integrator) {
+    return keeping_samples(
+        [exact](double t) {
+          if (!(t >= 0.0)) refuse_before_start(t);
+          const RotationState x = exact.state(t);
+          return BodyState{attitude(x), omega_body(x)};
+        },
+        samples);
+  }
+  const auto integrated = std::make_shared<const IntegratedMotion<FreeBodyProblem>>(
+      FreeBodyProblem(exact.moments()), exact.state(0.0), *integrator,
+      free_body_words().runaway_invariants, samples, std::vector<double>{});
+  return [integrated](double t) {
+    const RotationState x = integrated->state(t);
+    return BodyState{attitude(x), omega_body(x)};
+  };
 }
 
 }  // namespace rigid::lab

@@ -3,9 +3,14 @@
 // body's error against its exact motion and its invariants are reported in.
 #pragma once
 
+#include <optional>
+#include <vector>
+
+#include "common/figures.h"
 #include "common/integrated_run.h"
 #include "common/report.h"
 #include "rigid/free_body_exact.h"
+#include "rigid/free_body_integrate.h"
 
 namespace rigid::lab {
 
@@ -35,5 +40,11 @@ double time_scale(const FreeBodyExact& motion);
 /// relative error and drift a period (energy_*, momentum_*; a run that lost either ran
 /// away) and L's largest error in space (L_space_drift_rel).
 const ExactErrorWords& free_body_words();
+
+/// The free body at any time: the closed form `exact`, or with `integrator` the run that
+/// kept `samples` integrated on from the nearest earlier one (IntegratedMotion, held to
+/// free_body_words()'s invariants); at the samples' times, their states bit for bit.
+BodyMotion free_body_motion(const FreeBodyExact& exact, const std::optional<OdeOptions>& integrator,
+                            const std::vector<FreeBodyRun::Sample>& samples);
 
 }  // namespace rigid::lab

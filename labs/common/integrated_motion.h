@@ -23,13 +23,16 @@
 #include <exception>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "common/figures.h"
 #include "common/inputs.h"
 #include "common/integrated_run.h"
 #include "rigid/compare.h"
+#include "rigid/rotation.h"
 
 namespace rigid::lab {
 
@@ -42,6 +45,18 @@ std::vector<double> times_from_start(std::vector<double> times);
 
 /// Refuses (std::invalid_argument) t, a time before the motion's start, t = 0.
 [[noreturn]] void refuse_before_start(double t);
+
+/// `motion`, but at each time a lab's own run sampled, that sample's state, as the lab's
+/// CSV writes it (a closed form evaluated by another route differs by an ulp or two).
+template <class Sample>
+BodyMotion keeping_samples(BodyMotion motion, const std::vector<Sample>& samples) {
+  auto kept = std::make_shared<std::map<double, BodyState>>();
+  for (const Sample& s : samples) kept->emplace(s.t, BodyState{attitude(s.x), omega_body(s.x)});
+  return [motion = std::move(motion), kept](double t) {
+    const auto found = kept->find(t);
+    return found != kept->end() ? found->second : motion(t);
+  };
+}
 
 /// The integrated motion of `Problem` (compare.h), sampled ahead.
 template <class Problem>

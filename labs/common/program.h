@@ -33,6 +33,9 @@ struct LabProgram {
   /// Whether the defaults are the text's worked example; false where the text prints no
   /// numbers (section 6), and the defaults are the lab's own choice.
   bool textbook_example = true;
+  /// The body's state at any time of the lab's motion (nullptr: the lab has none, or its
+  /// motion is not a body's); it copies what it needs from the report.
+  BodyMotion (*body_motion)(const Rep&) = nullptr;
 };
 
 }  // namespace rigid::lab

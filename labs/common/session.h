@@ -83,6 +83,9 @@ class Session {
   virtual const std::vector<NamedFigure>& figures() const = 0;
   /// Its motion (made on first asking after a change), or nullptr for a lab without one.
   virtual const Animation* animation() const = 0;
+  /// The body's state at any time of its motion (empty for a lab without one): what
+  /// import rigidlab's r.motion().at(t) reads.
+  virtual BodyMotion body_motion() const = 0;
   /// How many times what is shown has changed (a view redraws when this moves).
   virtual long generation() const = 0;
   /// How many times the inputs have changed (the whole report's coming is not one).
@@ -228,6 +231,10 @@ class ProgramSession final : public Session {
       });
     }
     return &*animation_;
+  }
+
+  BodyMotion body_motion() const override {
+    return lab_.body_motion == nullptr ? BodyMotion{} : lab_.body_motion(*report_);
   }
 
   long generation() const override { return generation_; }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "common/free_motion.h"
 #include "euler_angles/lagrange.h"
 #include "rigid/units.h"
 
@@ -297,7 +298,9 @@ LabProgram<Inputs, Report> program() {
           "the free motion against time: the Euler angles, their rates and omega in "
           "the fixed, intermediate and body frames",
           /*preview=*/nullptr,
-          /*textbook_example=*/false};
+          /*textbook_example=*/false, [](const Report& report) {
+            return free_body_motion(*report.free_motion, std::nullopt, {});
+          }};
 }
 
 }  // namespace rigid::lab::euler_angles

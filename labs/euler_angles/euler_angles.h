@@ -23,6 +23,7 @@
 #include "common/inputs.h"
 #include "common/program.h"
 #include "common/report.h"
+#include "rigid/free_body_exact.h"
 #include "rigid/rotation.h"
 
 namespace rigid::lab::euler_angles {
@@ -53,6 +54,8 @@ struct Report : lab::Report {
   bool rates_defined = true;
   Eigen::Vector3d omega_space = Eigen::Vector3d::Zero();  ///< rad/s
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();   ///< rad/s
+  /// The free motion of section 7's body from these angles and rates (the CSV's).
+  std::optional<FreeBodyExact> free_motion;
 };
 
 /// The inputs' rules: options, widgets and compute()'s checks.

@@ -404,6 +404,7 @@ double report_section_7(Report& report, const Inputs& in, const EulerAngles& e, 
                    no_differences_reason(!start));
   report_psi(report, I, motion, differences, T, no_differences_reason(!start));
   add_free_series(report, motion, e, scale);
+  report.free_motion = motion;
   report_section_7_errata(report, in, I, e, T);
   return scale;
 }

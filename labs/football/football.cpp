@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "common/free_motion.h"
 #include "rigid/inertia.h"
 #include "rigid/units.h"
 
@@ -394,12 +395,27 @@ Report compute(const Inputs& in) {
   return report;
 }
 
+namespace {
+
+// The body itself, turning: the free motion of moments (I, I, Is) launched with omega at
+// alpha from the symmetry axis 3, in the 1-3 plane, the body axes the space axes at t = 0.
+BodyMotion body_motion(const Report& report) {
+  const double alpha = deg_to_rad(report.alpha_deg);
+  const Eigen::Vector3d omega0 =
+      report.omega * Eigen::Vector3d(std::sin(alpha), 0.0, std::cos(alpha));
+  return free_body_motion(FreeBodyExact({report.I, report.I, report.Is}, omega0), std::nullopt, {});
+}
+
+}  // namespace
+
 LabProgram<Inputs, Report> program() {
   return {kName, kTitle, input_table(), compute, figures, animation,
           /*csv=*/
           "the rates Omega/omega and phi_dot/omega at each angle alpha between omega "
           "and the symmetry axis, up to 89.5 deg (a sweep, as the rates figure draws it; no "
-          "time series)"};
+          "time series)",
+          /*preview=*/nullptr,
+          /*textbook_example=*/true, body_motion};
 }
 
 }  // namespace rigid::lab::football

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/free_motion.h"
 #include "rigid/inertia.h"
 #include "rigid/poinsot.h"
 
@@ -248,12 +249,25 @@ Report compute(const Inputs& in) {
   return report;
 }
 
+namespace {
+
+// The body at any time: the closed form, or --method's run integrated on from its samples.
+BodyMotion body_motion(const Report& report) {
+  return free_body_motion(
+      report.exact,
+      report.method == "exact" ? std::nullopt : std::optional<OdeOptions>(report.options),
+      report.run.samples);
+}
+
+}  // namespace
+
 LabProgram<Inputs, Report> program() {
   return {kName, kTitle, input_table(), compute, figures, animation,
           /*csv=*/
           "the run at its sample times: omega in body axes, the attitude quaternion, "
           "T and |L|",
-          /*preview=*/leave_out_comparisons<Inputs>};
+          /*preview=*/leave_out_comparisons<Inputs>,
+          /*textbook_example=*/true, body_motion};
 }
 
 }  // namespace rigid::lab::poinsot

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "common/free_motion.h"
 #include "rigid/units.h"
 
 namespace rigid::lab::tennis_racquet {
@@ -418,11 +419,26 @@ Report compute(const Inputs& in) {
   return report;
 }
 
+namespace {
+
+// The racquet at any time as its film draws it: the closed form, or the method asked
+// for integrated on from the cross-check's samples.
+BodyMotion body_motion(const Report& report) {
+  // (the run is the cross-check's, which the film draws only when its method was asked for)
+  return free_body_motion(
+      report.launches.at(report.spin_axis), report.drawn_integrator,
+      report.drawn_integrator ? report.run : std::vector<FreeBodyRun::Sample>{});
+}
+
+}  // namespace
+
 LabProgram<Inputs, Report> program() {
   return {kName, kTitle, input_table(), compute, figures, animation,
           /*csv=*/
           "the spin about --spin-axis at its sample times: the exact omega, the "
-          "attitude quaternion and --method's omega"};
+          "attitude quaternion and --method's omega",
+          /*preview=*/nullptr,
+          /*textbook_example=*/true, body_motion};
 }
 
 }  // namespace rigid::lab::tennis_racquet

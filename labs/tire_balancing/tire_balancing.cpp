@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/integrated_motion.h"
 #include "rigid/units.h"
 
 namespace rigid::lab::tire_balancing {
@@ -178,6 +179,21 @@ Report compute(const Inputs& in) {
   return report;
 }
 
+namespace {
+
+// The wheel turning steadily about its axle, its axes the space axes at t = 0: omega
+// along the axle, the same in the body as in space.
+BodyMotion body_motion(const Report& report) {
+  const Vec3 axle = axle_direction(report.wheel);
+  const double omega = report.omega;
+  return [axle, omega](double t) {
+    if (!(t >= 0.0)) refuse_before_start(t);
+    return BodyState{Eigen::Quaterniond(Eigen::AngleAxisd(omega * t, axle)), omega * axle};
+  };
+}
+
+}  // namespace
+
 LabProgram<Inputs, Report> program() {
   return {kName,
           kTitle,
@@ -185,7 +201,10 @@ LabProgram<Inputs, Report> program() {
           compute,
           figures,
           nullptr,
-          /*csv=*/"the wheel's L and the bearings' torque N against time over one turn"};
+          /*csv=*/"the wheel's L and the bearings' torque N against time over one turn",
+          /*preview=*/nullptr,
+          /*textbook_example=*/true,
+          body_motion};
 }
 
 }  // namespace rigid::lab::tire_balancing

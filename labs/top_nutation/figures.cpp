@@ -393,8 +393,9 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
   path_times_ = sample_times.empty() ? report.run.times() : integrated_->sampled_times();
 }
 
-Motion::State Motion::state(double t) const {
+BodyState Motion::state(double t) const {
   if (!integrated_) {
+    if (!(t >= 0.0)) refuse_before_start(t);
     const TopAngles a = exact_.angles(t);
     return {euler_attitude(a.phi, a.theta, a.psi), exact_.omega_body(a)};
   }
@@ -403,7 +404,7 @@ Motion::State Motion::state(double t) const {
 }
 
 render::Scene3D Motion::scene(double t) const {
-  const State now = state(t);
+  const BodyState now = state(t);
   const Eigen::Quaterniond q = now.attitude;
   const Vector3d e3 = q * Vector3d::UnitZ();
   const double l = arm_, size = std::max(l + disk_radius_, 2 * disk_radius_);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "rigid/inertia.h"
 #include "rigid/units.h"
@@ -557,7 +558,12 @@ LabProgram<Inputs, Report> program() {
           /*csv=*/
           "the run at its sample times: theta (and the closed form's), omega, the "
           "attitude quaternion, the energy error and the Euler angles and their rates",
-          /*preview=*/leave_out_comparisons<Inputs>};
+          /*preview=*/leave_out_comparisons<Inputs>,
+          /*textbook_example=*/true, [](const Report& report) -> BodyMotion {
+            const auto motion = std::make_shared<const Motion>(report);
+            return keeping_samples([motion](double t) { return motion->state(t); },
+                                   report.run.samples);
+          }};
 }
 
 }  // namespace rigid::lab::top_nutation

@@ -88,14 +88,10 @@ class Motion {
   /// nutation periods of it: integrated, through sample_times (else the run's samples)
   /// up to t; exact, 400 points a nutation period. scene(0) is the "top" figure.
   render::Scene3D scene(double t) const;
+  /// The top at time t >= 0: the closed form, or the integrated run's state.
+  BodyState state(double t) const;
 
  private:
-  struct State {
-    Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();
-    Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
-  };
-  State state(double t) const;
-
   HeavyTopExact exact_;
   double arm_, disk_radius_, seconds_;
   std::optional<IntegratedMotion<HeavyTopProblem>> integrated_;  ///< none: the closed form

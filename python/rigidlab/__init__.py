@@ -10,6 +10,7 @@ same reader as the command line, and which returns a Result:
     >>> r.notes, r.errata           # notes, and where the text is wrong
     >>> r.series["t_s"]             # the CSV's columns as NumPy arrays
     >>> r.figures["potential"]      # shown inline in Jupyter; .save("v.pdf", size=(1600, 1200))
+    >>> r.motion().at(np.linspace(0, 2, 500))   # attitude, omega, angles as arrays
 
 rl.labs() lists the labs; help(rl.top_nutation) lists its inputs with their units,
 defaults and rules. A broken rule raises ValueError with the lab's own message, an
@@ -32,7 +33,7 @@ import numpy as np
 from . import _rigidlab
 
 __version__ = _rigidlab.__version__
-__all__ = ["labs", "Result", "Quantity", "Column", "Figure"]
+__all__ = ["labs", "Result", "Quantity", "Column", "Figure", "Motion"]
 
 _LABS = {d["name"]: d for d in _rigidlab.labs()}
 
@@ -119,6 +120,32 @@ class Figure:
         return self.data("svg", (1000, 750)).decode("utf-8")
 
 
+class Motion:
+    """A result's body in motion, in the lab's own time: the closed form, or the
+    integrator the lab's method names (its run's samples kept, integrated on from the
+    nearest earlier one), so that at a time the lab's CSV samples it gives the CSV's
+    row.
+
+    at(t): t in seconds, a number or an array (t >= 0); returns a dict of NumPy arrays
+    shaped as t: t_s, the attitude qw, qx, qy, qz (body axes to space axes), omega in
+    body axes omega1..3 and in space omega_x, omega_y, omega_z, and the z-x-z Euler
+    angles phi_rad, theta_rad, psi_rad. Motion.columns[name]: its unit and meaning."""
+
+    columns = {name: Column(name, unit, meaning)
+               for name, unit, meaning in _rigidlab.motion_columns()}
+
+    def __init__(self, lab, motion):
+        self.lab, self._motion = lab, motion
+
+    def at(self, t):
+        times = np.asarray(t, dtype=float)
+        rows = self._motion.at(times.ravel())
+        return {name: rows[:, k].reshape(times.shape) for k, name in enumerate(self.columns)}
+
+    def __repr__(self):
+        return f"<rigidlab {self.lab} motion: .at(t) gives {', '.join(self.columns)}>"
+
+
 class Figures(dict):
     """A result's figures by name, in the lab's order."""
 
@@ -134,7 +161,7 @@ class Result:
     r.answer: the "in short" line; r[key]: a value; r.results[key]: a Quantity (value,
     unit, printed, label); r.notes; r.errata (where, printed, correction); r.series: the
     CSV's columns as NumPy arrays (r.series_columns[name]: its unit and meaning;
-    r.series_title: what the table is); r.figures; r.json:
+    r.series_title: what the table is); r.figures; r.motion(): the body at any time; r.json:
     the command line's --json, parsed; r.command: the command line that gives the same;
     r.table: the command line's table. Each part is made when first asked for: a sweep
     that reads r[key] pays for that value alone."""
@@ -210,6 +237,13 @@ class Result:
         return self._once("figures", lambda: Figures(
             (name, Figure(self._run, name, caption, kind))
             for name, caption, kind in self._run.figures()))
+
+    def motion(self):
+        """The body in motion (see Motion); ValueError for a lab whose body does not move."""
+        motion = self._run.body_motion()
+        if not motion:
+            raise ValueError(f"{self.lab} has no motion: its body does not move")
+        return Motion(self.lab, motion)
 
     def __getitem__(self, key):
         try:
