@@ -6,7 +6,7 @@ same reader as the command line, and which returns a Result:
     >>> import rigidlab as rl
     >>> r = rl.top_nutation(mass=2, spin_rpm=500)
     >>> r.answer                    # the "in short" line
-    >>> r["s_min_rad_s"]            # a value; r.results[key]: value, unit, printed, label
+    >>> r["min_spin_rpm"]           # a value; r.results[key]: value, unit, printed, label
     >>> r.notes, r.errata           # notes, and where the text is wrong
     >>> r.series["t_s"]             # the CSV's columns as NumPy arrays
     >>> r.figures["potential"]      # shown inline in Jupyter; .save("v.pdf", size=(1600, 1200))
