@@ -3,7 +3,8 @@
 // DIR/results.md: work-precision tables at fixed error levels
 // (report_work_precision.cpp), the elliptic-function and invariants tables
 // (report_tables.cpp), the figure-speed tables (report_figures.cpp), what a linked
-// library costs a start (report_startup.cpp), the issues' targets met or not, and a
+// library costs a start (report_startup.cpp), import rigidlab's cost (report_python.cpp),
+// the issues' targets met or not, and a
 // generic table for any other group; with one work-precision diagram per problem
 // drawn with rigid::render when it is built.
 //
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
   controller_section(md, all);
   figures_section(md, all, targets);
   startup_section(md, all);
+  python_section(md, all, targets);
   other_groups(md, all);
 
   md << "\n## Targets\n\n";

@@ -63,5 +63,7 @@ void other_groups(std::ostream& md, const Json& all);
 void figures_section(std::ostream& md, const Json& all, Targets& targets);
 /// What linking libcairo or FFmpeg would add to every process's start (report_startup.cpp).
 void startup_section(std::ostream& md, const Json& all);
+/// import rigidlab: a call's own cost per lab, and the sweep (report_python.cpp).
+void python_section(std::ostream& md, const Json& all, Targets& targets);
 
 }  // namespace bench::report

@@ -85,11 +85,20 @@ def _text(lab, name, info, value):
     raise TypeError(f"{lab}(): {name} takes one of {', '.join(info['choices'])} (got {value!r})")
 
 
+# How a figure shows inline in Jupyter: PNG, as matplotlib's inline backend does; add
+# "svg" for a vector copy beside it (rigidlab.inline_formats = ("png", "svg")). Not SVG by
+# default: a notebook exported to HTML (nbconvert 7.2, Debian 12) strips an SVG's drawing
+# (lxml's clean_html keeps its text alone), and a frontend that has both shows the SVG.
+inline_formats = ("png",)
+INLINE_SIZE = (1000, 750)
+
+
 class Figure:
     """One of a result's figures, drawn by the same renderer as the command line's.
 
-    In Jupyter it shows inline; save(path) writes PNG, SVG or PDF (from the suffix, or
-    format=), at size=(width, height) pixels (1600 x 1200 by default)."""
+    In Jupyter it shows inline (as PNG; rigidlab.inline_formats); save(path) writes PNG,
+    SVG or PDF (from the suffix, or format=), at size=(width, height) pixels (1600 x 1200
+    by default)."""
 
     def __init__(self, run, name, caption, kind):
         self._run, self.name, self.caption, self.kind = run, name, caption, kind
@@ -114,10 +123,15 @@ class Figure:
                 return f.read()
 
     def _repr_png_(self):
-        return self.data("png", (1000, 750))
+        return self.data("png", INLINE_SIZE) if "png" in inline_formats else None
 
     def _repr_svg_(self):
-        return self.data("svg", (1000, 750)).decode("utf-8")
+        if "svg" not in inline_formats:
+            return None
+        # the <svg> element alone: a notebook embeds it in HTML, where an XML declaration
+        # is not allowed (nbconvert's HTML export refuses the notebook)
+        text = self.data("svg", INLINE_SIZE).decode("utf-8")
+        return re.sub(r"^<\?xml[^>]*\?>\s*", "", text)
 
 
 class Motion:

@@ -202,6 +202,15 @@ def test_figures_save_as_the_command_line_draws_them(lab, tmp_path):
     for fmt, magic in (("svg", b"<?xml"), ("pdf", b"%PDF")):
         data = r.figures[first].data(fmt, (800, 600))
         assert data.startswith(magic), fmt
+    # inline as PNG; SVG too when asked for, the <svg> element alone (HTML allows no XML
+    # declaration)
+    assert r.figures[first]._repr_png_().startswith(b"\x89PNG")
+    assert r.figures[first]._repr_svg_() is None
+    try:
+        rl.inline_formats = ("png", "svg")
+        assert r.figures[first]._repr_svg_().startswith("<svg")
+    finally:
+        rl.inline_formats = ("png",)
 
 
 def test_a_thread_pool_gives_what_one_thread_gives():
@@ -213,3 +222,23 @@ def test_a_thread_pool_gives_what_one_thread_gives():
     serial = [answer(s) for s in spins]
     with ThreadPoolExecutor(2) as pool:
         assert list(pool.map(answer, spins)) == serial
+
+
+@pytest.mark.skipif(not rl._rigidlab.has_renderer, reason="built without the renderer")
+def test_a_figure_shows_inline_and_survives_an_html_export():
+    # what IPython's display machinery sends for a figure, then nbconvert's HTML export of
+    # a notebook holding that output: the figure's PNG is in the page
+    formatters = pytest.importorskip("IPython.core.formatters")
+    nbformat = pytest.importorskip("nbformat")
+    exporters = pytest.importorskip("nbconvert.exporters")
+    import base64
+
+    data, _ = formatters.DisplayFormatter().format(rl.tennis_racquet().figures["growth"])
+    assert "image/png" in data and "image/svg+xml" not in data
+    png = data["image/png"]
+    png = png if isinstance(png, str) else base64.b64encode(png).decode()
+    assert base64.b64decode(png).startswith(b"\x89PNG")
+    cell = nbformat.v4.new_code_cell("r.figures['growth']", outputs=[
+        nbformat.v4.new_output("display_data", data={"image/png": png, "text/plain": "fig"})])
+    html, _ = exporters.HTMLExporter().from_notebook_node(nbformat.v4.new_notebook(cells=[cell]))
+    assert f"data:image/png;base64,{png}" in html.replace("\n", "")
