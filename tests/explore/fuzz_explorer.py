@@ -136,6 +136,13 @@ class Case:
                 found.append(f"{dev!r} is no longer a device")
         return found
 
+    def name_written(self, op, path):
+        """Records what `op` writes given `path`: export-csv the CSV and, beside it, its
+        metadata, as --csv writes them."""
+        self.name_output(path)
+        if op == "export-csv" and path:
+            self.name_output(path + b"-metadata.json")
+
     def name_output(self, path):
         """Records that a script names `path` as an output (its name, if in the workdir)."""
         if path and b"/" not in path:
@@ -279,9 +286,7 @@ class Fuzz:
         ext = {"screenshot": b".png", "save-view": b".png", "export-json": b".json",
                "export-csv": b".csv", "record": b".webp"}.get(op)
         path = case.fresh(r, ext) if valid else case.bad_path(r)
-        case.name_output(path)
-        if op == "export-csv" and path:
-            case.name_output(path + b"-metadata.json")  # written beside the CSV, as --csv's
+        case.name_written(op, path)
         words = [quoted(path)]
         if op == "save-figure":
             words.insert(0, r.choice([b"omega", b"energy", b"nope"]))
@@ -317,11 +322,11 @@ class Fuzz:
             case = Case(self.base)
             r = self.rng
             words = [random_bytes(r) for _ in range(r.randint(1, 3))]
-            for w in words:
-                case.name_output(w)
             # a `wait-for` a file that never comes is a valid wait of the script's whole
             # bound (600 s): not an attack this class can afford
             op = r.choice([c for c in COMMANDS if c != "wait-for"])
+            for w in words:
+                case.name_written(op, w)
             line = b" ".join([op.encode()] + [quoted(w) for w in words])
             name = random_bytes(r, for_file_name=True)[:200] + b".txt"
             with open(os.path.join(os.fsencode(case.dir), name), "wb") as f:
