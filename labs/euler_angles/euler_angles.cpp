@@ -299,7 +299,8 @@ LabProgram<Inputs, Report> program() {
           "the fixed, intermediate and body frames",
           /*preview=*/nullptr,
           /*textbook_example=*/false, [](const Report& report) {
-            return free_body_motion(*report.free_motion, std::nullopt, {});
+            return report.free_motion ? free_body_motion(*report.free_motion, std::nullopt, {})
+                                      : BodyMotion{};
           }};
 }
 
