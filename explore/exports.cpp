@@ -105,16 +105,9 @@ std::string export_csv(lab::Session& s, const std::string& path) {
   if (series.columns.empty()) return "this run has no time series";
   // the CSV and its metadata land together, as the command line's --csv writes them
   try {
-    lab::check_csv_file("", path);
+    lab::save_csv_files(series, path);
   } catch (const lab::InputError& e) {
     return e.rule;
-  }
-  const std::string metadata = lab::csv_metadata_path(path);
-  try {
-    render::FileTransaction files;
-    render::write_text_atomically(path, lab::csv_text(series));
-    render::write_text_atomically(metadata, lab::csv_metadata_text(series, path, RIGID_VERSION));
-    files.commit();
   } catch (const std::exception& e) {
     return e.what();
   }

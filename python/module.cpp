@@ -21,7 +21,6 @@
 #include "common/output_paths.h"
 #include "common/registry.h"
 #include "common/writers.h"
-#include "rigid/render/atomic_file.h"
 #include "rigid/rotation.h"
 
 #ifdef RIGID_HAVE_RENDER
@@ -188,34 +187,25 @@ class Run {
     return py::make_tuple(s.title, columns, data);
   }
 
-  std::string csv_text() const { return rigid::lab::csv_text(report().time_series()); }
-
   // Writes the CSV and its metadata beside it as --csv does, the two landing together
   // or neither; a path --csv would refuse raises ValueError with its rule, a failed
   // write OSError.
   void write_csv(const std::string& path) const {
     const rigid::lab::TimeSeries& series = report().time_series();
     if (series.columns.empty()) throw py::value_error(lab_ + " writes no CSV");
-    const std::string metadata = rigid::lab::csv_metadata_path(path);
-    try {
-      rigid::lab::check_csv_file("", path);
-    } catch (const rigid::lab::InputError& e) {
-      throw py::value_error(e.rule);
-    }
-    std::string failed;
+    std::string refused, failed;
     {
       py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(files_mutex());
       try {
-        rigid::render::FileTransaction files;
-        rigid::render::write_text_atomically(path, rigid::lab::csv_text(series));
-        rigid::render::write_text_atomically(
-            metadata, rigid::lab::csv_metadata_text(series, path, RIGID_VERSION));
-        files.commit();
+        rigid::lab::save_csv_files(series, path);
+      } catch (const rigid::lab::InputError& e) {
+        refused = e.rule;
       } catch (const std::exception& e) {
         failed = e.what();
       }
     }
+    if (!refused.empty()) throw py::value_error(refused);
     if (!failed.empty()) {
       PyErr_SetString(PyExc_OSError, failed.c_str());
       throw py::error_already_set();
@@ -263,12 +253,6 @@ class Run {
     return session_->body_motion();
   }
 
-  double motion_seconds() const {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const rigid::lab::Animation* a = session_->animation();
-    return a == nullptr ? 0.0 : a->seconds;
-  }
-
  private:
   std::string lab_;
   rigid::lab::GivenTexts given_;
@@ -279,9 +263,7 @@ class Run {
 // What the motion's at() gives, a column each: the name, its unit and what it is.
 const std::vector<std::array<const char*, 3>>& motion_columns() {
   static const std::vector<std::array<const char*, 3>> columns = [] {
-    const char* q =
-        "the attitude, the unit quaternion that turns body axes into space axes "
-        "(Hamilton's convention, scalar first)";
+    const char* q = rigid::lab::kQuaternionConvention;
     const char* angles =
         "the z-x-z Euler angles of section 6 of the attitude (q = Rz(phi) "
         "Rx(theta) Rz(psi)), phi and psi in (-pi, pi]";
@@ -409,13 +391,11 @@ PYBIND11_MODULE(_rigidlab, m) {
       .def("command", &Run::command)
       .def("rows", &Run::rows)
       .def("series", &Run::series)
-      .def("csv_text", &Run::csv_text)
       .def("write_csv", &Run::write_csv, py::arg("path"))
       .def("figures", &Run::figures)
       .def("save_figure", &Run::save_figure, py::arg("name"), py::arg("path"),
            py::arg("format") = "png", py::arg("width") = 1600, py::arg("height") = 1200,
            py::call_guard<py::gil_scoped_release>())
-      .def("motion_seconds", &Run::motion_seconds)
       .def("body_motion", &Run::body_motion);
   py::class_<rigid::lab::BodyMotion>(m, "BodyMotion")
       .def("__bool__", [](const rigid::lab::BodyMotion& f) { return static_cast<bool>(f); })

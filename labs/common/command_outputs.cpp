@@ -175,10 +175,7 @@ void OutputRun::draw(const Computed& computed) {
 void OutputRun::write_csv(const Report& report) {
   if (options_.csv_path.empty() || report.time_series().columns.empty()) return;
   try {
-    const TimeSeries& series = report.time_series();
-    render::write_text_atomically(options_.csv_path, csv_text(series));
-    render::write_text_atomically(csv_metadata_path(options_.csv_path),
-                                  csv_metadata_text(series, options_.csv_path, RIGID_VERSION));
+    write_csv_files(report.time_series(), options_.csv_path);
   } catch (const std::runtime_error& e) {
     failed("--csv", e);
   }

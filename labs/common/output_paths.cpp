@@ -15,6 +15,7 @@
 
 #include "common/inputs.h"
 #include "common/writers.h"
+#include "rigid/render/atomic_file.h"
 #include "rigid/support/memory.h"
 
 namespace rigid::lab {
@@ -92,6 +93,19 @@ void check_csv_file(const std::string& option, const std::string& name) {
                             kMaxFileName));
   }
   check_output_file(option, metadata);
+}
+
+void write_csv_files(const TimeSeries& series, const std::string& path) {
+  render::write_text_atomically(path, csv_text(series));
+  render::write_text_atomically(csv_metadata_path(path),
+                                csv_metadata_text(series, path, RIGID_VERSION));
+}
+
+void save_csv_files(const TimeSeries& series, const std::string& path) {
+  check_csv_file("", path);
+  render::FileTransaction files;
+  write_csv_files(series, path);
+  files.commit();
 }
 
 void check_output_file(const std::string& option, const std::string& name) {

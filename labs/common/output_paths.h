@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "common/report.h"
+
 namespace rigid::lab {
 
 /// True if a file can be created in directory `dir`: tried (a probe file made with
@@ -20,6 +22,12 @@ void check_output_dir(const std::string& option, const std::string& dir, std::si
 void check_output_file(const std::string& option, const std::string& path);
 /// `path` and its metadata's path can both be written as regular files by rename.
 void check_csv_file(const std::string& option, const std::string& path);
+/// Writes `series` to `path` as CSV and its metadata beside it, each atomically (within
+/// the live FileTransaction, if one is); throws std::runtime_error for a failed write.
+void write_csv_files(const TimeSeries& series, const std::string& path);
+/// The same, checked first as --csv is (check_csv_file: an InputError naming no option),
+/// the two files landing together or neither: an export's, outside a command's run.
+void save_csv_files(const TimeSeries& series, const std::string& path);
 /// `path` (--animate) is not something other than a regular file, and its directory
 /// can be written.
 void check_animation_file(const std::string& option, const std::string& path);
@@ -37,10 +45,10 @@ void check_drawing_memory(const std::string& option, int width, int height, std:
 /// --figures is made here, so `d/x/..` does not make `d/x`.
 std::filesystem::path output_place(const std::string& name);
 
-/// The run's outputs are different places (each "" if not asked for): --csv and
-/// --animate not the same file (nor the CSV's metadata), neither where --figures writes a figure (a
-/// name `figure_stem`*`figure_extension`, e.g. "poinsot_*.png", in that directory), and the
-/// directory not inside either file.
+/// The run's outputs are different places (each "" if not asked for): --csv (and the
+/// metadata beside it) and --animate not the same file, neither where --figures writes a
+/// figure (a name `figure_stem`*`figure_extension`, e.g. "poinsot_*.png", in that
+/// directory), and the directory not inside either file.
 void check_distinct_outputs(const std::string& csv, const std::string& animation,
                             const std::string& figures_dir, const std::string& figure_stem,
                             const std::string& figure_extension);
