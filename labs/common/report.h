@@ -29,7 +29,8 @@ struct SeriesColumn {
 /// every CSV reader takes it with no option. What the table is, and each column's unit
 /// and meaning, go beside it as CSV on the Web metadata (writers.h) and into the JSON.
 struct TimeSeries {
-  explicit TimeSeries(std::string what = {}) : title(std::move(what)) {}
+  TimeSeries() = default;
+  explicit TimeSeries(std::string what) : title(std::move(what)) {}
 
   std::string title;
   std::vector<SeriesColumn> columns;
