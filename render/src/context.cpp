@@ -34,6 +34,9 @@ ContextInfo describe(Backend used, detail::GlProcLoader loader, const ContextOpt
   info.gl_version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
   info.gl_renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
   info.es = info.gl_version.rfind("OpenGL ES", 0) == 0;
+  if (!info.es && gl.TexImage2DMultisample == nullptr)
+    throw Unavailable(std::string("rigid::render: ") + backend_name(used) +
+                      " context lacks GL function glTexImage2DMultisample");
   detail::set_shader_version(info.es);
   GLint max_samples = 0;
   gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);

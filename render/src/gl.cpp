@@ -3,15 +3,18 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace rigid::render::detail {
 
 GlFunctions gl;
 
 std::string load_gl(GlProc (*get_proc)(const char*)) {
+  // glTexImage2DMultisample is desktop GL's alone (WebGL2 gives none); an ES context never
+  // calls it, and a desktop one lacking it is refused once the kind of context is known.
 #define RIGID_GL_LOAD(ret, name, params)                                   \
   gl.name = reinterpret_cast<ret(APIENTRY*) params>(get_proc("gl" #name)); \
-  if (gl.name == nullptr) return "gl" #name;
+  if (gl.name == nullptr && std::string_view(#name) != "TexImage2DMultisample") return "gl" #name;
   RIGID_GL_FUNCTIONS(RIGID_GL_LOAD)
 #undef RIGID_GL_LOAD
   return {};

@@ -1,6 +1,4 @@
-// Text: the FreeType face, the markup parser and layout.
-#include <ft2build.h>
-#include FT_FREETYPE_H
+// Text: the markup parser and layout, on the font face (font_face.h).
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +9,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "font.h"
+#include "font_face.h"
 
 namespace rigid::render {
 
@@ -24,74 +22,28 @@ constexpr double kSupShift = 0.38;
 constexpr char32_t kCombiningDot = 0x0307;
 constexpr char32_t kDotAbove = 0x02D9;
 
-struct GlyphInfo {
-  std::uint32_t index = 0;
-  long advance = 0;             // font units
-  long ink_x0 = 0, ink_x1 = 0;  // ink extent, font units
-  long ink_y0 = 0, ink_y1 = 0;
-};
+using GlyphInfo = detail::GlyphMetrics;
 
-// The face, its per-glyph metrics in font units (size independent) and a mutex.
+// The face (font_face.h), its glyphs' metrics kept by character, and a mutex.
 class Font {
  public:
-  Font() {
-    if (FT_Init_FreeType(&lib_) != 0)
-      throw std::runtime_error("rigid::render: FreeType init failed");
-    if (FT_New_Face(lib_, RIGID_FONT_PATH, 0, &face_) != 0)
-      throw std::runtime_error("rigid::render: cannot load font " RIGID_FONT_PATH);
-    units_ = face_->units_per_EM;
-  }
-  Font(const Font&) = delete;
-  Font& operator=(const Font&) = delete;
-
   std::mutex mutex;
 
   const GlyphInfo& info(char32_t cp) {
     auto it = glyphs_.find(cp);
     if (it != glyphs_.end()) return it->second;
-    GlyphInfo g;
-    g.index = FT_Get_Char_Index(face_, cp);
-    if (FT_Load_Glyph(face_, g.index, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0) {
-      const FT_Glyph_Metrics& m = face_->glyph->metrics;
-      g.advance = face_->glyph->advance.x;
-      g.ink_x0 = m.horiBearingX;
-      g.ink_x1 = m.horiBearingX + m.width;
-      g.ink_y1 = m.horiBearingY;
-      g.ink_y0 = m.horiBearingY - m.height;
-    }
-    return glyphs_.emplace(cp, g).first->second;
+    return glyphs_.emplace(cp, face_.metrics(cp)).first->second;
   }
-
-  long kerning(std::uint32_t left, std::uint32_t right) {
-    if (!FT_HAS_KERNING(face_) || left == 0 || right == 0) return 0;
-    FT_Vector k{0, 0};
-    FT_Get_Kerning(face_, left, right, FT_KERNING_UNSCALED, &k);
-    return k.x;
-  }
-
-  double units() const { return units_; }
-  double ascender() const { return face_->ascender; }
-  double descender() const { return -face_->descender; }
-
+  long kerning(std::uint32_t left, std::uint32_t right) { return face_.kerning(left, right); }
+  double units() const { return face_.units_per_em(); }
+  double ascender() const { return face_.ascender(); }
+  double descender() const { return face_.descender(); }
   detail::GlyphBitmap rasterize(std::uint32_t glyph, int size_px) {
-    detail::GlyphBitmap b;
-    FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(size_px));
-    if (FT_Load_Glyph(face_, glyph, FT_LOAD_NO_HINTING | FT_LOAD_RENDER) != 0) return b;
-    const FT_Bitmap& bm = face_->glyph->bitmap;
-    b.width = static_cast<int>(bm.width);
-    b.height = static_cast<int>(bm.rows);
-    b.left = face_->glyph->bitmap_left;
-    b.top = face_->glyph->bitmap_top;
-    b.coverage.resize(static_cast<std::size_t>(b.width) * b.height);
-    for (int y = 0; y < b.height; ++y)
-      std::copy_n(bm.buffer + y * bm.pitch, b.width, b.coverage.data() + y * b.width);
-    return b;
+    return face_.rasterize(glyph, size_px);
   }
 
  private:
-  FT_Library lib_ = nullptr;
-  FT_Face face_ = nullptr;
-  double units_ = 2048;
+  detail::FontFace face_;
   std::unordered_map<char32_t, GlyphInfo> glyphs_;
 };
 

@@ -3,6 +3,8 @@
 // put it, is the same figure. Exit 0 when OLD exists and NEW matches it, 1 when they
 // differ (the reason on stdout) or OLD is missing, 2 when NEW cannot be read. The main
 // job and the figures target replace a committed figure only on 1.
+// figure-same --across-rasterisers NEW OLD: the same by the rule for another rasteriser
+// of the same drawing (the web page's WebGL against the command line's figure).
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -11,8 +13,14 @@
 #include "rigid/render/png.h"
 
 int main(int argc, char** argv) {
+  rigid::render::MatchRule rule = rigid::render::kSameRenderer;
+  if (argc == 4 && std::string(argv[1]) == "--across-rasterisers") {
+    rule = rigid::render::kAcrossRasterisers;
+    ++argv;
+    --argc;
+  }
   if (argc != 3) {
-    std::cerr << "usage: figure-same NEW.png OLD.png\n";
+    std::cerr << "usage: figure-same [--across-rasterisers] NEW.png OLD.png\n";
     return 2;
   }
   rigid::render::Image fresh;
@@ -32,7 +40,7 @@ int main(int argc, char** argv) {
       std::cout << "size changed\n";
       return 1;
     }
-    const std::string why = rigid::render::mismatch(fresh, old);
+    const std::string why = rigid::render::mismatch(fresh, old, rule);
     if (!why.empty()) {
       std::cout << "changed:" << why << "\n";
       return 1;
