@@ -15,16 +15,6 @@
 
 namespace rigid::explore {
 
-std::string shell_word(const std::string& word) {
-  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                              "0123456789_./=,:+-@%") == std::string::npos) {
-    return word;
-  }
-  std::string quoted = "'";
-  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 namespace {
 
 std::string write_text(const std::string& path, const std::string& text) {
@@ -84,17 +74,6 @@ std::string save_view(const render::Scene3D& scene, const std::string& path, int
   return "";
 }
 
-std::string json_text(lab::Session& s) {
-  s.wait();  // the numbers the command line prints, the whole report's
-  // the command line that reproduces it, as the command's own JSON names its argv
-  lab::RunOutputs outputs;
-  outputs.command.push_back(s.name());
-  for (const std::string& a : s.arguments()) outputs.command.push_back(a);
-  std::ostringstream text;
-  lab::write_json(text, s.report(), outputs, RIGID_VERSION);
-  return text.str();
-}
-
 std::string export_json(lab::Session& s, const std::string& path) {
   return write_text(path, json_text(s));
 }
@@ -112,12 +91,6 @@ std::string export_csv(lab::Session& s, const std::string& path) {
     return e.what();
   }
   return "";
-}
-
-std::string command_line(const lab::Session& s) {
-  std::string line = s.name();
-  for (const std::string& a : s.arguments()) line += " " + shell_word(a);
-  return line;
 }
 
 // The lab's own command writes the animation, so the file is the command line's, byte

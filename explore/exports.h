@@ -18,6 +18,7 @@
 #include "rigid/render/figure_format.h"
 #include "rigid/render/scene3d.h"
 #include "rigid/support/subprocess.h"
+#include "session_text.h"
 
 namespace rigid::explore {
 
@@ -35,13 +36,6 @@ std::string save_figure(lab::Session& s, const std::string& name, const std::str
 std::string save_view(const render::Scene3D& scene, const std::string& path, int width, int height);
 std::string export_json(lab::Session& s, const std::string& path);
 std::string export_csv(lab::Session& s, const std::string& path);
-/// The JSON the command line prints (`LAB ARGS --json`), naming that command.
-std::string json_text(lab::Session& s);
-/// The command line that reproduces the session's inputs, each word a shell reads as itself.
-std::string command_line(const lab::Session& s);
-/// `word` as a POSIX shell reads it back: as it is where every character is safe, else
-/// single-quoted (a quote inside as '\'').
-std::string shell_word(const std::string& word);
 /// `LAB ARGS --animate PATH --quiet` started, its stderr into a pipe this process reads,
 /// ended (SIGTERM, which removes its temporaries) if this process dies first; throws
 /// std::system_error if it cannot be started.

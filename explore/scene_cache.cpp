@@ -38,6 +38,21 @@ std::optional<render::Plot2D> shown_plot(const lab::Session& s, const ViewState&
   return std::get<render::Plot2D>(figure_named(s, names[k])->figure);
 }
 
+std::vector<TimeCursor> time_cursors(const render::Plot2D& plot, int width, int height) {
+  std::vector<TimeCursor> out;
+  const render::Plot2D::Layout layout = render::layout(plot, width, height);
+  for (int r = 0, k = 0; r < plot.rows(); ++r) {
+    for (int c = 0; c < plot.cols(); ++c, ++k) {
+      const render::Axis& x = plot.panel(r, c).x;
+      if (x.motion_time && x.scale == render::Scale::kLinear) {
+        const auto& p = layout.panels[k];
+        out.push_back({p.frame, p.x_lo, p.x_hi});
+      }
+    }
+  }
+  return out;
+}
+
 const SceneCache::Envelope& SceneCache::envelope(const lab::Session& s, const ViewState& v) {
   Envelope& e = envelope_;
   // Made once for a set of inputs, as the camera is fitted (a later result for the same

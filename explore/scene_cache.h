@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "common/session.h"
+#include "rigid/render/plot2d.h"
+#include "rigid/render/rect.h"
 #include "view_state.h"
 
 namespace rigid::explore {
@@ -27,6 +29,21 @@ std::vector<std::string> view_choices(const lab::Session& s, bool scenes);
 const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& name);
 /// The plot shown: the motion's strip at the time shown, or a 2D figure; none if none.
 std::optional<render::Plot2D> shown_plot(const lab::Session& s, const ViewState& v);
+
+/// Where a plot's panel against the motion's time lies in its image at a size: its frame
+/// and the times at its two ends. A view draws the time shown as a line across it.
+struct TimeCursor {
+  render::ScreenRect frame;
+  double x_lo = 0, x_hi = 1;
+  /// The image's x of time t, or nothing where t is outside the panel.
+  std::optional<double> x_at(double t) const {
+    if (!(t >= x_lo && t <= x_hi) || !(x_hi > x_lo)) return std::nullopt;
+    return frame.x0 + (t - x_lo) / (x_hi - x_lo) * frame.width();
+  }
+};
+/// The time cursors of `plot` drawn at width x height: a panel each whose x axis is the
+/// motion's time on a linear scale.
+std::vector<TimeCursor> time_cursors(const render::Plot2D& plot, int width, int height);
 
 class SceneCache {
  public:

@@ -132,16 +132,7 @@ void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int 
     plot_image_.draw(*plot, width, height);
     // where the panels against the motion's time are, for the cursor
     if (s.animation() == nullptr || strip) return;
-    const render::Plot2D::Layout layout = render::layout(*plot, width, height);
-    for (int r = 0, k = 0; r < plot->rows(); ++r) {
-      for (int c = 0; c < plot->cols(); ++c, ++k) {
-        const render::Axis& x = plot->panel(r, c).x;
-        if (x.motion_time && x.scale == render::Scale::kLinear) {
-          const auto& p = layout.panels[k];
-          cursors_.push_back({p.frame, p.x_lo, p.x_hi});
-        }
-      }
-    }
+    cursors_ = time_cursors(*plot, width, height);
   } catch (const std::exception& e) {
     draw_error_ = e.what();
   }
@@ -164,10 +155,10 @@ void Views::plot(const lab::Session& s, const ViewState& v, ViewRect at) {
   if (plot_drawn_.valid && plot_image_.texture() != 0) {
     show_texture(plot_image_.texture(), origin, at);
     const float sx = at.w / static_cast<float>(pw), sy = at.h / static_cast<float>(ph);
-    for (const Cursor& c : cursors_) {
-      if (!(v.time >= c.x_lo && v.time <= c.x_hi) || !(c.x_hi > c.x_lo)) continue;
-      const double px = c.frame.x0 + (v.time - c.x_lo) / (c.x_hi - c.x_lo) * c.frame.width();
-      const float X = origin.x + static_cast<float>(px) * sx;
+    for (const TimeCursor& c : cursors_) {
+      const std::optional<double> px = c.x_at(v.time);
+      if (!px) continue;
+      const float X = origin.x + static_cast<float>(*px) * sx;
       ImGui::GetWindowDrawList()->AddLine(ImVec2(X, origin.y + static_cast<float>(c.frame.y0) * sy),
                                           ImVec2(X, origin.y + static_cast<float>(c.frame.y1) * sy),
                                           IM_COL32(0, 0, 0, 255), 2.0f);

@@ -47,17 +47,13 @@ class Views {
     bool operator==(const Drawn& o) const;
   };
   // The plot's panels against the motion's time: where the time cursor goes.
-  struct Cursor {
-    render::ScreenRect frame;
-    double x_lo = 0, x_hi = 1;
-  };
   void legend_button(const ViewState& v, ImVec2 origin, ViewRect at,
                      std::vector<Action>& queue) const;
   void draw_plot(const lab::Session& s, const ViewState& v, int width, int height, bool strip);
   render::LiveImage scene_image_, plot_image_;
   render::ScreenRect legend_box_;  ///< the scene's legend as drawn, framebuffer pixels
   Drawn scene_drawn_, plot_drawn_;
-  std::vector<Cursor> cursors_;
+  std::vector<TimeCursor> cursors_;
   std::string draw_error_;
 };
 

@@ -53,54 +53,6 @@ const LabEntry& entry(const std::string& name) {
   throw py::key_error("no lab named '" + name + "'");
 }
 
-const char* kind_name(rigid::lab::InputKind kind) {
-  using rigid::lab::InputKind;
-  switch (kind) {
-    case InputKind::kNumber:
-      return "number";
-    case InputKind::kPair:
-      return "pair";
-    case InputKind::kVector:
-      return "vector";
-    case InputKind::kChoice:
-      return "choice";
-    case InputKind::kFlag:
-      return "flag";
-  }
-  return "number";
-}
-
-// What a lab takes, for the package to build its function, signature and help from.
-py::dict describe(const LabEntry& e) {
-  py::list inputs;
-  for (const rigid::lab::InputInfo& info : e.inputs) {
-    const rigid::lab::InputRule& r = info.rule;
-    py::dict d;
-    d["flag"] = r.flag();
-    d["key"] = r.key();
-    d["kind"] = kind_name(r.kind());
-    d["help"] = r.help();
-    d["description"] = r.description();
-    d["unit"] = r.unit_text();
-    d["choices"] = r.choices();
-    d["words"] = r.word_names();
-    d["range"] = r.range_text();
-    d["lab_default"] = r.lab_default_text();
-    d["numerical"] = !r.physical();
-    d["default"] = rigid::lab::argument_text(info.textbook);
-    d["has_default"] = !std::holds_alternative<std::monostate>(info.textbook);
-    inputs.append(d);
-  }
-  py::dict d;
-  d["name"] = e.name;
-  d["title"] = e.title;
-  d["csv"] = e.csv;
-  d["has_motion"] = e.has_motion;
-  d["textbook_example"] = e.textbook_example;
-  d["inputs"] = inputs;
-  return d;
-}
-
 // A JSON value as Python's: numbers, text, lists, None.
 py::object to_python(const rigid::lab::Json& j) {
   if (j.is_null()) return py::none();
@@ -379,7 +331,7 @@ PYBIND11_MODULE(_rigidlab, m) {
 #endif
   m.def("labs", [] {
     py::list out;
-    for (const LabEntry& e : registry()) out.append(describe(e));
+    for (const LabEntry& e : registry()) out.append(to_python(rigid::lab::describe(e)));
     return out;
   });
   m.def("run", &run, py::arg("lab"), py::arg("given"));

@@ -50,4 +50,11 @@ LabEntry lab_entry(LabProgram<In, Rep> (*program)()) {
 /// Every lab, in section order.
 std::vector<LabEntry> all_labs();
 
+/// What a lab takes, for a front door to build its controls, signature and help from:
+/// {name, title, csv, has_motion, textbook_example, inputs: [{flag, key, kind ("number",
+/// "pair", "vector", "choice", "flag"), help, description, unit, choices, words, range,
+/// bound {kind, lo, hi, or_zero}, lab_default, numerical, default (as the command line
+/// takes it), has_default}]}.
+Json describe(const LabEntry& lab);
+
 }  // namespace rigid::lab

@@ -137,6 +137,15 @@ Refusal refusal_of(const std::exception& e, const std::string& changed);
 
 namespace detail {
 
+// How the whole report is computed: on a second thread, or, in a WebAssembly page
+// built without threads (which would need the server to isolate the page), at the
+// next poll() on the page's one thread.
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+constexpr std::launch kWholeLaunch = std::launch::deferred;
+#else
+constexpr std::launch kWholeLaunch = std::launch::async;
+#endif
+
 template <class In, class Rep>
 class ProgramSession final : public Session {
  public:
@@ -197,7 +206,11 @@ class ProgramSession final : public Session {
   bool pending() const override { return whole_.valid(); }
 
   bool poll() override {
-    if (!whole_.valid() || whole_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+    if (!whole_.valid()) return false;
+    const std::future_status status = whole_.wait_for(std::chrono::seconds(0));
+    // Where there is no second thread, the whole report is computed here, after the
+    // preview has been shown.
+    if (status != std::future_status::ready && status != std::future_status::deferred) {
       return false;
     }
     take_whole();
@@ -280,7 +293,7 @@ class ProgramSession final : public Session {
 
   void start_whole() {
     whole_in_ = in_;
-    whole_ = std::async(std::launch::async, [compute = lab_.compute, in = in_] {
+    whole_ = std::async(kWholeLaunch, [compute = lab_.compute, in = in_] {
       return std::make_shared<const Rep>(compute(in));
     });
   }
