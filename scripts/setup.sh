@@ -38,14 +38,16 @@ RIGID_RUN_PACKAGES=(
 # pmccabe for scripts/check-format and check-size; emscripten (with node) for the
 # wasm test; file for cpack's dpkg-shlibdeps (the package test); pytest, nbconvert and
 # ipykernel for the Python module's tests and its worked notebook; pandas and R
-# (r-base-core) for the test that the readers students use take a lab's CSV whole.
+# (r-base-core) for the test that the readers students use take a lab's CSV whole;
+# Chromium (and npm, for puppeteer-core, where node came without it) for the web page's.
 RIGID_TEST_PACKAGES=(
   catch2 libgsl-dev
   python3-scipy python3-matplotlib python3-mpmath python3-jsonschema python3-pytest
   jupyter-nbconvert python3-ipykernel python3-pandas r-base-core
   xvfb xauth xdotool librsvg2-bin poppler-utils
-  clang-format pmccabe emscripten file
+  clang-format pmccabe emscripten file chromium
 )
+command -v npm >/dev/null || RIGID_TEST_PACKAGES+=(npm)
 packages=("${RIGID_RUN_PACKAGES[@]}")
 [ "$rigid_setup" = test ] && packages+=("${RIGID_TEST_PACKAGES[@]}")
 
