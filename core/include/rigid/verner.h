@@ -29,6 +29,7 @@
 #include <boost/numeric/odeint/stepper/base/explicit_error_stepper_fsal_base.hpp>
 #include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
 #include <boost/numeric/odeint/stepper/stepper_categories.hpp>
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -36,6 +37,7 @@
 #include <utility>
 
 #include "rigid/verner_tableaus.h"
+#include "rigid/wide.h"
 
 // A step inlines everything it calls, the right-hand side included: its stages are
 // one long function, and without this GCC stops inlining into it (measured: the
@@ -313,28 +315,62 @@ class VernerDenseOutput {
     // The weights b_i(theta) are large and cancel (up to 1.2e5 in the 6(5) pair's
     // polynomial coefficients, 1.35e6 in the 8(7) pair's): in double, their rounding
     // alone would cost ~1e-10 h |f| at every sample. They and the sum are formed in
-    // long double from the long double coefficients.
-    std::array<long double, kTotal> w{};
-    const long double th = theta;
+    // long double from the long double coefficients where long double is the x87's
+    // 64-bit significand, else in two doubles (wide.h) from their first 106 bits.
+#if LDBL_MANT_DIG == 64
+    using Extended = long double;
+    const auto& r = Tableau::r;
+#else
+    using Extended = Wide;
+    static const auto r = wide_interpolant();
+#endif
+    std::array<Extended, kTotal> w{};
+    const Extended th = theta;
     for (int i = 0; i < kTotal; ++i) {
-      long double p = 0.0L;  // b_i(theta) by Horner
-      for (int d = D::kDegree - 1; d >= 0; --d) p = p * th + Tableau::r[i][d];
+      Extended p = 0.0;  // b_i(theta) by Horner
+      for (int d = D::kDegree - 1; d >= 0; --d) p = p * th + r[i][d];
       w[i] = p * th;
     }
     for (std::size_t n = 0; n < static_cast<std::size_t>(x.size()); ++n) {
-      long double sum = 0.0L;
-      for (int i = 0; i < kTotal; ++i) sum += w[i] * k[i][n];
-      x[n] = x_old_[n] + h_ * static_cast<double>(sum);
+      Extended sum = 0.0;
+      for (int i = 0; i < kTotal; ++i) sum = sum + w[i] * Extended(k[i][n]);
+      x[n] = x_old_[n] + h_ * value_of(sum);
     }
   }
 
-  const State& current_state() const { return x_; }
-  double current_time() const { return t_; }
-  double current_time_step() const { return dt_; }
-  const State& previous_state() const { return x_old_; }
-  double previous_time() const { return t_old_; }
+  static double value_of(long double v) {
+    return static_cast<double>(v);
+  }
+  static double value_of(const Wide& v) {
+    return v.value();
+  }
+  // The interpolant's coefficients as two doubles each.
+  static std::array<std::array<Wide, D::kDegree>, kTotal> wide_interpolant() {
+    std::array<std::array<Wide, D::kDegree>, kTotal> out{};
+    for (int i = 0; i < kTotal; ++i)
+      for (int d = 0; d < D::kDegree; ++d) out[i][d] = Wide::of(Tableau::r[i][d]);
+    return out;
+  }
+
+  const State& current_state() const {
+    return x_;
+  }
+  double current_time() const {
+    return t_;
+  }
+  double current_time_step() const {
+    return dt_;
+  }
+  const State& previous_state() const {
+    return x_old_;
+  }
+  double previous_time() const {
+    return t_old_;
+  }
   /// Steps rejected by the error control so far.
-  std::size_t rejected_steps() const { return rejected_; }
+  std::size_t rejected_steps() const {
+    return rejected_;
+  }
 
  private:
   template <class System>

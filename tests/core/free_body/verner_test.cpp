@@ -418,3 +418,29 @@ TEST_CASE("verner: between steps the interpolant is as accurate as the steps, no
     CHECK(worst < 1e-11);
   }
 }
+
+// Where long double is not the x87's (WebAssembly, AArch64), the interpolant's weights
+// and sums are formed in two doubles (wide.h) instead: they must keep the digits the
+// cancellation costs. The 8(7) pair's weights, whose coefficients reach 1.35e6 and
+// cancel, formed in two doubles from the coefficients' first 106 bits against the same
+// in long double: within a few of long double's own roundings of their size.
+TEST_CASE("Wide forms the 8(7) interpolant's weights as long double does") {
+  using T = verner::Vern8;
+  constexpr int kDegree = sizeof(T::r[0]) / sizeof(T::r[0][0]);
+  double worst = 0;
+  for (const double theta : {0.1, 0.37, 0.5, 0.81, 0.999}) {
+    for (int i = 0; i < T::kTotalStages; ++i) {
+      long double exact = 0.0L, scale = 0.0L;
+      Wide wide = 0.0;
+      for (int d = kDegree - 1; d >= 0; --d) {
+        exact = exact * theta + T::r[i][d];
+        scale = scale * theta + std::fabs(T::r[i][d]);
+        wide = wide * Wide(theta) + Wide::of(T::r[i][d]);
+      }
+      const long double gap = std::fabs(static_cast<long double>(wide.hi) + wide.lo - exact);
+      worst = std::max(worst, static_cast<double>(gap / (scale * LDBL_EPSILON)));
+    }
+  }
+  // Horner's bound in long double: a rounding of the scale at each of its steps
+  CHECK(worst <= kDegree);
+}
