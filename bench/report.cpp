@@ -100,6 +100,7 @@ int main(int argc, char** argv) {
   figures_section(md, all, targets);
   startup_section(md, all);
   python_section(md, all, targets);
+  web_section(md, all, targets);
   other_groups(md, all);
 
   md << "\n## Targets\n\n";

@@ -65,5 +65,7 @@ void figures_section(std::ostream& md, const Json& all, Targets& targets);
 void startup_section(std::ostream& md, const Json& all);
 /// import rigidlab: a call's own cost per lab, and the sweep (report_python.cpp).
 void python_section(std::ostream& md, const Json& all, Targets& targets);
+/// The web page: WebAssembly beside native, frames, an input's wait (report_web.cpp).
+void web_section(std::ostream& md, const Json& all, Targets& targets);
 
 }  // namespace bench::report

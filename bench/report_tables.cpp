@@ -114,8 +114,9 @@ void reference_section(std::ostream& md, const Json& all) {
 
 // Groups this report does not know: one generic table each.
 void other_groups(std::ostream& md, const Json& all) {
-  const std::set<std::string> known = {"work_precision", "elliptic", "invariants", "reference",
-                                       "problem",        "figures",  "controller", "python"};
+  const std::set<std::string> known = {"work_precision", "elliptic", "invariants",
+                                       "reference",      "problem",  "figures",
+                                       "controller",     "python",   "web"};
   std::map<std::string, std::vector<const Json*>> groups;
   for (const Json& e : all)
     if (!known.count(text(e, "group"))) groups[text(e, "group", "(no group)")].push_back(&e);

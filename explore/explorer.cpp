@@ -73,14 +73,7 @@ void Explorer::set_speed(double speed) {
 }
 
 void Explorer::toggle(const std::string& part) {
-  std::vector<std::string>& hidden = view_.hidden;
-  const auto at = std::find(hidden.begin(), hidden.end(), part);
-  if (at == hidden.end()) {
-    hidden.push_back(part);
-  } else {
-    hidden.erase(at);
-  }
-  ++view_.hidden_version;
+  view_.toggle_part(part);
 }
 
 void Explorer::queue(Action action) {

@@ -46,6 +46,17 @@ struct ViewState {
   long hidden_version = 0;          ///< moves when `hidden` or `legend` does
   bool legend = true;               ///< the scene's legend drawn over it, or collapsed
 
+  /// A part of the scene (its legend entry) hidden if shown, shown if hidden.
+  void toggle_part(const std::string& part) {
+    const auto at = std::find(hidden.begin(), hidden.end(), part);
+    if (at == hidden.end()) {
+      hidden.push_back(part);
+    } else {
+      hidden.erase(at);
+    }
+    ++hidden_version;
+  }
+
   // the export section
   std::string export_path, figure_size = "1600x1200";
   int export_figure = 0;

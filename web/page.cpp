@@ -10,6 +10,7 @@
 #include <emscripten/val.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -131,6 +132,27 @@ class Page {
     if (!out.empty() || session_ == nullptr || session_->name() != name) session_ = e->make();
     view_ = explore::ViewState{};
     cache_.reset();
+    scene_drawn_ = plot_drawn_ = Drawn{};  // another session counts its generations anew
+    return out.dump();
+  }
+
+  /// The seconds of a computation of lab `name` at its defaults, whole (as open()
+  /// computes it), `repeats` times: the bench's WebAssembly side, beside the same loop
+  /// natively (import rigidlab's _compute_seconds). A browser's clock ticks in 0.1 ms,
+  /// so each is the mean of a batch of at least 2 ms.
+  std::string compute_seconds(const std::string& name, int repeats) const {
+    const auto e = std::find_if(labs_.begin(), labs_.end(),
+                                [&](const lab::LabEntry& l) { return l.name == name; });
+    Json out = Json::array();
+    if (e == labs_.end()) return out.dump();
+    const auto batch = [&](int n) {
+      const auto start = std::chrono::steady_clock::now();
+      for (int k = 0; k < n; ++k) (void)e->make_at({});
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    int n = 1;
+    while (batch(n) < 2e-3 && n < (1 << 16)) n *= 2;
+    for (int k = 0; k < repeats; ++k) out.push_back(batch(n) / n);
     return out.dump();
   }
 
@@ -222,6 +244,22 @@ class Page {
     view_.orbit.clamp();
   }
   void reset_view() { view_.orbit = explore::Orbit{}; }
+
+  /// The parts of the scene shown (its legend's entries), each with whether it is shown,
+  /// and whether the legend is drawn: JSON {parts: [[name, shown], ...], legend}.
+  std::string parts() {
+    Json list = Json::array();
+    for (const std::string& part : cache_.parts(*session_, view_)) {
+      const auto& hidden = view_.hidden;
+      list.push_back({part, std::find(hidden.begin(), hidden.end(), part) == hidden.end()});
+    }
+    return Json{{"parts", list}, {"legend", view_.legend}}.dump();
+  }
+  void toggle_part(const std::string& part) { view_.toggle_part(part); }
+  void toggle_legend() {
+    view_.legend = !view_.legend;
+    ++view_.hidden_version;
+  }
   void interacting(bool held) { view_.interacting = held; }
 
   /// The smallest text a figure in the view is drawn with (ticks, legends), in the
@@ -239,9 +277,15 @@ class Page {
       glClearColor(1, 1, 1, 1);
       glClear(GL_COLOR_BUFFER_BIT);
       if (sw > 0 && sh > 0 && cache_.shown(*session_, view_) != nullptr) {
-        render::Scene3D scene = cache_.view_scene(*session_, view_, sw, sh);
-        scene.min_text_px = text_px_;
-        scene_image_.draw(scene, sw, sh);
+        // drawn again only when what it shows changed: not for a frame that only
+        // moves the plot's time line, or a canvas laid out again at the same size
+        const Drawn want = drawn(view_.scene_choice, sw, sh, view_.time);
+        if (!(scene_drawn_ == want)) {
+          render::Scene3D scene = cache_.view_scene(*session_, view_, sw, sh);
+          scene.min_text_px = text_px_;
+          scene_image_.draw(scene, sw, sh);
+          scene_drawn_ = want;
+        }
         presenter_.show(scene_image_, sx, sy, canvas_height);
       }
       if (pw > 0 && ph > 0) draw_plot(px, py, pw, ph, canvas_height);
@@ -260,6 +304,7 @@ class Page {
       const lab::NamedFigure* f = explore::figure_named(*session_, name);
       if (f == nullptr) return "figure: no figure named '" + name + "'";
       render::LiveImage& image = f->is_scene() ? scene_image_ : plot_image_;
+      (f->is_scene() ? scene_drawn_ : plot_drawn_) = Drawn{};  // the view draws its own again
       std::visit([&](const auto& figure) { image.draw(figure, width, height); }, f->figure);
       presenter_.show(image, 0, 0, canvas_height);
     } catch (const std::exception& e) {
@@ -312,20 +357,53 @@ class Page {
     return out;
   }
 
+  // What a view's image was drawn from: it is drawn again when any of it changes.
+  struct Drawn {
+    long generation = -1;
+    int choice = -1, width = 0, height = 0;
+    double time = -1, text_px = 0;
+    double yaw = 0, pitch = 0, zoom = 0;
+    long hidden = -1;
+    bool operator==(const Drawn& o) const {
+      return generation == o.generation && choice == o.choice && width == o.width &&
+             height == o.height && time == o.time && text_px == o.text_px && yaw == o.yaw &&
+             pitch == o.pitch && zoom == o.zoom && hidden == o.hidden;
+    }
+  };
+  Drawn drawn(int choice, int width, int height, double time) const {
+    const explore::Orbit& o = view_.orbit;
+    return {session_->generation(),
+            choice,
+            width,
+            height,
+            time,
+            text_px_,
+            o.yaw_deg,
+            o.pitch_deg,
+            o.zoom};
+  }
+
   void draw_plot(int x, int y, int width, int height, int canvas_height) {
-    std::optional<render::Plot2D> plot = explore::shown_plot(*session_, view_);
-    if (!plot) return;
-    plot->min_text_px = text_px_;
-    plot_image_.draw(*plot, width, height);
-    presenter_.show(plot_image_, x, y, canvas_height);
-    // the time shown, a line across each panel against the motion's time (the
-    // motion's strip marks its own)
     const lab::Animation* motion = session_->animation();
-    if (motion == nullptr || (motion->strip && view_.plot_choice == 0)) return;
+    // the motion's strip marks its own time, so it is drawn again as the time moves
+    const bool strip = motion != nullptr && motion->strip && view_.plot_choice == 0;
+    const Drawn want = drawn(view_.plot_choice, width, height, strip ? view_.time : 0.0);
+    if (!(plot_drawn_ == want)) {
+      std::optional<render::Plot2D> plot = explore::shown_plot(*session_, view_);
+      plot_drawn_ = Drawn{};
+      cursors_.clear();
+      if (!plot) return;
+      plot->min_text_px = text_px_;
+      plot_image_.draw(*plot, width, height);
+      if (motion != nullptr && !strip) cursors_ = explore::time_cursors(*plot, width, height);
+      plot_drawn_ = want;
+    }
+    presenter_.show(plot_image_, x, y, canvas_height);
+    // the time shown, a line across each panel against the motion's time
     const int line = std::max(2, static_cast<int>(std::lround(text_px_ / 8)));
     glEnable(GL_SCISSOR_TEST);
     glClearColor(0, 0, 0, 1);
-    for (const explore::TimeCursor& c : explore::time_cursors(*plot, width, height)) {
+    for (const explore::TimeCursor& c : cursors_) {
       const std::optional<double> at = c.x_at(view_.time);
       if (!at) continue;
       const int x0 = x + static_cast<int>(std::lround(*at)) - line / 2;
@@ -371,6 +449,8 @@ class Page {
   explore::SceneCache cache_;
   render::LiveImage scene_image_, plot_image_;
   Presenter presenter_;
+  Drawn scene_drawn_, plot_drawn_;
+  std::vector<explore::TimeCursor> cursors_;
   double text_px_ = 13;
   std::string export_error_;
   std::vector<unsigned char> png_;
@@ -383,6 +463,7 @@ EMSCRIPTEN_BINDINGS(rigidlab) {
   emscripten::class_<Page>("Page")
       .constructor<>()
       .function("labs", &Page::labs)
+      .function("computeSeconds", &Page::compute_seconds)
       .function("attach", &Page::attach)
       .function("open", &Page::open)
       .function("set", &Page::set)
@@ -401,6 +482,9 @@ EMSCRIPTEN_BINDINGS(rigidlab) {
       .function("wheel", &Page::wheel)
       .function("zoom", &Page::zoom)
       .function("resetView", &Page::reset_view)
+      .function("parts", &Page::parts)
+      .function("togglePart", &Page::toggle_part)
+      .function("toggleLegend", &Page::toggle_legend)
       .function("interacting", &Page::interacting)
       .function("draw", &Page::draw)
       .function("textPx", &Page::text_px)

@@ -26,8 +26,8 @@ foreach(link Eigen:/usr/include/eigen3/Eigen unsupported:/usr/include/eigen3/uns
   endif()
 endforeach()
 
-add_compile_options(-fexceptions -Wall -Wextra)
-add_link_options(-fexceptions -sALLOW_MEMORY_GROWTH=1)
+add_compile_options(-fwasm-exceptions -Wall -Wextra)
+add_link_options(-fwasm-exceptions -sALLOW_MEMORY_GROWTH=1)
 add_compile_definitions(FMT_HEADER_ONLY)
 include_directories(SYSTEM ${stage})
 include_directories(${rigid_root}/core/include ${rigid_root}/render/include

@@ -7,6 +7,7 @@
 //                                          inputs' fields as shown
 //   node browse.js BASE behaviour OUT      a broken rule typed, a link, touch and keys,
 //                                          the canvas read back
+//   node browse.js BASE screenshot QUERY WxH[-touch] OUT [SECONDS]   the page as shown
 "use strict";
 const fs = require("fs");
 const puppeteer = require("puppeteer-core");
@@ -109,6 +110,15 @@ async function behaviour(out) {
     command: window.rigidlab.shown.command,
     address: location.search,
   }));
+  // offline once loaded: another lab opened and computed with the network gone
+  await page.setOfflineMode(true);
+  result.offline = await page.evaluate(() => {
+    const pick = document.getElementById("lab");
+    pick.value = "tennis_racquet";
+    pick.dispatchEvent(new Event("change"));
+    return window.rigidlab.shown.lab;
+  });
+  await page.setOfflineMode(false);
   result.problems = page.problems;
 
   // the keyboard: Tab reaches the fields, which have labels; keys turn the view
@@ -135,7 +145,9 @@ async function behaviour(out) {
   await page.tap("#in-mass");
   result.touch = await page.evaluate(() => ({ focused: document.activeElement.id }));
   const box = await page.evaluate(() => {
-    const r = document.getElementById("canvas").getBoundingClientRect();
+    const canvas = document.getElementById("canvas");
+    canvas.scrollIntoView();  // the tap on a field scrolled the page to it
+    const r = canvas.getBoundingClientRect();
     return { x: r.left + r.width / 2, y: r.top + r.height / 4 };
   });
   const shot = () => page.evaluate(() => document.getElementById("canvas").toDataURL());
@@ -174,7 +186,94 @@ async function behaviour(out) {
   await b.close();
 }
 
-const jobs = { describe, numbers, behaviour };
+// The bench's measurements (bench/web_bench.py), at 1280x720: the first frame from
+// navigation with a warm cache, each lab's compute() timed in WebAssembly, the frame
+// interval while a motion plays, and an input change to its frame.
+async function bench(out) {
+  const b = await browser();
+  const page = await openPage(b, 1280, 720);
+  await load(page, "lab=top_nutation");
+  const result = { first_frame_ms: [], labs: {} };
+  for (let k = 0; k < 5; ++k) {
+    await page.reload({ waitUntil: "load" });
+    await page.waitForFunction(() => window.rigidlab && window.rigidlab.firstFrame, { timeout: 60000 });
+    result.first_frame_ms.push(await page.evaluate(() => window.rigidlab.firstFrame));
+  }
+  const names = await page.evaluate(() => window.rigidlab.labs.map((l) => l.name));
+  for (const name of names) {
+    await load(page, `lab=${name}`);
+    result.labs[name] = await page.evaluate(async (lab) => {
+      const st = window.rigidlab;
+      const nextFrame = () => new Promise((r) => requestAnimationFrame(r));
+      // compute(), whole, at the defaults: 21 batches
+      const compute = JSON.parse(st.page.computeSeconds(lab, 21));
+      // an input changed: to the frame that shows it, and to the whole report's
+      // a number 1 % off its default and back, or where no number has a default, a
+      // choice's second word and back
+      let input = st.lab.inputs.find((i) => i.kind === "number" && !i.numerical &&
+                                     i.has_default && Number(i.default) > 0);
+      let values = input ? [String(Number(input.default) * 1.01), input.default] : null;
+      if (!input) {
+        input = st.lab.inputs.find((i) => i.kind === "choice" && !i.numerical && i.choices.length > 1);
+        values = input ? [input.choices[1], input.choices[0]] : null;
+      }
+      const toFrame = [], toWhole = [];
+      if (input) {
+        const control = document.getElementById("in-" + input.key);
+        for (let k = 0; k < 12; ++k) {
+          control.value = values[k % 2];
+          const before = Number(document.body.dataset.frames);
+          const t0 = performance.now();
+          control.dispatchEvent(new Event("change"));
+          while (Number(document.body.dataset.frames) <= before) await nextFrame();
+          toFrame.push(performance.now() - t0);
+          while (st.shown.pending) await nextFrame();
+          toWhole.push(performance.now() - t0);
+        }
+      }
+      // the motion played for two seconds: the interval between frames
+      const intervals = [];
+      if (st.shown.seconds > 0) {
+        st.playing = true;
+        let last = await nextFrame();
+        const end = last + 2000;
+        while (last < end) {
+          const now = await nextFrame();
+          intervals.push(now - last);
+          last = now;
+        }
+        st.playing = false;
+      }
+      return { compute_s: compute, input_to_frame_ms: toFrame, input_to_whole_ms: toWhole,
+               frame_interval_ms: intervals, input: input ? input.flag : "" };
+    }, name);
+  }
+  result.problems = page.problems;
+  fs.writeFileSync(out, JSON.stringify(result));
+  await b.close();
+}
+
+// The page at an address and a size, as the README shows it: WxH, or WxH-touch for a
+// tablet; the motion played to `seconds` first where given.
+async function screenshot(query, size, out, seconds) {
+  const [w, h] = size.split("-")[0].split("x").map(Number);
+  const b = await browser();
+  const page = await openPage(b, w, h, size.endsWith("-touch"));
+  await load(page, query);
+  if (seconds) {
+    await page.evaluate((t) => {
+      window.rigidlab.time = t;
+      window.rigidlab.page.seek(t);
+      window.rigidlab.dirty = true;
+    }, Number(seconds));
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  }
+  await page.screenshot({ path: out });
+  if (page.problems.length) console.error(page.problems.join("\n"));
+  await b.close();
+}
+
+const jobs = { describe, numbers, behaviour, bench, screenshot };
 if (!jobs[mode]) {
   console.error(`browse.js: unknown job '${mode}' (describe, numbers, behaviour)`);
   process.exit(2);

@@ -11,7 +11,10 @@ Serves SITE (build/web) on a free local port, then through browse.js:
   another step on that difference, within its tolerance;
 - the fields show the address's inputs, and the command shown is the native one's;
 - a broken rule typed in a field shows the rule and keeps the last valid state; a
-  valid one is taken; a link reproduces its inputs; touch and keys reach the controls.
+  valid one is taken; a link reproduces its inputs; offline, another lab opens; touch
+  and keys reach the controls, which all have labels; the page reflows on a tablet;
+- the canvas's scene and plot are the command line's figures (image_match.h's rule for
+  another rasteriser).
 Exit 0 when all holds, 1 with each failure on stderr.
 """
 import argparse
@@ -303,6 +306,8 @@ def check_behaviour(base, work):
         fail(f"a link's inputs are not shown: {link}")
     if "alpha-deg=12.5" not in link["address"]:
         fail(f"a link's address changed to {link['address']}")
+    if r["offline"] != "tennis_racquet":
+        fail(f"offline, another lab did not open: {r['offline']}")
     if r["problems"] or r["touchProblems"]:
         fail(f"the console says {r['problems'] + r['touchProblems']}")
     if r["keyboard"]["unlabelled"]:
@@ -315,7 +320,7 @@ def check_behaviour(base, work):
         fail("a swipe on the view did not turn the scene")
     if not r["touch"]["layout"]["stacked"] or r["touch"]["layout"]["overflow"]:
         fail(f"on a tablet held upright the page does not reflow: {r['touch']['layout']}")
-    print("web: a refused field, a link, the keyboard and touch behave")
+    print("web: a refused field, a link, offline, the keyboard and touch behave")
     check_figures(r["figures"], work)
 
 

@@ -209,6 +209,7 @@
     $("playbar").hidden = !(seconds > 0);
     $("time").max = String(seconds);
     $("save-view").disabled = shown.scenes.length === 0;
+    renderParts();
   }
 
   function refresh() {
@@ -247,12 +248,14 @@
 
   // ---- the view ----------------------------------------------------------------------
 
-  // The scene and the plot side by side on a wide view, one over the other on a narrow.
+  // The scene and the plot side by side where the view is wider than the window is tall
+  // (a laptop, a tablet held sideways), one over the other where it is not (a phone, a
+  // tablet held upright): each then as large as the screen lets it be.
   function layout() {
     const canvas = $("canvas");
     const ratio = window.devicePixelRatio || 1;
     const cssWidth = canvas.clientWidth;
-    const wide = cssWidth >= 700;
+    const wide = cssWidth >= 600 && cssWidth > window.innerHeight;
     const hasPlot = state.shown && state.shown.plots.length > 0;
     const hasScene = state.shown && state.shown.scenes.length > 0;
     let cssHeight;
@@ -313,8 +316,30 @@
       $("time").value = String(state.time);
       $("time-text").textContent = `t = ${state.time.toPrecision(4)} s`;
       document.body.dataset.frames = String(Number(document.body.dataset.frames || 0) + 1);
+      if (!state.firstFrame) state.firstFrame = performance.now();  // from navigation start
     }
     requestAnimationFrame(frame);
+  }
+
+  // The scene's parts (its legend's entries) as switches, and the legend itself.
+  function renderParts() {
+    const box = $("parts");
+    const { parts, legend } = JSON.parse(state.page.parts());
+    const row = (id, text, checked, onChange) => {
+      const label = document.createElement("label");
+      const input = document.createElement("input");
+      input.type = "checkbox";
+      input.id = id;
+      input.checked = checked;
+      input.addEventListener("change", () => { onChange(); state.dirty = true; });
+      label.append(input, " ", text);
+      return label;
+    };
+    box.replaceChildren(
+      row("part-legend", "the legend", legend, () => state.page.toggleLegend()),
+      ...parts.map(([name, shown], i) =>
+        row(`part-${i}`, name, shown, () => state.page.togglePart(name))));
+    $("parts-box").hidden = parts.length === 0;
   }
 
   function setPlaying(on) {
@@ -379,6 +404,7 @@
     $("speed").addEventListener("change", () => { state.speed = Number($("speed").value); });
     $("scene-choice").addEventListener("change", () => {
       state.page.show(true, Number($("scene-choice").value));
+      renderParts();
       state.dirty = true;
     });
     $("plot-choice").addEventListener("change", () => {
