@@ -6,6 +6,7 @@
 #include <boost/math/special_functions/ellint_rc.hpp>
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -50,14 +51,25 @@ void check_start(const TopStart& s) {
   }
 }
 
+// Boost.Math computes a double's integral in long double by default: on x86 the
+// x87's 64-bit significand, in hardware, a few bits more kept. Where long double is
+// binary128 in software (WebAssembly, AArch64) that costs some fifty times a double's
+// (the web page's heavy top spent 94 % of an input's wait in it), so there the
+// integrals are computed in double, as free_body_exact.cpp's are everywhere.
+#if LDBL_MANT_DIG == 64
+using Precision = boost::math::policies::policy<>;
+#else
+using Precision = boost::math::policies::policy<boost::math::policies::promote_double<false> >;
+#endif
+
 double rf(double x, double y, double z) {
-  return boost::math::ellint_rf(x, y, z);
+  return boost::math::ellint_rf(x, y, z, Precision());
 }
 double rj(double x, double y, double z, double p) {
-  return boost::math::ellint_rj(x, y, z, p);
+  return boost::math::ellint_rj(x, y, z, p, Precision());
 }
 double rc(double x, double y) {
-  return boost::math::ellint_rc(x, y);
+  return boost::math::ellint_rc(x, y, Precision());
 }
 
 }  // namespace
