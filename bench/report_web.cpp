@@ -70,7 +70,9 @@ void web_section(std::ostream& md, const Json& all, Targets& targets) {
                           "(the worst {:.2f}×)",
                           worst_ratio));
   targets.add(first <= 2000.0, fmt::format("web: the first frame within 2 s ({:.0f} ms)", first));
-  targets.add(worst_frame <= 1000.0 / 30.0,
+  // 30 fps is every other frame of the browser's 60 Hz clock: 33.33 ms, measured in its
+  // 0.1 ms ticks
+  targets.add(worst_frame <= 2 * 1000.0 / 60.0 + 0.1,
               fmt::format("web: 30 fps while a motion plays, every lab, the median interval "
                           "(the worst {:.1f} ms)",
                           worst_frame));
