@@ -103,6 +103,15 @@ async function behaviour(out) {
     address: location.search,
   }));
 
+  // a link to no lab, or with an input the lab has not: said, and a lab shown
+  await load(page, "lab=nosuch&mass=2");
+  result.unknownLab = await page.evaluate(() => document.getElementById("status").textContent);
+  await load(page, "lab=poinsot&spin-rpm=2");
+  result.unknownInput = await page.evaluate(() => ({
+    status: document.getElementById("status").textContent,
+    command: window.rigidlab.shown.command,
+  }));
+
   // a link with inputs: the fields show them, and a reload shows the same
   await load(page, "lab=football&alpha-deg=12.5&preset=frisbee");
   result.link = await page.evaluate(() => ({

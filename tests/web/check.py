@@ -305,6 +305,11 @@ def check_behaviour(base, work):
         fail(f"a valid input after a refused one: {accepted}")
     if "mass=3" not in accepted["address"]:
         fail(f"the address does not hold the input: {accepted['address']}")
+    if "no lab named 'nosuch'" not in r["unknownLab"]:
+        fail(f"a link to no lab says {r['unknownLab']!r}")
+    unknown = r["unknownInput"]
+    if "--spin-rpm" not in unknown["status"] or unknown["command"] != "poinsot":
+        fail(f"a link with an input poinsot has not: {unknown}")
     link = r["link"]
     if link["alpha"] != "12.5" or "--alpha-deg=12.5" not in link["command"]:
         fail(f"a link's inputs are not shown: {link}")

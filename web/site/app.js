@@ -229,16 +229,20 @@
   // ---- opening a lab -----------------------------------------------------------------
 
   function openLab(name, given) {
-    const lab = state.labs.find((l) => l.name === name) || state.labs[0];
+    const known = state.labs.find((l) => l.name === name);
+    const lab = known || state.labs[0];
     state.lab = lab;
     $("lab").value = lab.name;
     buildForm(lab);
     clearRefusals();
-    const out = JSON.parse(state.page.open(lab.name, JSON.stringify(given)));
+    const out = JSON.parse(state.page.open(lab.name, JSON.stringify(known ? given : [])));
     state.time = 0;
     state.page.seek(0);
     refresh();
-    if (out.refused) {
+    if (!known) {
+      const names = state.labs.map((l) => l.name).join(", ");
+      say(`lab: no lab named '${name}' (one of ${names}), so ${lab.name} is shown`, true);
+    } else if (out.refused) {
       showRefusal(out, null);
       say(`${out.refused}: the link's inputs were refused, so the text's example is shown`, true);
     } else {
