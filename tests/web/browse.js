@@ -19,8 +19,9 @@ async function browser() {
   return puppeteer.launch({
     executablePath: chromium,
     headless: true,
+    // in a container /dev/shm is often 64 MB: Chromium then keeps its shared memory in /tmp
     args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-           "--hide-scrollbars"],
+           "--disable-dev-shm-usage", "--hide-scrollbars"],
   });
 }
 
