@@ -158,6 +158,13 @@
     select.replaceChildren(...names.map((n, i) => new Option(n, String(i))));
     if (keep && before !== "" && names.length > Number(before)) select.value = before;
     select.disabled = names.length === 0;
+    // a view the lab has none of is not offered (its label with it)
+    const inView = select.closest(".view-pick");
+    if (inView) {
+      select.hidden = names.length === 0;
+      const label = inView.querySelector(`label[for="${select.id}"]`);
+      if (label) label.hidden = select.hidden;
+    }
   }
 
   function renderReport() {
@@ -252,14 +259,14 @@
 
   // ---- the view ----------------------------------------------------------------------
 
-  // The scene and the plot side by side where the view is wider than the window is tall
+  // The scene and the plot side by side where the view is wider than 0.8 of the window's height
   // (a laptop, a tablet held sideways), one over the other where it is not (a phone, a
   // tablet held upright): each then as large as the screen lets it be.
   function layout() {
     const canvas = $("canvas");
     const ratio = window.devicePixelRatio || 1;
     const cssWidth = canvas.clientWidth;
-    const wide = cssWidth >= 600 && cssWidth > window.innerHeight;
+    const wide = cssWidth >= 600 && cssWidth > 0.8 * window.innerHeight;
     const hasPlot = state.shown && state.shown.plots.length > 0;
     const hasScene = state.shown && state.shown.scenes.length > 0;
     let cssHeight;
