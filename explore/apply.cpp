@@ -72,9 +72,7 @@ struct Explorer::Apply {
 
   // ---- the view
   std::string operator()(const action::Turn& a) const {
-    e.view_.orbit.yaw_deg += a.right_deg;
-    e.view_.orbit.pitch_deg += a.up_deg;
-    e.view_.orbit.clamp();
+    e.view_.orbit.turn(a.right_deg, a.up_deg);
     return "";
   }
   std::string operator()(const action::MouseTurn& a) const {
@@ -82,8 +80,7 @@ struct Explorer::Apply {
     return "";
   }
   std::string operator()(const action::Zoom& a) const {
-    e.view_.orbit.zoom *= a.factor;
-    e.view_.orbit.clamp();
+    e.view_.orbit.zoom_by(a.factor);
     return "";
   }
   std::string operator()(const action::Wheel& a) const {
@@ -125,8 +122,7 @@ struct Explorer::Apply {
     return "";
   }
   std::string operator()(const action::ToggleLegend&) const {
-    e.view_.legend = !e.view_.legend;
-    ++e.view_.hidden_version;  // what is drawn changed
+    e.view_.toggle_legend();
     return "";
   }
 

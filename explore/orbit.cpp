@@ -59,4 +59,15 @@ render::Camera Orbit::apply(const render::Camera& base) const {
   return c;
 }
 
+void Orbit::turn(double right_deg, double up_deg) {
+  yaw_deg += right_deg;
+  pitch_deg += up_deg;
+  clamp();
+}
+
+void Orbit::zoom_by(double factor) {
+  zoom *= factor;
+  clamp();
+}
+
 }  // namespace rigid::explore

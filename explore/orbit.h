@@ -16,6 +16,10 @@ struct Orbit {
   void drag(double dx, double dy, double height);
   /// Zooms by wheel steps (positive: closer).
   void wheel(double steps);
+  /// Turns by degrees right and up (the arrow keys, a script's turn).
+  void turn(double right_deg, double up_deg);
+  /// Comes closer by a factor (> 1), or goes away (< 1): a pinch, a script's zoom.
+  void zoom_by(double factor);
   /// Keeps the angles and the zoom where a view stays well defined.
   void clamp();
   bool is_identity() const { return yaw_deg == 0.0 && pitch_deg == 0.0 && zoom == 1.0; }

@@ -45,6 +45,24 @@ struct TimeCursor {
 /// motion's time on a linear scale.
 std::vector<TimeCursor> time_cursors(const render::Plot2D& plot, int width, int height);
 
+/// What a view's image was drawn from: it is drawn again when any of it changes (a frame
+/// that only lays the same image out again draws nothing).
+struct DrawnFrom {
+  long generation = -1;  ///< the session's
+  int choice = -1, width = 0, height = 0;
+  double time = -1.0;  ///< the time shown, where the image shows one
+  Orbit orbit;         ///< a scene's
+  long hidden = 0;     ///< ViewState::hidden_version, a scene's
+  double text_px = 0;  ///< the figure's least text
+  bool valid = false;  ///< false: nothing drawn yet, or the drawing failed (not compared)
+  bool operator==(const DrawnFrom& o) const {
+    return generation == o.generation && choice == o.choice && width == o.width &&
+           height == o.height && time == o.time && orbit.yaw_deg == o.orbit.yaw_deg &&
+           orbit.pitch_deg == o.orbit.pitch_deg && orbit.zoom == o.orbit.zoom &&
+           hidden == o.hidden && text_px == o.text_px;
+  }
+};
+
 class SceneCache {
  public:
   /// Forgets everything (another lab is shown).

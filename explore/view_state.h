@@ -56,6 +56,11 @@ struct ViewState {
     }
     ++hidden_version;
   }
+  /// The scene's legend drawn over it, or collapsed.
+  void toggle_legend() {
+    legend = !legend;
+    ++hidden_version;  // what is drawn changed
+  }
 
   // the export section
   std::string export_path, figure_size = "1600x1200";

@@ -44,12 +44,6 @@ void show_texture(unsigned texture, ImVec2 origin, ViewRect at) {
 
 }  // namespace
 
-bool Views::Drawn::operator==(const Drawn& o) const {
-  return generation == o.generation && choice == o.choice && width == o.width &&
-         height == o.height && time == o.time && orbit.yaw_deg == o.orbit.yaw_deg &&
-         orbit.pitch_deg == o.orbit.pitch_deg && orbit.zoom == o.orbit.zoom && hidden == o.hidden;
-}
-
 void Views::reset() {
   scene_drawn_ = plot_drawn_ = Drawn{};
   cursors_.clear();
@@ -82,8 +76,8 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
   const ImGuiIO& io = ImGui::GetIO();
   const bool any = cache.shown(s, v) != nullptr;
   if (any) {
-    const Drawn want{s.generation(), v.scene_choice,   pw,  ph, v.time,
-                     v.orbit,        v.hidden_version, true};
+    const Drawn want{s.generation(),   v.scene_choice,   pw,  ph, v.time, v.orbit,
+                     v.hidden_version, figure_text_px(), true};
     if (!(scene_drawn_.valid && scene_drawn_ == want)) {
       try {
         render::Scene3D scene = cache.view_scene(s, v, pw, ph);
@@ -144,7 +138,8 @@ void Views::plot(const lab::Session& s, const ViewState& v, ViewRect at) {
   // the motion's strip is drawn again as it plays; another plot once, its time cursor
   // laid over it
   const bool strip = motion != nullptr && motion->strip && v.plot_choice == 0;
-  const Drawn want{s.generation(), v.plot_choice, pw, ph, strip ? v.time : 0.0, {}, 0, true};
+  const Drawn want{s.generation(),   v.plot_choice, pw, ph, strip ? v.time : 0.0, {}, 0,
+                   figure_text_px(), true};
   if (!(plot_drawn_.valid && plot_drawn_ == want)) {
     draw_plot(s, v, pw, ph, strip);
     const bool valid = plot_drawn_.valid;

@@ -37,15 +37,7 @@ class Views {
 
  private:
   // What a view's texture was drawn from: it is drawn again when this changes.
-  struct Drawn {
-    long generation = -1;
-    int choice = -1, width = 0, height = 0;
-    double time = -1.0;
-    Orbit orbit;
-    long hidden = 0;
-    bool valid = false;
-    bool operator==(const Drawn& o) const;
-  };
+  using Drawn = DrawnFrom;
   // The plot's panels against the motion's time: where the time cursor goes.
   void legend_button(const ViewState& v, ImVec2 origin, ViewRect at,
                      std::vector<Action>& queue) const;

@@ -233,16 +233,9 @@ class Page {
     return motion != nullptr ? motion->seconds : 0.0;
   }
   void turn(double dx, double dy, double height) { view_.orbit.drag(dx, dy, height); }
-  void turn_degrees(double right, double up) {
-    view_.orbit.yaw_deg += right;
-    view_.orbit.pitch_deg += up;
-    view_.orbit.clamp();
-  }
+  void turn_degrees(double right, double up) { view_.orbit.turn(right, up); }
   void wheel(double steps) { view_.orbit.wheel(steps); }
-  void zoom(double factor) {
-    view_.orbit.zoom *= factor;
-    view_.orbit.clamp();
-  }
+  void zoom(double factor) { view_.orbit.zoom_by(factor); }
   void reset_view() { view_.orbit = explore::Orbit{}; }
 
   /// The parts of the scene shown (its legend's entries), each with whether it is shown,
@@ -256,10 +249,7 @@ class Page {
     return Json{{"parts", list}, {"legend", view_.legend}}.dump();
   }
   void toggle_part(const std::string& part) { view_.toggle_part(part); }
-  void toggle_legend() {
-    view_.legend = !view_.legend;
-    ++view_.hidden_version;
-  }
+  void toggle_legend() { view_.toggle_legend(); }
   void interacting(bool held) { view_.interacting = held; }
 
   /// The smallest text a figure in the view is drawn with (ticks, legends), in the
@@ -280,7 +270,7 @@ class Page {
         // drawn again only when what it shows changed: not for a frame that only
         // moves the plot's time line, or a canvas laid out again at the same size
         const Drawn want = drawn(view_.scene_choice, sw, sh, view_.time);
-        if (!(scene_drawn_ == want)) {
+        if (!(scene_drawn_.valid && scene_drawn_ == want)) {
           render::Scene3D scene = cache_.view_scene(*session_, view_, sw, sh);
           scene.min_text_px = text_px_;
           scene_image_.draw(scene, sw, sh);
@@ -357,30 +347,10 @@ class Page {
     return out;
   }
 
-  // What a view's image was drawn from: it is drawn again when any of it changes.
-  struct Drawn {
-    long generation = -1;
-    int choice = -1, width = 0, height = 0;
-    double time = -1, text_px = 0;
-    double yaw = 0, pitch = 0, zoom = 0;
-    long hidden = -1;
-    bool operator==(const Drawn& o) const {
-      return generation == o.generation && choice == o.choice && width == o.width &&
-             height == o.height && time == o.time && text_px == o.text_px && yaw == o.yaw &&
-             pitch == o.pitch && zoom == o.zoom && hidden == o.hidden;
-    }
-  };
+  using Drawn = explore::DrawnFrom;
   Drawn drawn(int choice, int width, int height, double time) const {
-    const explore::Orbit& o = view_.orbit;
-    return {session_->generation(),
-            choice,
-            width,
-            height,
-            time,
-            text_px_,
-            o.yaw_deg,
-            o.pitch_deg,
-            o.zoom};
+    return {session_->generation(), choice,   width, height, time, view_.orbit,
+            view_.hidden_version,   text_px_, true};
   }
 
   void draw_plot(int x, int y, int width, int height, int canvas_height) {
@@ -388,7 +358,7 @@ class Page {
     // the motion's strip marks its own time, so it is drawn again as the time moves
     const bool strip = motion != nullptr && motion->strip && view_.plot_choice == 0;
     const Drawn want = drawn(view_.plot_choice, width, height, strip ? view_.time : 0.0);
-    if (!(plot_drawn_ == want)) {
+    if (!(plot_drawn_.valid && plot_drawn_ == want)) {
       std::optional<render::Plot2D> plot = explore::shown_plot(*session_, view_);
       plot_drawn_ = Drawn{};
       cursors_.clear();

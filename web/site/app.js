@@ -9,8 +9,8 @@
   const $ = (id) => document.getElementById(id);
   const state = {
     page: null, labs: [], lab: null, shown: null, refusals: {}, playing: false,
-    time: 0, speed: 1, lastFrame: 0, dirty: true, pollNext: false, drag: null,
-    pointers: new Map(), pinch: 0, frames: [],
+    time: 0, speed: 1, lastFrame: 0, dirty: true, pollNext: false,
+    pointers: new Map(), pinch: 0,
   };
 
   // ---- the address -------------------------------------------------------------------
@@ -316,13 +316,10 @@
     }
     layout();
     if (state.dirty && state.shown) {
-      const t0 = performance.now();
       const { scene, plot, w, h } = state.rects;
       state.page.textPx(13 * (window.devicePixelRatio || 1));
       const why = state.page.draw(...scene, ...plot, w, h);
       if (why) say(`The view cannot be drawn: ${why}`, true);
-      state.frames.push(performance.now() - t0);
-      if (state.frames.length > 600) state.frames.shift();
       state.dirty = false;
       $("time").value = String(state.time);
       $("time-text").textContent = `t = ${state.time.toPrecision(4)} s`;
