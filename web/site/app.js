@@ -271,7 +271,9 @@
     const hasScene = state.shown && state.shown.scenes.length > 0;
     let cssHeight;
     if (wide) cssHeight = Math.round(Math.min(cssWidth * 0.5, Math.max(360, window.innerHeight * 0.62)));
-    else cssHeight = Math.round(cssWidth * (hasPlot && hasScene ? 1.45 : 0.8));
+    // stacked: the scene a little taller than wide, so that on a phone its legend leaves
+    // the body room (the camera is fitted clear of it), the plot under it
+    else cssHeight = Math.round(cssWidth * (hasPlot && hasScene ? 1.05 + 0.75 : 0.9));
     canvas.style.height = cssHeight + "px";
     const w = Math.max(1, Math.round(cssWidth * ratio));
     const h = Math.max(1, Math.round(cssHeight * ratio));
@@ -288,7 +290,7 @@
         scene = [0, 0, split, h];
         plot = [split, 0, w - split, h];
       } else {
-        const split = Math.round(h * 0.55);
+        const split = Math.round(h * 1.05 / 1.8);
         scene = [0, 0, w, split];
         plot = [0, split, w, h - split];
       }
