@@ -146,14 +146,19 @@ def main():
     ap.add_argument("--frames", type=int, default=120)
     ap.add_argument("--moves", type=int, default=40)
     ap.add_argument("--idle", type=float, default=5.0)
+    ap.add_argument("--labs", default=",".join(MOVES),
+                    help="the labs, comma-separated (default: every lab)")
     args = ap.parse_args()
+    labs = [lab for lab in args.labs.split(",") if lab]
+    if unknown := [lab for lab in labs if lab not in MOVES]:
+        ap.error(f"--labs: unknown lab {unknown[0]!r} (one of {', '.join(MOVES)})")
     if shutil.which("xvfb-run") is None:
         print("explore_bench: xvfb-run not found: skipped", file=sys.stderr)
         json.dump([], open(args.out, "w"))
         return
     entries, rows = [], []
     renderer = ""
-    for lab in MOVES:
+    for lab in labs:
         log, msaa = frame_times(args.explorer, lab, args.frames)
         renderer = log["gl_renderer"]
         _, ssaa = frame_times(args.explorer, lab, args.frames, {"RIGID_GL_SAMPLES": "0"})

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -73,6 +74,8 @@ struct WindowGl {
   PFNGLREADBUFFERPROC ReadBuffer = nullptr;
   PFNGLPIXELSTOREIPROC PixelStorei = nullptr;
   PFNGLREADPIXELSPROC ReadPixels = nullptr;
+  PFNGLBINDTEXTUREPROC BindTexture = nullptr;
+  PFNGLTEXPARAMETERIPROC TexParameteri = nullptr;
   template <class F>
   static void load(F& f, const char* name) {
     f = reinterpret_cast<F>(glfwGetProcAddress(name));
@@ -85,8 +88,10 @@ struct WindowGl {
     load(ReadBuffer, "glReadBuffer");
     load(PixelStorei, "glPixelStorei");
     load(ReadPixels, "glReadPixels");
+    load(BindTexture, "glBindTexture");
+    load(TexParameteri, "glTexParameteri");
     return Viewport && ClearColor && Clear && BindFramebuffer && ReadBuffer && PixelStorei &&
-           ReadPixels;
+           ReadPixels && BindTexture && TexParameteri;
   }
   // The back buffer just drawn, rows top to bottom.
   rigid::render::Image read_back(int w, int h) const {
@@ -328,10 +333,25 @@ rigid::explore::Window hooks_of(GLFWwindow* window, const WindowGl& gl) {
   return hooks;
 }
 
+// The text's glyphs sampled nearest, once the backend has made their texture: they are
+// drawn at whole pixels, where nearest is what linear gives, at a third of linear's cost
+// on a software rasteriser (llvmpipe), where text is most of what the window draws.
+void nearest_font_atlas(const WindowGl& gl) {
+  static ImTextureID done = nullptr;
+  const ImTextureID atlas = ImGui::GetIO().Fonts->TexID;
+  if (atlas == nullptr || atlas == done) return;
+  gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(reinterpret_cast<std::uintptr_t>(atlas)));
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.BindTexture(GL_TEXTURE_2D, 0);
+  done = atlas;
+}
+
 // One frame: the explorer's UI built and drawn, a screenshot taken, the frame shown.
 void draw_frame(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer& explorer,
                 double seconds) {
   ImGui_ImplOpenGL3_NewFrame();
+  nearest_font_atlas(gl);
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   explorer.frame(seconds);
@@ -341,7 +361,9 @@ void draw_frame(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer
   glfwGetFramebufferSize(window, &fw, &fh);
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   gl.Viewport(0, 0, fw, fh);
-  gl.ClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  // the panels' colour: they draw no background of their own (style.h's kPanel)
+  const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  gl.ClearColor(bg.x, bg.y, bg.z, 1.0f);
   gl.Clear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   explorer.after_render();

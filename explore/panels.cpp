@@ -440,9 +440,7 @@ void parts_popup(const PanelContext& c) {
 void time_panel(const PanelContext& c, float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin(
-      "Time", nullptr,
-      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Begin("Time", nullptr, kPanel | ImGuiWindowFlags_NoDecoration);
   if (const lab::Animation* motion = c.session.animation()) {
     motion_controls(c, *motion);
   } else {

@@ -24,10 +24,13 @@ inline float ui_scale() {
   return ImGui::GetFontSize() > kFontPx ? ImGui::GetFontSize() / kFontPx : 1.0f;
 }
 
-// The panels stay where the layout puts them.
+// The panels stay where the layout puts them. They tile the window, which is cleared to
+// their colour (the style's WindowBg): painting it again under each would be a second
+// pass over every pixel, on a software rasteriser a fifth of a frame.
 constexpr ImGuiWindowFlags kPanel =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
+    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings |
+    ImGuiWindowFlags_NoBackground;
 
 const ImVec4 kRuleColor(0.80f, 0.18f, 0.10f, 1.0f);
 const ImVec4 kErrataColor(0.70f, 0.35f, 0.0f, 1.0f);

@@ -21,9 +21,7 @@ std::pair<int, int> begin_view(const char* name, ViewRect at) {
   ImGui::SetNextWindowPos(ImVec2(at.x, at.y));
   ImGui::SetNextWindowSize(ImVec2(at.w, at.h));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  ImGui::Begin(name, nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Begin(name, nullptr, kPanel | ImGuiWindowFlags_NoDecoration);
   ImGui::PopStyleVar();
   const ImGuiIO& io = ImGui::GetIO();
   return {std::max(16, static_cast<int>(at.w * io.DisplayFramebufferScale.x)),
@@ -82,8 +80,7 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
       try {
         render::Scene3D scene = cache.view_scene(s, v, pw, ph);
         scene.min_text_px = figure_text_px();
-        scene_image_.draw(scene, pw, ph);
-        legend_box_ = render::layout(scene, pw, ph).legend;
+        legend_box_ = scene_image_.draw(scene, pw, ph).legend;
         draw_error_.clear();
       } catch (const std::exception& e) {
         draw_error_ = e.what();

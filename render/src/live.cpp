@@ -1,6 +1,8 @@
 // Figures drawn into textures of the caller's context (live.h).
 #include "rigid/render/live.h"
 
+#include <type_traits>
+
 #include "target.h"
 
 namespace rigid::render {
@@ -10,27 +12,40 @@ LiveImage::LiveImage() : target_(std::make_unique<detail::Target>()) {}
 LiveImage::~LiveImage() = default;
 
 template <class Figure>
-void LiveImage::draw_figure(const Figure& figure, int width, int height, FigureTiming* timing) {
+auto LiveImage::draw_figure(const Figure& figure, int width, int height, FigureTiming* timing) {
   using detail::gl;
   // The window's own state, given back after: its framebuffer and viewport.
   GLint draw_fbo = 0, read_fbo = 0, viewport[4] = {};
   gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_fbo);
   gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_fbo);
   gl.GetIntegerv(GL_VIEWPORT, viewport);
-  {
-    const detail::UseTarget use(*target_);
-    detail::PhaseClock clock(timing);
-    detail::render_into_target(figure, width, height, clock);
+  // the window's state given back however the drawing ends
+  struct Restore {
+    const GLint draw_fbo, read_fbo, *viewport;
+    ~Restore() {
+      gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_fbo));
+      gl.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_fbo));
+      gl.Viewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    }
+  } restore{draw_fbo, read_fbo, viewport};
+  const detail::UseTarget use(*target_);
+  detail::PhaseClock clock(timing);
+  const auto resolve = [&] {
     target_->resolve();
     clock.lap(&FigureTiming::resolve, true);
+  };
+  if constexpr (std::is_same_v<Figure, Scene3D>) {
+    Scene3D::Layout drawn = detail::render_into_target(figure, width, height, clock);
+    resolve();
+    return drawn;
+  } else {
+    detail::render_into_target(figure, width, height, clock);
+    resolve();
   }
-  gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_fbo));
-  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_fbo));
-  gl.Viewport(viewport[0], viewport[1], viewport[2], viewport[3]);
 }
 
-void LiveImage::draw(const Scene3D& scene, int width, int height, FigureTiming* timing) {
-  draw_figure(scene, width, height, timing);
+Scene3D::Layout LiveImage::draw(const Scene3D& scene, int width, int height, FigureTiming* timing) {
+  return draw_figure(scene, width, height, timing);
 }
 
 void LiveImage::draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {

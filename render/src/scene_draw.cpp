@@ -264,12 +264,19 @@ SceneParts draw_scene_parts(const Scene3D& scene, int width, int height, FigureT
 
 }  // namespace detail
 
+namespace {
+
+Scene3D::Layout layout_of(const detail::SceneFrame& fr) {
+  return {fr.title.box,  fr.legend, fr.region, static_cast<int>(fr.title.lines.size()),
+          fr.title.size, fr.labels};
+}
+
+}  // namespace
+
 Scene3D::Layout layout(const Scene3D& scene, int width, int height) {
   const double k = detail::normalising_scale(scene);
   if (k != 1.0) return layout(scene.scaled(k), width, height);
-  const detail::SceneFrame fr = detail::frame_scene(scene, width, height);
-  return {fr.title.box,  fr.legend, fr.region, static_cast<int>(fr.title.lines.size()),
-          fr.title.size, fr.labels};
+  return layout_of(detail::frame_scene(scene, width, height));
 }
 
 Camera fitted_camera(const Scene3D& scene, int width, int height) {
@@ -287,7 +294,8 @@ Camera fitted_camera(const Scene3D& scene, int width, int height) {
   return c;
 }
 
-void detail::render_into_target(const Scene3D& scene, int width, int height, PhaseClock& clock) {
+Scene3D::Layout detail::render_into_target(const Scene3D& scene, int width, int height,
+                                           PhaseClock& clock) {
   const double k = detail::normalising_scale(scene);
   if (k != 1.0) return render_into_target(scene.scaled(k), width, height, clock);
   detail::target().begin(width, height, true, kWhite);
@@ -297,6 +305,7 @@ void detail::render_into_target(const Scene3D& scene, int width, int height, Pha
   detail::draw_geometry(scene, fr);
   detail::draw_overlay(scene, fr);
   clock.lap(&FigureTiming::draw, true);
+  return layout_of(fr);
 }
 
 Image draw(const Scene3D& scene, int width, int height, FigureTiming* timing) {

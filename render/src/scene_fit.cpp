@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <unordered_map>
 
 #include "scene_shapes.h"
 
@@ -84,7 +85,15 @@ const std::vector<Vector3d>& unit_outline(Scene3D::Shape shape, double torus_min
 // Everything the image must show: surfaces and thick lines (labels are the caller's).
 std::vector<FitPoint> fit_points(const Scene3D& scene, double geo) {
   using S = Scene3D::Shape;
+  std::size_t n = 0;
+  for (const Scene3D::Object& o : scene.objects()) {
+    n += o.shape == S::kTube     ? o.path.size()
+         : o.shape == S::kCustom ? o.mesh.positions.size()
+                                 : unit_outline(o.shape, o.torus_minor).size();
+  }
+  for (const Scene3D::Polyline& pl : scene.polylines()) n += pl.points.size();
   std::vector<FitPoint> out;
+  out.reserve(n + scene.labels().size());
   for (const Scene3D::Object& o : scene.objects()) {
     if (o.shape == S::kTube) {
       for (const Vector3d& p : o.path) out.push_back({p, o.tube_radius});
@@ -118,15 +127,91 @@ struct Axes {
   double focal, cx, cy;
 };
 
+// Bounds of one kind as they come, kept one a slope: of bounds that share a slope only the
+// tightest constrains, at every d, and rounding keeps that order (c + m d rounds
+// monotonically in c). Most points share their slopes (all but those carrying text
+// boxes), and come in runs of one slope (a polyline's, a surface's): the last slope is
+// looked at first.
+class Tightest {
+ public:
+  explicit Tightest(bool keep_max) : keep_max_(keep_max) {}
+  void add(const Bound& b) {
+    if (last_ >= bounds_.size() || bounds_[last_].m != b.m) {
+      const auto it = slot_.find(b.m);
+      if (it == slot_.end()) {
+        last_ = bounds_.size();
+        slot_.emplace(b.m, last_);
+        bounds_.push_back(b);
+        return;
+      }
+      last_ = it->second;
+    }
+    double& c = bounds_[last_].c;
+    c = keep_max_ ? std::max(c, b.c) : std::min(c, b.c);
+  }
+  std::vector<Bound> take() { return std::move(bounds_); }
+
+ private:
+  bool keep_max_;
+  std::vector<Bound> bounds_;
+  std::unordered_map<double, std::size_t> slot_;
+  std::size_t last_ = 0;
+};
+
+// The legend's corners a < alpha, b < beta, grouped by their two slopes; of a group only
+// those no other corner of the group contains are kept.
+class Corners {
+ public:
+  void add(const Bound& a, const Bound& b) {
+    const std::pair<double, double> slopes{a.m, b.m};
+    if (last_ >= groups_.size() || groups_[last_].first != slopes) {
+      const auto it = slot_.find(slopes);
+      if (it == slot_.end()) {
+        slot_.emplace(slopes, groups_.size());
+        groups_.push_back({slopes, {}});
+        last_ = groups_.size() - 1;
+      } else {
+        last_ = it->second;
+      }
+    }
+    groups_[last_].second.push_back({a.c, b.c});
+  }
+  void take(std::vector<Bound>& a_legend, std::vector<Bound>& b_legend) {
+    for (auto& [slopes, cs] : groups_) {
+      // by alpha descending: a corner is kept only if its beta beats every wider one's
+      std::sort(cs.begin(), cs.end(), std::greater<>());
+      double best_beta = -std::numeric_limits<double>::infinity();
+      for (const auto& [ca, cb] : cs) {
+        if (cb <= best_beta) continue;
+        best_beta = cb;
+        a_legend.push_back({ca, slopes.first});
+        b_legend.push_back({cb, slopes.second});
+      }
+    }
+  }
+
+ private:
+  struct PairHash {
+    std::size_t operator()(const std::pair<double, double>& p) const {
+      return std::hash<double>()(p.first) * 31 + std::hash<double>()(p.second);
+    }
+  };
+  using Group = std::pair<std::pair<double, double>, std::vector<std::pair<double, double>>>;
+  std::vector<Group> groups_;
+  std::unordered_map<std::pair<double, double>, std::size_t, PairHash> slot_;
+  std::size_t last_ = 0;
+};
+
 // What the points ask of the shift (a, b) at a distance d: a_min <= a <= a_max and
 // b_min <= b <= b_max keep them in the region; a < a_legend and b < b_legend put one under
 // the legend. With the least distance that keeps them in front of the eye, and their extent.
+// Only the bounds that can constrain are kept: the fit is the same, bit for bit, at a cost
+// in distinct slopes rather than points (a live view fits a motion's many frames at once).
 struct FitBounds {
   std::vector<Bound> a_min, a_max, b_min, b_max, a_legend, b_legend;
   double d_min = 0, extent = 0;
 };
 
-// Each point's bounds, one of each kind a point, in the points' order.
 FitBounds point_bounds(const std::vector<FitPoint>& points, const Axes& ax,
                        const ScreenRect& region, const ScreenRect& legend, double margin) {
   const bool ortho = ax.ortho, has_legend = !legend.empty();
@@ -138,15 +223,10 @@ FitBounds point_bounds(const std::vector<FitPoint>& points, const Axes& ax,
   auto right_of = [&](double x, double z, double r, double k) {
     return Bound{x - r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
   };
-  const std::size_t n = points.size();
+  Tightest a_min(true), b_min(true), a_max(false), b_max(false);
+  Corners corners;
   FitBounds out;
-  out.a_min.resize(n), out.a_max.resize(n), out.b_min.resize(n), out.b_max.resize(n);
-  if (has_legend) {
-    out.a_legend.resize(n);
-    out.b_legend.resize(n);
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    FitPoint p = points[i];
+  for (FitPoint p : points) {
     // A text box wider than the region cannot fit whole: fit what can be.
     const double wx = p.left + p.right, wy = p.up + p.down;
     const double max_w = 0.9 * (region.x1 - region.x0), max_h = 0.9 * (region.y1 - region.y0);
@@ -154,59 +234,21 @@ FitBounds point_bounds(const std::vector<FitPoint>& points, const Axes& ax,
     if (wy > max_h) p.up *= max_h / wy, p.down *= max_h / wy;
     const Vector3d q = p.p - ax.target;
     const double x = q.dot(ax.s), y = q.dot(ax.u), z = ortho ? 0.0 : q.dot(ax.f), r = p.radius;
-    out.a_min[i] = left_of(x, z, r, (region.x1 - cx - p.right) / focal);
-    out.a_max[i] = right_of(x, z, r, (region.x0 - cx + p.left) / focal);
-    out.b_min[i] = left_of(y, z, r, (cy - region.y0 - p.up) / focal);
-    out.b_max[i] = right_of(y, z, r, (cy - region.y1 + p.down) / focal);
+    a_min.add(left_of(x, z, r, (region.x1 - cx - p.right) / focal));
+    a_max.add(right_of(x, z, r, (region.x0 - cx + p.left) / focal));
+    b_min.add(left_of(y, z, r, (cy - region.y0 - p.up) / focal));
+    b_max.add(right_of(y, z, r, (cy - region.y1 + p.down) / focal));
     if (has_legend) {
-      out.a_legend[i] = left_of(x, z, r, (legend.x0 - margin - cx - p.right) / focal);
-      out.b_legend[i] = left_of(y, z, r, (cy - legend.y1 - margin - p.up) / focal);
+      corners.add(left_of(x, z, r, (legend.x0 - margin - cx - p.right) / focal),
+                  left_of(y, z, r, (cy - legend.y1 - margin - p.up) / focal));
     }
     if (!ortho) out.d_min = std::max(out.d_min, r - z);
     out.extent = std::max(out.extent, q.norm() + r);
   }
+  out.a_min = a_min.take(), out.a_max = a_max.take();
+  out.b_min = b_min.take(), out.b_max = b_max.take();
+  corners.take(out.a_legend, out.b_legend);
   return out;
-}
-
-// The tightest bound of each slope (the greatest of lower bounds, the least of upper).
-void keep_tightest(std::vector<Bound>& bounds, bool keep_max) {
-  std::map<double, double> by_slope;
-  for (const Bound& bd : bounds) {
-    auto [it, fresh] = by_slope.emplace(bd.m, bd.c);
-    if (!fresh) it->second = keep_max ? std::max(it->second, bd.c) : std::min(it->second, bd.c);
-  }
-  bounds.clear();
-  for (const auto& [m, c] : by_slope) bounds.push_back({c, m});
-}
-
-// Most points share their bounds' slopes (all but those carrying text boxes): of such
-// bounds only the tightest constrains, at every d, and rounding keeps that order
-// (c + m d rounds monotonically in c). So each kind keeps one bound a slope, and the
-// legend's corners those no other corner of the same slopes contains: the fit is the
-// same, bit for bit, at a cost in distinct slopes rather than points (a live view
-// fits a motion's many frames at once).
-void keep_constraining(FitBounds& fb) {
-  keep_tightest(fb.a_min, true);
-  keep_tightest(fb.b_min, true);
-  keep_tightest(fb.a_max, false);
-  keep_tightest(fb.b_max, false);
-  std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> corners;
-  for (std::size_t i = 0; i < fb.a_legend.size(); ++i) {
-    corners[{fb.a_legend[i].m, fb.b_legend[i].m}].push_back({fb.a_legend[i].c, fb.b_legend[i].c});
-  }
-  fb.a_legend.clear();
-  fb.b_legend.clear();
-  for (auto& [slopes, cs] : corners) {
-    // by alpha descending: a corner is kept only if its beta beats every wider one's
-    std::sort(cs.begin(), cs.end(), std::greater<>());
-    double best_beta = -std::numeric_limits<double>::infinity();
-    for (const auto& [ca, cb] : cs) {
-      if (cb <= best_beta) continue;
-      best_beta = cb;
-      fb.a_legend.push_back({ca, slopes.first});
-      fb.b_legend.push_back({cb, slopes.second});
-    }
-  }
 }
 
 // The shifts that keep every point in the region at a distance d.
@@ -291,7 +333,7 @@ std::pair<double, double> centred_shift(const FitBounds& fb, double d) {
 // corner (a_hi, b_hi), the scene moved furthest left and down, is the last to clear it.
 // Bisection finds the least d that fits; orthographic views are the case z = 0, sec = 1,
 // of height 2 d tan(fov / 2).
-Camera fitted(Camera cam, std::vector<FitPoint> points, const ScreenRect& region,
+Camera fitted(Camera cam, const std::vector<FitPoint>& points, const ScreenRect& region,
               const ScreenRect& legend, double margin, int width, int height) {
   if (!cam.fit || points.empty()) return cam;
   Vector3d f = cam.target - cam.eye;
@@ -306,8 +348,7 @@ Camera fitted(Camera cam, std::vector<FitPoint> points, const ScreenRect& region
   if (region.empty()) return cam;
   const Axes ax{cam.target, f, s, u, ortho, 0.5 * height / tan_half, 0.5 * width, 0.5 * height};
 
-  FitBounds fb = point_bounds(points, ax, region, legend, margin);
-  keep_constraining(fb);
+  const FitBounds fb = point_bounds(points, ax, region, legend, margin);
   const std::optional<double> d = least_distance(fb);
   if (!d) return cam;
   const auto [a, b] = centred_shift(fb, *d);

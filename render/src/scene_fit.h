@@ -50,7 +50,7 @@ std::vector<FitPoint> fit_points(const Scene3D& scene, double geometry_scale);
 
 /// The camera moved along its line of sight and sideways (direction and up kept) so every
 /// point lies in `region` and clear of `legend` by `margin` (unchanged if cam.fit is off).
-Camera fitted(Camera cam, std::vector<FitPoint> points, const ScreenRect& region,
+Camera fitted(Camera cam, const std::vector<FitPoint>& points, const ScreenRect& region,
               const ScreenRect& legend, double margin, int width, int height);
 
 /// Depth range of the points seen from a camera, padded a little.

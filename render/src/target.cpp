@@ -153,8 +153,10 @@ void Target::begin(int width, int height, bool depth, Color clear) {
     gl.GenTextures(1, &resolve_tex_);
     gl.BindTexture(GL_TEXTURE_2D, resolve_tex_);
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // shown pixel for pixel, where nearest sampling is exact, and on a software
+    // rasteriser (llvmpipe) much cheaper than linear
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl.BindTexture(GL_TEXTURE_2D, 0);
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolve_tex_, 0);
     check_complete("resolve");

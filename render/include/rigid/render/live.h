@@ -8,6 +8,7 @@
 
 #include <memory>
 
+#include "rigid/render/draw.h"
 #include "rigid/render/image.h"
 #include "rigid/render/plot2d.h"
 #include "rigid/render/scene3d.h"
@@ -26,8 +27,9 @@ class LiveImage {
   LiveImage& operator=(const LiveImage&) = delete;
 
   /// Draws the figure at width × height into this image's texture. The context's
-  /// framebuffer binding and viewport are as they were after.
-  void draw(const Scene3D& scene, int width, int height, FigureTiming* timing = nullptr);
+  /// framebuffer binding and viewport are as they were after. A scene's gives back where
+  /// its title, legend and labels went (as layout() would, without placing them again).
+  Scene3D::Layout draw(const Scene3D& scene, int width, int height, FigureTiming* timing = nullptr);
   void draw(const Plot2D& plot, int width, int height, FigureTiming* timing = nullptr);
   /// The last drawing as a GL texture name (RGBA8, first row at the bottom); 0 before any.
   unsigned texture() const;
@@ -38,7 +40,7 @@ class LiveImage {
 
  private:
   template <class Figure>
-  void draw_figure(const Figure& figure, int width, int height, FigureTiming* timing);
+  auto draw_figure(const Figure& figure, int width, int height, FigureTiming* timing);
   std::unique_ptr<detail::Target> target_;
 };
 
