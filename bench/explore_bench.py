@@ -19,6 +19,9 @@ swap:
   (the slider held, the camera kept) and typed (a value entered, after which
   the camera is fitted to the motion's 16 frames again, as --animate fits it);
   football's input is a choice, a click, so both are its typed case;
+- phases: the motion played again with --frame-phases, which waits for the GL at
+  the end of each phase (so these frames are a little slower than the unpaced ones):
+  the median of each phase, where a frame's time goes;
 - idle: the explorer opened with no script and paused (space sent with
   xdotool), its CPU time (utime + stime from /proc) over --idle seconds, as a
   share of one core.
@@ -55,7 +58,7 @@ def percentile(values, p):
     return v[min(len(v) - 1, int(round(p / 100 * (len(v) - 1))))]
 
 
-def run_script(explorer, lab, script, env_extra=None):
+def run_script(explorer, lab, script, env_extra=None, phases=False):
     """Runs the explorer on `lab` with `script`; returns its frame log."""
     with tempfile.TemporaryDirectory() as d:
         script_file = os.path.join(d, "script.txt")
@@ -63,22 +66,37 @@ def run_script(explorer, lab, script, env_extra=None):
         with open(script_file, "w") as f:
             f.write(script)
         env = dict(os.environ, **(env_extra or {}))
-        subprocess.run(XVFB + [explorer, lab, "--script", script_file, "--frame-log", log],
+        subprocess.run(XVFB + [explorer, lab, "--script", script_file, "--frame-log", log]
+                       + (["--frame-phases"] if phases else []),
                        check=True, env=env, stdout=subprocess.DEVNULL, timeout=600)
         with open(log) as f:
             return json.load(f)
 
 
-def frame_times(explorer, lab, frames, env_extra=None):
+def frame_times(explorer, lab, frames, env_extra=None, phases=False):
     # the first frames build fonts, shaders and buffers: left out
     warm = 10
     if lab in ("lamina_tensor", "tire_balancing"):
         body = "".join("turn 2 0\nframes 1\n" for _ in range(frames + warm))
     else:
         body = f"play {(frames + warm) / 30:.4f}\n"
-    log = run_script(explorer, lab, body + "quit\n", env_extra)
+    log = run_script(explorer, lab, body + "quit\n", env_extra, phases)
     t = [f["seconds"] for f in log["frames"]][warm:]
     return log, t
+
+
+# A frame's phases, as --frame-phases names them, in the order a frame goes through them.
+PHASES = ("actions", "scene", "scene_setup", "scene_layout", "scene_draw", "scene_resolve",
+          "widgets", "widgets_drawn", "shown")
+
+
+def frame_phases(explorer, lab, frames):
+    """The median of each phase over the motion played with --frame-phases."""
+    log, t = frame_times(explorer, lab, frames, phases=True)
+    timed = log["frames"][10:]
+    out = {p: statistics.median(f["phases"][p] for f in timed) for p in PHASES}
+    out["frame"] = statistics.median(t)
+    return out
 
 
 def latencies(explorer, lab, moves, how):
@@ -156,7 +174,7 @@ def main():
         print("explore_bench: xvfb-run not found: skipped", file=sys.stderr)
         json.dump([], open(args.out, "w"))
         return
-    entries, rows = [], []
+    entries, rows, phase_rows = [], [], []
     renderer = ""
     for lab in labs:
         log, msaa = frame_times(args.explorer, lab, args.frames)
@@ -166,6 +184,11 @@ def main():
                         "set" if MOVES[lab][0] == "--preset" else "drag")
         typed = latencies(args.explorer, lab, args.moves, "set")
         idle = idle_cpu(args.explorer, lab, args.idle)
+        phases = frame_phases(args.explorer, lab, args.frames)
+        entries.append({"group": "explore", "case": lab, "kind": "frame_phases",
+                        "tool": "rigidlab", "seconds": phases["frame"], "phases": phases,
+                        "size": "1280x720", "renderer": renderer})
+        phase_rows.append((lab, phases))
         for kind, t in (("frame_msaa4", msaa), ("frame_ssaa2x2", ssaa), ("latency_drag", lat),
                         ("latency_typed", typed)):
             entries.append({"group": "explore", "case": lab, "kind": kind, "tool": "rigidlab",
@@ -187,6 +210,12 @@ def main():
         idle_text = "n/a" if idle is None else f"{100 * idle:.1f} %"
         print(f"| {lab} | {1e3 * a:.1f} | {1e3 * b:.1f} | {1e3 * c:.1f} | {1e3 * d:.1f} | "
               f"{1e3 * e:.1f} | {1e3 * f:.1f} | {1e3 * g:.1f} | {1e3 * h:.1f} | {idle_text} |")
+    print("\nwhere a frame's time goes, 4x MSAA (ms, medians; each phase waited for)")
+    print("| lab | " + " | ".join(PHASES) + " | frame |")
+    print("|---|" + "---|" * (len(PHASES) + 1))
+    for lab, p in phase_rows:
+        print(f"| {lab} | " + " | ".join(f"{1e3 * p[k]:.2f}" for k in PHASES)
+              + f" | {1e3 * p['frame']:.1f} |")
 
 
 if __name__ == "__main__":

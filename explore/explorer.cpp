@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <system_error>
@@ -111,8 +112,16 @@ std::string Explorer::command_line() const {
 // ---- the one point a frame where the state changes ------------------------------
 
 void Explorer::frame(double seconds) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
   sync(seconds);
+  const auto t1 = Clock::now();
   build_ui();
+  if (!timed_) return;
+  const auto t2 = Clock::now();
+  phases_.actions = std::chrono::duration<double>(t1 - t0).count();
+  phases_.scene = views_.scene_timing();
+  phases_.widgets = std::chrono::duration<double>(t2 - t1).count() - phases_.scene.total();
 }
 
 void Explorer::sync(double seconds) {

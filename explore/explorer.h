@@ -85,6 +85,19 @@ class Explorer {
   const ViewState& view() const { return view_; }
   /// The views as drawn, for a test to read.
   const Views& views() const { return views_; }
+  /// Where the last frame's time went, in seconds: the queued actions applied (a changed
+  /// input's compute() with them), the scene's parts (Views::SceneTiming), and the rest of
+  /// the window's widgets built. Kept only after timed(true), which waits for the GL at
+  /// the end of each of the scene's phases.
+  struct FramePhases {
+    double actions = 0, widgets = 0;
+    Views::SceneTiming scene;
+  };
+  void timed(bool on) {
+    timed_ = on;
+    views_.timed(on);
+  }
+  const FramePhases& phases() const { return phases_; }
   /// Whether a lab asked for is still opening (the one before is shown meanwhile).
   bool opening() const { return loader_.opening(); }
   /// Whether an animation is being written.
@@ -124,7 +137,9 @@ class Explorer {
   Views views_;
   LabLoader loader_;
   std::vector<Action> queued_;
-  bool script_held_ = false;  // a script's `drag` holds its slider this frame
+  bool script_held_ = false;
+  bool timed_ = false;
+  FramePhases phases_;  // a script's `drag` holds its slider this frame
   std::optional<Recording> recording_;
   std::string screenshot_path_;
   std::unique_ptr<Script> script_;

@@ -76,6 +76,7 @@ struct WindowGl {
   PFNGLREADPIXELSPROC ReadPixels = nullptr;
   PFNGLBINDTEXTUREPROC BindTexture = nullptr;
   PFNGLTEXPARAMETERIPROC TexParameteri = nullptr;
+  PFNGLFINISHPROC Finish = nullptr;
   template <class F>
   static void load(F& f, const char* name) {
     f = reinterpret_cast<F>(glfwGetProcAddress(name));
@@ -90,8 +91,9 @@ struct WindowGl {
     load(ReadPixels, "glReadPixels");
     load(BindTexture, "glBindTexture");
     load(TexParameteri, "glTexParameteri");
+    load(Finish, "glFinish");
     return Viewport && ClearColor && Clear && BindFramebuffer && ReadBuffer && PixelStorei &&
-           ReadPixels && BindTexture && TexParameteri;
+           ReadPixels && BindTexture && TexParameteri && Finish;
   }
   // The back buffer just drawn, rows top to bottom.
   rigid::render::Image read_back(int w, int h) const {
@@ -154,6 +156,7 @@ std::string apply_lab_options(
 // What the command line asks for.
 struct Options {
   std::string lab = "top_nutation", script_path, size = "1280x720", frame_log;
+  bool frame_phases = false;
   std::vector<std::string> lab_options;  // the lab's own, as on its command line
   int width = 0, height = 0;
   std::vector<rigid::lab::LabEntry> labs;
@@ -170,6 +173,9 @@ void describe(CLI::App& app, Options& o) {
                  "write each frame's wall time (and whether the inputs changed in it) to FILE "
                  "as JSON on exit, for bench/")
       ->type_name("FILE");
+  app.add_flag("--frame-phases", o.frame_phases,
+               "with --frame-log: each frame's time by phase too (the GL waited for at the end "
+               "of each, which slows the frame a little)");
   app.set_version_flag("--version", std::string("rigidlab-explore ") + RIGID_VERSION);
   app.footer(
       "In the window: drag the scene to turn it, the wheel to zoom, a double click to reset the "
@@ -251,6 +257,8 @@ std::optional<int> read_options(int argc, char** argv, Options& o) {
   if (!o.frame_log.empty()) {
     if (const std::string why = rigid::explore::output_refusal(o.frame_log); !why.empty())
       return fail("--frame-log", why);
+  } else if (o.frame_phases) {
+    return fail("--frame-phases", "needs --frame-log: the phases go in its file");
   }
   if (!o.script_path.empty()) {
     std::vector<std::string> names;
@@ -347,14 +355,21 @@ void nearest_font_atlas(const WindowGl& gl) {
   done = atlas;
 }
 
+// Where a frame's time went, with --frame-phases: the explorer's own phases, then the
+// window's widgets drawn (the GL waited for) and the frame shown.
+struct WindowPhases {
+  double widgets_drawn = 0, shown = 0;
+};
+
 // One frame: the explorer's UI built and drawn, a screenshot taken, the frame shown.
 void draw_frame(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer& explorer,
-                double seconds) {
+                double seconds, WindowPhases* phases) {
   ImGui_ImplOpenGL3_NewFrame();
   nearest_font_atlas(gl);
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   explorer.frame(seconds);
+  const auto built = std::chrono::steady_clock::now();
   ImGui::Render();
   cap_drawable(window);
   int fw = 0, fh = 0;
@@ -366,14 +381,36 @@ void draw_frame(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer
   gl.ClearColor(bg.x, bg.y, bg.z, 1.0f);
   gl.Clear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (phases) gl.Finish();
   explorer.after_render();
+  const auto shown = std::chrono::steady_clock::now();
   glfwSwapBuffers(window);
+  if (phases) {
+    const auto now = std::chrono::steady_clock::now();
+    phases->widgets_drawn = std::chrono::duration<double>(shown - built).count();
+    phases->shown = std::chrono::duration<double>(now - shown).count();
+  }
+}
+
+// A frame's phases as the frame log writes them.
+nlohmann::json phases_json(const rigid::explore::Explorer::FramePhases& e, const WindowPhases& w) {
+  return {{"actions", e.actions},
+          {"widgets", e.widgets},
+          {"scene", e.scene.scene},
+          {"scene_setup", e.scene.drawing.setup},
+          {"scene_layout", e.scene.drawing.layout},
+          {"scene_draw", e.scene.drawing.draw},
+          {"scene_resolve", e.scene.drawing.resolve},
+          {"widgets_drawn", w.widgets_drawn},
+          {"shown", w.shown}};
 }
 
 // The frames until the window closes, waiting for events while nothing moves; each
 // frame's time into `frames` if a log is asked for.
 void loop(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer& explorer, bool log,
-          nlohmann::json& frames) {
+          bool timed, nlohmann::json& frames) {
+  explorer.timed(timed);
+  WindowPhases phases;
   // After an event ImGui needs a frame or two to settle (hover, release): a few more
   // frames are drawn before the loop waits again.
   int settle = 3;
@@ -390,12 +427,13 @@ void loop(GLFWwindow* window, const WindowGl& gl, rigid::explore::Explorer& expl
     const double dt = std::chrono::duration<double>(now - last).count();
     last = now;
     const long generation = explorer.session().generation();
-    draw_frame(window, gl, explorer, dt);
+    draw_frame(window, gl, explorer, dt, timed ? &phases : nullptr);
     if (log) {
       frames.push_back(
           {{"seconds",
             std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count()},
            {"changed", explorer.session().generation() != generation}});
+      if (timed) frames.back()["phases"] = phases_json(explorer.phases(), phases);
     }
     // A display without vertical sync (Xvfb, some drivers) would let a playing motion
     // take every cycle: frames are paced to 60 a second (a script runs unpaced).
@@ -443,7 +481,7 @@ int explore(GLFWwindow* window, Options& o) {
     } else {
       if (o.script) explorer.run(std::move(o.script));
       nlohmann::json frames = nlohmann::json::array();
-      loop(window, gl, explorer, !o.frame_log.empty(), frames);
+      loop(window, gl, explorer, !o.frame_log.empty(), o.frame_phases, frames);
       status = explorer.status();
       if (!o.frame_log.empty()) {
         if (const std::string why = write_frame_log(o, frames); !why.empty()) {

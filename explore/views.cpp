@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <utility>
 
@@ -31,6 +32,10 @@ std::pair<int, int> begin_view(const char* name, ViewRect at) {
 // The smallest text of a figure in a view, in the framebuffer's pixels.
 double figure_text_px() {
   return kFigureTextPx * ui_scale() * ImGui::GetIO().DisplayFramebufferScale.y;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // GL's rows run bottom-up: the texture is shown flipped.
@@ -73,14 +78,18 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
   const auto [pw, ph] = begin_view("Scene", at);
   const ImGuiIO& io = ImGui::GetIO();
   const bool any = cache.shown(s, v) != nullptr;
+  scene_timing_ = {};
   if (any) {
     const Drawn want{s.generation(),   v.scene_choice,   pw,  ph, v.time, v.orbit,
                      v.hidden_version, figure_text_px(), true};
     if (!(scene_drawn_.valid && scene_drawn_ == want)) {
       try {
+        const auto start = std::chrono::steady_clock::now();
         render::Scene3D scene = cache.view_scene(s, v, pw, ph);
         scene.min_text_px = figure_text_px();
-        legend_box_ = scene_image_.draw(scene, pw, ph).legend;
+        if (timed_) scene_timing_.scene = seconds_since(start);
+        legend_box_ =
+            scene_image_.draw(scene, pw, ph, timed_ ? &scene_timing_.drawing : nullptr).legend;
         draw_error_.clear();
       } catch (const std::exception& e) {
         draw_error_ = e.what();

@@ -34,6 +34,16 @@ class Views {
   void plot(const lab::Session& s, const ViewState& v, ViewRect at);
   /// The scene's texture as last drawn (what the window shows of it).
   render::Image scene_pixels() const { return scene_image_.read(); }
+  /// Where the scene's time went in the last frame that drew it: the scene made and seen
+  /// through the camera (the CPU's), then its drawing's phases, each waited for (so only
+  /// when asked: timed(true)); zero in a frame that drew no scene.
+  struct SceneTiming {
+    double scene = 0;
+    render::FigureTiming drawing;
+    double total() const { return scene + drawing.total(); }
+  };
+  void timed(bool on) { timed_ = on; }
+  const SceneTiming& scene_timing() const { return scene_timing_; }
 
  private:
   // What a view's texture was drawn from: it is drawn again when this changes.
@@ -47,6 +57,8 @@ class Views {
   Drawn scene_drawn_, plot_drawn_;
   std::vector<TimeCursor> cursors_;
   std::string draw_error_;
+  bool timed_ = false;
+  SceneTiming scene_timing_;
 };
 
 }  // namespace rigid::explore

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -323,4 +324,32 @@ TEST_CASE("explore: the explorer ended during a recording ends its lab and nothi
     for (const auto& entry : fs::directory_iterator(dir))
       CHECK(entry.path().filename() == "session.txt");
   }
+}
+
+TEST_CASE("explore: a frame's phases lie within its time and need the log they go in") {
+  const fs::path dir = fresh_dir("phases");
+  const Run alone = run_explorer("poinsot --frame-phases", "", dir);
+  CHECK(alone.status == 2);
+  CHECK(alone.one_error_line());
+  CHECK(alone.err.find("--frame-phases: needs --frame-log") != std::string::npos);
+  const fs::path log = dir / "frames.json";
+  const Run run = run_explorer("poinsot --frame-phases --frame-log " + log.string(),
+                               "frames 2\nplay 0.2\nquit\n", dir);
+  REQUIRE(run.status == 0);
+  const nlohmann::json frames = nlohmann::json::parse(read_file(log))["frames"];
+  REQUIRE(frames.size() >= 8);
+  int drew_scene = 0;
+  for (const nlohmann::json& f : frames) {
+    // the phases are disjoint stretches of the frame's wall time, each timed by one clock
+    double sum = 0;
+    for (const auto& [name, seconds] : f["phases"].items()) {
+      INFO(name);
+      CHECK(seconds.get<double>() >= -1e-6);  // widgets: a difference of two readings
+      sum += seconds.get<double>();
+    }
+    CHECK(sum <= f["seconds"].get<double>() + 1e-6);
+    if (f["phases"]["scene_draw"].get<double>() > 0) ++drew_scene;
+  }
+  // playing, each frame draws the scene at its own time
+  CHECK(drew_scene >= 6);
 }
