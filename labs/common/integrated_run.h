@@ -23,8 +23,11 @@
 namespace rigid::lab {
 
 /// A lab's own run takes at most this many steps: more is refused rather than left to hang.
-inline constexpr std::size_t kMaxRunSteps = 20'000'000;
-/// The work of a lab's own run, in right-hand-side evaluations: rk4's 20M steps, so a
+/// The most work any input may ask is then about a second on a 2-core laptop (rk4's 4M
+/// steps of the heavy top, or vern9's 16M evaluations: 0.5 to 1 s here), a wait a live
+/// view can show.
+inline constexpr std::size_t kMaxRunSteps = 4'000'000;
+/// The work of a lab's own run, in right-hand-side evaluations: rk4's 4M steps, so a
 /// fixed-step run is refused by its step count before it starts, never half-way; an
 /// adaptive run is refused when it reaches the cap. The same on every machine, unlike
 /// a wall-clock budget.

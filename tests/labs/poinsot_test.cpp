@@ -4,7 +4,6 @@
 // figures handed over and the motion: poinsot_motion_test.cpp.
 #include "poinsot/poinsot.h"
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -12,6 +11,7 @@
 #include <functional>
 
 #include "equal_cost_checks.h"
+#include "rigid/format.h"
 #include "lab_library.h"
 #include "poinsot_inputs.h"
 
@@ -332,8 +332,8 @@ TEST_CASE("poinsot: a run too long for the budget is refused naming the toleranc
       FAIL("the run was not refused");
     } catch (const InputError& e) {
       CHECK(e.input == "--tolerance");
-      CHECK(e.rule.find(fmt::format("needs more than {:g} right-hand-side evaluations",
-                                    static_cast<double>(budget))) != std::string::npos);
+      CHECK(e.rule.find("needs more than " + rigid::format_number(static_cast<double>(budget)) +
+                        " right-hand-side evaluations") != std::string::npos);
     }
   }
 }
