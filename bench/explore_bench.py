@@ -86,7 +86,7 @@ def frame_times(explorer, lab, frames, env_extra=None, phases=False):
 
 
 # A frame's phases, as --frame-phases names them, in the order a frame goes through them.
-PHASES = ("actions", "scene", "scene_setup", "scene_layout", "scene_draw", "scene_resolve",
+PHASES = ("actions", "scene", "scene_setup", "scene_layout", "scene_draw", "scene_resolve", "plot",
           "widgets", "widgets_drawn", "shown")
 
 

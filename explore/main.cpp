@@ -401,6 +401,7 @@ nlohmann::json phases_json(const rigid::explore::Explorer::FramePhases& e, const
           {"scene_layout", e.scene.drawing.layout},
           {"scene_draw", e.scene.drawing.draw},
           {"scene_resolve", e.scene.drawing.resolve},
+          {"plot", e.scene.plot},
           {"widgets_drawn", w.widgets_drawn},
           {"shown", w.shown}};
 }

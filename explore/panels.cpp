@@ -179,13 +179,20 @@ void lab_heading(const PanelContext& c) {
 }
 
 // The figure chosen for export, and its size; whether the lab has figures.
+// Its name is the one last seen while the figures are not described for the inputs (a
+// change's frame need not describe them); the list describes them as it opens.
 bool figure_choice(const PanelContext& c) {
-  const auto& figures = c.session.figures();
-  if (figures.empty()) return false;
+  std::string& shown = c.view.export_figure_name;
   int& chosen = c.view.export_figure;
-  chosen = std::min<int>(chosen, static_cast<int>(figures.size()) - 1);
+  if (shown.empty() || c.session.figures_described()) {
+    const auto& figures = c.session.figures();
+    if (figures.empty()) return false;
+    chosen = std::min<int>(chosen, static_cast<int>(figures.size()) - 1);
+    shown = figures[chosen].name;
+  }
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
-  if (ImGui::BeginCombo("##figure", figures[chosen].name.c_str())) {
+  if (ImGui::BeginCombo("##figure", shown.c_str())) {
+    const auto& figures = c.session.figures();
     for (int k = 0; k < static_cast<int>(figures.size()); ++k) {
       if (ImGui::Selectable(figures[k].name.c_str(), k == chosen)) chosen = k;
     }
@@ -380,13 +387,21 @@ void numbers_panel(const lab::Session& s, float x, float width, float height) {
 
 namespace {
 
-// A view's choice among `names`, `width` wide.
+// A view's choice among `names`, `width` wide. The motion, first where the lab has one,
+// is named without the lab's figures described; the list asks for them when it opens.
 void view_combo(const PanelContext& c, const char* id, bool scenes, int choice, float width) {
-  const std::vector<std::string> names = view_choices(c.session, scenes);
+  std::vector<std::string> names;
+  const std::optional<std::string> lead = lead_choice(c.session, scenes);
+  if (lead && choice == 0 && !c.session.figures_described()) {
+    names.push_back(*lead);
+  } else {
+    names = view_choices(c.session, scenes);
+  }
   if (names.empty()) return;
   choice = std::min<int>(choice, static_cast<int>(names.size()) - 1);
   ImGui::SetNextItemWidth(width);
   if (ImGui::BeginCombo(id, names[choice].c_str())) {
+    if (names.size() == 1) names = view_choices(c.session, scenes);
     for (int k = 0; k < static_cast<int>(names.size()); ++k) {
       if (ImGui::Selectable(names[k].c_str(), k == choice))
         c.queue.emplace_back(action::Show{scenes, names[k]});

@@ -10,11 +10,16 @@ namespace rigid::explore {
 
 const char* const kExactGhost = "the exact motion (faint): the drift is the gap";
 
-std::vector<std::string> view_choices(const lab::Session& s, bool scenes) {
+std::optional<std::string> lead_choice(const lab::Session& s, bool scenes) {
   const lab::Animation* motion = s.animation();
   const bool lead = scenes ? motion != nullptr : motion != nullptr && bool(motion->strip);
+  if (!lead) return std::nullopt;
+  return scenes ? "motion" : "the motion's strip";
+}
+
+std::vector<std::string> view_choices(const lab::Session& s, bool scenes) {
   std::vector<std::string> names;
-  if (lead) names.push_back(scenes ? "motion" : "the motion's strip");
+  if (auto lead = lead_choice(s, scenes)) names.push_back(*lead);
   for (const lab::NamedFigure& f : s.figures()) {
     if (f.is_scene() == scenes) names.push_back(f.name);
   }
@@ -31,6 +36,8 @@ const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& n
 std::optional<render::Plot2D> shown_plot(const lab::Session& s, const ViewState& v) {
   const lab::Animation* motion = s.animation();
   const bool strip = motion != nullptr && motion->strip;
+  // the motion's strip, first of the choices, needs none of the lab's figures described
+  if (strip && v.plot_choice == 0) return motion->strip(v.time);
   const auto names = view_choices(s, false);
   if (names.empty()) return std::nullopt;
   const std::size_t k = std::min<std::size_t>(v.plot_choice, names.size() - 1);
@@ -38,9 +45,9 @@ std::optional<render::Plot2D> shown_plot(const lab::Session& s, const ViewState&
   return std::get<render::Plot2D>(figure_named(s, names[k])->figure);
 }
 
-std::vector<TimeCursor> time_cursors(const render::Plot2D& plot, int width, int height) {
+std::vector<TimeCursor> time_cursors(const render::Plot2D& plot,
+                                     const render::Plot2D::Layout& layout) {
   std::vector<TimeCursor> out;
-  const render::Plot2D::Layout layout = render::layout(plot, width, height);
   for (int r = 0, k = 0; r < plot.rows(); ++r) {
     for (int c = 0; c < plot.cols(); ++c, ++k) {
       const render::Axis& x = plot.panel(r, c).x;
@@ -77,11 +84,14 @@ const SceneCache::Envelope& SceneCache::envelope(const lab::Session& s, const Vi
 
 const render::Scene3D* SceneCache::shown(const lab::Session& s, const ViewState& v) {
   const lab::Animation* motion = s.animation();
-  const auto names = view_choices(s, true);
-  if (names.empty()) return nullptr;
-  const std::string& name = names[std::min<std::size_t>(v.scene_choice, names.size() - 1)];
-  if (motion == nullptr || name != "motion") {
-    return &std::get<render::Scene3D>(figure_named(s, name)->figure);
+  // the motion, first of the choices, needs none of the lab's figures described
+  if (motion == nullptr || v.scene_choice != 0) {
+    const auto names = view_choices(s, true);
+    if (names.empty()) return nullptr;
+    const std::string& name = names[std::min<std::size_t>(v.scene_choice, names.size() - 1)];
+    if (motion == nullptr || name != "motion") {
+      return &std::get<render::Scene3D>(figure_named(s, name)->figure);
+    }
   }
   // made once for a state and a time: a frame asks for it more than once
   MotionScene& m = motion_scene_;

@@ -25,6 +25,8 @@ extern const char* const kExactGhost;
 /// The names a view offers: the motion first ("motion", "the motion's strip") where the
 /// lab has one, then the lab's figures of the kind (3D scenes or 2D plots).
 std::vector<std::string> view_choices(const lab::Session& s, bool scenes);
+/// The first of them where it is the motion's (named without describing the figures).
+std::optional<std::string> lead_choice(const lab::Session& s, bool scenes);
 /// The lab's figure named `name`, or nullptr.
 const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& name);
 /// The plot shown: the motion's strip at the time shown, or a 2D figure; none if none.
@@ -41,9 +43,10 @@ struct TimeCursor {
     return frame.x0 + (t - x_lo) / (x_hi - x_lo) * frame.width();
   }
 };
-/// The time cursors of `plot` drawn at width x height: a panel each whose x axis is the
-/// motion's time on a linear scale.
-std::vector<TimeCursor> time_cursors(const render::Plot2D& plot, int width, int height);
+/// The time cursors of `plot` as drawn (`layout`, what its drawing gave back): a panel each
+/// whose x axis is the motion's time on a linear scale.
+std::vector<TimeCursor> time_cursors(const render::Plot2D& plot,
+                                     const render::Plot2D::Layout& layout);
 
 /// What a view's image was drawn from: it is drawn again when any of it changes (a frame
 /// that only lays the same image out again draws nothing).

@@ -65,6 +65,9 @@ struct ViewState {
   // the export section
   std::string export_path, figure_size = "1600x1200";
   int export_figure = 0;
+  /// The export's figure as last named (shown while the lab's figures are not yet described
+  /// for the current inputs: their names do not change with them).
+  std::string export_figure_name;
   std::string message;  ///< the last export's or command's line
   bool message_error = false;
 };

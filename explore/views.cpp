@@ -77,14 +77,15 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
                   std::vector<Action>& queue) {
   const auto [pw, ph] = begin_view("Scene", at);
   const ImGuiIO& io = ImGui::GetIO();
+  const auto start = std::chrono::steady_clock::now();
   const bool any = cache.shown(s, v) != nullptr;
-  scene_timing_ = {};
+  scene_timing_.scene = 0;
+  scene_timing_.drawing = {};
   if (any) {
     const Drawn want{s.generation(),   v.scene_choice,   pw,  ph, v.time, v.orbit,
                      v.hidden_version, figure_text_px(), true};
     if (!(scene_drawn_.valid && scene_drawn_ == want)) {
       try {
-        const auto start = std::chrono::steady_clock::now();
         render::Scene3D scene = cache.view_scene(s, v, pw, ph);
         scene.min_text_px = figure_text_px();
         if (timed_) scene_timing_.scene = seconds_since(start);
@@ -129,10 +130,13 @@ void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int 
   if (!plot) return;
   plot->min_text_px = figure_text_px();
   try {
-    plot_image_.draw(*plot, width, height);
+    // timed, the drawing is waited for (its phases are the plot's one time)
+    render::FigureTiming waited;
+    const render::Plot2D::Layout drawn =
+        plot_image_.draw(*plot, width, height, timed_ ? &waited : nullptr);
     // where the panels against the motion's time are, for the cursor
     if (s.animation() == nullptr || strip) return;
-    cursors_ = time_cursors(*plot, width, height);
+    cursors_ = time_cursors(*plot, drawn);
   } catch (const std::exception& e) {
     draw_error_ = e.what();
   }
@@ -146,8 +150,11 @@ void Views::plot(const lab::Session& s, const ViewState& v, ViewRect at) {
   const bool strip = motion != nullptr && motion->strip && v.plot_choice == 0;
   const Drawn want{s.generation(),   v.plot_choice, pw, ph, strip ? v.time : 0.0, {}, 0,
                    figure_text_px(), true};
+  scene_timing_.plot = 0;
   if (!(plot_drawn_.valid && plot_drawn_ == want)) {
+    const auto start = std::chrono::steady_clock::now();
     draw_plot(s, v, pw, ph, strip);
+    if (timed_) scene_timing_.plot = seconds_since(start);
     const bool valid = plot_drawn_.valid;
     plot_drawn_ = want;
     plot_drawn_.valid = valid;

@@ -34,13 +34,15 @@ class Views {
   void plot(const lab::Session& s, const ViewState& v, ViewRect at);
   /// The scene's texture as last drawn (what the window shows of it).
   render::Image scene_pixels() const { return scene_image_.read(); }
-  /// Where the scene's time went in the last frame that drew it: the scene made and seen
-  /// through the camera (the CPU's), then its drawing's phases, each waited for (so only
-  /// when asked: timed(true)); zero in a frame that drew no scene.
+  /// Where the views' time went in the last frame: the scene made (the motion at the time,
+  /// the envelope its camera is fitted to) and seen through the camera (the CPU's), then its
+  /// drawing's phases, each waited for (so only when asked: timed(true)), and the plot made and
+  /// drawn; zero where a frame drew neither.
   struct SceneTiming {
     double scene = 0;
     render::FigureTiming drawing;
-    double total() const { return scene + drawing.total(); }
+    double plot = 0;
+    double total() const { return scene + drawing.total() + plot; }
   };
   void timed(bool on) { timed_ = on; }
   const SceneTiming& scene_timing() const { return scene_timing_; }

@@ -364,8 +364,8 @@ class Page {
       cursors_.clear();
       if (!plot) return;
       plot->min_text_px = text_px_;
-      plot_image_.draw(*plot, width, height);
-      if (motion != nullptr && !strip) cursors_ = explore::time_cursors(*plot, width, height);
+      const render::Plot2D::Layout drawn = plot_image_.draw(*plot, width, height);
+      if (motion != nullptr && !strip) cursors_ = explore::time_cursors(*plot, drawn);
       plot_drawn_ = want;
     }
     presenter_.show(plot_image_, x, y, canvas_height);

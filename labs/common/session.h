@@ -81,6 +81,9 @@ class Session {
   virtual const Report& report() const = 0;
   /// Its figures (described on first asking after a change).
   virtual const std::vector<NamedFigure>& figures() const = 0;
+  /// Whether figures() has been asked since the last change: a view that shows the motion
+  /// need not describe them (for some labs most of a change's work) to name them.
+  virtual bool figures_described() const = 0;
   /// Its motion (made on first asking after a change), or nullptr for a lab without one.
   virtual const Animation* animation() const = 0;
   /// The body's state at any time of its motion (empty for a lab without one): what
@@ -233,6 +236,7 @@ class ProgramSession final : public Session {
     }
     return *figures_;
   }
+  bool figures_described() const override { return figures_.has_value(); }
 
   const Animation* animation() const override {
     if (lab_.animation == nullptr) return nullptr;

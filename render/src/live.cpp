@@ -1,8 +1,6 @@
 // Figures drawn into textures of the caller's context (live.h).
 #include "rigid/render/live.h"
 
-#include <type_traits>
-
 #include "target.h"
 
 namespace rigid::render {
@@ -34,22 +32,17 @@ auto LiveImage::draw_figure(const Figure& figure, int width, int height, FigureT
     target_->resolve();
     clock.lap(&FigureTiming::resolve, true);
   };
-  if constexpr (std::is_same_v<Figure, Scene3D>) {
-    Scene3D::Layout drawn = detail::render_into_target(figure, width, height, clock);
-    resolve();
-    return drawn;
-  } else {
-    detail::render_into_target(figure, width, height, clock);
-    resolve();
-  }
+  auto drawn = detail::render_into_target(figure, width, height, clock);
+  resolve();
+  return drawn;
 }
 
 Scene3D::Layout LiveImage::draw(const Scene3D& scene, int width, int height, FigureTiming* timing) {
   return draw_figure(scene, width, height, timing);
 }
 
-void LiveImage::draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {
-  draw_figure(plot, width, height, timing);
+Plot2D::Layout LiveImage::draw(const Plot2D& plot, int width, int height, FigureTiming* timing) {
+  return draw_figure(plot, width, height, timing);
 }
 
 unsigned LiveImage::texture() const {

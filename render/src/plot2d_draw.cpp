@@ -220,8 +220,9 @@ using detail::FigurePlan;
 using detail::PanelPlan;
 using detail::plan_figure;
 
-Plot2D::Layout layout(const Plot2D& plot, int width, int height) {
-  const FigurePlan fp = plan_figure(plot, width, height);
+namespace {
+
+Plot2D::Layout layout_of(const FigurePlan& fp) {
   Plot2D::Layout out;
   out.title = fp.title.box;
   out.title_lines = static_cast<int>(fp.title.lines.size());
@@ -229,6 +230,12 @@ Plot2D::Layout layout(const Plot2D& plot, int width, int height) {
   out.legend = fp.legend_box;
   for (const PanelPlan& p : fp.panels) out.panels.push_back(p.report());
   return out;
+}
+
+}  // namespace
+
+Plot2D::Layout layout(const Plot2D& plot, int width, int height) {
+  return layout_of(plan_figure(plot, width, height));
 }
 
 namespace {
@@ -246,7 +253,8 @@ void detail::draw_plot(const Plot2D& plot, int width, int height, Canvas& canvas
   draw_planned(fp, canvas);
 }
 
-void detail::render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock) {
+Plot2D::Layout detail::render_into_target(const Plot2D& plot, int width, int height,
+                                          PhaseClock& clock) {
   const FigurePlan fp = plan_figure(plot, width, height);
   clock.lap(&FigureTiming::layout);
   // No depth buffer for 2D.
@@ -257,6 +265,7 @@ void detail::render_into_target(const Plot2D& plot, int width, int height, Phase
   draw_planned(fp, p);
   p.flush();
   clock.lap(&FigureTiming::draw, true);
+  return layout_of(fp);
 }
 
 // A plot as pixels is drawn by cairo on the CPU (vector.cpp), with the same drawing

@@ -96,8 +96,8 @@ class PhaseClock {
 
 /// Draws a figure into target() at width × height, unresolved (draw.h's draw() resolves
 /// and reads it back; a live view shows the resolved texture).
-void render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock);
-/// A scene's returns where its title, legend and labels went.
+Plot2D::Layout render_into_target(const Plot2D& plot, int width, int height, PhaseClock& clock);
+/// Each gives back where its title, legend and labels or panels went.
 Scene3D::Layout render_into_target(const Scene3D& scene, int width, int height, PhaseClock& clock);
 
 /// Draws the plot with cairo's rasteriser into an image (vector.cpp): no GL buffers,

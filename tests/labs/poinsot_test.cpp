@@ -4,16 +4,15 @@
 // figures handed over and the motion: poinsot_motion_test.cpp.
 #include "poinsot/poinsot.h"
 
-
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
 
 #include "equal_cost_checks.h"
-#include "rigid/format.h"
 #include "lab_library.h"
 #include "poinsot_inputs.h"
+#include "rigid/format.h"
 
 using Catch::Matchers::WithinAbs;
 using rigid::lab::InputError;

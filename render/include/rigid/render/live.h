@@ -27,10 +27,10 @@ class LiveImage {
   LiveImage& operator=(const LiveImage&) = delete;
 
   /// Draws the figure at width × height into this image's texture. The context's
-  /// framebuffer binding and viewport are as they were after. A scene's gives back where
-  /// its title, legend and labels went (as layout() would, without placing them again).
+  /// framebuffer binding and viewport are as they were after. Each gives back where its
+  /// title, legend and labels or panels went (as layout() would, without planning again).
   Scene3D::Layout draw(const Scene3D& scene, int width, int height, FigureTiming* timing = nullptr);
-  void draw(const Plot2D& plot, int width, int height, FigureTiming* timing = nullptr);
+  Plot2D::Layout draw(const Plot2D& plot, int width, int height, FigureTiming* timing = nullptr);
   /// The last drawing as a GL texture name (RGBA8, first row at the bottom); 0 before any.
   unsigned texture() const;
   int width() const;
