@@ -159,7 +159,8 @@ class Tightest {
 };
 
 // The legend's corners a < alpha, b < beta, grouped by their two slopes; of a group only
-// those no other corner of the group contains are kept.
+// those no other corner of the group contains are kept, as they come: a staircase, alpha
+// rising and beta falling, in which a corner is looked up in log time.
 class Corners {
  public:
   void add(const Bound& a, const Bound& b) {
@@ -174,16 +175,17 @@ class Corners {
         last_ = it->second;
       }
     }
-    groups_[last_].second.push_back({a.c, b.c});
+    std::map<double, double>& stair = groups_[last_].second;
+    // contained in the corner of least alpha at or past this one's, the tallest of those
+    auto at = stair.lower_bound(a.c);
+    if (at != stair.end() && at->second >= b.c) return;
+    at = stair.insert_or_assign(at, a.c, b.c);
+    // the corners it contains, narrower and no taller, go
+    while (at != stair.begin() && std::prev(at)->second <= b.c) stair.erase(std::prev(at));
   }
   void take(std::vector<Bound>& a_legend, std::vector<Bound>& b_legend) {
-    for (auto& [slopes, cs] : groups_) {
-      // by alpha descending: a corner is kept only if its beta beats every wider one's
-      std::sort(cs.begin(), cs.end(), std::greater<>());
-      double best_beta = -std::numeric_limits<double>::infinity();
-      for (const auto& [ca, cb] : cs) {
-        if (cb <= best_beta) continue;
-        best_beta = cb;
+    for (const auto& [slopes, stair] : groups_) {
+      for (const auto& [ca, cb] : stair) {
         a_legend.push_back({ca, slopes.first});
         b_legend.push_back({cb, slopes.second});
       }
@@ -196,7 +198,7 @@ class Corners {
       return std::hash<double>()(p.first) * 31 + std::hash<double>()(p.second);
     }
   };
-  using Group = std::pair<std::pair<double, double>, std::vector<std::pair<double, double>>>;
+  using Group = std::pair<std::pair<double, double>, std::map<double, double>>;
   std::vector<Group> groups_;
   std::unordered_map<std::pair<double, double>, std::size_t, PairHash> slot_;
   std::size_t last_ = 0;
@@ -217,11 +219,13 @@ FitBounds point_bounds(const std::vector<FitPoint>& points, const Axes& ax,
   const bool ortho = ax.ortho, has_legend = !legend.empty();
   const double focal = ax.focal, cx = ax.cx, cy = ax.cy;
   // Point left of (below) an edge at slope k: a >= ...; right of (above) it: a <= ... .
+  // (a point's r is most often 0, whose product with the secant is 0 exactly)
+  auto reach = [&](double r, double k) { return r == 0 || ortho ? r : r * std::hypot(1.0, k); };
   auto left_of = [&](double x, double z, double r, double k) {
-    return Bound{x + r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+    return Bound{x + reach(r, k) - k * z, -k};
   };
   auto right_of = [&](double x, double z, double r, double k) {
-    return Bound{x - r * (ortho ? 1 : std::hypot(1.0, k)) - k * z, -k};
+    return Bound{x - reach(r, k) - k * z, -k};
   };
   Tightest a_min(true), b_min(true), a_max(false), b_max(false);
   Corners corners;
