@@ -81,7 +81,11 @@ void Occupancy::add_triangle(const Vector2d& a, const Vector2d& b, const Vector2
       if ((e0 >= 0 && e1 >= 0 && e2 >= 0) || (e0 <= 0 && e1 <= 0 && e2 <= 0)) mark(i, j, weight);
     }
   // Triangles smaller than a cell may hold no cell centre.
-  for (const Vector2d* v : {&a, &b, &c})
+  add_points({&a, &b, &c}, weight);
+}
+
+void Occupancy::add_points(std::initializer_list<const Vector2d*> points, float weight) {
+  for (const Vector2d* v : points)
     if (area_.contains(v->x(), v->y())) mark(col(v->x()), row(v->y()), weight);
 }
 

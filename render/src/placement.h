@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <initializer_list>
 #include <vector>
 
 #include "rigid/render/rect.h"
@@ -36,6 +37,8 @@ class Occupancy {
   void add_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double half_width,
                    float weight);
   /// Marks the cells a triangle covers (centres inside, and the corners' cells).
+  /// The cells of points (a triangle's corners: one smaller than a cell holds no centre).
+  void add_points(std::initializer_list<const Eigen::Vector2d*> points, float weight);
   void add_triangle(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                     float weight);
   /// What the cells a rectangle touches hold.

@@ -90,14 +90,24 @@ Occupancy scene_grid(const Scene3D& scene, const View& view, const Style& st) {
     out = {s.x(), s.y()};
     return s.w() > 0;
   };
-  auto add_mesh = [&](const Mesh& m, const Eigen::Affine3d& t, float w) {
+  // A closed convex surface's back faces lie under its front faces: `front_only` leaves
+  // them out (half the triangles), keeping their corners' cells, which it also covers.
+  auto add_mesh = [&](const Mesh& m, const Eigen::Affine3d& t, float w, bool front_only) {
     std::vector<Vector2d> q(m.positions.size());
     std::vector<char> ok(m.positions.size());
     for (std::size_t i = 0; i < q.size(); ++i)
       ok[i] = screen(t * m.positions[i].cast<double>(), q[i]);
+    // outward faces turn clockwise on the screen (y down), or the other way mirrored
+    const double facing = t.linear().determinant() < 0 ? -1.0 : 1.0;
     for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
       const auto a = m.indices[i], b = m.indices[i + 1], c = m.indices[i + 2];
-      if (ok[a] && ok[b] && ok[c]) grid.add_triangle(q[a], q[b], q[c], w);
+      if (!(ok[a] && ok[b] && ok[c])) continue;
+      const Vector2d ab = q[b] - q[a], ac = q[c] - q[a];
+      if (front_only && facing * (ab.x() * ac.y() - ab.y() * ac.x()) > 0) {
+        grid.add_points({&q[a], &q[b], &q[c]}, w);
+        continue;
+      }
+      grid.add_triangle(q[a], q[b], q[c], w);
     }
   };
   auto add_path = [&](const std::vector<Vector3d>& path, double half_width_px, double radius,
@@ -121,9 +131,10 @@ Occupancy scene_grid(const Scene3D& scene, const View& view, const Style& st) {
     if (o.shape == Scene3D::Shape::kTube)
       add_path(o.path, 1.0, o.tube_radius, w);
     else if (o.shape == Scene3D::Shape::kCustom)
-      add_mesh(o.mesh, o.transform, w);
+      add_mesh(o.mesh, o.transform, w, false);
     else
-      add_mesh(coarse_mesh(o.shape, o.torus_minor), o.transform, w);
+      add_mesh(coarse_mesh(o.shape, o.torus_minor), o.transform, w,
+               !is_open(o.shape) && o.shape != Scene3D::Shape::kTorus);
   }
   for (const Scene3D::Polyline& pl : scene.polylines())
     add_path(pl.points, 0.5 * st.line(pl.width) + 1, 0, 1.0f);
