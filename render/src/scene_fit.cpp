@@ -337,9 +337,10 @@ std::pair<double, double> centred_shift(const FitBounds& fb, double d) {
 // corner (a_hi, b_hi), the scene moved furthest left and down, is the last to clear it.
 // Bisection finds the least d that fits; orthographic views are the case z = 0, sec = 1,
 // of height 2 d tan(fov / 2).
-Camera fitted(Camera cam, const std::vector<FitPoint>& points, const ScreenRect& region,
-              const ScreenRect& legend, double margin, int width, int height) {
-  if (!cam.fit || points.empty()) return cam;
+namespace {
+
+Camera fit(Camera cam, const std::vector<FitPoint>& points, const ScreenRect& region,
+           const ScreenRect& legend, double margin, int width, int height) {
   Vector3d f = cam.target - cam.eye;
   const double eye_distance = f.norm();
   if (!(eye_distance > 0)) return cam;
@@ -364,6 +365,58 @@ Camera fitted(Camera cam, const std::vector<FitPoint>& points, const ScreenRect&
     cam.eye = cam.target - *d * f;
   }
   return cam;
+}
+
+bool same(const Camera& a, const Camera& b) {
+  return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fov_y_deg == b.fov_y_deg &&
+         a.orthographic == b.orthographic && a.ortho_height == b.ortho_height && a.fit == b.fit;
+}
+
+bool same(const ScreenRect& a, const ScreenRect& b) {
+  return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+}
+
+bool same(const std::vector<FitPoint>& a, const std::vector<FitPoint>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const FitPoint& p, const FitPoint& q) {
+                      return p.p == q.p && p.radius == q.radius && p.left == q.left &&
+                             p.right == q.right && p.up == q.up && p.down == q.down;
+                    });
+}
+
+}  // namespace
+
+// The last fit of this thread, kept with everything it was made from: a live view fits
+// its camera again for every typed value, and where the value leaves the scene's extent
+// as it was (the same points, text boxes and legend) the camera is the one it had.
+Camera fitted(Camera cam, const std::vector<FitPoint>& points, const ScreenRect& region,
+              const ScreenRect& legend, double margin, int width, int height) {
+  if (!cam.fit || points.empty()) return cam;
+  struct Last {
+    Camera cam, fitted;
+    std::vector<FitPoint> points;
+    ScreenRect region, legend;
+    double margin = 0;
+    int width = 0, height = 0;
+    bool valid = false;
+  };
+  thread_local Last last;
+  if (last.valid && same(last.cam, cam) && same(last.region, region) && same(last.legend, legend) &&
+      last.margin == margin && last.width == width && last.height == height &&
+      same(last.points, points)) {
+    return last.fitted;
+  }
+  last.valid = false;
+  last.fitted = fit(cam, points, region, legend, margin, width, height);
+  last.cam = cam;
+  last.points = points;
+  last.region = region;
+  last.legend = legend;
+  last.margin = margin;
+  last.width = width;
+  last.height = height;
+  last.valid = true;
+  return last.fitted;
 }
 
 // Depth range of the points seen from a camera, padded a little.

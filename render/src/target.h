@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "gl.h"
+#include "rigid/render/draw.h"
 #include "rigid/render/image.h"
 #include "rigid/render/palette.h"
 #include "rigid/render/plot2d.h"

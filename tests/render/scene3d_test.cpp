@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <thread>
 
 #include "rigid/render/draw.h"
 #include "rigid/render/image.h"
@@ -326,4 +327,29 @@ TEST_CASE("scene3d: a faded scene is the same geometry, faint, under one legend 
   CHECK(f.polylines()[0].color.a == 0.25f);
   CHECK(f.labels().empty());
   CHECK(f.legend_labels() == std::vector<std::string>{"exact"});
+}
+
+TEST_CASE("scene3d: a fit asked again of the same scene is the fit it had, of another its own",
+          "[render][scene3d]") {
+  // A live view asks for its camera on every typed value: where the scene is as it was the
+  // fit is not searched again, and the camera given is the one a fresh search gives.
+  Scene3D a;
+  a.add_sphere({0, 0, 0}, 1.0, {rigid::render::kBlue}, "ball");
+  a.add_polyline({{0, 0, 0}, {2, 0.5, 0.3}}, rigid::render::kOrange, 3.0, "arm");
+  Scene3D b = a;
+  b.add_polyline({{0, 0, 0}, {0, -3, 1}}, rigid::render::kBluishGreen, 3.0, "further");
+  const auto same = [](const rigid::render::Camera& p, const rigid::render::Camera& q) {
+    return p.eye == q.eye && p.target == q.target && p.ortho_height == q.ortho_height;
+  };
+  const rigid::render::Camera first = rigid::render::fitted_camera(a, 800, 600);
+  const rigid::render::Camera other = rigid::render::fitted_camera(b, 800, 600);
+  CHECK_FALSE(same(first, other));  // b reaches further: its eye stands back
+  CHECK((other.eye - other.target).norm() > (first.eye - first.target).norm());
+  CHECK(same(rigid::render::fitted_camera(a, 800, 600), first));
+  CHECK(same(rigid::render::fitted_camera(b, 800, 600), other));
+  CHECK_FALSE(same(rigid::render::fitted_camera(a, 640, 600), first));  // another size
+  // a thread of its own keeps no fit of another's: its search gives the same camera
+  rigid::render::Camera fresh;
+  std::thread([&] { fresh = rigid::render::fitted_camera(a, 800, 600); }).join();
+  CHECK(same(fresh, first));
 }
