@@ -30,8 +30,9 @@ void Occupancy::mark(int i, int j, float weight) {
 
 void Occupancy::add_rect(const ScreenRect& r, float weight) {
   if (!(r.x1 >= area_.x0 && r.x0 <= area_.x1 && r.y1 >= area_.y0 && r.y0 <= area_.y1)) return;
-  for (int j = row(r.y0); j <= row(r.y1); ++j)
-    for (int i = col(r.x0); i <= col(r.x1); ++i) mark(i, j, weight);
+  const int i0 = col(r.x0), i1 = col(r.x1), j1 = row(r.y1);
+  for (int j = row(r.y0); j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) mark(i, j, weight);
 }
 
 void Occupancy::add_segment(const Vector2d& a, const Vector2d& b, double half_width, float weight) {
@@ -74,8 +75,9 @@ void Occupancy::add_triangle(const Vector2d& a, const Vector2d& b, const Vector2
   auto edge = [](const Vector2d& p, const Vector2d& q, double x, double y) {
     return (q.x() - p.x()) * (y - p.y()) - (q.y() - p.y()) * (x - p.x());
   };
-  for (int j = row(y0); j <= row(y1); ++j)
-    for (int i = col(x0); i <= col(x1); ++i) {
+  const int i0 = col(x0), i1 = col(x1), j1 = row(y1);
+  for (int j = row(y0); j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
       const double x = area_.x0 + (i + 0.5) * cell_, y = area_.y0 + (j + 0.5) * cell_;
       const double e0 = edge(a, b, x, y), e1 = edge(b, c, x, y), e2 = edge(c, a, x, y);
       if ((e0 >= 0 && e1 >= 0 && e2 >= 0) || (e0 <= 0 && e1 <= 0 && e2 <= 0)) mark(i, j, weight);
@@ -92,8 +94,9 @@ void Occupancy::add_points(std::initializer_list<const Vector2d*> points, float 
 Cover Occupancy::cover(const ScreenRect& r) const {
   Cover c;
   if (!(r.x1 > area_.x0 && r.x0 < area_.x1 && r.y1 > area_.y0 && r.y0 < area_.y1)) return c;
-  for (int j = row(r.y0); j <= row(r.y1); ++j)
-    for (int i = col(r.x0); i <= col(r.x1); ++i) {
+  const int i0 = col(r.x0), i1 = col(r.x1), j1 = row(r.y1);
+  for (int j = row(r.y0); j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
       const float w = w_[static_cast<std::size_t>(j) * cols_ + i];
       if (w >= 1.0f)
         ++c.hard;
@@ -105,8 +108,9 @@ Cover Occupancy::cover(const ScreenRect& r) const {
 
 bool Occupancy::hard_extent(double x0, double x1, double& top, double& bottom) const {
   int first = -1, last = -1;
+  const int i0 = col(x0), i1 = col(x1);
   for (int j = 0; j < rows_; ++j)
-    for (int i = col(x0); i <= col(x1); ++i)
+    for (int i = i0; i <= i1; ++i)
       if (w_[static_cast<std::size_t>(j) * cols_ + i] >= 1.0f) {
         if (first < 0) first = j;
         last = j;
