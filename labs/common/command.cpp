@@ -10,6 +10,7 @@
 
 #include "common/command_line.h"
 #include "common/command_outputs.h"
+#include "rigid/support/memory.h"
 #include "rigid/support/programs.h"
 #include "rigid/support/text.h"
 
@@ -45,6 +46,13 @@ int run_command(const std::string& name, const std::string& title,
                 int argc, char** argv, const std::function<Computed()>& compute) {
   for (int k = 1; k < argc; ++k) {
     if (std::strcmp(argv[k], "--explore") == 0) return explore(name, argc, argv, k);
+  }
+  // A run that draws makes buffers of tens of MB: malloc's huge pages make them cheap.
+  for (int k = 1; k < argc; ++k) {
+    if (std::strncmp(argv[k], "--figures", 9) == 0 || std::strncmp(argv[k], "--animate", 9) == 0) {
+      support::restart_with_huge_pages(argv);
+      break;
+    }
   }
   // A closed pipe, or a file past the size limit (ulimit -f), is a failed write to
   // report, not a silent death by SIGPIPE or SIGXFSZ.

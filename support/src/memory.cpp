@@ -2,10 +2,12 @@
 #include "rigid/support/memory.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -92,6 +94,20 @@ std::string bytes_text(std::uint64_t bytes) {
   if (b < 1e9) return fmt::format("{:.0f} MB", b / 1e6);
   if (b < 1e12) return fmt::format("{:.{}f} GB", b / 1e9, b < 1e10 ? 1 : 0);
   return fmt::format("{:.{}f} TB", b / 1e12, b < 1e13 ? 1 : 0);
+}
+
+void restart_with_huge_pages(char** argv) {
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if (tunables != nullptr && std::strstr(tunables, "glibc.malloc.hugetlb") != nullptr) return;
+  const std::string before = tunables != nullptr ? tunables : "";
+  const std::string with = before.empty() ? kHugePagesTunable : before + ":" + kHugePagesTunable;
+  if (::setenv("GLIBC_TUNABLES", with.c_str(), 1) != 0) return;
+  ::execv("/proc/self/exe", argv);
+  // exec refused: go on as this process, its environment as it was
+  if (tunables != nullptr)
+    ::setenv("GLIBC_TUNABLES", before.c_str(), 1);
+  else
+    ::unsetenv("GLIBC_TUNABLES");
 }
 
 }  // namespace rigid::support

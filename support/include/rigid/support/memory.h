@@ -32,4 +32,17 @@ std::optional<MemoryBudget> memory_budget();
 /// A number of bytes as a person reads it: "940 MB", "3.4 GB" (decimal units, 2 or 3 digits).
 std::string bytes_text(std::uint64_t bytes);
 
+/// The tunable that has glibc's malloc back its large blocks with transparent huge pages.
+inline constexpr char kHugePagesTunable[] = "glibc.malloc.hugetlb=1";
+
+/// Starts this program again, the same arguments and environment, with glibc's malloc
+/// asking for huge pages (GLIBC_TUNABLES gains kHugePagesTunable), unless GLIBC_TUNABLES
+/// already says how malloc takes them. A drawing's buffers (some 70 MB at 1600x1200,
+/// zeroed by Mesa as they are made) then fault in 2 MiB at a time instead of 4 KiB: on
+/// this project's machine the first figure of a process went from 0.37 s to 0.15 s. A
+/// tunable is read only as a program starts, hence the restart, done before any work.
+/// Returns only where it cannot (no /proc/self/exe, or exec refused), the environment
+/// as it was.
+void restart_with_huge_pages(char** argv);
+
 }  // namespace rigid::support
