@@ -6,7 +6,9 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -124,4 +126,58 @@ TEST_CASE("memory: rigidlab figures runs as many labs at once as the budget hold
   for (const auto& entry : fs::directory_iterator(dir / "f")) figures += entry.is_regular_file();
   CHECK(figures == 24);
   fs::remove_all(dir);
+}
+
+TEST_CASE("memory: a drawing run starts again once with malloc's huge pages, the user's kept",
+          "[draws]") {
+  // The restart is a drawing run's first act: the environment the kernel shows for the
+  // lab's process is then the restarted program's. Each case: the user's GLIBC_TUNABLES
+  // (none, another tunable, huge pages refused) and what the drawing run holds.
+  const fs::path dir = fresh("huge_pages");
+  const auto tunables_of = [&](const char* given) {
+    if (given != nullptr)
+      ::setenv("GLIBC_TUNABLES", given, 1);
+    else
+      ::unsetenv("GLIBC_TUNABLES");
+    rigid::support::Subprocess lab(
+        fs::path(RIGID_LAB_DIR) / "poinsot",
+        {"poinsot", "--animate", (dir / "film.webp").string(), "--duration", "30"},
+        {rigid::support::Redirect::null(), rigid::support::Redirect::null()});
+    ::unsetenv("GLIBC_TUNABLES");
+    // glibc, reading its tunables, ends each in the process's first copy of the
+    // environment (what the kernel shows): the ones after the first follow as entries
+    const auto read = [&] {
+      std::ifstream environ("/proc/" + std::to_string(lab.pid()) + "/environ", std::ios::binary);
+      std::string entry, tunables;
+      bool in_tunables = false;
+      while (std::getline(environ, entry, '\0')) {
+        if (entry.rfind("GLIBC_TUNABLES=", 0) == 0) {
+          tunables = entry.substr(15);
+          in_tunables = true;
+        } else if (in_tunables && entry.rfind("glibc.", 0) == 0) {
+          tunables += ":" + entry;
+        } else {
+          in_tunables = false;
+        }
+      }
+      return tunables;
+    };
+    // polled until the program shows huge pages named (at most 10 s: a loaded machine),
+    // then once more a while later: a restart is its first act, and its last
+    std::string seen;
+    for (int k = 0; k < 1000 && seen.find("glibc.malloc.hugetlb") == std::string::npos; ++k) {
+      seen = read();
+      if (lab.poll()) break;
+      ::usleep(10000);
+    }
+    ::usleep(300000);
+    if (!lab.poll()) seen = read();
+    lab.terminate();
+    return seen;
+  };
+  CHECK(tunables_of(nullptr) == "glibc.malloc.hugetlb=1");
+  CHECK(tunables_of("glibc.malloc.check=0") == "glibc.malloc.check=0:glibc.malloc.hugetlb=1");
+  CHECK(tunables_of("glibc.malloc.hugetlb=0") == "glibc.malloc.hugetlb=0");  // the user's word
+  // the film stopped half-way is no file
+  CHECK(fs::is_empty(dir));
 }
