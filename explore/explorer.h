@@ -137,9 +137,9 @@ class Explorer {
   Views views_;
   LabLoader loader_;
   std::vector<Action> queued_;
-  bool script_held_ = false;
+  bool script_held_ = false;  // a script's `drag` holds its slider this frame
   bool timed_ = false;
-  FramePhases phases_;  // a script's `drag` holds its slider this frame
+  FramePhases phases_;
   std::optional<Recording> recording_;
   std::string screenshot_path_;
   std::unique_ptr<Script> script_;

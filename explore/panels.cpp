@@ -390,18 +390,15 @@ namespace {
 // A view's choice among `names`, `width` wide. The motion, first where the lab has one,
 // is named without the lab's figures described; the list asks for them when it opens.
 void view_combo(const PanelContext& c, const char* id, bool scenes, int choice, float width) {
-  std::vector<std::string> names;
   const std::optional<std::string> lead = lead_choice(c.session, scenes);
-  if (lead && choice == 0 && !c.session.figures_described()) {
-    names.push_back(*lead);
-  } else {
-    names = view_choices(c.session, scenes);
-  }
+  const bool lead_only = lead && choice == 0 && !c.session.figures_described();
+  std::vector<std::string> names =
+      lead_only ? std::vector<std::string>{*lead} : view_choices(c.session, scenes);
   if (names.empty()) return;
   choice = std::min<int>(choice, static_cast<int>(names.size()) - 1);
   ImGui::SetNextItemWidth(width);
   if (ImGui::BeginCombo(id, names[choice].c_str())) {
-    if (names.size() == 1) names = view_choices(c.session, scenes);
+    if (lead_only) names = view_choices(c.session, scenes);
     for (int k = 0; k < static_cast<int>(names.size()); ++k) {
       if (ImGui::Selectable(names[k].c_str(), k == choice))
         c.queue.emplace_back(action::Show{scenes, names[k]});

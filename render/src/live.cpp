@@ -12,12 +12,12 @@ LiveImage::~LiveImage() = default;
 template <class Figure>
 auto LiveImage::draw_figure(const Figure& figure, int width, int height, FigureTiming* timing) {
   using detail::gl;
-  // The window's own state, given back after: its framebuffer and viewport.
+  // The window's own state, given back however the drawing ends: its framebuffer and
+  // viewport.
   GLint draw_fbo = 0, read_fbo = 0, viewport[4] = {};
   gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_fbo);
   gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_fbo);
   gl.GetIntegerv(GL_VIEWPORT, viewport);
-  // the window's state given back however the drawing ends
   struct Restore {
     const GLint draw_fbo, read_fbo, *viewport;
     ~Restore() {
@@ -28,12 +28,9 @@ auto LiveImage::draw_figure(const Figure& figure, int width, int height, FigureT
   } restore{draw_fbo, read_fbo, viewport};
   const detail::UseTarget use(*target_);
   detail::PhaseClock clock(timing);
-  const auto resolve = [&] {
-    target_->resolve();
-    clock.lap(&FigureTiming::resolve, true);
-  };
   auto drawn = detail::render_into_target(figure, width, height, clock);
-  resolve();
+  target_->resolve();
+  clock.lap(&FigureTiming::resolve, true);
   return drawn;
 }
 
