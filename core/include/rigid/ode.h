@@ -49,6 +49,8 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #include <boost/numeric/odeint/integrate/integrate_times.hpp>
+// Before Bulirsch-Stoer: its binomial coefficients, multiplied out exactly.
+#include "rigid/odeint_binomial.h"
 #include <boost/numeric/odeint/stepper/bulirsch_stoer_dense_out.hpp>
 #include <boost/numeric/odeint/stepper/generation.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
