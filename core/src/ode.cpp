@@ -79,6 +79,24 @@ int evaluations_per_step(Method m) {
   return facts(m).evaluations_per_step;
 }
 
+double evaluation_work(Method m) {
+  const bool weighty =
+      m == Method::kSplitting || m == Method::kSplitting4 || m == Method::kBulirschStoer;
+  return weighty ? 4.0 : 1.0;
+}
+
+namespace {
+thread_local double t_work_done = 0.0;
+}  // namespace
+
+double work_done() {
+  return t_work_done;
+}
+
+void detail::add_work(Method m, std::size_t evaluations) {
+  t_work_done += static_cast<double>(evaluations) * evaluation_work(m);
+}
+
 void validate_run(const OdeOptions& o, const std::vector<double>& times, bool after_step) {
   if (times.empty()) throw std::invalid_argument("sample times must not be empty");
   for (std::size_t i = 0; i < times.size(); ++i) {

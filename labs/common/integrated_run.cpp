@@ -23,6 +23,12 @@ std::string projecting_methods() {
   }
   return list;
 }
+
+// True when `ranked` falls short of the run's `periods` by more than their rounding (a
+// run of --periods 1000 is 1000 periods to an ulp or two either way).
+bool fewer_periods(double ranked, double periods) {
+  return ranked < periods * (1.0 - 1e-12);
+}
 }  // namespace
 
 InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,
@@ -56,6 +62,10 @@ InputTable<IntegrationInputs> integration_inputs(const std::string& method_help,
   return t;
 }
 
+std::size_t max_run_evaluations(Method m) {
+  return static_cast<std::size_t>(kMaxRunWork / evaluation_work(m));
+}
+
 bool fixed_step(const IntegrationInputs& in) {
   return in.method != "exact" && !is_adaptive(method_from_name(in.method));
 }
@@ -65,12 +75,13 @@ OdeOptions integration_options(Report& report, const IntegrationInputs& in, bool
   OdeOptions options;
   options.abs_tol = options.rel_tol = in.tolerance;
   options.step = in.step.value_or(default_step);
-  options.max_steps = kMaxRunSteps;
   options.method = in.method == "exact" ? Method::kDopri5 : method_from_name(in.method);
   options.project_invariants = in.project;
-  // Every lab finishes or refuses within seconds, whatever the step count.
-  options.max_evaluations =
-      options.method == Method::kBulirschStoer ? kMaxBulirschStoerEvaluations : kMaxRunEvaluations;
+  // Every lab finishes or refuses within a second, whatever the step count.
+  options.max_evaluations = max_run_evaluations(options.method);
+  const int per_step = evaluations_per_step(options.method);
+  options.max_steps = per_step > 0 ? options.max_evaluations / static_cast<std::size_t>(per_step)
+                                   : options.max_evaluations;
   // Never silent: an option nothing uses is said to be unused.
   const bool exact = in.method == "exact";
   const bool tolerance_set = in.tolerance != IntegrationInputs{}.tolerance;
@@ -128,6 +139,24 @@ void report_run(Report& report, const std::string& option, const std::vector<dou
   report.count("steps", "steps taken", steps);
 }
 
+RankedPeriods ranked_periods(double run_periods, double work_left,
+                             const std::function<double(double)>& work_of) {
+  RankedPeriods r{std::min(run_periods, kMaxRankedPeriods), ""};
+  if (fewer_periods(r.periods, run_periods)) {
+    r.limit = fmt::format("at most {:g} are ranked", kMaxRankedPeriods);
+  }
+  if (work_of(r.periods) <= work_left) return r;
+  // The work grows with the periods: bisect for the most that fit, to a hundredth.
+  double lo = 0.0, hi = r.periods;
+  while (hi - lo > 0.01 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (work_of(mid) <= work_left ? lo : hi) = mid;
+  }
+  r.periods = lo >= 1.0 ? std::floor(lo) : 0.0;
+  r.limit = "as many as the work budget left after the run pays for";
+  return r;
+}
+
 void check_phase_digits(double t_end, double scale) {
   if (t_end > 1e9 * scale) {
     throw InputError("--t-end", fmt::format("at most 1e9 periods ({:g} s) for these inputs: "
@@ -150,6 +179,7 @@ RunPlan plan_run(Report& report, const IntegrationInputs& in, bool compared, dou
   }
   plan.times = sample_times(t_end, scale, plan.fixed ? plan.options.step : 0.0);
   plan.t_end = t_end;
+  plan.work_start = work_done();
   return plan;
 }
 
@@ -244,7 +274,17 @@ void report_comparisons(Report& report, const MethodComparisons& comparisons,
     report.count_json("evaluations_" + json_key(name), c.evaluations);
     report.count_json("steps_" + json_key(name), c.steps);
   }
-  if (!comparisons.at_cost.empty()) report_equal_cost(report, comparisons, words);
+  if (!comparisons.at_cost.empty()) {
+    report_equal_cost(report, comparisons, words);
+  } else if (!comparisons.at_cost_limit.empty()) {
+    report.section("which method to use");
+    report.result_none("recommended_method", "use", "",
+                       "not ranked: " + comparisons.at_cost_limit + " pays for no period");
+  }
+  report.result(
+      "work",
+      fmt::format("work done (Runge-Kutta evaluations' worth; at most {:g})", kMaxComputeWork),
+      comparisons.work, "");
 }
 
 double end_time(const std::optional<double>& t_end, const std::optional<double>& periods,
@@ -257,10 +297,11 @@ double end_time(const std::optional<double>& t_end, const std::optional<double>&
 void report_equal_cost(Report& report, const MethodComparisons& comparisons,
                        const ExactErrorWords& words) {
   const double periods = comparisons.at_cost_periods;
-  const std::string over = comparisons.run_periods > periods
-                               ? fmt::format("the first {:g} of the run's {:.6g} periods", periods,
-                                             comparisons.run_periods)
-                               : fmt::format("the run's {:.4g} periods", periods);
+  const std::string over =
+      fewer_periods(periods, comparisons.run_periods)
+          ? fmt::format("the first {:g} of the run's {:.6g} periods ({})", periods,
+                        comparisons.run_periods, comparisons.at_cost_limit)
+          : fmt::format("the run's {:.4g} periods", periods);
   report.section(
       fmt::format("which method to use: every method at {:g} evaluations a period "
                   "over {}, the most accurate first ({})",

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -22,20 +23,19 @@
 
 namespace rigid::lab {
 
-/// A lab's own run takes at most this many steps: more is refused rather than left to hang.
-/// The most work any input may ask is then about a second on a 2-core laptop (rk4's 4M
-/// steps of the heavy top, or vern9's 16M evaluations: 0.5 to 1 s here), a wait a live
-/// view can show.
-inline constexpr std::size_t kMaxRunSteps = 4'000'000;
-/// The work of a lab's own run, in right-hand-side evaluations: rk4's 4M steps, so a
-/// fixed-step run is refused by its step count before it starts, never half-way; an
-/// adaptive run is refused when it reaches the cap. The same on every machine, unlike
-/// a wall-clock budget.
-inline constexpr std::size_t kMaxRunEvaluations = 4 * kMaxRunSteps;
-/// Bulirsch-Stoer's cap: the bookkeeping of its extrapolation tables costs several
-/// times an evaluation of these small right-hand sides, so a tenth of the others'
-/// keeps its longest run about as long.
-inline constexpr std::size_t kMaxBulirschStoerEvaluations = kMaxRunEvaluations / 10;
+/// The work (rigid::work_done's unit: a Runge-Kutta evaluation of these small bodies)
+/// a lab's own run may do: 16M, rk4's 4M steps or vern9's 16M evaluations, 0.3 to 0.6 s
+/// on a 2-core laptop. Counted, not timed, so every machine gives the same answer. A
+/// fixed-step run that would pass it is refused by its step count before it starts; an
+/// adaptive run is refused when it reaches it.
+inline constexpr double kMaxRunWork = 16e6;
+/// The evaluations of method m that make kMaxRunWork (rk4, vern*: 16M; a splitting,
+/// Bulirsch-Stoer: 4M).
+std::size_t max_run_evaluations(Method m);
+/// All the work one answer may do: the lab's own run, every method at its settings and
+/// the comparison at equal cost, which gets what the others left, over fewer periods if
+/// it must (compare_every_method). About a second on a 2-core laptop (bench/).
+inline constexpr double kMaxComputeWork = 40e6;
 /// Each method of the comparison at the lab's settings takes at most this many steps:
 /// the comparison is an aside, 2e5 steps in all whatever the lab's own run takes.
 inline constexpr std::size_t kMaxComparisonSteps = 20'000;
@@ -114,6 +114,7 @@ OdeOptions integration_options(Report& report, const IntegrationInputs& in, bool
 /// t_end beyond check_phase_digits.
 struct RunPlan {
   OdeOptions options;
+  double work_start = 0.0;  ///< rigid::work_done() when the plan was made
   std::vector<double> times;
   bool fixed = false;
   double t_end = 0.0;
@@ -217,6 +218,9 @@ struct MethodComparisons {
   std::vector<MethodComparison> at_cost;
   double at_cost_periods = 0.0;  ///< the periods the comparison at equal cost ran
   double run_periods = 0.0;      ///< the run's own length in periods
+  /// Why at_cost_periods is below run_periods: "" (it is not), or its limit in words.
+  std::string at_cost_limit;
+  double work = 0.0;  ///< the work of the whole answer (rigid::work_done's unit)
 };
 
 /// A method as a command line chooses it: "vern8", or "vern8 --project".
@@ -232,10 +236,22 @@ void rank_by_error(std::vector<MethodComparison>& at_cost);
 void report_comparisons(Report& report, const MethodComparisons& comparisons,
                         const OdeOptions& settings, const ExactErrorWords& words);
 
+/// The periods the comparison at equal cost ranks over for a run of `run_periods`:
+/// at most kMaxRankedPeriods, and no more than `work_left` pays for (`work_of(periods)`,
+/// rigid::work_at_cost, grows with them), with why it is fewer than the run's, in
+/// words (MethodComparisons::at_cost_limit); none (0) where not even one period fits.
+struct RankedPeriods {
+  double periods = 0.0;
+  std::string limit;
+};
+RankedPeriods ranked_periods(double run_periods, double work_left,
+                             const std::function<double(double)>& work_of);
+
 /// Every method against the exact motion at the plan's settings (at most
 /// kMaxComparisonSteps steps each) and, with `at_cost`, at kEqualCostEvaluations
-/// evaluations a `period` over the run's length (at most kMaxRankedPeriods periods),
-/// ranked (rank_by_error), reported (report_comparisons).
+/// evaluations a `period` over the run's length (ranked_periods: within kMaxComputeWork
+/// with the work done since the plan), ranked (rank_by_error), reported
+/// (report_comparisons) with the whole answer's work ("work").
 template <class Problem>
 MethodComparisons compare_every_method(Report& report, const Problem& problem,
                                        const typename Problem::Exact& exact, const RunPlan& plan,
@@ -245,11 +261,18 @@ MethodComparisons compare_every_method(Report& report, const Problem& problem,
       compare_methods(problem, exact, plan.times, period, plan.options, kMaxComparisonSteps);
   c.run_periods = plan.t_end / period;
   if (at_cost) {
-    c.at_cost_periods = std::min(c.run_periods, kMaxRankedPeriods);
-    c.at_cost =
-        compare_methods_at_cost(problem, exact, period, c.at_cost_periods, kEqualCostEvaluations);
-    rank_by_error(c.at_cost);
+    const RankedPeriods ranked =
+        ranked_periods(c.run_periods, kMaxComputeWork - (work_done() - plan.work_start),
+                       [](double p) { return work_at_cost<Problem>(p, kEqualCostEvaluations); });
+    c.at_cost_periods = ranked.periods;
+    c.at_cost_limit = ranked.limit;
+    if (c.at_cost_periods > 0.0) {
+      c.at_cost =
+          compare_methods_at_cost(problem, exact, period, c.at_cost_periods, kEqualCostEvaluations);
+      rank_by_error(c.at_cost);
+    }
   }
+  c.work = work_done() - plan.work_start;
   report_comparisons(report, c, plan.options, words);
   return c;
 }

@@ -8,12 +8,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
-#include <sstream>
 #include <string>
 #include <variant>
 
 #include "common/registry.h"
-#include "common/writers.h"
+#include "lab_entries.h"
 
 using rigid::lab::GivenTexts;
 using rigid::lab::InputKind;
@@ -22,14 +21,10 @@ using rigid::lab::Json;
 using rigid::lab::LabEntry;
 using rigid::lab::Refusal;
 using rigid::lab::Session;
+using rigid::test::json_of;
+using rigid::test::lab;
 
 namespace {
-
-std::string json_of(const Session& s) {
-  std::ostringstream text;
-  rigid::lab::write_json(text, s.report(), rigid::lab::RunOutputs{}, "test");
-  return text.str();
-}
 
 // Every number in a JSON value is finite (nlohmann writes NaN as null, so the values
 // are looked at before writing).
@@ -93,15 +88,6 @@ void check_shown(const Session& s) {
       if (motion->strip) CHECK(finite_plot(motion->strip(share * motion->seconds)));
     }
   }
-}
-
-const LabEntry& lab(const std::string& name) {
-  static const std::vector<LabEntry> labs = rigid::lab::all_labs();
-  for (const LabEntry& e : labs) {
-    if (e.name == name) return e;
-  }
-  FAIL("no lab " << name);
-  return labs.front();
 }
 
 // The refusal's message ("" if the texts computed).

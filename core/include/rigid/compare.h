@@ -50,6 +50,11 @@ inline constexpr std::size_t kEnergyInvariant = 0;
 /// equal cost (compare_methods_at_cost): at most this many, however long the run.
 inline constexpr double kCostCalibrationPeriods = 10.0;
 
+/// A run of a comparison at equal cost is stopped (not completed) past this many times
+/// its budget: its tolerance was calibrated to within 5 % of it on the first periods,
+/// and a periodic motion costs the same in every period.
+inline constexpr double kCostRunCap = 1.25;
+
 /// One sample of a run.
 template <class State, std::size_t K>
 struct RunSample {
@@ -173,6 +178,7 @@ struct ProblemCode {
                                                                double period, double periods,
                                                                double evaluations_per_period,
                                                                double samples_per_period);
+  static double work_at_cost(double periods, double evaluations_per_period);
 };
 
 }  // namespace detail
@@ -250,6 +256,15 @@ std::vector<MethodComparison> compare_methods_at_cost(
     double periods, double evaluations_per_period, double samples_per_period = 8.0) {
   return detail::ProblemCode<Problem>::compare_methods_at_cost(
       problem, reference, period, periods, evaluations_per_period, samples_per_period);
+}
+
+/// The most work (work_done's unit) compare_methods_at_cost over `periods` periods at
+/// `evaluations_per_period` can do: every run stopped at kCostRunCap times its budget,
+/// every adaptive method's tolerance search at kCostSearchCap times its calibration's.
+/// (Against a reference run, the reference runs come on top.)
+template <class Problem>
+double work_at_cost(double periods, double evaluations_per_period) {
+  return detail::ProblemCode<Problem>::work_at_cost(periods, evaluations_per_period);
 }
 
 /// n equally spaced times from t0 to t1 inclusive (n >= 2), or {t0} for n = 1.

@@ -100,6 +100,7 @@ Run<Problem> ProblemCode<Problem>::integrate(const Problem& problem, const State
       const auto observe = [&](const decltype(xs)& s, double t) { record(split.leave(s), t); };
       stats = integrate_on_grid(split, split, xs, times, o, observe);
       stats.evaluations = stats.steps * static_cast<std::size_t>(evaluations_per_step(o.method));
+      add_work(o.method, stats.evaluations);
     } else {
       throw std::invalid_argument(std::string(method_name(o.method)) +
                                   ": this problem has no splitting");
@@ -210,6 +211,19 @@ std::vector<MethodComparison> compare_at_settings(const Problem& problem,
   return out;
 }
 
+// Calls f(m, project) for every run of a comparison at equal cost: each method the
+// problem can run, and again with its projection where it has one and m can project.
+template <class Problem, class F>
+void for_each_run_at_cost(F f) {
+  for (const Method m : kAllMethods) {
+    if (!can_run<Problem>(m)) continue;
+    for (const bool project : {false, true}) {
+      if (project && !(kHasProjection<Problem> && can_project(m))) continue;
+      f(m, project);
+    }
+  }
+}
+
 // compare_methods_at_cost (compare.h) from x0, each run measured by `errors_of`.
 template <class Problem, class ErrorsOf>
 std::vector<MethodComparison> compare_at_cost(const Problem& problem,
@@ -219,33 +233,42 @@ std::vector<MethodComparison> compare_at_cost(const Problem& problem,
                                               double samples_per_period) {
   const double calibration = std::min(periods, kCostCalibrationPeriods);
   std::vector<MethodComparison> out;
-  for (const Method m : kAllMethods) {
-    if (!can_run<Problem>(m)) continue;
-    for (const bool project : {false, true}) {
-      if (project && !(kHasProjection<Problem> && can_project(m))) continue;
-      const auto run_with = [&](OdeOptions o, double over) {
-        o.project_invariants = project;
-        const auto max_samples = static_cast<std::size_t>(std::ceil(over * samples_per_period)) + 1;
-        const std::vector<double> times = sample_times(
-            over * period, period, is_adaptive(m) ? 0.0 : o.step, samples_per_period, max_samples);
-        return ProblemCode<Problem>::integrate(problem, x0, times, o);
-      };
-      OdeOptions o = settings_at_cost(
-          m, period, calibration, evaluations_per_period,
-          [&](const OdeOptions& trial) { return run_with(trial, calibration).evaluations; });
+  for_each_run_at_cost<Problem>([&](Method m, bool project) {
+    const auto run_with = [&](OdeOptions o, double over) {
       o.project_invariants = project;
-      o.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
-      MethodComparison c;
-      c.options = o;
-      try {
-        measure<Problem>(c, run_with(o, periods), errors_of, period);
-      } catch (const std::exception&) {
-        c = not_completed(o);
-      }
-      out.push_back(std::move(c));
+      const auto max_samples = static_cast<std::size_t>(std::ceil(over * samples_per_period)) + 1;
+      const std::vector<double> times = sample_times(
+          over * period, period, is_adaptive(m) ? 0.0 : o.step, samples_per_period, max_samples);
+      return ProblemCode<Problem>::integrate(problem, x0, times, o);
+    };
+    OdeOptions o = settings_at_cost(
+        m, period, calibration, evaluations_per_period,
+        [&](const OdeOptions& trial) { return run_with(trial, calibration).evaluations; });
+    o.project_invariants = project;
+    o.max_evaluations =
+        static_cast<std::size_t>(std::ceil(kCostRunCap * periods * evaluations_per_period));
+    MethodComparison c;
+    c.options = o;
+    try {
+      measure<Problem>(c, run_with(o, periods), errors_of, period);
+    } catch (const std::exception&) {
+      c = not_completed(o);
     }
-  }
+    out.push_back(std::move(c));
+  });
   return out;
+}
+
+template <class Problem>
+double ProblemCode<Problem>::work_at_cost(double periods, double evaluations_per_period) {
+  const double run = kCostRunCap * periods * evaluations_per_period;
+  const double search =
+      kCostSearchCap * std::min(periods, kCostCalibrationPeriods) * evaluations_per_period;
+  double work = 0.0;
+  for_each_run_at_cost<Problem>([&](Method m, bool) {
+    work += evaluation_work(m) * (run + (is_adaptive(m) ? search : 0.0));
+  });
+  return work;
 }
 
 template <class Problem>

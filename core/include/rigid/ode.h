@@ -50,7 +50,6 @@
 #endif
 #include <boost/numeric/odeint/integrate/integrate_times.hpp>
 // Before Bulirsch-Stoer: its binomial coefficients, multiplied out exactly.
-#include "rigid/odeint_binomial.h"
 #include <boost/numeric/odeint/stepper/bulirsch_stoer_dense_out.hpp>
 #include <boost/numeric/odeint/stepper/generation.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
@@ -58,6 +57,7 @@
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 
 #include "rigid/ode_options.h"
+#include "rigid/odeint_binomial.h"
 #include "rigid/verner.h"
 // odeint's Eigen support must follow its own headers (it specialises their templates).
 #include <boost/numeric/odeint/external/eigen/eigen.hpp>
@@ -369,21 +369,37 @@ OdeOptions options_at_cost(OdeOptions options, double period, double evaluations
   return at(best);
 }
 
+/// A trial of settings_at_cost's search stops at this many times its budget (its
+/// periods times the evaluations a period): too dear, whatever it would have cost.
+inline constexpr double kCostTrialCap = 4.0;
+/// All the trials of one search spend at most this many times the budget (the searches
+/// on the labs' bodies spent 2 to 10); once a trial could pass it, the search ends
+/// and the best tolerance found so far stands. Work bounded, the same on any machine.
+inline constexpr double kCostSearchCap = 16.0;
+
 /// The settings of method `m` for a run of `periods` periods that costs about
 /// `evaluations_per_period` a period (options_at_cost), each trial run by
 /// `evaluations_of(options)`, which returns its evaluations; a trial that throws
-/// (past its step cap: 4x the budget, each step costing at least one) costs infinity.
+/// (past its cap, kCostTrialCap times the budget) costs infinity, and so does every
+/// trial once kCostSearchCap would be passed (none is run).
 template <class Evaluations>
 OdeOptions settings_at_cost(Method m, double period, double periods, double evaluations_per_period,
                             Evaluations evaluations_of) {
+  const double budget = periods * evaluations_per_period;
   OdeOptions o;
   o.method = m;
-  o.max_steps = static_cast<std::size_t>(4.0 * periods * evaluations_per_period) + 16;
+  o.max_evaluations = static_cast<std::size_t>(std::ceil(kCostTrialCap * budget));
+  double left = kCostSearchCap * budget;
   return options_at_cost(o, period, evaluations_per_period, [&](const OdeOptions& trial) {
+    constexpr double kTooDear = std::numeric_limits<double>::infinity();
+    if (left < static_cast<double>(trial.max_evaluations)) return kTooDear;
     try {
-      return static_cast<double>(evaluations_of(trial)) / periods;
+      const auto evaluations = static_cast<double>(evaluations_of(trial));
+      left -= evaluations;
+      return evaluations / periods;
     } catch (const std::exception&) {
-      return std::numeric_limits<double>::infinity();
+      left -= static_cast<double>(trial.max_evaluations);
+      return kTooDear;
     }
   });
 }
@@ -406,6 +422,12 @@ OdeStats integrate_sampled(const System& system, const State& x0, const std::vec
   // Every evaluation counted, the starting step's two included: the cost of a run,
   // capped by options.max_evaluations.
   std::size_t evaluations = 0;
+  // Counted as work whether the run finishes or stops at its cap.
+  struct Tally {
+    Method method;
+    const std::size_t& evaluations;
+    ~Tally() { detail::add_work(method, evaluations); }
+  } const tally{options.method, evaluations};
   const std::size_t cap = options.max_evaluations > 0 ? options.max_evaluations
                                                       : std::numeric_limits<std::size_t>::max();
   const auto counted = [&system, &evaluations, cap, &options](const State& xs, State& dxdt,

@@ -47,11 +47,27 @@ int fixed_step_order(Method m);
 /// "symplectic splitting, order 2", "adaptive Runge-Kutta, order 5(4)", ...
 std::string_view method_kind(Method m);
 /// Right-hand-side evaluations a fixed-step method makes a step (rk4: 4). A
-/// splitting has no right-hand side: one Strang step, which costs about what one
-/// evaluation does (five rotations, or a kick and a free flow), counts as one, so
-/// the fourth-order splitting (five Strang steps) counts five. 0 for the adaptive
-/// methods, whose evaluations are counted as they happen.
+/// splitting has no right-hand side: one Strang step (five rotations, or a kick and
+/// a free flow) counts as one evaluation, so the fourth-order splitting (five Strang
+/// steps) counts five; the comparison at equal cost counts evaluations so. 0 for the
+/// adaptive methods, whose evaluations are counted as they happen.
 int evaluations_per_step(Method m);
+/// The work of one of method m's evaluations (a splitting's: one Strang step), in
+/// evaluations of a Runge-Kutta method: the unit a budget counts, so that equal work
+/// takes about equal time on any machine, unlike a count of evaluations alone. On the
+/// labs' bodies (the free body, the heavy top; 7 doubles of state) a Strang step costs
+/// 3 to 5 Runge-Kutta evaluations (its rotations' sines and cosines) and a
+/// Bulirsch-Stoer evaluation 2 to 3 (its extrapolation tables): both count 4.
+double evaluation_work(Method m);
+
+/// The work (evaluations weighted by evaluation_work) of every run made on this
+/// thread so far, its rejected steps and a run stopped at its cap included: a caller
+/// that reads it before and after states what an answer cost.
+double work_done();
+namespace detail {
+/// Adds a run's `evaluations` by method m to work_done.
+void add_work(Method m, std::size_t evaluations);
+}  // namespace detail
 
 /// How to integrate, for any system. Set only what differs from the defaults.
 struct OdeOptions {

@@ -16,9 +16,8 @@
 // that its one call sees this specialisation; it is the only caller here.
 #pragma once
 
-#include <cstdint>
-
 #include <boost/math/special_functions/binomial.hpp>
+#include <cstdint>
 
 namespace boost::math {
 

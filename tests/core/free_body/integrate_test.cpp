@@ -444,8 +444,16 @@ TEST_CASE("integrate: at equal cost the splittings' energy does not drift, the o
        {std::pair{PrincipalMoments{pi, 2 * pi, 13 * pi / 5}, Eigen::Vector3d(1, 1, 1)},
         std::pair{PrincipalMoments{1, 2, 3}, Eigen::Vector3d(0.5, 1.0, 0.45)}}) {
     const FreeBodyExact exact(I, w);
+    const double work_before = rigid::work_done();
     const std::vector<MethodComparison> runs =
         compare_methods_at_cost(FreeBodyProblem(I), exact, exact.period(), 100, 200);
+    // its work within the bound a caller budgets by: the runs near their budget, the
+    // searches well inside theirs
+    const double work = rigid::work_done() - work_before;
+    const double bound = rigid::work_at_cost<FreeBodyProblem>(100, 200);
+    INFO("work " << work << " of at most " << bound);
+    CHECK(work <= bound);
+    CHECK(work >= 0.5 * bound);
     // every method, and each that can project a second time with the projection
     const auto projecting = static_cast<std::size_t>(
         std::count_if(kAllMethods.begin(), kAllMethods.end(), can_project));
