@@ -2,6 +2,7 @@
 #include "scene_cache.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "common/figures.h"
 #include "rigid/render/draw.h"
@@ -36,12 +37,14 @@ const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& n
 std::optional<render::Plot2D> shown_plot(const lab::Session& s, const ViewState& v) {
   const lab::Animation* motion = s.animation();
   const bool strip = motion != nullptr && motion->strip;
-  // the motion's strip, first of the choices, needs none of the lab's figures described
-  if (strip && v.plot_choice == 0) return motion->strip(v.time);
+  // the motion's strip, first of the choices, needs none of the lab's figures described;
+  // drawn without its cursor, the same in every frame, the view's cursor laid over it
+  const double no_cursor = std::numeric_limits<double>::quiet_NaN();
+  if (strip && v.plot_choice == 0) return motion->strip(no_cursor);
   const auto names = view_choices(s, false);
   if (names.empty()) return std::nullopt;
   const std::size_t k = std::min<std::size_t>(v.plot_choice, names.size() - 1);
-  if (strip && k == 0) return motion->strip(v.time);
+  if (strip && k == 0) return motion->strip(no_cursor);
   return std::get<render::Plot2D>(figure_named(s, names[k])->figure);
 }
 

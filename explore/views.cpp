@@ -122,8 +122,7 @@ void Views::scene(const lab::Session& s, const ViewState& v, SceneCache& cache, 
   ImGui::End();
 }
 
-void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int height,
-                      bool strip) {
+void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int height) {
   std::optional<render::Plot2D> plot = shown_plot(s, v);
   cursors_.clear();
   plot_drawn_.valid = plot.has_value();
@@ -135,7 +134,7 @@ void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int 
     const render::Plot2D::Layout drawn =
         plot_image_.draw(*plot, width, height, timed_ ? &waited : nullptr);
     // where the panels against the motion's time are, for the cursor
-    if (s.animation() == nullptr || strip) return;
+    if (s.animation() == nullptr) return;
     cursors_ = time_cursors(*plot, drawn);
   } catch (const std::exception& e) {
     draw_error_ = e.what();
@@ -144,16 +143,12 @@ void Views::draw_plot(const lab::Session& s, const ViewState& v, int width, int 
 
 void Views::plot(const lab::Session& s, const ViewState& v, ViewRect at) {
   const auto [pw, ph] = begin_view("Plot", at);
-  const lab::Animation* motion = s.animation();
-  // the motion's strip is drawn again as it plays; another plot once, its time cursor
-  // laid over it
-  const bool strip = motion != nullptr && motion->strip && v.plot_choice == 0;
-  const Drawn want{s.generation(),   v.plot_choice, pw, ph, strip ? v.time : 0.0, {}, 0,
-                   figure_text_px(), true};
+  // drawn once (the motion's strip too), the motion's time cursor laid over it
+  const Drawn want{s.generation(), v.plot_choice, pw, ph, 0.0, {}, 0, figure_text_px(), true};
   scene_timing_.plot = 0;
   if (!(plot_drawn_.valid && plot_drawn_ == want)) {
     const auto start = std::chrono::steady_clock::now();
-    draw_plot(s, v, pw, ph, strip);
+    draw_plot(s, v, pw, ph);
     if (timed_) scene_timing_.plot = seconds_since(start);
     const bool valid = plot_drawn_.valid;
     plot_drawn_ = want;

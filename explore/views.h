@@ -53,7 +53,7 @@ class Views {
   // The plot's panels against the motion's time: where the time cursor goes.
   void legend_button(const ViewState& v, ImVec2 origin, ViewRect at,
                      std::vector<Action>& queue) const;
-  void draw_plot(const lab::Session& s, const ViewState& v, int width, int height, bool strip);
+  void draw_plot(const lab::Session& s, const ViewState& v, int width, int height);
   render::LiveImage scene_image_, plot_image_;
   render::ScreenRect legend_box_;  ///< the scene's legend as drawn, framebuffer pixels
   Drawn scene_drawn_, plot_drawn_;

@@ -67,7 +67,9 @@ struct Animation {
   /// The lab's figure whose scene is scene(0), if one is (named in the JSON).
   std::string still;
   std::function<render::Scene3D(double)> scene;
-  /// A plot at time t drawn across the frame's lower `strip_share` (none if empty).
+  /// A plot at time t drawn across the frame's lower `strip_share` (none if empty), its
+  /// time axis the motion's (Axis::motion_time) and a cursor at t; at a NaN time none,
+  /// the same plot for every frame (a live view draws it once and lays its cursor over).
   std::function<render::Plot2D(double)> strip;
   double strip_share = 0.0;
 };

@@ -75,12 +75,13 @@ render::Plot2D Motion::strip(double t) const {
   render::Plot2D plot;
   render::Panel& panel = plot.panel();
   panel.x = {"t (s)", render::Scale::kLinear, 0, t_end_};
+  panel.x.motion_time = true;
   panel.y.label = "\\omega_i (rad/s)";
   for (int i = 0; i < 3; ++i) {
     panel.add_line(strip_t_, strip_omega_[i], fmt::format("\\omega_{}", i + 1)).color =
         colors::kPrincipal[i];
   }
-  panel.add_ref_line(t, true).color = colors::kMarker;
+  if (!std::isnan(t)) panel.add_ref_line(t, true).color = colors::kMarker;
   // no legend: in a strip this short its box sat on the curves; each omega named in its
   // colour beside its largest swing instead, placed clear of the curves
   panel.legend = render::LegendPlace::kNone;
