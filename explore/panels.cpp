@@ -178,21 +178,17 @@ void lab_heading(const PanelContext& c) {
   ImGui::Separator();
 }
 
-// The figure chosen for export, and its size; whether the lab has figures.
-// Its name is the one last seen while the figures are not described for the inputs (a
-// change's frame need not describe them); the list describes them as it opens.
+// The figure chosen for export, and its size; whether the lab has figures. Named, none
+// described: a change's frame need not describe them.
 bool figure_choice(const PanelContext& c) {
   std::string& shown = c.view.export_figure_name;
   int& chosen = c.view.export_figure;
-  if (shown.empty() || c.session.figures_described()) {
-    const auto& figures = c.session.figures();
-    if (figures.empty()) return false;
-    chosen = std::min<int>(chosen, static_cast<int>(figures.size()) - 1);
-    shown = figures[chosen].name;
-  }
+  const std::vector<lab::FigureName>& figures = c.session.figure_names();
+  if (figures.empty()) return false;
+  chosen = std::min<int>(chosen, static_cast<int>(figures.size()) - 1);
+  shown = figures[chosen].name;
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
   if (ImGui::BeginCombo("##figure", shown.c_str())) {
-    const auto& figures = c.session.figures();
     for (int k = 0; k < static_cast<int>(figures.size()); ++k) {
       if (ImGui::Selectable(figures[k].name.c_str(), k == chosen)) chosen = k;
     }
@@ -223,7 +219,7 @@ void export_section(const PanelContext& c) {
       std::string label = ext;
       for (char& ch : label) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
       if (ImGui::Button(label.c_str())) {
-        const std::string name = s.figures()[v.export_figure].name;
+        const std::string name = s.figure_names()[v.export_figure].name;
         c.queue.emplace_back(action::SaveFigure{name, path_or(s.name() + "_" + name + "." + ext),
                                                 format, v.figure_size});
       }
@@ -387,18 +383,14 @@ void numbers_panel(const lab::Session& s, float x, float width, float height) {
 
 namespace {
 
-// A view's choice among `names`, `width` wide. The motion, first where the lab has one,
-// is named without the lab's figures described; the list asks for them when it opens.
+// A view's choice among its names (view_choices: none of the figures described), `width`
+// wide.
 void view_combo(const PanelContext& c, const char* id, bool scenes, int choice, float width) {
-  const std::optional<std::string> lead = lead_choice(c.session, scenes);
-  const bool lead_only = lead && choice == 0 && !c.session.figures_described();
-  std::vector<std::string> names =
-      lead_only ? std::vector<std::string>{*lead} : view_choices(c.session, scenes);
+  const std::vector<std::string> names = view_choices(c.session, scenes);
   if (names.empty()) return;
   choice = std::min<int>(choice, static_cast<int>(names.size()) - 1);
   ImGui::SetNextItemWidth(width);
   if (ImGui::BeginCombo(id, names[choice].c_str())) {
-    if (lead_only) names = view_choices(c.session, scenes);
     for (int k = 0; k < static_cast<int>(names.size()); ++k) {
       if (ImGui::Selectable(names[k].c_str(), k == choice))
         c.queue.emplace_back(action::Show{scenes, names[k]});

@@ -11,6 +11,9 @@ namespace rigid::explore {
 
 const char* const kExactGhost = "the exact motion (faint): the drift is the gap";
 
+namespace {
+
+// The first of a view's names where it is the motion's.
 std::optional<std::string> lead_choice(const lab::Session& s, bool scenes) {
   const lab::Animation* motion = s.animation();
   const bool lead = scenes ? motion != nullptr : motion != nullptr && bool(motion->strip);
@@ -18,20 +21,19 @@ std::optional<std::string> lead_choice(const lab::Session& s, bool scenes) {
   return scenes ? "motion" : "the motion's strip";
 }
 
+}  // namespace
+
 std::vector<std::string> view_choices(const lab::Session& s, bool scenes) {
   std::vector<std::string> names;
   if (auto lead = lead_choice(s, scenes)) names.push_back(*lead);
-  for (const lab::NamedFigure& f : s.figures()) {
-    if (f.is_scene() == scenes) names.push_back(f.name);
+  for (const lab::FigureName& f : s.figure_names()) {
+    if (f.scene == scenes) names.push_back(f.name);
   }
   return names;
 }
 
 const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& name) {
-  for (const lab::NamedFigure& f : s.figures()) {
-    if (f.name == name) return &f;
-  }
-  return nullptr;
+  return s.figure(name);
 }
 
 std::optional<render::Plot2D> shown_plot(const lab::Session& s, const ViewState& v) {

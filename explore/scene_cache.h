@@ -25,9 +25,7 @@ extern const char* const kExactGhost;
 /// The names a view offers: the motion first ("motion", "the motion's strip") where the
 /// lab has one, then the lab's figures of the kind (3D scenes or 2D plots).
 std::vector<std::string> view_choices(const lab::Session& s, bool scenes);
-/// The first of them where it is the motion's (named without describing the figures).
-std::optional<std::string> lead_choice(const lab::Session& s, bool scenes);
-/// The lab's figure named `name`, or nullptr.
+/// The lab's figure named `name`, described alone (Session::figure), or nullptr.
 const lab::NamedFigure* figure_named(const lab::Session& s, const std::string& name);
 /// The plot shown: the motion's strip at the time shown, or a 2D figure; none if none.
 std::optional<render::Plot2D> shown_plot(const lab::Session& s, const ViewState& v);

@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "rigid/render/plot2d.h"
@@ -57,6 +58,21 @@ class FigureSink {
   virtual void add(const std::string& name, const std::string& caption, render::Plot2D plot) = 0;
   /// A 3D scene.
   virtual void add(const std::string& name, const std::string& caption, render::Scene3D scene) = 0;
+  /// Whether the sink takes figure `name`, a scene or a plot: the command line takes
+  /// every one; a live view lists the names and describes only the figure it shows.
+  virtual bool wants(const std::string& name, bool scene) {
+    (void)name, (void)scene;
+    return true;
+  }
+  /// Figure `name` as `describe()` makes it (a Plot2D or a Scene3D), described only
+  /// where the sink wants it: how a lab hands over a figure that costs work.
+  template <class Describe, std::enable_if_t<std::is_invocable_v<Describe&>, int> = 0>
+  void add(const std::string& name, const std::string& caption, Describe describe) {
+    using Figure = std::invoke_result_t<Describe&>;
+    static_assert(std::is_same_v<Figure, render::Plot2D> || std::is_same_v<Figure, render::Scene3D>,
+                  "a figure is a Plot2D or a Scene3D");
+    if (wants(name, std::is_same_v<Figure, render::Scene3D>)) add(name, caption, describe());
+  }
 };
 
 /// What a lab with motion shows moving (--animate, a live view): the scene, and

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <future>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,12 @@ struct NamedFigure {
   std::string name, caption;
   std::variant<render::Plot2D, render::Scene3D> figure;
   bool is_scene() const { return std::holds_alternative<render::Scene3D>(figure); }
+};
+
+/// A lab's figure as a list names it, none described: its name and whether it is a scene.
+struct FigureName {
+  std::string name;
+  bool scene = false;
 };
 
 /// The refusal of a change: the rule, as the command line words it, and the inputs it names.
@@ -81,8 +88,15 @@ class Session {
   virtual const Report& report() const = 0;
   /// Its figures (described on first asking after a change).
   virtual const std::vector<NamedFigure>& figures() const = 0;
-  /// Whether figures() has been asked since the last change: a view that shows the motion
-  /// need not describe them (for some labs most of a change's work) to name them.
+  /// Its figures' names, in figures()'s order, none described (FigureSink::wants).
+  virtual const std::vector<FigureName>& figure_names() const = 0;
+  /// Figure `name` alone, described on first asking after a change (taken from
+  /// figures() where they are described), or nullptr where the lab draws none of that
+  /// name for these inputs: a view shows one figure for the work of one.
+  virtual const NamedFigure* figure(const std::string& name) const = 0;
+  /// Whether any figure has been described since the last change (figures() or figure()):
+  /// a view that shows the motion need describe none (for some labs most of a change's
+  /// work), and names them by figure_names().
   virtual bool figures_described() const = 0;
   /// Its motion (made on first asking after a change), or nullptr for a lab without one.
   virtual const Animation* animation() const = 0;
@@ -236,7 +250,30 @@ class ProgramSession final : public Session {
     }
     return *figures_;
   }
-  bool figures_described() const override { return figures_.has_value(); }
+  bool figures_described() const override { return figures_ || !described_.empty(); }
+
+  const std::vector<FigureName>& figure_names() const override {
+    if (!figure_names_) {
+      Collect sink(*report_, "");
+      lab_.figures(*report_, sink);
+      figure_names_ = std::move(sink.names);
+    }
+    return *figure_names_;
+  }
+
+  const NamedFigure* figure(const std::string& name) const override {
+    if (figures_) {
+      for (const NamedFigure& f : *figures_) {
+        if (f.name == name) return &f;
+      }
+      return nullptr;
+    }
+    if (const auto it = described_.find(name); it != described_.end()) return &it->second;
+    Collect sink(*report_, name);
+    lab_.figures(*report_, sink);
+    if (sink.figures.empty()) return nullptr;
+    return &described_.emplace(name, std::move(sink.figures.front())).first->second;
+  }
 
   const Animation* animation() const override {
     if (lab_.animation == nullptr) return nullptr;
@@ -258,18 +295,29 @@ class ProgramSession final : public Session {
   long inputs_generation() const override { return inputs_generation_; }
 
  private:
-  // The figures as the command line titles them.
+  // The figures as the command line titles them: every one; with `only`, that one
+  // alone; with "" none, their names listed.
   struct Collect : FigureSink {
-    explicit Collect(const Report& report) : report(report) {}
+    explicit Collect(const Report& report, std::optional<std::string> only = std::nullopt)
+        : report(report), only(std::move(only)) {}
+    bool wants(const std::string& name, bool scene) override {
+      // listed once: a figure handed over described comes here from add() alone
+      if (names.empty() || names.back().name != name) names.push_back({name, scene});
+      return !only || name == *only;
+    }
     void add(const std::string& name, const std::string& caption, render::Plot2D plot) override {
+      if (!wants(name, false)) return;
       plot.title = report.figure_title(plot.title);
       figures.push_back({name, caption, std::move(plot)});
     }
     void add(const std::string& name, const std::string& caption, render::Scene3D scene) override {
+      if (!wants(name, true)) return;
       scene.title = report.figure_title(scene.title);
       figures.push_back({name, caption, std::move(scene)});
     }
     const Report& report;
+    std::optional<std::string> only;
+    std::vector<FigureName> names;
     std::vector<NamedFigure> figures;
   };
 
@@ -291,6 +339,8 @@ class ProgramSession final : public Session {
   void show(std::shared_ptr<const Rep> report) {
     report_ = std::move(report);
     figures_.reset();
+    figure_names_.reset();
+    described_.clear();
     animation_.reset();
     ++generation_;
   }
@@ -334,6 +384,8 @@ class ProgramSession final : public Session {
   In in_{};
   std::shared_ptr<const Rep> report_;
   mutable std::optional<std::vector<NamedFigure>> figures_;
+  mutable std::optional<std::vector<FigureName>> figure_names_;
+  mutable std::map<std::string, NamedFigure> described_;  // figure() asked one at a time
   mutable std::optional<Animation> animation_;
   long generation_ = 0, inputs_generation_ = 0;
   bool whole_never_ = false;

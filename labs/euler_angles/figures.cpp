@@ -210,9 +210,9 @@ render::Scene3D gimbal_scene(const Report& report) {
 
 void figures(const Report& report, FigureSink& sink) {
   sink.add("rotations", "the three rotations phi, theta, psi and omega as the sum of its parts",
-           rotations_scene(report));
+           [&] { return rotations_scene(report); });
   sink.add("gimbal_lock", "gimbal lock: near theta = 0 the axes of phi and psi line up",
-           gimbal_scene(report));
+           [&] { return gimbal_scene(report); });
 }
 
 Animation animation(const Report& report, const FrameTimes& /*frame_times*/) {

@@ -268,11 +268,13 @@ Animation animation(const Report& report, const FrameTimes& /*frame_times*/) {
 void figures(const Report& report, FigureSink& sink) {
   const Contrast& other = report.contrast;
   // the still of the motion: the cones at t = 0
-  sink.add("cones", "the body cone rolls on the space cone along omega", Motion(report).scene(0.0));
-  sink.add("cones_contrast", other.caption,
-           cones_scene(other.ratio, report.alpha_deg, other.precession, other.title + ": ", 0.0));
+  sink.add("cones", "the body cone rolls on the space cone along omega",
+           [&] { return Motion(report).scene(0.0); });
+  sink.add("cones_contrast", other.caption, [&] {
+    return cones_scene(other.ratio, report.alpha_deg, other.precession, other.title + ": ", 0.0);
+  });
   sink.add("rates", "the precession rates against alpha (and the flattening, where alpha is tiny)",
-           rates_plot(report));
+           [&] { return rates_plot(report); });
 }
 
 }  // namespace rigid::lab::football

@@ -117,8 +117,9 @@ render::Plot2D moment_plot(const Report& report) {
 }  // namespace
 
 void figures(const Report& report, FigureSink& sink) {
-  sink.add("scene", "L is not along omega; the principal axes", scene_of(report));
-  sink.add("moment", "the moment n.I.n is extreme on the principal axes", moment_plot(report));
+  sink.add("scene", "L is not along omega; the principal axes", [&] { return scene_of(report); });
+  sink.add("moment", "the moment n.I.n is extreme on the principal axes",
+           [&] { return moment_plot(report); });
 }
 
 }  // namespace rigid::lab::lamina_tensor

@@ -76,12 +76,12 @@ void figures(const Report& report, FigureSink& sink) {
   const FreeBodyExact& exact = report.exact;
   const auto curve = polhode(exact.moments(), report.omega0, 400);
   sink.add("ellipsoids", "energy and momentum ellipsoids meet on the polhode",
-           ellipsoids_scene(exact, report.omega0, curve));
+           [&] { return ellipsoids_scene(exact, report.omega0, curve); });
   sink.add("polhodes",
            "polhodes about the axes of the largest and smallest moments, the separatrix",
-           polhodes_scene(exact, report.omega0, curve));
+           [&] { return polhodes_scene(exact, report.omega0, curve); });
   sink.add("omega", "omega(t) of the text's ellipsoid and its phase plot",
-           omega_plot(report.omega0, report.run.samples));
+           [&] { return omega_plot(report.omega0, report.run.samples); });
   const bool periodic = std::isfinite(exact.period());
   const std::string period_name = periodic ? "polhode periods" : "turns";
   // (a live view's first look at new inputs has not compared the methods yet)
@@ -96,19 +96,21 @@ void figures(const Report& report, FigureSink& sink) {
              fmt::format("every integrator at the same cost ({:g} evaluations a period) over {:g} "
                          "{} against the exact solution",
                          kEqualCostEvaluations, report.comparisons.at_cost_periods, period_name),
-             integrators_plot(
-                 method_curves(report.comparisons.at_cost),
-                 fmt::format("at equal cost, {:g} evaluations a period", kEqualCostEvaluations),
-                 {report.scale, period_name}, "error in \\omega",
-                 "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0", kRoundoffFloor,
-                 {2 * largest / report.omega0.norm(), "\\omega reversed"}));
+             [&] {
+               return integrators_plot(
+                   method_curves(report.comparisons.at_cost),
+                   fmt::format("at equal cost, {:g} evaluations a period", kEqualCostEvaluations),
+                   {report.scale, period_name}, "error in \\omega",
+                   "|\\omega - \\omega_{exact}| / |\\omega_0|", "|T - T_0| / T_0", kRoundoffFloor,
+                   {2 * largest / report.omega0.norm(), "\\omega reversed"});
+             });
   }
   if (periodic) {
     sink.add("herpolhode",
              fmt::format("Poinsot's construction seen from above: the herpolhode over {:g} "
                          "polhode periods does not close",
                          kHerpolhodePeriods),
-             Motion(report).herpolhode_scene(kHerpolhodePeriods));
+             [&] { return Motion(report).herpolhode_scene(kHerpolhodePeriods); });
   }
 }
 

@@ -239,17 +239,18 @@ void add_body(render::Scene3D& scene, const DrawnBody& body, const Eigen::Matrix
 }
 
 void figures(const Report& f, FigureSink& sink) {
-  sink.add("omega", "omega(t) for a spin about each axis: only axis 2 flips", omega_plot(f));
+  sink.add("omega", "omega(t) for a spin about each axis: only axis 2 flips",
+           [&] { return omega_plot(f); });
   // A racquet that does not flip (moments equal to double precision) has neither.
   if (f.growth) {
     sink.add("growth", "the disturbance grows at the predicted rate until the flip",
-             growth_plot(f));
-    sink.add("flip", "the racquet turns over about its handle", flip_scene(f));
+             [&] { return growth_plot(f); });
+    sink.add("flip", "the racquet turns over about its handle", [&] { return flip_scene(f); });
   }
   const FreeBodyExact& motion = f.launches[f.spin_axis];
   const Vector3d omega0 = motion.omega_body(0.0);
   sink.add("polhodes", "this racquet's polhode beside the separatrix",
-           polhodes_scene(motion, omega0, polhode(motion.moments(), omega0, 400)));
+           [&] { return polhodes_scene(motion, omega0, polhode(motion.moments(), omega0, 400)); });
 }
 
 }  // namespace rigid::lab::tennis_racquet

@@ -106,8 +106,9 @@ render::Plot2D mass_plot(const CrookedWheel& wheel, double m0) {
 
 void figures(const Report& report, FigureSink& sink) {
   sink.add("scene", "the crooked axle and the cone L sweeps",
-           scene_of(report.wheel, report.m0, report.omega));
-  sink.add("mass", "balancing mass, exact against small-angle", mass_plot(report.wheel, report.m0));
+           [&] { return scene_of(report.wheel, report.m0, report.omega); });
+  sink.add("mass", "balancing mass, exact against small-angle",
+           [&] { return mass_plot(report.wheel, report.m0); });
 }
 
 }  // namespace rigid::lab::tire_balancing

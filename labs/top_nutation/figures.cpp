@@ -324,36 +324,40 @@ render::Plot2D theta_plot(const HeavyTopExact& motion, const HeavyTopRun* integr
 
 void figures(const Report& report, FigureSink& sink) {
   const HeavyTopExact& motion = *report.motion;
-  // Beside the exact motion, an integrated one: the lab's own, or splitting4 at the run's
-  // step, unless that would take more steps than a run may (--periods 1e8, --step 1e-20:
-  // the exact run is valid, and the figure says why it stands alone).
-  HeavyTopRun splitting4;
-  const HeavyTopRun* integrated = &report.run;
-  std::string why_none;
-  if (report.method == "exact") {
-    OdeOptions o = report.options;
-    o.method = Method::kSplitting4;
-    const double steps = std::ceil(report.t_end / o.step);
-    if (steps <= static_cast<double>(o.max_steps)) {
-      splitting4 = integrate(HeavyTopProblem(report.top), heavy_top_state(motion.angles(0.0)),
-                             sample_times(report.t_end, report.scale, o.step), o);
-      integrated = &splitting4;
-    } else {
-      integrated = nullptr;
-      why_none = fmt::format("splitting4 at step {:.3g} s would need {:.3g} steps", o.step, steps);
-    }
-  }
   sink.add("potential", "the effective potential, E' and the turning points",
-           potential_plot(motion, report.table_theta));
+           [&] { return potential_plot(motion, report.table_theta); });
   sink.add("paths", "the axis's path on the sphere: this run's beside the other regimes",
-           paths_scene(motion));
+           [&] { return paths_scene(motion); });
   sink.add("band", "the same paths as theta against phi: waves, cusps or loops at any spin",
-           band_plot(motion));
-  sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated",
-           theta_plot(motion, integrated, report.method == "exact", report.t_end, why_none,
-                      report.table_theta));
+           [&] { return band_plot(motion); });
+  sink.add("theta", "theta(t) and phi_dot(t), exact beside integrated", [&] {
+    // Beside the exact motion, an integrated one: the lab's own, or splitting4 at the
+    // run's step, unless that would take more work than a run may (--periods 1e8, --step
+    // 1e-20: the exact run is valid, and the figure says why it stands alone).
+    HeavyTopRun splitting4;
+    const HeavyTopRun* integrated = &report.run;
+    std::string why_none;
+    if (report.method == "exact") {
+      OdeOptions o = report.options;
+      o.method = Method::kSplitting4;
+      o.max_evaluations = max_run_evaluations(o.method);
+      o.max_steps = o.max_evaluations / static_cast<std::size_t>(evaluations_per_step(o.method));
+      const double steps = std::ceil(report.t_end / o.step);
+      if (steps <= static_cast<double>(o.max_steps)) {
+        splitting4 = integrate(HeavyTopProblem(report.top), heavy_top_state(motion.angles(0.0)),
+                               sample_times(report.t_end, report.scale, o.step), o);
+        integrated = &splitting4;
+      } else {
+        integrated = nullptr;
+        why_none =
+            fmt::format("splitting4 at step {:.3g} s would need {:.3g} steps", o.step, steps);
+      }
+    }
+    return theta_plot(motion, integrated, report.method == "exact", report.t_end, why_none,
+                      report.table_theta);
+  });
   sink.add("top", "the top, L, the gravity torque and the precession circle",
-           Motion(report).scene(0.0));
+           [&] { return Motion(report).scene(0.0); });
   // A sleeping top has no comparison at equal cost: the one at the lab's settings.
   const MethodComparisons& compared = report.comparisons;
   const bool equal_cost = !compared.at_cost.empty();
@@ -365,17 +369,20 @@ void figures(const Report& report, FigureSink& sink) {
                                     "nutation period) over {:g} periods against the exact theta",
                                     evaluations, compared.at_cost_periods)
                       : "every integrator against the exact theta",
-           integrators_plot(
-               method_curves(equal_cost ? compared.at_cost : compared.at_settings, rad_to_deg),
-               equal_cost ? fmt::format("at equal cost, {:g} evaluations a period", evaluations)
-                          : "integrators against the exact solution",
-               equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
-               "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)", "|E - E_0| / (T_0 + mgl)",
-               // theta's roundoff: kRoundoffFloor of a radian, in degrees
-               rad_to_deg(kRoundoffFloor),
-               // a run half a nutation out of step is off by the band's whole width
-               {rad_to_deg(motion.theta_max() - motion.theta_min()),
-                "\\theta_{max} - \\theta_{min}: half a nutation out of step"}));
+           [&] {
+             return integrators_plot(
+                 method_curves(equal_cost ? compared.at_cost : compared.at_settings, rad_to_deg),
+                 equal_cost ? fmt::format("at equal cost, {:g} evaluations a period", evaluations)
+                            : "integrators against the exact solution",
+                 equal_cost ? TimeAxis{motion.nutation_period(), "nutation periods"} : TimeAxis{},
+                 "error in \\theta", "|\\theta - \\theta_{exact}| (\\deg)",
+                 "|E - E_0| / (T_0 + mgl)",
+                 // theta's roundoff: kRoundoffFloor of a radian, in degrees
+                 rad_to_deg(kRoundoffFloor),
+                 // a run half a nutation out of step is off by the band's whole width
+                 {rad_to_deg(motion.theta_max() - motion.theta_min()),
+                  "\\theta_{max} - \\theta_{min}: half a nutation out of step"});
+           });
 }
 
 // ---- The motion --------------------------------------------------------------
@@ -391,6 +398,41 @@ Motion::Motion(const Report& report, const std::vector<double>& sample_times)
                       report.options, HeavyTopProblem::kInvariantCount, report.run.samples,
                       sample_times);
   path_times_ = sample_times.empty() ? report.run.times() : integrated_->sampled_times();
+}
+
+std::vector<Vector3d> Motion::axis_path(double from, double t) const {
+  const double T = exact_.nutation_period();
+  std::vector<Vector3d> path;
+  const auto axis_at = [&](double s) { return Vector3d(state(s).attitude * Vector3d::UnitZ()); };
+  if (!path_times_.empty() || !std::isfinite(T)) {
+    std::vector<double> when;
+    for (const double s : path_times_) {
+      if (s >= from && s < t) when.push_back(s);
+    }
+    // (no nutation to count by: the run's span in two points)
+    if (path_times_.empty()) when.push_back(from);
+    for (const double s : when) path.push_back(axis_at(s));
+  } else {
+    // the closed form on one grid, 400 points a nutation period, whatever t is
+    const double h = T / 400;
+    for (auto k = static_cast<std::int64_t>(std::ceil(from / h)); k * h < t; ++k) {
+      path.push_back(exact_axis(k));
+    }
+  }
+  path.push_back(axis_at(t));
+  return path;
+}
+
+Vector3d Motion::exact_axis(std::int64_t k) const {
+  const std::lock_guard<std::mutex> hold(axis_mutex_);
+  // a long run's older loops are not drawn again: forgotten past a few paths' worth
+  if (axis_.size() > 16 * 400 * kPathPeriods) axis_.clear();
+  const auto [at, made] = axis_.try_emplace(k);
+  if (made) {
+    const TopAngles a = exact_.angles(static_cast<double>(k) * (exact_.nutation_period() / 400));
+    at->second = euler_attitude(a.phi, a.theta, a.psi) * Vector3d::UnitZ();
+  }
+  return at->second;
 }
 
 BodyState Motion::state(double t) const {
@@ -438,17 +480,8 @@ render::Scene3D Motion::scene(double t) const {
     // fill the band between the turning circles, and a frame's cost stays bounded
     const double T = exact_.nutation_period();
     const double from = std::isfinite(T) ? std::max(0.0, t - kPathPeriods * T) : 0.0;
-    std::vector<Vector3d> path;
-    std::vector<double> when;
-    for (const double s : path_times_) {
-      if (s >= from && s < t) when.push_back(s);
-    }
-    if (path_times_.empty()) {
-      const int n = std::clamp(static_cast<int>(400.0 * (t - from) / T), 2, 400 * kPathPeriods);
-      for (int k = 0; k < n; ++k) when.push_back(from + (t - from) * k / n);
-    }
-    when.push_back(t);
-    for (const double s : when) path.push_back(reach * (state(s).attitude * Vector3d::UnitZ()));
+    std::vector<Vector3d> path = axis_path(from, t);
+    for (Vector3d& p : path) p *= reach;
     // one short name for the whole film (its frames share one legend, and a long entry
     // would narrow the scene of a small one)
     scene.add_polyline(std::move(path), colors::kSymmetryAxis, 3.0, "path of the symmetry axis");

@@ -9,8 +9,11 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "common/figures.h"
@@ -80,7 +83,8 @@ class Motion {
   /// `sample_times`: times at which an integrated motion is sampled ahead in one run from
   /// the start (the animation's frame times; IntegratedMotion), so each frame is what
   /// that one run gives there, never a step of another. Exact: the closed form at any t.
-  /// Nothing mutable: the same t gives the same scene in any order.
+  /// The same t gives the same scene in any order (the exact path's points, kept as they
+  /// are made, are the same whenever made).
   explicit Motion(const Report& report, const std::vector<double>& sample_times = {});
   /// The span of the motion shown: the lab's t_end, s.
   double seconds() const { return seconds_; }
@@ -96,6 +100,15 @@ class Motion {
   double arm_, disk_radius_, seconds_;
   std::optional<IntegratedMotion<HeavyTopProblem>> integrated_;  ///< none: the closed form
   std::vector<double> path_times_;  ///< integrated: the times the axis's path runs through
+  // The exact axis's end at the path's grid times k T / 400 (T the nutation period),
+  // each computed once: a live view fitting its camera to sixteen frames, and frames
+  // played in turn, share most of their paths' points (each an elliptic integral).
+  Eigen::Vector3d exact_axis(std::int64_t k) const;
+  // The axis's end (a unit vector) through [from, t]: the run's own samples, or the
+  // closed form on its grid (exact_axis), and at t.
+  std::vector<Eigen::Vector3d> axis_path(double from, double t) const;
+  mutable std::mutex axis_mutex_;
+  mutable std::unordered_map<std::int64_t, Eigen::Vector3d> axis_;
 };
 
 /// The top precessing and nodding, the path of its axis on the sphere; its frames

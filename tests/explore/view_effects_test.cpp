@@ -140,11 +140,11 @@ TEST_CASE("explore: the keys 1 to 9 show and hide the scene's parts in the legen
 
 TEST_CASE("explore: the motion and its strip are drawn without describing the lab's figures") {
   // Describing every figure is much of a change's work; the motion's scene and its strip
-  // (tennis_racquet's plot) need none of it, and the export's choice keeps the name it
-  // showed (a lab's figures are the same list whatever its inputs).
+  // (tennis_racquet's plot) need none of it, and the export's choice and the views' lists
+  // name the figures without describing them.
   Bench b("tennis_racquet");
   b.run("frames 2");
-  REQUIRE(b.e.session().figures_described());  // the export's choice named once
+  CHECK_FALSE(b.e.session().figures_described());
   const std::string named = b.e.view().export_figure_name;
   REQUIRE(named == b.e.session().figures()[0].name);
   for (const char* step : {"set --omega 12\nframes 3", "play 0.5", "drag --omega 11\nframes 2"}) {
@@ -153,9 +153,12 @@ TEST_CASE("explore: the motion and its strip are drawn without describing the la
     CHECK_FALSE(b.e.session().figures_described());
     CHECK(b.e.view().export_figure_name == named);
   }
-  // a figure shown is a figure described
+  // a figure shown is that figure described, and no other
   b.run("show-plot omega\nframes 1");
   CHECK(b.e.session().figures_described());
   b.run("set --omega 10\nframes 2");
   CHECK(b.e.session().figures_described());
+  const rigid::lab::NamedFigure* omega = b.e.session().figure("omega");
+  REQUIRE(omega != nullptr);
+  CHECK(omega->caption == b.e.session().figures()[0].caption);
 }

@@ -13,6 +13,7 @@
 
 #include "common/registry.h"
 #include "lab_entries.h"
+#include "lab_library.h"
 
 using rigid::lab::GivenTexts;
 using rigid::lab::InputKind;
@@ -337,5 +338,36 @@ TEST_CASE("session: a body's motion is a unit quaternion and a finite omega from
       CHECK(s.omega_body.allFinite());
     }
     CHECK_THROWS_AS(motion(-1e-9), std::invalid_argument);
+  }
+}
+
+TEST_CASE("session: a figure described alone is the one figures() describes, named alike") {
+  for (const LabEntry& e : rigid::lab::all_labs()) {
+    INFO(e.name);
+    const auto alone = e.make();  // figures named, then each described by itself
+    const auto whole = e.make();  // every figure at once
+    alone->wait();
+    whole->wait();
+    const std::vector<rigid::lab::FigureName> names = alone->figure_names();
+    CHECK_FALSE(alone->figures_described());  // naming describes none
+    const std::vector<rigid::lab::NamedFigure>& figures = whole->figures();
+    REQUIRE(names.size() == figures.size());
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      INFO(names[k].name);
+      CHECK(names[k].name == figures[k].name);
+      CHECK(names[k].scene == figures[k].is_scene());
+      const rigid::lab::NamedFigure* f = alone->figure(names[k].name);
+      REQUIRE(f != nullptr);
+      CHECK(f->caption == figures[k].caption);
+      REQUIRE(f->is_scene() == figures[k].is_scene());
+      if (f->is_scene()) {
+        rigid::test::check_same_scene(std::get<rigid::render::Scene3D>(f->figure),
+                                      std::get<rigid::render::Scene3D>(figures[k].figure));
+      } else {
+        CHECK(std::get<rigid::render::Plot2D>(f->figure).title ==
+              std::get<rigid::render::Plot2D>(figures[k].figure).title);
+      }
+    }
+    CHECK(alone->figure("no such figure") == nullptr);
   }
 }
