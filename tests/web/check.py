@@ -162,7 +162,8 @@ def equal_cost_close(path, a, b):
     within 50 %) and evaluations within a step's share of a 10-step run (10 %); errors driven down to roundoff's level (ROUNDOFF) are roundoff:
     only that both are is compared."""
     key = path.split(".")[-1]
-    work = "evaluations" in key or "steps" in key
+    # "work": the answer's evaluations, weighted (rigid::work_done)
+    work = "evaluations" in key or "steps" in key or key == "work"
     if not (work or key.startswith("equal_cost_") or key.startswith("recommended_method")):
         return False
     if isinstance(a, str):
