@@ -355,9 +355,8 @@ class Page {
 
   void draw_plot(int x, int y, int width, int height, int canvas_height) {
     const lab::Animation* motion = session_->animation();
-    // the motion's strip marks its own time, so it is drawn again as the time moves
-    const bool strip = motion != nullptr && motion->strip && view_.plot_choice == 0;
-    const Drawn want = drawn(view_.plot_choice, width, height, strip ? view_.time : 0.0);
+    // drawn once (the motion's strip too), the time shown laid over it as a line
+    const Drawn want = drawn(view_.plot_choice, width, height, 0.0);
     if (!(plot_drawn_.valid && plot_drawn_ == want)) {
       std::optional<render::Plot2D> plot = explore::shown_plot(*session_, view_);
       plot_drawn_ = Drawn{};
@@ -365,7 +364,7 @@ class Page {
       if (!plot) return;
       plot->min_text_px = text_px_;
       const render::Plot2D::Layout drawn = plot_image_.draw(*plot, width, height);
-      if (motion != nullptr && !strip) cursors_ = explore::time_cursors(*plot, drawn);
+      if (motion != nullptr) cursors_ = explore::time_cursors(*plot, drawn);
       plot_drawn_ = want;
     }
     presenter_.show(plot_image_, x, y, canvas_height);
