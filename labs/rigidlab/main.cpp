@@ -7,7 +7,8 @@
 //   rigidlab --version
 //
 // The labs are the executables beside this one (bin/ when installed, build/labs/
-// in a build tree); rigidlab holds no physics and no drawing of its own.
+// in a build tree), their figures drawn by rigidlab-draw (draw.cpp); rigidlab holds no
+// physics and no drawing of its own.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -36,8 +37,10 @@
 #include "rigid/support/signals.h"
 #include "rigid/support/subprocess.h"
 #include "rigid/support/text.h"
+#include "rigidlab/staging.h"
 
 namespace fs = std::filesystem;
+using rigid::front_door::Staging;
 using rigid::support::Redirect;
 using rigid::support::Subprocess;
 
@@ -86,6 +89,16 @@ bool is_lab(const std::string& name) {
 // The labs are beside this executable.
 fs::path lab_path(const std::string& lab) {
   return rigid::support::own_directory() / lab;
+}
+
+// What draws the labs' figures for `figures`: rigidlab-draw, beside rigidlab in a build
+// tree, in libexec/rigidlab/ (RIGID_DRAW_FROM_BIN, from bin/) when installed.
+fs::path draw_path() {
+  const fs::path beside = rigid::support::own_directory() / "rigidlab-draw";
+  std::error_code ec;
+  if (fs::exists(beside, ec)) return beside;
+  return (rigid::support::own_directory() / RIGID_DRAW_FROM_BIN / "rigidlab-draw")
+      .lexically_normal();
 }
 
 // A lab's title: the first line of its --help, read from the lab run directly (no
@@ -163,11 +176,14 @@ void die_if_signalled() {
   std::raise(g_signal);
 }
 
-// Starts a lab with `args`, its stdout to /dev/null and its stderr as `err` says. A
-// lab that cannot be started has its one line in `why` and no process.
-std::optional<Subprocess> start(const std::string& lab, const std::vector<std::string>& args,
-                                const Redirect& err, std::string& why) {
-  std::vector<std::string> argv{lab_path(lab).string()};
+// Starts rigidlab-draw on `labs` with `args`, its stdout to /dev/null and its stderr as
+// `err` says. One that cannot be started has its one line in `why` and no process.
+std::optional<Subprocess> start(const std::vector<std::string>& labs,
+                                const std::vector<std::string>& args, const Redirect& err,
+                                std::string& why) {
+  std::vector<std::string> argv{draw_path().string()};
+  argv.insert(argv.end(), labs.begin(), labs.end());
+  argv.push_back("--");
   argv.insert(argv.end(), args.begin(), args.end());
   // A signal arriving between the spawn and track would miss the child: held until then;
   // the lab starts with the mask rigidlab had.
@@ -192,7 +208,7 @@ std::optional<Subprocess> start(const std::string& lab, const std::vector<std::s
 // most memory it held in `peak_bytes`.
 int run_captured(const std::string& lab, const std::vector<std::string>& args, std::string& err,
                  std::uint64_t& peak_bytes) {
-  std::optional<Subprocess> child = start(lab, args, Redirect::pipe(), err);
+  std::optional<Subprocess> child = start({lab}, args, Redirect::pipe(), err);
   if (!child) return 127;
   err += child->read_to_end();
   const int status = child->wait();
@@ -203,8 +219,9 @@ int run_captured(const std::string& lab, const std::vector<std::string>& args, s
 
 // How many labs draw at once: one a processor, as many as the memory budget holds
 // (support/memory.h) at what the first lab took, with a quarter to spare (the labs'
-// peaks at one figure size lie within a tenth of each other). Said on stderr when the
-// memory is what limits it.
+// peaks at one figure size lie within a tenth of each other, and a process drawing
+// several in turn peaks within a tenth of its largest: at 4000x3000, 635-652 MB a lab,
+// 638-665 MB three in one). Said on stderr when the memory is what limits it.
 long labs_at_once(std::uint64_t first_peak) {
   const long cpus = std::max(1L, ::sysconf(_SC_NPROCESSORS_ONLN));
   std::optional<rigid::support::MemoryBudget> budget;
@@ -222,129 +239,6 @@ long labs_at_once(std::uint64_t first_peak) {
             << " at a time, as memory allows (a lab took " << rigid::support::bytes_text(first_peak)
             << "; " << budget->source << ": " << rigid::support::bytes_text(budget->bytes) << ")\n";
   return n;
-}
-
-// The entries of a folder; `ec` says why a listing failed or stopped (increment(ec):
-// a range-for's ++ would throw on a folder that fails mid-listing).
-std::vector<fs::path> entries_of(const fs::path& dir, std::error_code& ec) {
-  std::vector<fs::path> out;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    out.push_back(it->path());
-  return out;
-}
-
-// Every lab's figures land in `out` together or not at all: the labs draw into a
-// staging folder, OUT/.rigidlab-stage-PID-XXXXXX, whose files are renamed into `out`
-// only once every lab has succeeded. A failure or a signal removes the staging folder,
-// and the folders this run made for `out` if they are left empty.
-//
-// The staging folder is made here, not by a lab: a lab that fails removes the folders
-// it made, and would take the staging folder from under the others. It is made by
-// mkdtemp, under a name no folder had: one already there (a killed run's, whose PID
-// this run may have been given) is never this run's to fill or remove. If it cannot
-// be made, the first lab is given its name and says why, by its own rules for --figures.
-class Staging {
- public:
-  explicit Staging(const std::string& out) : out_(out) {
-    std::error_code ec;
-    // the outermost folder of `out` missing now is the first this run makes (a dangling
-    // link is there: not this run's to remove)
-    for (fs::path p = top();
-         !p.empty() && fs::symlink_status(p, ec).type() == fs::file_type::not_found;
-         p = p.parent_path()) {
-      made_from_ = p;
-      if (p == p.parent_path()) break;
-    }
-    fs::create_directories(out, ec);
-    std::string name =
-        (fs::path(out) / (".rigidlab-stage-" + std::to_string(::getpid()) + "-XXXXXX")).string();
-    ::mkdtemp(name.data());
-    dir_ = name;
-  }
-  const std::string& dir() const { return dir_; }
-  // A lab's message about the staging folder, said of `out`, in both forms a lab's
-  // line may show a path: escaped (terminal_safe) or, in a file writer's message,
-  // with control characters as spaces first.
-  std::string said_of_out(std::string text) const {
-    const auto spaced = [](std::string s) {
-      for (char& c : s)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-      return s;
-    };
-    for (const bool space : {false, true}) {
-      const std::string from = rigid::support::terminal_safe(space ? spaced(dir_) : dir_);
-      const std::string to = rigid::support::terminal_safe(space ? spaced(out_) : out_);
-      for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) {
-        text.replace(at, from.size(), to);
-      }
-    }
-    return text;
-  }
-  void discard() const {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-    if (made_from_.empty()) return;
-    // each folder this run made, innermost first, only if left empty
-    for (fs::path p = top(); fs::remove(p, ec) && p != made_from_; p = p.parent_path()) {
-    }
-  }
-  // A staged figure whose place in `out` a directory takes (no rename can replace it):
-  // found before any file moves, so that all land or none; "" if there is none.
-  std::string blocked() const {
-    std::error_code ec;
-    for (const fs::path& file : entries_of(dir_, ec)) {
-      const fs::path target = fs::path(out_) / file.filename();
-      if (fs::is_directory(fs::symlink_status(target, ec)))
-        return "'" + target.string() + "' is a directory, not a figure";
-    }
-    return "";
-  }
-  // Renames every staged file into `out`; "" or what failed, with how many had landed.
-  std::string land() const {
-    std::error_code ec;
-    const std::vector<fs::path> files = entries_of(dir_, ec);
-    if (ec) return "cannot read " + dir_ + ": " + ec.message();
-    std::size_t landed = 0;
-    for (const fs::path& file : files) {
-      if (std::rename(file.c_str(), (fs::path(out_) / file.filename()).c_str()) != 0) {
-        const std::string why = std::strerror(errno);
-        discard();
-        return "moving the figures into " + out_ + " failed after " + std::to_string(landed) +
-               " of " + std::to_string(files.size()) + " (" + why + "); those " +
-               std::to_string(landed) + " landed";
-      }
-      ++landed;
-    }
-    fs::remove(dir_, ec);
-    return "";
-  }
-
- private:
-  // `out` without a trailing '/', whose parent is the folder it is in
-  fs::path top() const {
-    const fs::path path(out_);
-    return path.has_filename() ? path : path.parent_path();
-  }
-  std::string out_, dir_;
-  fs::path made_from_;  // the outermost folder of `out` this run made; empty if none
-};
-
-// Staging folders in `out` of runs killed outright (SIGKILL, a power cut: nothing could
-// remove them), said once each for the user to remove: not this run's to delete.
-void say_left_stages(const std::string& out, const std::string& ours) {
-  const std::string stem = ".rigidlab-stage-";
-  std::error_code ec;
-  for (const fs::path& entry : entries_of(out, ec)) {
-    const std::string name = entry.filename().string();
-    if (name.rfind(stem, 0) != 0 || entry == fs::path(ours)) continue;
-    // named by the PID of the run that made it: one with this run's PID is a killed
-    // run's whose PID came round again
-    const long pid = std::strtol(name.c_str() + stem.size(), nullptr, 10);
-    const bool alive = pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
-    if (alive && pid != ::getpid()) continue;
-    std::cerr << "rigidlab: warning: figures: " << rigid::support::terminal_safe(entry)
-              << " was left by a run that was killed before it could remove it: remove it\n";
-  }
 }
 
 // The staged figures renamed into `out`, once every lab has drawn its own; the exit status.
@@ -373,23 +267,39 @@ int land(const Staging& stage, const std::string& out, std::size_t labs) {
   return 0;
 }
 
-// The labs after the first, `at_once` at a time (labs_at_once), each drawing into
-// the staging folder; how many failed. Each lab's stderr goes into a file of its own,
-// shown when it ends with the staging folder's name said as `out` (its lines name the
-// paths it wrote to).
+// The labs after the first in `at_once` groups (labs_at_once), each group drawn by one
+// rigidlab-draw, all at once, into the staging folder; how many labs failed. A group's
+// stderr goes into a file of its own, shown when it ends with the staging folder's name
+// said as `out` (its lines name the paths it wrote to). A group of one has its line said
+// here, as the first lab; a larger one says each lab's own, and a lab it did not say was
+// drawn (the group killed or crashed) failed.
 int other_labs(const Staging& stage, const std::vector<std::string>& labs,
                const std::vector<std::string>& args, long at_once) {
-  struct Lab {
-    std::string name;
+  struct Group {
+    std::vector<std::string> labs;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> err{nullptr, std::fclose};
   };
+  // round the labs in section order, so that each group has a share of the heavy ones
+  std::vector<Group> groups(std::min<std::size_t>(static_cast<std::size_t>(at_once),
+                                                  labs.size() > 1 ? labs.size() - 1 : 0));
+  for (std::size_t k = 1; k < labs.size(); ++k)
+    groups[(k - 1) % groups.size()].labs.push_back(labs[k]);
   std::vector<Subprocess> children;
-  std::vector<Lab> running;  // beside children, one for one
+  std::vector<Group> running;  // beside children, one for one
   int failed = 0;
-  const auto said = [&](const std::string& lab, bool ok, const std::string& err) {
-    std::cerr << stage.said_of_out(err) << "rigidlab: " << lab
-              << (ok ? ": figures drawn" : ": FAILED") << "\n";
-    failed += ok ? 0 : 1;
+  const auto said = [&](const Group& group, const std::optional<int>& status,
+                        const std::string& err) {
+    std::string text = stage.said_of_out(err);
+    for (const std::string& lab : group.labs) {
+      const std::string line = "rigidlab: " + lab + ": ";
+      const bool ok = group.labs.size() == 1
+                          ? status == 0
+                          : text.find(line + "figures drawn\n") != std::string::npos;
+      if (group.labs.size() == 1 || (!ok && text.find(line + "FAILED\n") == std::string::npos))
+        text += line + (ok ? "figures drawn" : "FAILED") + "\n";
+      failed += ok ? 0 : 1;
+    }
+    std::cerr << text;
   };
   const auto wait_one = [&] {
     const std::size_t k = Subprocess::wait_any(children);
@@ -402,24 +312,22 @@ int other_labs(const Staging& stage, const std::vector<std::string>& labs,
         text.append(buffer.data(), n);
       }
     }
-    said(running[k].name, children[k].exit_status() == 0, text);
+    said(running[k], children[k].exit_status(), text);
     children.erase(children.begin() + static_cast<std::ptrdiff_t>(k));
     running.erase(running.begin() + static_cast<std::ptrdiff_t>(k));
   };
-  for (std::size_t k = 1; k < labs.size() && g_signal == 0; ++k) {
-    if (static_cast<long>(children.size()) >= at_once) wait_one();
+  for (Group& group : groups) {
     if (g_signal != 0) break;
-    Lab lab{labs[k]};
-    lab.err.reset(std::tmpfile());  // null: the lab's stderr is rigidlab's own
+    group.err.reset(std::tmpfile());  // null: the group's stderr is rigidlab's own
     std::string why;
-    std::optional<Subprocess> child =
-        start(lab.name, args, lab.err ? Redirect::file(::fileno(lab.err.get())) : Redirect(), why);
+    std::optional<Subprocess> child = start(
+        group.labs, args, group.err ? Redirect::file(::fileno(group.err.get())) : Redirect(), why);
     if (!child) {
-      said(lab.name, false, why);
+      said(group, std::nullopt, why);
       continue;
     }
     children.push_back(std::move(*child));
-    running.push_back(std::move(lab));
+    running.push_back(std::move(group));
   }
   while (!children.empty()) wait_one();
   return failed;
@@ -454,7 +362,7 @@ int figures(const std::string& out, const std::vector<std::string>& options) {
     std::cerr << "rigidlab: error: figures: " << err.substr(0, err.find('\n')) << "\n";
     return 2;
   }
-  say_left_stages(out, stage.dir());
+  rigid::front_door::say_left_stages(out, stage.dir());
   std::cerr << err;
   std::cerr << "rigidlab: " << labs.front() << (first == 0 ? ": figures drawn" : ": FAILED")
             << "\n";
