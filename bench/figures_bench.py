@@ -11,8 +11,9 @@ Runs the labs as a user does and times them from outside and inside:
 - the whole figure set of a lab: the wall time of the process
   `LAB --quiet --figures DIR`, from start to exit, best of --repeats;
 - every lab's figure set side by side: all labs started at once, from the first
-  start to the last exit, best of --repeats (the instructor's "all figures" on
-  this machine's cores);
+  start to the last exit, best of --repeats;
+- `rigidlab figures --out DIR`, the instructor's "all figures": process wall time,
+  best of --repeats (its labs drawn by one process a processor);
 - the context: bench_figure_context makes one and reports
   ContextInfo::creation_seconds (loading the backend library, the context,
   the GL entry points), best of --repeats fresh processes;
@@ -28,7 +29,8 @@ spoils one round, not one lab. Writes a JSON array of entries
   {"group": "figures", "case": ..., "tool": "rigidlab", "seconds": s, "kind": ...}
 with kind "figure" (case = the PNG's name, "lab" = its lab, "first" = true for
 the first figure of its process, "phases" = {phase: seconds}), "context", "set"
-(case = the lab), "side_by_side" (case = "all labs"), "json_run"
+(case = the lab), "side_by_side" (case = "all labs"), "front_door" (case = "rigidlab
+figures"), "json_run"
 ("build": "render" or "norender") and "startup" ("links": "bare", "cairo" or "ffmpeg").
 
 Usage: figures_bench.py --labs DIR --context EXE --out FILE [--norender DIR]
@@ -49,13 +51,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from progress import Progress, add_arguments, configure, detail, duration  # noqa: E402
 
 # Rough seconds of each kind of run on this machine, for the progress line's time left.
-WEIGHT = {"figures": 0.6, "set": 0.3, "side_by_side": 1.1, "context": 0.05, "animation": 9.0,
-          "json": 0.004}
+WEIGHT = {"figures": 0.6, "set": 0.3, "side_by_side": 1.1, "front_door": 1.0, "context": 0.05,
+          "animation": 9.0, "json": 0.004}
 
-def wall(cmd):
+def wall(cmd, stderr=None):
     """Seconds from spawning cmd to its exit (stdout discarded); raises if it fails."""
     t0 = time.perf_counter()
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=stderr)
     return time.perf_counter() - t0
 
 
@@ -88,7 +90,7 @@ def measure_figures(args, labs, work, tick):
     """Per figure (inside the process), the whole set (the process), all labs side by side."""
     figure_best, figure_phases, figure_lab, first = {}, {}, {}, {}
     set_best = {lab: math.inf for lab in labs}
-    all_best = math.inf
+    all_best = front_best = math.inf
     for _ in range(args.repeats):
         for lab in labs:
             exe = os.path.join(args.labs, lab)
@@ -108,6 +110,10 @@ def measure_figures(args, labs, work, tick):
             tick("set", f"{lab} figure set")
         all_best = min(all_best, side_by_side(args.labs, labs, work))
         tick("side_by_side", "all labs side by side")
+        front_best = min(front_best, wall([os.path.join(args.labs, "rigidlab"), "figures",
+                                           "--out", os.path.join(work, "front")],
+                                          subprocess.DEVNULL))  # its lines, a lab each
+        tick("front_door", "rigidlab figures")
     entries = [{"group": "figures", "case": name, "tool": "rigidlab", "seconds": s,
                 "kind": "figure", "lab": figure_lab[name], "first": first[name],
                 "phases": figure_phases[name]} for name, s in figure_best.items()]
@@ -115,6 +121,9 @@ def measure_figures(args, labs, work, tick):
                  "kind": "set"} for lab in labs]
     entries.append({"group": "figures", "case": "all labs", "tool": "rigidlab",
                     "seconds": all_best, "kind": "side_by_side", "labs": labs,
+                    "processors": os.cpu_count()})
+    entries.append({"group": "figures", "case": "rigidlab figures", "tool": "rigidlab",
+                    "seconds": front_best, "kind": "front_door", "labs": labs,
                     "processors": os.cpu_count()})
     return entries
 
@@ -189,7 +198,7 @@ def main():
     builds = [("render", args.labs)] + ([("norender", args.norender)] if args.norender else [])
     json_runs = len(labs) * len(builds) + (3 if args.startup else 0)
     progress = Progress("bench figures", None,
-                        args.repeats * (WEIGHT["context"] + WEIGHT["side_by_side"]
+                        args.repeats * (WEIGHT["context"] + WEIGHT["side_by_side"] + WEIGHT["front_door"]
                                         + len(labs) * (WEIGHT["figures"] + WEIGHT["set"]))
                         + 3 * WEIGHT["animation"] + args.json_repeats * json_runs * WEIGHT["json"],
                         args.quiet)

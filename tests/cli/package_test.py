@@ -65,6 +65,7 @@ def main():
         expected = {f"/usr/bin/{lab}" for lab in labs + ["rigidlab"]}
         expected |= {f"/usr/share/man/man1/{lab}.1" for lab in labs + ["rigidlab"]}
         expected.add("/usr/share/bash-completion/completions/rigidlab")
+        expected.add("/usr/libexec/rigidlab/rigidlab-draw")  # what rigidlab figures runs
         if python:
             expected.add("/usr/lib/python3/dist-packages/rigidlab/__init__.py")
         for missing in sorted(expected - files):
@@ -88,6 +89,14 @@ def main():
                 env={**env, "PYTHONPATH": site, "PYTHONDONTWRITEBYTECODE": "1"})
             if imported.returncode != 0 or "prolate" not in imported.stdout:
                 failures.append(f"import rigidlab from the package: {imported.stderr[-400:]!r}")
+        # every lab's figures, drawn by rigidlab-draw found from the package's /usr/bin
+        every = os.path.join(work, "every")
+        everyone = subprocess.run(["rigidlab", "figures", "--out", every, "--figure-size",
+                                   "800x600"], capture_output=True, text=True, env=env, cwd=work)
+        if everyone.returncode != 0 or not any(f.startswith(labs[-1] + "_")
+                                               for f in os.listdir(every)):
+            failures.append(f"rigidlab figures from the package: {everyone.returncode} "
+                            f"{everyone.stderr[-400:]!r}")
         if run.returncode != 0:
             failures.append(f"poinsot from the package: {run.returncode} {run.stderr!r}")
         else:
