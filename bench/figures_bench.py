@@ -198,8 +198,8 @@ def main():
     builds = [("render", args.labs)] + ([("norender", args.norender)] if args.norender else [])
     json_runs = len(labs) * len(builds) + (3 if args.startup else 0)
     progress = Progress("bench figures", None,
-                        args.repeats * (WEIGHT["context"] + WEIGHT["side_by_side"] + WEIGHT["front_door"]
-                                        + len(labs) * (WEIGHT["figures"] + WEIGHT["set"]))
+                        args.repeats * (WEIGHT["context"] + WEIGHT["side_by_side"]
+                                        + WEIGHT["front_door"] + len(labs) * (WEIGHT["figures"] + WEIGHT["set"]))
                         + 3 * WEIGHT["animation"] + args.json_repeats * json_runs * WEIGHT["json"],
                         args.quiet)
     done = 0.0

@@ -11,7 +11,6 @@
 // each lab's own lines on stderr, "rigidlab: LAB: figures drawn" or "rigidlab: LAB:
 // FAILED"; the exit status is how many failed. Not a command for a user: it has no
 // options of its own and is installed out of PATH.
-#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -20,24 +19,6 @@
 
 #include "rigid/support/memory.h"
 #include "rigidlab/lab_commands.h"
-
-namespace {
-
-// Every lab after the first starts with huge pages already (the whole process does,
-// below): a lab's own restart would run this program again with the lab's arguments.
-void take_huge_pages(char** argv) {
-  rigid::support::restart_with_huge_pages(argv);
-  // here only where the tunable was set already, or exec was refused: then no lab may try
-  if (const char* tunables = std::getenv("GLIBC_TUNABLES");
-      tunables == nullptr || std::strstr(tunables, "glibc.malloc.hugetlb") == nullptr) {
-    const std::string with = tunables == nullptr
-                                 ? std::string(rigid::support::kHugePagesTunable)
-                                 : tunables + std::string(":") + rigid::support::kHugePagesTunable;
-    ::setenv("GLIBC_TUNABLES", with.c_str(), 1);
-  }
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> labs;
@@ -48,7 +29,8 @@ int main(int argc, char** argv) {
                  "rigidlab figures)\n";
     return 2;
   }
-  take_huge_pages(argv);
+  // with this program's own arguments, before any lab asks (a lab's ask is then a no-op)
+  rigid::support::restart_with_huge_pages(argv);
   int failed = 0;
   for (const std::string& lab : labs) {
     // the lab's argv: its name, then the arguments after "--" (a lab may keep pointers

@@ -97,6 +97,9 @@ std::string bytes_text(std::uint64_t bytes) {
 }
 
 void restart_with_huge_pages(char** argv) {
+  static bool asked = false;
+  if (asked) return;
+  asked = true;
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   if (tunables != nullptr && std::strstr(tunables, "glibc.malloc.hugetlb") != nullptr) return;
   const std::string before = tunables != nullptr ? tunables : "";

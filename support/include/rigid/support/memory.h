@@ -42,7 +42,9 @@ inline constexpr char kHugePagesTunable[] = "glibc.malloc.hugetlb=1";
 /// this project's machine the first figure of a process went from 0.37 s to 0.15 s. A
 /// tunable is read only as a program starts, hence the restart, done before any work.
 /// Returns only where it cannot (no /proc/self/exe, or exec refused), the environment
-/// as it was.
+/// as it was, or where this process has asked once already: a program that runs several
+/// labs' commands in turn (rigidlab-draw) asks with its own arguments first, and a lab's
+/// own ask then never starts it again with the lab's.
 void restart_with_huge_pages(char** argv);
 
 }  // namespace rigid::support
